@@ -1,0 +1,88 @@
+#pragma once
+// Encoding and defensive decoding of dvpr's LCM messages.
+//
+// The simulator reports the bytes that Encode() produces: the LCM encoding with
+// its 8-byte type fingerprint. Decode() never trusts its input: it is also used
+// on datagrams received from a real network, where a truncated, foreign or
+// garbage buffer must be rejected, not crash the agent or make it allocate the
+// gigabytes a garbage length field may claim.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <dvpr/match_t.hpp>
+#include <dvpr/query_t.hpp>
+#include <dvpr/verify_request_t.hpp>
+#include <dvpr/verify_result_t.hpp>
+
+namespace dvpr {
+
+template <typename Msg>
+std::vector<std::uint8_t> Encode(const Msg& msg) {
+  std::vector<std::uint8_t> buf(static_cast<std::size_t>(msg.getEncodedSize()));
+  const int n = msg.encode(buf.data(), 0, static_cast<int>(buf.size()));
+  if (n != static_cast<int>(buf.size())) {
+    throw std::runtime_error(std::string("LCM encoding of ") + Msg::getTypeName() +
+                             " failed (a length field disagrees with its array?)");
+  }
+  return buf;
+}
+
+namespace codec_detail {
+// Reads a big-endian integer of LCM's encoding at `offset`, if it is there.
+inline std::optional<std::int64_t> ReadBigEndian(std::span<const std::uint8_t> buf,
+                                                 std::size_t offset, std::size_t width) {
+  if (offset + width > buf.size()) return std::nullopt;
+  std::uint64_t v = 0;
+  for (std::size_t i = 0; i < width; ++i) v = (v << 8) | buf[offset + i];
+  if (width == 2) return static_cast<std::int16_t>(v);
+  if (width == 4) return static_cast<std::int32_t>(v);
+  return static_cast<std::int64_t>(v);
+}
+
+// True when the message's variable-length field claims no more elements than
+// the buffer can hold. Generated decoders resize the array before checking
+// the buffer length, so this check must come first.
+template <typename Msg>
+bool LengthFieldFits(std::span<const std::uint8_t>) { return true; }
+
+template <>
+inline bool LengthFieldFits<query_t>(std::span<const std::uint8_t> buf) {
+  constexpr std::size_t kDimOffset = 8 + 8 + 2 + 4;  // fingerprint, utime, robot, frame
+  const auto dim = ReadBigEndian(buf, kDimOffset, 2);
+  if (!dim) return false;
+  const auto room = (buf.size() - (kDimOffset + 2)) / sizeof(float);
+  return *dim >= 0 && static_cast<std::size_t>(*dim) <= room;
+}
+
+template <>
+inline bool LengthFieldFits<verify_request_t>(std::span<const std::uint8_t> buf) {
+  constexpr std::size_t kSizeOffset = 8 + 8 + 2 + 4 + 2 + 4;  // ... match_robot, match_frame
+  const auto size = ReadBigEndian(buf, kSizeOffset, 4);
+  if (!size) return false;
+  return *size >= 0 && static_cast<std::size_t>(*size) <= buf.size() - (kSizeOffset + 4);
+}
+}  // namespace codec_detail
+
+// Decodes a whole buffer into Msg. Empty when the buffer is truncated, too
+// long, of another type (fingerprint mismatch) or inconsistent.
+template <typename Msg>
+std::optional<Msg> Decode(std::span<const std::uint8_t> buf) {
+  if (buf.size() > static_cast<std::size_t>(INT32_MAX)) return std::nullopt;
+  if (!codec_detail::LengthFieldFits<Msg>(buf)) return std::nullopt;
+  Msg msg;
+  int n = -1;
+  try {
+    n = msg.decode(buf.data(), 0, static_cast<int>(buf.size()));
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  if (n != static_cast<int>(buf.size())) return std::nullopt;
+  return msg;
+}
+
+}  // namespace dvpr

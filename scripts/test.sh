@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# The README's test command: install what is missing, build with
+# AddressSanitizer + UndefinedBehaviorSanitizer, run the whole suite.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+bash scripts/setup.sh
+BUILD=build/asan
+JOBS=$(nproc)
+cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDVPR_SANITIZE=ON -DDVPR_BUILD_BENCH=OFF >/dev/null
+cmake --build "$BUILD" -j "$JOBS"
+ctest --test-dir "$BUILD" --output-on-failure -j "$JOBS" --timeout 600
