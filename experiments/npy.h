@@ -1,0 +1,20 @@
+#pragma once
+// NumPy .npy files for descriptor and centroid matrices (the format numpy.save writes).
+#include <filesystem>
+
+#include "agents/descriptors.h"
+
+namespace dvpr {
+
+// Reads a 2-D array of little-endian float32 ('<f4') or float64 ('<f8') in C or Fortran order,
+// format version 1.0, 2.0 or 3.0. float64 values are narrowed to float. Throws
+// std::runtime_error naming the file and what was expected (bad magic or header, not 2-D,
+// unsupported dtype, truncated data).
+DescriptorMatrix ReadNpyMatrix(const std::filesystem::path& path);
+
+// Writes `m` as float32, C order, format version 1.0, byte-identical to numpy.save (numpy >= 1.24
+// header padding). Atomic: the bytes go to a temporary file in the same directory, which is then
+// renamed over `path`, so readers never see a half-written file.
+void WriteNpy(const std::filesystem::path& path, const DescriptorMatrix& m);
+
+}  // namespace dvpr
