@@ -1,0 +1,159 @@
+#include "net_models/units.h"
+
+#include <array>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+
+namespace dvpr {
+namespace {
+
+// __extension__: __int128 is a GCC/Clang extension; it keeps rate x time products exact.
+__extension__ typedef __int128 Wide;
+
+struct UnitEntry {
+  std::string_view name;
+  std::int64_t factor;  // base units (bit/s, ns, byte) per unit
+};
+
+// An exact non-negative decimal: mantissa / 10^frac_digits.
+struct Decimal {
+  Wide mantissa = 0;
+  int frac_digits = 0;
+};
+
+std::string_view Trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+// Parses "123", "1.5", ".5" at the start of s; advances s past the number.
+std::optional<Decimal> ParseDecimal(std::string_view& s) {
+  Decimal d;
+  bool any_digit = false;
+  bool in_fraction = false;
+  int digits = 0;
+  std::size_t i = 0;
+  for (; i < s.size(); ++i) {
+    const char c = s[i];
+    if (c == '.' && !in_fraction) {
+      in_fraction = true;
+      continue;
+    }
+    if (c < '0' || c > '9') break;
+    if (++digits > 30) return std::nullopt;  // beyond what __int128 holds exactly
+    d.mantissa = d.mantissa * 10 + (c - '0');
+    if (in_fraction) ++d.frac_digits;
+    any_digit = true;
+  }
+  if (!any_digit) return std::nullopt;
+  s.remove_prefix(i);
+  return d;
+}
+
+[[noreturn]] void Fail(std::string_view what, std::string_view text, std::string_view expected) {
+  throw std::invalid_argument("invalid " + std::string(what) + " \"" + std::string(text) +
+                              "\": expected " + std::string(expected));
+}
+
+// number [space] unit -> value in base units, rounded half up.
+template <std::size_t N>
+std::int64_t ParseQuantity(std::string_view text, std::string_view what,
+                           const std::array<UnitEntry, N>& units, std::string_view expected) {
+  std::string_view rest = Trim(text);
+  if (!rest.empty() && rest.front() == '-') Fail(what, text, "a non-negative value; " + std::string(expected));
+  if (!rest.empty() && rest.front() == '+') rest.remove_prefix(1);
+  const auto number = ParseDecimal(rest);
+  if (!number) Fail(what, text, expected);
+  if (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
+  if (rest.empty()) Fail(what, text, "a unit after the number; " + std::string(expected));
+  for (const UnitEntry& u : units) {
+    if (u.name != rest) continue;
+    Wide scale = 1;
+    for (int i = 0; i < number->frac_digits; ++i) scale *= 10;
+    const Wide value = (number->mantissa * u.factor * 2 + scale) / (scale * 2);
+    if (value > std::numeric_limits<std::int64_t>::max()) Fail(what, text, "a smaller value");
+    return static_cast<std::int64_t>(value);
+  }
+  Fail(what, text, "a known unit; " + std::string(expected));
+}
+
+constexpr std::int64_t kKi = 1024;
+
+// Prefix x suffix, spelled out so the accepted set is visible in one place.
+constexpr std::array<UnitEntry, 50> kRateUnits = {{
+    {"bps", 1}, {"b/s", 1}, {"bit/s", 1}, {"Bps", 8}, {"B/s", 8},
+    {"kbps", 1000}, {"kb/s", 1000}, {"kbit/s", 1000}, {"kBps", 8000}, {"kB/s", 8000},
+    {"Kbps", 1000}, {"Kb/s", 1000}, {"Kbit/s", 1000}, {"KBps", 8000}, {"KB/s", 8000},
+    {"Mbps", 1000000}, {"Mb/s", 1000000}, {"Mbit/s", 1000000}, {"MBps", 8000000}, {"MB/s", 8000000},
+    {"Gbps", 1000000000}, {"Gb/s", 1000000000}, {"Gbit/s", 1000000000},
+    {"GBps", 8000000000}, {"GB/s", 8000000000},
+    {"Tbps", 1000000000000}, {"Tb/s", 1000000000000}, {"Tbit/s", 1000000000000},
+    {"TBps", 8000000000000}, {"TB/s", 8000000000000},
+    {"Kibps", kKi}, {"Kib/s", kKi}, {"Kibit/s", kKi}, {"KiBps", 8 * kKi}, {"KiB/s", 8 * kKi},
+    {"Mibps", kKi * kKi}, {"Mib/s", kKi * kKi}, {"Mibit/s", kKi * kKi},
+    {"MiBps", 8 * kKi * kKi}, {"MiB/s", 8 * kKi * kKi},
+    {"Gibps", kKi * kKi * kKi}, {"Gib/s", kKi * kKi * kKi}, {"Gibit/s", kKi * kKi * kKi},
+    {"GiBps", 8 * kKi * kKi * kKi}, {"GiB/s", 8 * kKi * kKi * kKi},
+    {"Tibps", kKi * kKi * kKi * kKi}, {"Tib/s", kKi * kKi * kKi * kKi},
+    {"Tibit/s", kKi * kKi * kKi * kKi},
+    {"TiBps", 8 * kKi * kKi * kKi * kKi}, {"TiB/s", 8 * kKi * kKi * kKi * kKi},
+}};
+
+constexpr std::array<UnitEntry, 7> kDurationUnits = {{
+    {"ns", 1}, {"us", 1000}, {"\xC2\xB5s", 1000}, {"ms", 1000000}, {"s", 1000000000},
+    {"min", 60'000'000'000}, {"h", 3'600'000'000'000},
+}};
+
+constexpr std::array<UnitEntry, 7> kByteUnits = {{
+    {"B", 1}, {"kB", 1000}, {"MB", 1000000}, {"GB", 1000000000},
+    {"KiB", kKi}, {"MiB", kKi * kKi}, {"GiB", kKi * kKi * kKi},
+}};
+
+}  // namespace
+
+SimTime DataRate::TxTime(Bytes n) const {
+  if (bps_ <= 0) throw std::domain_error("DataRate::TxTime on a non-positive rate");
+  const Wide bits_ns = static_cast<Wide>(n.value()) * 8 * 1000000000;
+  return SimTime::Nanos(static_cast<std::int64_t>((bits_ns + bps_ - 1) / bps_));
+}
+
+DataRate ParseDataRate(std::string_view text) {
+  return DataRate::BitsPerSecond(ParseQuantity(
+      text, "data rate", kRateUnits,
+      "a number and a rate unit such as bps, kbps, Mbps, Gbps, Mbit/s, MBps or MiB/s (e.g. \"10Mbps\")"));
+}
+
+SimTime ParseDuration(std::string_view text) {
+  return SimTime::Nanos(ParseQuantity(text, "duration", kDurationUnits,
+                                      "a number and a time unit: ns, us, ms, s, min or h (e.g. \"5ms\")"));
+}
+
+Bytes ParseBytes(std::string_view text) {
+  return Bytes(ParseQuantity(text, "byte size", kByteUnits,
+                             "a number and a size unit: B, kB, MB, GB, KiB, MiB or GiB (e.g. \"64KiB\")"));
+}
+
+std::string ToString(DataRate rate) {
+  constexpr std::array<UnitEntry, 3> kLargest = {{{"Gbps", 1000000000}, {"Mbps", 1000000}, {"kbps", 1000}}};
+  for (const UnitEntry& u : kLargest) {
+    if (rate.bps() != 0 && rate.bps() % u.factor == 0) {
+      return std::to_string(rate.bps() / u.factor) + std::string(u.name);
+    }
+  }
+  return std::to_string(rate.bps()) + "bps";
+}
+
+std::string ToString(Bytes bytes) {
+  constexpr std::array<UnitEntry, 6> kLargest = {{{"GiB", kKi * kKi * kKi}, {"MiB", kKi * kKi}, {"KiB", kKi},
+                                                 {"GB", 1000000000}, {"MB", 1000000}, {"kB", 1000}}};
+  for (const UnitEntry& u : kLargest) {
+    if (bytes.value() != 0 && bytes.value() % u.factor == 0) {
+      return std::to_string(bytes.value() / u.factor) + std::string(u.name);
+    }
+  }
+  return std::to_string(bytes.value()) + "B";
+}
+
+}  // namespace dvpr
