@@ -1,0 +1,64 @@
+#pragma once
+// Routing strategies: where a new frame's descriptor is searched and where it
+// is stored. The agent knows only this interface, so a new strategy plugs in
+// without touching the agent.
+//
+// A strategy must be a deterministic function of (querying robot, descriptor):
+// a responder re-evaluates it to learn whether it should store the query, so
+// that decision costs no bytes on the wire.
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "agents/ids.h"
+
+namespace dvpr {
+
+struct RoutingDecision {
+  std::vector<RobotId> search_at;  // robots that search their store and reply (self: locally)
+  std::vector<RobotId> store_at;   // robots that keep the descriptor for later searches
+};
+
+class RoutingStrategy {
+ public:
+  virtual ~RoutingStrategy() = default;
+
+  virtual std::string_view name() const = 0;
+  int num_robots() const { return num_robots_; }
+
+  RoutingDecision Route(RobotId self, const float* descriptor) const {
+    RoutingDecision decision;
+    DoRoute(self, descriptor, decision);
+    return decision;
+  }
+
+  // True: the remote searches are one publication on the broadcast channel
+  // (one transmission on a shared medium) instead of one unicast each.
+  virtual bool UsesBroadcastChannel() const { return false; }
+
+ protected:
+  explicit RoutingStrategy(int num_robots) : num_robots_(num_robots) {}
+
+ private:
+  virtual void DoRoute(RobotId self, const float* descriptor, RoutingDecision& out) const = 0;
+  int num_robots_;
+};
+
+// The baseline: every robot keeps its own frames and every query is searched
+// by all robots (the querying robot locally, the others over the network).
+class BroadcastRouting final : public RoutingStrategy {
+ public:
+  explicit BroadcastRouting(int num_robots) : RoutingStrategy(num_robots) {}
+  std::string_view name() const override { return "broadcast"; }
+  bool UsesBroadcastChannel() const override { return true; }
+
+ private:
+  void DoRoute(RobotId self, const float*, RoutingDecision& out) const override {
+    out.search_at.reserve(static_cast<std::size_t>(num_robots()));
+    for (int r = 0; r < num_robots(); ++r) out.search_at.push_back(RobotId(r));
+    out.store_at.push_back(self);
+  }
+};
+
+}  // namespace dvpr
