@@ -1,0 +1,24 @@
+#pragma once
+// "bernoulli": each frame is lost independently with probability p.
+#include "net_models/frame_loss.h"
+
+namespace dvpr {
+
+struct BernoulliLossParams {
+  double p = 0.0;
+  // Throws std::invalid_argument naming network.loss.p and its value unless 0 <= p <= 1.
+  void Validate() const;
+};
+
+class BernoulliLoss final : public FrameLoss {
+ public:
+  explicit BernoulliLoss(const BernoulliLossParams& params);
+
+ private:
+  bool DoIsLost(RandomStream& rng) override { return rng.Bernoulli(p_); }
+  std::string_view DoName() const override { return "bernoulli"; }
+
+  double p_;
+};
+
+}  // namespace dvpr

@@ -1,0 +1,53 @@
+#pragma once
+// Building the configured link model: the `network:` section of a config,
+// already typed (experiments/ parses YAML; nothing here sees it).
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "net_models/link_model.h"
+#include "net_models/loss_params.h"
+#include "net_models/wire_format.h"
+
+namespace dvpr {
+
+enum class LinkModelKind { kIdeal, kPointToPoint, kSharedMedium };
+
+// "ideal" | "point_to_point" | "shared_medium"; anything else throws
+// std::invalid_argument naming network.model and the value.
+LinkModelKind ParseLinkModelKind(std::string_view name);
+std::string_view ToString(LinkModelKind kind);
+
+// A directed pair whose parameters differ from the defaults. Bandwidth and
+// latency overrides need the point_to_point model; loss overrides work on all.
+struct LinkOverrideParams {
+  NodeId src;
+  NodeId dst;
+  std::optional<DataRate> bandwidth;
+  std::optional<SimTime> latency;
+  std::optional<LossParams> loss;
+};
+
+struct NetworkModelParams {
+  LinkModelKind model = LinkModelKind::kPointToPoint;
+  DataRate bandwidth = DataRate::Mbps(10);
+  SimTime latency = SimTime::Millis(2);
+  int queue_packets = 100;
+  WireParams wire;  // mtu, link framing
+  LossParams loss;  // for every pair unless overridden
+  std::vector<LinkOverrideParams> links;
+
+  // Throws std::invalid_argument naming the key and the value: non-positive
+  // bandwidth, negative latency or queue, MTU too small, a probability outside
+  // [0, 1], an override naming a node outside [0, nodes) or its own link, or a
+  // bandwidth/latency override on a model other than point_to_point.
+  void Validate(int nodes) const;
+};
+
+// The link model for `nodes` nodes, wrapped in a LossyLink when any pair has
+// loss. run_seed seeds the loss streams.
+std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int nodes, std::uint64_t run_seed);
+
+}  // namespace dvpr

@@ -1,0 +1,28 @@
+#include "net_models/link_model.h"
+
+#include <stdexcept>
+
+namespace dvpr {
+
+std::string_view ToString(DropReason reason) {
+  switch (reason) {
+    case DropReason::kNone: return "none";
+    case DropReason::kQueueFull: return "queue_full";
+    case DropReason::kLoss: return "loss";
+    case DropReason::kOffline: return "offline";
+  }
+  return "unknown";
+}
+
+void LinkModel::Transmit(const LinkTransmission& t, std::span<LinkDelivery> out) {
+  if (out.size() != t.dsts.size()) {
+    throw std::logic_error("LinkModel::Transmit: one outcome slot per destination expected");
+  }
+  if (t.frames.empty()) throw std::logic_error("LinkModel::Transmit: a message has at least one frame");
+  for (LinkDelivery& d : out) d = LinkDelivery{t.now, DropReason::kNone};
+  const MediumUse use = DoTransmit(t, out);
+  transmissions_ += use.transmissions;
+  transmitted_bytes_ += use.bytes;
+}
+
+}  // namespace dvpr

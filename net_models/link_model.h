@@ -1,0 +1,75 @@
+#pragma once
+// The link layer as the Network sees it: given one message (as its link
+// frames) from a node to one or more nodes at time `now`, when does it arrive
+// at each destination, or why is it dropped? Models are small state machines
+// over virtual time; they compute arrival times analytically instead of
+// scheduling an event per packet, which keeps the message path fast.
+//
+// LinkModel::Transmit is the public, non-virtual entry point (NVI): it checks
+// the request, resets the outcomes and keeps the link-layer counters; each
+// model implements only DoTransmit.
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "net_models/node_id.h"
+#include "net_models/units.h"
+#include "sim/sim_time.h"
+
+namespace dvpr {
+
+enum class DropReason : std::uint8_t {
+  kNone = 0,
+  kQueueFull,  // a frame found the sender's drop-tail queue full
+  kLoss,       // a frame was lost on the channel (loss model)
+  kOffline,    // the sender or the receiver was offline
+};
+std::string_view ToString(DropReason reason);
+
+// One message handed to the link layer.
+struct LinkTransmission {
+  NodeId src;
+  std::span<const NodeId> dsts;   // distinct nodes, none equal to src
+  SimTime now;
+  std::span<const Bytes> frames;  // the message's link frames, in order (wire_format.h)
+};
+
+// The outcome for one destination: the arrival of the message's last frame,
+// or a drop.
+struct LinkDelivery {
+  SimTime arrival;
+  DropReason drop = DropReason::kNone;
+};
+
+class LinkModel {
+ public:
+  virtual ~LinkModel() = default;
+
+  // Fills out[i] with the outcome for t.dsts[i] (out.size() == t.dsts.size()).
+  void Transmit(const LinkTransmission& t, std::span<LinkDelivery> out);
+
+  // "ideal", "point_to_point", "shared_medium", "bernoulli(point_to_point)", ...
+  std::string_view Name() const { return DoName(); }
+
+  // Transmissions put on a medium (a point-to-point copy per destination, one
+  // per message on a shared medium) and the frame bytes they carried.
+  std::uint64_t Transmissions() const { return transmissions_; }
+  Bytes TransmittedBytes() const { return transmitted_bytes_; }
+
+ protected:
+  // What one DoTransmit call put on the media.
+  struct MediumUse {
+    std::uint64_t transmissions = 0;
+    Bytes bytes;
+  };
+
+ private:
+  // out[i] arrives preset to {t.now, kNone}.
+  virtual MediumUse DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) = 0;
+  virtual std::string_view DoName() const = 0;
+
+  std::uint64_t transmissions_ = 0;
+  Bytes transmitted_bytes_;
+};
+
+}  // namespace dvpr

@@ -1,0 +1,226 @@
+#include "net_models/network.h"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+#include "net_models/lcm_event_log.h"
+#include "sim/simulator.h"
+
+namespace dvpr {
+namespace {
+
+constexpr std::uint32_t kNoRecord = std::numeric_limits<std::uint32_t>::max();
+
+}  // namespace
+
+Network::Network(Simulator& sim, int nodes, std::unique_ptr<LinkModel> link, WireParams wire)
+    : sim_(sim), nodes_(nodes), link_(std::move(link)), wire_(wire) {
+  if (nodes <= 0) throw std::invalid_argument("robots = " + std::to_string(nodes) + ": need at least one node");
+  if (!link_) throw std::invalid_argument("Network: no link model");
+  wire_.Validate();
+  const auto n = static_cast<std::size_t>(nodes);
+  endpoints_.assign(n, nullptr);
+  offline_from_.assign(n, SimTime::Max());
+  offline_until_.assign(n, SimTime::Max());
+  pairs_.assign(n * n, LinkCounters{});
+  senders_.assign(n, NodeCounters{});
+}
+
+Network::~Network() = default;
+
+void Network::CheckNode(NodeId node, const char* what) const {
+  if (node.value < 0 || node.value >= nodes_) {
+    throw std::out_of_range(std::string("Network::") + what + ": node " + std::to_string(node.value) +
+                            " outside [0, " + std::to_string(nodes_) + ")");
+  }
+}
+
+ChannelId Network::InternChannel(std::string_view name) {
+  if (auto it = channel_ids_.find(name); it != channel_ids_.end()) return ChannelId{it->second};
+  const auto id = static_cast<std::uint32_t>(channels_.size());
+  channels_.push_back(Channel{std::string(name), {}});
+  channel_ids_.emplace(std::string(name), id);
+  return ChannelId{id};
+}
+
+MessageTypeId Network::InternType(std::string_view name) {
+  if (auto it = type_ids_.find(name); it != type_ids_.end()) return MessageTypeId{it->second};
+  const auto id = static_cast<std::uint32_t>(types_.size());
+  types_.emplace_back(name);
+  type_ids_.emplace(std::string(name), id);
+  return MessageTypeId{id};
+}
+
+void Network::Attach(NodeId node, NetworkEndpoint* endpoint) {
+  CheckNode(node, "Attach");
+  endpoints_[static_cast<std::size_t>(node.value)] = endpoint;
+}
+
+void Network::Join(NodeId node, ChannelId channel) {
+  CheckNode(node, "Join");
+  auto& members = channels_.at(static_cast<std::size_t>(channel)).members;
+  const auto it = std::lower_bound(members.begin(), members.end(), node);
+  if (it == members.end() || *it != node) members.insert(it, node);
+}
+
+void Network::Leave(NodeId node, ChannelId channel) {
+  auto& members = channels_.at(static_cast<std::size_t>(channel)).members;
+  const auto it = std::lower_bound(members.begin(), members.end(), node);
+  if (it != members.end() && *it == node) members.erase(it);
+}
+
+void Network::SetOffline(NodeId node, SimTime from, SimTime until) {
+  CheckNode(node, "SetOffline");
+  offline_from_[static_cast<std::size_t>(node.value)] = from;
+  offline_until_[static_cast<std::size_t>(node.value)] = until;
+}
+
+bool Network::IsOnline(NodeId node, SimTime at) const {
+  const auto i = static_cast<std::size_t>(node.value);
+  return at < offline_from_[i] || at >= offline_until_[i];
+}
+
+std::size_t Network::Send(NodeId src, ChannelId channel, MessageTypeId type, std::vector<std::uint8_t> payload) {
+  CheckNode(src, "Send");
+  dsts_.clear();
+  for (const NodeId member : channels_.at(static_cast<std::size_t>(channel)).members) {
+    if (member != src) dsts_.push_back(member);
+  }
+  Dispatch(src, channel, type, std::move(payload));
+  return dsts_.size();
+}
+
+void Network::SendTo(NodeId src, std::span<const NodeId> dsts, ChannelId channel, MessageTypeId type,
+                     std::vector<std::uint8_t> payload) {
+  CheckNode(src, "SendTo");
+  dsts_.assign(dsts.begin(), dsts.end());
+  for (const NodeId dst : dsts_) {
+    CheckNode(dst, "SendTo");
+    if (dst == src) throw std::invalid_argument("Network::SendTo: a node does not send to itself");
+  }
+  Dispatch(src, channel, type, std::move(payload));
+}
+
+// Asks the link model about every destination in dsts_ at once (a shared
+// medium needs them together), then schedules the deliveries.
+void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::vector<std::uint8_t>&& payload) {
+  const SimTime now = sim_.Now();
+  NodeCounters& sender = senders_[static_cast<std::size_t>(src.value)];
+  ++sender.published;
+  if (dsts_.empty()) return;
+
+  frames_.clear();
+  const auto payload_bytes = static_cast<std::int64_t>(payload.size());
+  const WireFootprint fp = AppendLinkFrames(
+      Bytes(payload_bytes), static_cast<std::int64_t>(ChannelName(channel).size()), wire_, frames_);
+  outcomes_.resize(dsts_.size());
+  if (IsOnline(src, now)) {
+    const std::uint64_t transmissions = link_->Transmissions();
+    const Bytes medium_bytes = link_->TransmittedBytes();
+    link_->Transmit(LinkTransmission{src, dsts_, now, frames_}, outcomes_);
+    sender.transmissions += link_->Transmissions() - transmissions;
+    sender.medium_bytes += (link_->TransmittedBytes() - medium_bytes).value();
+  } else {
+    std::fill(outcomes_.begin(), outcomes_.end(), LinkDelivery{now, DropReason::kOffline});
+  }
+
+  const std::uint32_t slot = AllocatePayload(std::move(payload));
+  Payload& p = payloads_[slot];
+  p.src = src;
+  p.channel = channel;
+  p.sent = now;
+  p.wire_bytes = fp.wire_bytes.value();
+  for (std::size_t i = 0; i < dsts_.size(); ++i) {
+    const NodeId dst = dsts_[i];
+    LinkCounters& c = pairs_[PairIndex(src, dst)];
+    ++c.messages;
+    c.payload_bytes += payload_bytes;
+    c.wire_bytes += p.wire_bytes;
+    const std::uint32_t record = record_ ? AddRecord(p, dst, type, outcomes_[i]) : kNoRecord;
+    if (outcomes_[i].drop != DropReason::kNone) {
+      ++c.dropped;
+      continue;
+    }
+    ++p.refs;
+    sim_.ScheduleAt(outcomes_[i].arrival, [this, slot, dst, record] { Deliver(slot, dst, record); });
+  }
+  if (p.refs == 0) ReleasePayload(slot);
+}
+
+std::uint32_t Network::AddRecord(const Payload& p, NodeId dst, MessageTypeId type, const LinkDelivery& outcome) {
+  if (records_.size() >= kNoRecord) throw std::length_error("Network: too many message records");
+  MessageRecord r;
+  r.sent = p.sent;
+  r.src = p.src;
+  r.dst = dst;
+  r.channel = p.channel;
+  r.type = type;
+  r.payload_bytes = static_cast<std::int64_t>(p.bytes.size());
+  r.wire_bytes = p.wire_bytes;
+  r.drop = outcome.drop;
+  records_.push_back(r);
+  return static_cast<std::uint32_t>(records_.size() - 1);
+}
+
+std::uint32_t Network::AllocatePayload(std::vector<std::uint8_t>&& bytes) {
+  std::uint32_t slot;
+  if (!free_payloads_.empty()) {
+    slot = free_payloads_.back();
+    free_payloads_.pop_back();
+  } else {
+    slot = static_cast<std::uint32_t>(payloads_.size());
+    payloads_.emplace_back();
+  }
+  Payload& p = payloads_[slot];
+  p.bytes = std::move(bytes);
+  p.refs = 0;
+  p.logged = false;
+  return slot;
+}
+
+void Network::ReleasePayload(std::uint32_t slot) {
+  Payload& p = payloads_[slot];
+  if (p.refs > 0 && --p.refs > 0) return;
+  p.bytes = std::vector<std::uint8_t>();  // free now: a slot may stay idle for long
+  free_payloads_.push_back(slot);
+}
+
+void Network::Deliver(std::uint32_t slot, NodeId dst, std::uint32_t record) {
+  const SimTime now = sim_.Now();
+  Payload& p = payloads_[slot];
+  if (!IsOnline(dst, now)) {
+    ++pairs_[PairIndex(p.src, dst)].dropped;
+    if (record != kNoRecord) records_[record].drop = DropReason::kOffline;
+    ReleasePayload(slot);
+    return;
+  }
+  ++pairs_[PairIndex(p.src, dst)].delivered;
+  if (record != kNoRecord) {
+    records_[record].arrived = true;
+    records_[record].delivered = now;
+  }
+  if (event_log_ != nullptr && !p.logged) {
+    p.logged = true;
+    event_log_->Write(now, ChannelName(p.channel), p.bytes);
+  }
+  // OnReceive may send (and grow payloads_), so copy what it needs first; the
+  // byte buffer itself does not move while this delivery holds a reference.
+  const ReceivedMessage m{p.src, dst, p.channel, ChannelName(p.channel), p.bytes, p.sent};
+  if (NetworkEndpoint* endpoint = endpoints_[static_cast<std::size_t>(dst.value)]) endpoint->OnReceive(m);
+  ReleasePayload(slot);
+}
+
+LinkCounters Network::Totals() const {
+  LinkCounters t;
+  for (const LinkCounters& c : pairs_) {
+    t.messages += c.messages;
+    t.payload_bytes += c.payload_bytes;
+    t.wire_bytes += c.wire_bytes;
+    t.delivered += c.delivered;
+    t.dropped += c.dropped;
+  }
+  return t;
+}
+
+}  // namespace dvpr

@@ -1,0 +1,199 @@
+#pragma once
+// The simulated network: takes an encoded LCM message from a node, finds its
+// destinations, asks the LinkModel when each copy arrives, schedules each
+// delivery (or records the drop) on the Simulator, and counts everything.
+//
+// Routing follows LCM's publish/subscribe semantics: a message published on a
+// channel goes to every node that has joined that channel, except the sender.
+// dvpr's unicast channels are per destination robot (only that robot joins
+// DVPR_QUERY_3), and the broadcast channel is joined by all robots.
+//
+// Hot path, for ~1 million messages per second: channel and type names are
+// interned to small ids once; the payload is moved in and shared by all its
+// destinations (one buffer, reference-counted in a slab, no copy per
+// destination); delivery events capture only (network, slot, destination,
+// record), so they fit the Simulator's inline callback storage.
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "net_models/link_model.h"
+#include "net_models/node_id.h"
+#include "net_models/units.h"
+#include "net_models/wire_format.h"
+#include "sim/sim_time.h"
+
+namespace dvpr {
+
+class Simulator;
+class LcmEventLogWriter;
+
+enum class ChannelId : std::uint32_t {};
+enum class MessageTypeId : std::uint32_t {};
+
+// What a node receives.
+struct ReceivedMessage {
+  NodeId src;
+  NodeId dst;
+  ChannelId channel;
+  std::string_view channel_name;
+  std::span<const std::uint8_t> payload;  // valid during the OnReceive call only
+  SimTime sent;
+};
+
+// A node's receiving side (SimTransport implements it).
+class NetworkEndpoint {
+ public:
+  virtual ~NetworkEndpoint() = default;
+  virtual void OnReceive(const ReceivedMessage& message) = 0;
+};
+
+// Per directed pair (src -> dst). messages, payload_bytes and wire_bytes count
+// every message sent to dst (delivered, dropped, or still in flight);
+// wire_bytes is what one copy costs on the wire (wire_format.h) - on a shared
+// medium a broadcast is one transmission heard by all, see NodeCounters.
+struct LinkCounters {
+  std::uint64_t messages = 0;
+  std::int64_t payload_bytes = 0;
+  std::int64_t wire_bytes = 0;
+  std::uint64_t delivered = 0;
+  std::uint64_t dropped = 0;
+};
+
+// Per sending node: what it published and what it put on the medium.
+struct NodeCounters {
+  std::uint64_t published = 0;       // Send() calls
+  std::uint64_t transmissions = 0;   // copies put on a medium (LinkModel::Transmissions)
+  std::int64_t medium_bytes = 0;     // frame bytes of those transmissions
+};
+
+// One row per message and destination (kept when records are enabled).
+struct MessageRecord {
+  SimTime sent;
+  SimTime delivered;  // meaningful when state == kDelivered
+  NodeId src;
+  NodeId dst;
+  ChannelId channel{};
+  MessageTypeId type{};
+  std::int64_t payload_bytes = 0;
+  std::int64_t wire_bytes = 0;
+  DropReason drop = DropReason::kNone;
+  bool arrived = false;  // false and drop == kNone: still in flight when the run ended
+
+  bool dropped() const { return drop != DropReason::kNone; }
+};
+
+class Network {
+ public:
+  Network(Simulator& sim, int nodes, std::unique_ptr<LinkModel> link, WireParams wire = {});
+  ~Network();
+  Network(const Network&) = delete;
+  Network& operator=(const Network&) = delete;
+
+  int nodes() const { return nodes_; }
+  Simulator& simulator() { return sim_; }
+  const LinkModel& link() const { return *link_; }
+  const WireParams& wire() const { return wire_; }
+
+  // --- names --------------------------------------------------------------
+  ChannelId InternChannel(std::string_view name);
+  std::string_view ChannelName(ChannelId id) const { return channels_[static_cast<std::size_t>(id)].name; }
+  MessageTypeId InternType(std::string_view name);
+  std::string_view TypeName(MessageTypeId id) const { return types_[static_cast<std::size_t>(id)]; }
+
+  // --- membership ---------------------------------------------------------
+  // The endpoint that receives node's messages (one per node; null detaches).
+  void Attach(NodeId node, NetworkEndpoint* endpoint);
+  // Node starts/stops receiving `channel`. Idempotent.
+  void Join(NodeId node, ChannelId channel);
+  void Leave(NodeId node, ChannelId channel);
+  // Node is offline during [from, until): what it sends in that interval and
+  // what arrives for it then is dropped (DropReason::kOffline) and counted.
+  void SetOffline(NodeId node, SimTime from, SimTime until = SimTime::Max());
+  bool IsOnline(NodeId node, SimTime at) const;
+
+  // --- sending ------------------------------------------------------------
+  // Publishes payload from src on channel to every node that joined it, except
+  // src. Returns the number of destinations.
+  std::size_t Send(NodeId src, ChannelId channel, MessageTypeId type, std::vector<std::uint8_t> payload);
+  // Sends to the given destinations, regardless of membership (distinct, != src).
+  void SendTo(NodeId src, std::span<const NodeId> dsts, ChannelId channel, MessageTypeId type,
+              std::vector<std::uint8_t> payload);
+
+  // --- accounting ---------------------------------------------------------
+  const LinkCounters& Counters(NodeId src, NodeId dst) const { return pairs_[PairIndex(src, dst)]; }
+  LinkCounters Totals() const;
+  const NodeCounters& Sender(NodeId src) const { return senders_[static_cast<std::size_t>(src.value)]; }
+  // Message records (one per message and destination), off by default.
+  void EnableRecords(bool on) { record_ = on; }
+  const std::vector<MessageRecord>& Records() const { return records_; }
+  // Every delivered message is written to `log` once, at its first delivery
+  // (null stops logging). The writer must outlive the network or be reset.
+  void SetEventLog(LcmEventLogWriter* log) { event_log_ = log; }
+
+ private:
+  struct Channel {
+    std::string name;
+    std::vector<NodeId> members;  // sorted
+  };
+  struct Payload {
+    std::vector<std::uint8_t> bytes;
+    std::uint32_t refs = 0;
+    NodeId src;
+    ChannelId channel{};
+    SimTime sent;
+    std::int64_t wire_bytes = 0;
+    bool logged = false;
+  };
+  struct StringHash {
+    using is_transparent = void;
+    std::size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+  };
+  using NameMap = std::unordered_map<std::string, std::uint32_t, StringHash, std::equal_to<>>;
+
+  std::size_t PairIndex(NodeId src, NodeId dst) const {
+    return static_cast<std::size_t>(src.value) * static_cast<std::size_t>(nodes_) +
+           static_cast<std::size_t>(dst.value);
+  }
+  void CheckNode(NodeId node, const char* what) const;
+  void Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::vector<std::uint8_t>&& payload);
+  std::uint32_t AllocatePayload(std::vector<std::uint8_t>&& bytes);
+  void ReleasePayload(std::uint32_t slot);
+  std::uint32_t AddRecord(const Payload& p, NodeId dst, MessageTypeId type, const LinkDelivery& outcome);
+  void Deliver(std::uint32_t slot, NodeId dst, std::uint32_t record);
+
+  Simulator& sim_;
+  int nodes_;
+  std::unique_ptr<LinkModel> link_;
+  WireParams wire_;
+
+  NameMap channel_ids_;
+  std::deque<Channel> channels_;  // deque: names handed out as string_view never move
+  NameMap type_ids_;
+  std::deque<std::string> types_;
+
+  std::vector<NetworkEndpoint*> endpoints_;
+  std::vector<SimTime> offline_from_;
+  std::vector<SimTime> offline_until_;
+
+  std::vector<Payload> payloads_;
+  std::vector<std::uint32_t> free_payloads_;
+
+  std::vector<LinkCounters> pairs_;
+  std::vector<NodeCounters> senders_;
+  bool record_ = false;
+  std::vector<MessageRecord> records_;
+  LcmEventLogWriter* event_log_ = nullptr;
+
+  // Scratch buffers reused by every Send (no allocation once warm).
+  std::vector<NodeId> dsts_;
+  std::vector<Bytes> frames_;
+  std::vector<LinkDelivery> outcomes_;
+};
+
+}  // namespace dvpr

@@ -1,0 +1,60 @@
+#pragma once
+// "point_to_point": a full-duplex link per directed pair of nodes, as ns-3's
+// PointToPointNetDevice + PointToPointChannel: frames are serialized at the
+// link rate through a drop-tail queue, then travel for the propagation
+// latency. A message for several nodes is sent as one copy per link.
+// Heterogeneous teams: per-pair overrides of rate and latency.
+#include <optional>
+#include <vector>
+
+#include "net_models/fifo_transmitter.h"
+#include "net_models/link_model.h"
+
+namespace dvpr {
+
+struct PointToPointParams {
+  struct PairOverride {
+    NodeId src;
+    NodeId dst;
+    std::optional<DataRate> rate;      // unset: the default rate
+    std::optional<SimTime> latency;    // unset: the default latency
+  };
+
+  DataRate rate = DataRate::Mbps(10);
+  SimTime latency = SimTime::Millis(2);
+  int queue_packets = 100;
+  std::vector<PairOverride> overrides;  // directed: list both directions for a symmetric link
+
+  // Throws std::invalid_argument naming the key and value: rate <= 0,
+  // latency < 0, queue_packets < 0, an override outside [0, nodes) or on a
+  // node's link to itself.
+  void Validate(int nodes) const;
+};
+
+class PointToPointLink final : public LinkModel {
+ public:
+  PointToPointLink(const PointToPointParams& params, int nodes);
+
+  DataRate RateOf(NodeId src, NodeId dst) const { return links_[Index(src, dst)].rate; }
+  SimTime LatencyOf(NodeId src, NodeId dst) const { return links_[Index(src, dst)].latency; }
+
+ private:
+  struct Link {
+    DataRate rate;
+    SimTime latency;
+    SimTime busy_until;
+    FifoTransmitter tx;
+  };
+
+  std::size_t Index(NodeId src, NodeId dst) const {
+    return static_cast<std::size_t>(src.value) * static_cast<std::size_t>(nodes_) +
+           static_cast<std::size_t>(dst.value);
+  }
+  MediumUse DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) override;
+  std::string_view DoName() const override { return "point_to_point"; }
+
+  int nodes_;
+  std::vector<Link> links_;  // nodes x nodes, row = source
+};
+
+}  // namespace dvpr

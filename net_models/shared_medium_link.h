@@ -1,0 +1,36 @@
+#pragma once
+// "shared_medium": one channel that every node shares, like an ad hoc radio
+// network. Every transmission occupies the channel for its frames'
+// serialization time, whoever sends it; a message for several nodes (a
+// broadcast) is ONE transmission that all of them hear. Access to the channel
+// is an idealized MAC: first come, first served, no collisions, no backoff.
+// Each node has its own drop-tail queue of frames waiting for the channel.
+#include <vector>
+
+#include "net_models/fifo_transmitter.h"
+#include "net_models/link_model.h"
+
+namespace dvpr {
+
+struct SharedMediumParams {
+  DataRate rate = DataRate::Mbps(10);
+  SimTime latency = SimTime::Millis(2);  // propagation and processing, the same for all pairs
+  int queue_packets = 100;               // per sending node
+  // Throws std::invalid_argument naming the key and value.
+  void Validate() const;
+};
+
+class SharedMediumLink final : public LinkModel {
+ public:
+  SharedMediumLink(const SharedMediumParams& params, int nodes);
+
+ private:
+  MediumUse DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) override;
+  std::string_view DoName() const override { return "shared_medium"; }
+
+  SharedMediumParams params_;
+  SimTime channel_busy_until_;
+  std::vector<FifoTransmitter> senders_;  // one queue per node
+};
+
+}  // namespace dvpr

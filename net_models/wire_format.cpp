@@ -1,0 +1,78 @@
+#include "net_models/wire_format.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace dvpr {
+namespace {
+
+// Adds one UDP datagram of `udp_payload` bytes to fp (and its frames to *frames).
+void AddDatagram(std::int64_t udp_payload, const WireParams& p, WireFootprint& fp, std::vector<Bytes>* frames) {
+  const std::int64_t ip_data = udp_payload + wire::kUdpHeader;
+  const std::int64_t framing = p.link_framing.value();
+  fp.lcm_datagrams += 1;
+  fp.udp_payload_bytes += Bytes(udp_payload);
+  std::int64_t per_fragment = ip_data;  // unfragmented: everything in one packet
+  std::int64_t packets = 1;
+  if (ip_data + wire::kIpv4Header > p.mtu.value()) {
+    per_fragment = (p.mtu.value() - wire::kIpv4Header) / 8 * 8;  // fragment offsets count 8-byte units
+    packets = (ip_data + per_fragment - 1) / per_fragment;
+  }
+  const std::int64_t last_data = ip_data - (packets - 1) * per_fragment;
+  fp.ip_packets += packets;
+  fp.ip_bytes += Bytes(ip_data + packets * wire::kIpv4Header);
+  fp.wire_bytes += Bytes(ip_data + packets * (wire::kIpv4Header + framing));
+  const std::int64_t first_frame = (packets > 1 ? per_fragment : last_data) + wire::kIpv4Header + framing;
+  fp.largest_frame = std::max(fp.largest_frame, Bytes(first_frame));
+  if (frames != nullptr) {
+    for (std::int64_t i = 0; i + 1 < packets; ++i) frames->push_back(Bytes(per_fragment + wire::kIpv4Header + framing));
+    frames->push_back(Bytes(last_data + wire::kIpv4Header + framing));
+  }
+}
+
+WireFootprint Compute(Bytes payload, std::int64_t channel_length, const WireParams& p, std::vector<Bytes>* frames) {
+  WireFootprint fp;
+  const std::int64_t stream = channel_length + 1 + payload.value();  // channel, NUL, payload
+  if (stream <= wire::kLcmShortMessageMax) {
+    AddDatagram(wire::kLcmShortHeader + stream, p, fp, frames);
+    return fp;
+  }
+  // LCM fragments: the channel + NUL + payload stream in chunks of at most
+  // kLcmFragmentMaxPayload, each behind a fragment header.
+  for (std::int64_t offset = 0; offset < stream; offset += wire::kLcmFragmentMaxPayload) {
+    const std::int64_t chunk = std::min(wire::kLcmFragmentMaxPayload, stream - offset);
+    AddDatagram(wire::kLcmFragmentHeader + chunk, p, fp, frames);
+  }
+  return fp;
+}
+
+}  // namespace
+
+void WireParams::Validate() const {
+  if (mtu.value() < wire::kIpv4Header + 8) {
+    throw std::invalid_argument("network.mtu = " + std::to_string(mtu.value()) +
+                                "B is too small: an IPv4 packet needs 20 header bytes plus at least 8 data bytes");
+  }
+  if (link_framing.value() < 0) {
+    throw std::invalid_argument("network.link_framing = " + std::to_string(link_framing.value()) +
+                                "B must not be negative");
+  }
+}
+
+WireFootprint ComputeWireFootprint(Bytes payload, std::int64_t channel_length, const WireParams& params) {
+  return Compute(payload, channel_length, params, nullptr);
+}
+
+WireFootprint AppendLinkFrames(Bytes payload, std::int64_t channel_length, const WireParams& params,
+                               std::vector<Bytes>& frames) {
+  return Compute(payload, channel_length, params, &frames);
+}
+
+WireFootprint FramesOfDatagram(Bytes udp_payload, const WireParams& params, std::vector<Bytes>* frames) {
+  WireFootprint fp;
+  AddDatagram(udp_payload.value(), params, fp, frames);
+  return fp;
+}
+
+}  // namespace dvpr
