@@ -92,12 +92,4 @@ OnlineTruth ComputeOnlineTruth(const std::vector<QueryRecord>& queries, const Po
   return truth;
 }
 
-double WorstBalanceRatio(const std::vector<std::int64_t>& served_per_robot) {
-  if (served_per_robot.empty()) return 0.0;
-  const auto total = std::accumulate(served_per_robot.begin(), served_per_robot.end(), std::int64_t{0});
-  if (total == 0) return 0.0;
-  const auto busiest = *std::max_element(served_per_robot.begin(), served_per_robot.end());
-  return static_cast<double>(busiest) * static_cast<double>(served_per_robot.size()) / static_cast<double>(total);
-}
-
 }  // namespace dvpr

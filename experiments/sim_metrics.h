@@ -45,7 +45,4 @@ struct OnlineTruth {
 OnlineTruth ComputeOnlineTruth(const std::vector<QueryRecord>& queries, const Positions& positions,
                                const std::vector<SimTime>& capture_time, double radius_m, int window);
 
-// max over robots of served / (total / n): 1 is perfect balance.
-double WorstBalanceRatio(const std::vector<std::int64_t>& served_per_robot);
-
 }  // namespace dvpr
