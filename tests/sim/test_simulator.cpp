@@ -93,7 +93,7 @@ TEST_F(SimulatorTest, RunUntilStopsAtTheBoundaryInclusiveAndAdvancesTheClock) {
   EXPECT_EQ(order, (std::vector<int>{5, 10}));
   sim.Run(SimTime::Millis(10) + SimTime::Nanos(500));
   EXPECT_EQ(sim.Now(), SimTime::Millis(10) + SimTime::Nanos(500));
-  sim.Schedule(SimTime::Nanos(500), Record(12));  // at 11 ms, after the pending 11 ms event
+  sim.ScheduleAt(SimTime::Millis(11), Record(12));  // same time as the pending event, scheduled later
   sim.Run();
   EXPECT_EQ(order, (std::vector<int>{5, 10, 11, 12}));
 }
@@ -117,8 +117,10 @@ TEST_F(SimulatorTest, RejectsNegativeDelayAndThePast) {
 TEST_F(SimulatorTest, LargeCapturesAndNonTrivialCallablesWork) {
   auto shared = std::make_shared<int>(0);
   std::vector<int> big(100, 1);
-  std::function<void()> f = [shared] { ++*shared; };
-  sim.Schedule(SimTime::Zero(), f);
+  {
+    std::function<void()> f = [shared] { ++*shared; };
+    sim.Schedule(SimTime::Zero(), std::move(f));
+  }
   sim.Schedule(SimTime::Zero(), [shared, big, pad = std::string(100, 'x')] { *shared += big[99] + 10; });
   const EventId cancelled = sim.Schedule(SimTime::Zero(), [shared] { *shared += 1000; });
   sim.Cancel(cancelled);

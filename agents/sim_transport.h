@@ -1,0 +1,58 @@
+#pragma once
+// The Transport of one robot in simulation: virtual time from the Simulator,
+// timers as simulator events, messages through the simulated Network. Robot
+// r is network node r. Publishing hands the encoded bytes to the Network
+// (moved, not copied); a delivery calls every handler this robot subscribed
+// on the message's channel, in subscription order.
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "agents/ids.h"
+#include "agents/transport.h"
+#include "net_models/network.h"
+
+namespace dvpr {
+
+class SimTransport final : public Transport, private NetworkEndpoint {
+ public:
+  // Attaches to `network` as `node` (one transport per node).
+  SimTransport(Network& network, NodeId node);
+  ~SimTransport() override;
+  SimTransport(const SimTransport&) = delete;
+  SimTransport& operator=(const SimTransport&) = delete;
+
+  NodeId node() const { return node_; }
+  RobotId robot() const { return RobotId(node_.value); }
+
+  SimTime Now() const override;
+  void ScheduleAfter(SimTime delay, Callback fn) override;
+
+ private:
+  struct Handler {
+    std::uint64_t id;
+    std::shared_ptr<RawHandler> fn;  // shared: a handler may unsubscribe itself while running
+  };
+  struct ChannelHandlers {
+    std::string name;
+    std::vector<Handler> handlers;
+  };
+
+  void DoPublish(const std::string& channel, const char* type_name, std::vector<std::uint8_t> bytes) override;
+  std::uint64_t DoSubscribe(const std::string& channel, RawHandler handler) override;
+  void DoUnsubscribe(std::uint64_t id) override;
+  void OnReceive(const ReceivedMessage& message) override;
+  MessageTypeId TypeOf(const char* type_name);
+
+  Network& network_;
+  NodeId node_;
+  std::deque<ChannelHandlers> by_channel_;  // indexed by ChannelId; deque: references stay valid
+  std::unordered_map<std::uint64_t, ChannelId> subscriptions_;  // id -> channel
+  std::vector<std::pair<const char*, MessageTypeId>> types_;  // getTypeName() pointers seen
+  std::uint64_t next_id_ = 1;
+};
+
+}  // namespace dvpr
