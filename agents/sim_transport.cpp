@@ -82,3 +82,5 @@ void SimTransport::OnReceive(const ReceivedMessage& message) {
     (*h.fn)(entry.name, message.payload);
   }
 }
+
+}  // namespace dvpr
