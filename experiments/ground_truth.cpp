@@ -61,29 +61,6 @@ std::int64_t CountRelevant(const Positions& positions, const GroundTruthParams& 
   return std::count(flags.begin(), flags.end(), std::uint8_t{1});
 }
 
-std::vector<std::uint8_t> RelevantFlagsCausal(const Positions& positions,
-                                              std::span<const double> capture_time,
-                                              const GroundTruthParams& params) {
-  params.Validate();
-  const Eigen::Index n = positions.rows();
-  if (capture_time.size() != static_cast<std::size_t>(n)) {
-    throw std::invalid_argument("RelevantFlagsCausal: " + std::to_string(capture_time.size()) +
-                                " capture times for " + std::to_string(n) + " frames");
-  }
-  const double r2 = params.radius_m * params.radius_m;
-  std::vector<std::uint8_t> relevant(static_cast<std::size_t>(n), 0);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double ti = capture_time[static_cast<std::size_t>(i)];
-    bool found = false;
-    ForEachOutsideWindow(n, i, params.suppression_frames, [&](Eigen::Index j) {
-      found = found || (capture_time[static_cast<std::size_t>(j)] < ti &&
-                        SquaredDistance(positions, i, j) < r2);
-    });
-    relevant[static_cast<std::size_t>(i)] = found ? 1 : 0;
-  }
-  return relevant;
-}
-
 bool IsCorrectMatch(const Positions& positions, std::int64_t query, std::int64_t match,
                     double radius_m) {
   const Eigen::Index n = positions.rows();

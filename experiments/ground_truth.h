@@ -3,7 +3,6 @@
 // indexed in the full sequence; frame j is a candidate for query i only outside the suppression
 // window, |i - j| > suppression_frames.
 #include <cstdint>
-#include <span>
 #include <vector>
 
 #include "experiments/dataset.h"
@@ -24,13 +23,6 @@ std::vector<std::uint8_t> RelevantFlags(const Positions& positions, const Ground
 
 // R: the number of relevant queries.
 std::int64_t CountRelevant(const Positions& positions, const GroundTruthParams& params);
-
-// The causal variant of the simulation (DESIGN.md section 3): query i is relevant when a frame
-// taken strictly earlier (capture_time[j] < capture_time[i], any robot) lies within r outside
-// the window. capture_time has one entry per frame, in any unit.
-std::vector<std::uint8_t> RelevantFlagsCausal(const Positions& positions,
-                                              std::span<const double> capture_time,
-                                              const GroundTruthParams& params);
 
 // Whether a reported match is correct: ||P_query - P_match||^2 < r^2.
 bool IsCorrectMatch(const Positions& positions, std::int64_t query, std::int64_t match,
