@@ -1,0 +1,100 @@
+#include "net_models/wire_format.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace dvpr {
+namespace {
+
+TEST(WireFormat, UdpPayloadOf517BytesIsA547BytePppFrame) {
+  // 517 + UDP 8 + IPv4 20 = 545-byte IP packet; + PPP 2 = 547.
+  std::vector<Bytes> frames;
+  const WireFootprint fp = FramesOfDatagram(Bytes(517), WireParams{}, &frames);
+  EXPECT_EQ(fp.ip_packets, 1);
+  EXPECT_EQ(fp.ip_bytes, Bytes(545));
+  EXPECT_EQ(fp.wire_bytes, Bytes(547));
+  EXPECT_EQ(frames, (std::vector<Bytes>{Bytes(547)}));
+}
+
+TEST(WireFormat, QueryOnTheBroadcastChannel) {
+  // A query_t with a 128-float descriptor encodes to 8 (fingerprint) + 8 + 2
+  // + 4 + 2 + 512 = 536 bytes. On "DVPR_QUERY_ALL" (14 characters):
+  // LCM datagram 8 + 14 + 1 + 536 = 559; IP 559 + 28 = 587; PPP 589.
+  const WireFootprint fp = ComputeWireFootprint(Bytes(536), 14, WireParams{});
+  EXPECT_EQ(fp.lcm_datagrams, 1);
+  EXPECT_EQ(fp.udp_payload_bytes, Bytes(559));
+  EXPECT_EQ(fp.ip_packets, 1);
+  EXPECT_EQ(fp.wire_bytes, Bytes(589));
+}
+
+TEST(WireFormat, ThirtyKilobyteMessageIsIpFragmented) {
+  // 30 000 payload bytes on "DVPR_VREQ_3" (11 characters):
+  //   LCM short datagram: 8 + 11 + 1 + 30 000 = 30 020 bytes (fits 65 499).
+  //   IP data: UDP header + datagram = 30 028 bytes. At MTU 1500 a fragment
+  //   carries (1500 - 20) rounded down to a multiple of 8 = 1480 data bytes:
+  //   20 full fragments (29 600) + one of 428 -> 21 IP packets.
+  //   IP bytes: 30 028 + 21 x 20 = 30 448. PPP: + 21 x 2 = 30 490.
+  //   Overhead: 30 490 - 30 000 = 490 = LCM 8 + channel 12 + UDP 8 + IP 420 + PPP 42.
+  std::vector<Bytes> frames;
+  const WireFootprint fp = AppendLinkFrames(Bytes(30000), 11, WireParams{}, frames);
+  EXPECT_EQ(fp.lcm_datagrams, 1);
+  EXPECT_EQ(fp.ip_packets, 21);
+  EXPECT_EQ(fp.ip_bytes, Bytes(30448));
+  EXPECT_EQ(fp.wire_bytes, Bytes(30490));
+  EXPECT_EQ(fp.largest_frame, Bytes(1502));
+  ASSERT_EQ(frames.size(), 21u);
+  for (int i = 0; i < 20; ++i) EXPECT_EQ(frames[i], Bytes(1502));
+  EXPECT_EQ(frames[20], Bytes(428 + 20 + 2));
+}
+
+TEST(WireFormat, LcmFragmentsPastOneDatagram) {
+  // Channel "X": the stream channel + NUL + payload is 65 499 bytes at most
+  // for one short datagram.
+  const WireParams p;
+  EXPECT_EQ(ComputeWireFootprint(Bytes(65499 - 2), 1, p).lcm_datagrams, 1);
+  const WireFootprint two = ComputeWireFootprint(Bytes(65499 - 1), 1, p);
+  // 65 500-byte stream: fragments of 65 487 and 13, each + 20 header bytes.
+  EXPECT_EQ(two.lcm_datagrams, 2);
+  EXPECT_EQ(two.udp_payload_bytes, Bytes(65507 + 33));
+
+  // 100 000 payload bytes: stream 100 002 = 65 487 + 34 515.
+  //   Datagram 1: 65 507 bytes -> IP data 65 515 = 44 x 1480 + 395 -> 45 packets.
+  //   Datagram 2: 34 535 bytes -> IP data 34 543 = 23 x 1480 + 503 -> 24 packets.
+  //   Frames: 65 515 + 45 x 22 + 34 543 + 24 x 22 = 66 505 + 35 071 = 101 576 bytes.
+  std::vector<Bytes> frames;
+  const WireFootprint big = AppendLinkFrames(Bytes(100000), 1, p, frames);
+  EXPECT_EQ(big.lcm_datagrams, 2);
+  EXPECT_EQ(big.ip_packets, 69);
+  EXPECT_EQ(big.wire_bytes, Bytes(101576));
+  EXPECT_EQ(frames.size(), 69u);
+  EXPECT_EQ(frames[44], Bytes(395 + 22));
+  EXPECT_EQ(frames[68], Bytes(503 + 22));
+}
+
+TEST(WireFormat, SmallMtuRoundsFragmentDataToEightBytes) {
+  // MTU 100: fragments carry (100 - 20) = 80 data bytes. A 200-byte datagram
+  // is 208 IP data bytes = 80 + 80 + 48 -> 3 packets of 100, 100, 68 bytes.
+  std::vector<Bytes> frames;
+  const WireFootprint fp = FramesOfDatagram(Bytes(200), WireParams{Bytes(100), Bytes(0)}, &frames);
+  EXPECT_EQ(frames, (std::vector<Bytes>{Bytes(100), Bytes(100), Bytes(68)}));
+  // MTU 105 gives the same: 85 data bytes round down to 80.
+  EXPECT_EQ(FramesOfDatagram(Bytes(200), WireParams{Bytes(105), Bytes(0)}, nullptr).ip_packets, 3);
+  EXPECT_EQ(fp.ip_bytes, Bytes(268));
+}
+
+TEST(WireFormat, ValidateNamesTheKeyAndValue) {
+  try {
+    WireParams{Bytes(0), Bytes(2)}.Validate();
+    FAIL() << "MTU 0 accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("network.mtu = 0"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW((WireParams{Bytes(27), Bytes(2)}.Validate()), std::invalid_argument);
+  EXPECT_NO_THROW((WireParams{Bytes(28), Bytes(2)}.Validate()));
+}
+
+}  // namespace
+}  // namespace dvpr
