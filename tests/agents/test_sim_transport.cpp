@@ -1,0 +1,172 @@
+#include "agents/sim_transport.h"
+
+#include <gtest/gtest.h>
+#include <lcm/eventlog.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "agents/channels.h"
+#include "net_models/lcm_event_log.h"
+#include "net_models/point_to_point_link.h"
+#include "sim/simulator.h"
+
+namespace dvpr {
+namespace {
+
+// Three robots on 1 Mbit/s, 5 ms point-to-point links.
+//  query_t with 128 floats: 8 + 8 + 2 + 4 + 2 + 512 = 536 bytes; on
+//  "DVPR_QUERY_ALL" (14 chars): UDP 8 + 15 + 536 = 559, frame 559 + 28 + 2 = 589
+//  bytes = 4712 bits -> 4.712 ms + 5 ms = 9.712 ms.
+//  match_t: 8 + 8 + 2 + 4 + 2 + 1 + 2 + 4 + 4 = 35 bytes; on "DVPR_MATCH_0"
+//  (12 chars): UDP 8 + 13 + 35 = 56, frame 86 bytes -> 0.688 ms + 5 ms = 5.688 ms.
+constexpr SimTime kQueryArrival = SimTime::Micros(9712);
+constexpr SimTime kMatchArrival = SimTime::Micros(9712 + 5688);
+
+class SimTransportTest : public ::testing::Test {
+ protected:
+  static constexpr int kRobots = 3;
+  Simulator sim;
+  Network net{sim, kRobots, std::make_unique<PointToPointLink>(
+                                PointToPointParams{DataRate::Mbps(1), SimTime::Millis(5), 100, {}}, kRobots)};
+  std::vector<std::unique_ptr<SimTransport>> robots;
+
+  void SetUp() override {
+    for (int r = 0; r < kRobots; ++r) robots.push_back(std::make_unique<SimTransport>(net, NodeId(r)));
+  }
+  static query_t Query(int robot, int frame) {
+    query_t q{};
+    q.utime = 0;
+    q.robot = static_cast<std::int16_t>(robot);
+    q.frame = frame;
+    q.dim = 128;
+    q.descriptor.assign(128, 0.25f);
+    return q;
+  }
+  // Robots 1..n-1 answer every broadcast query with a match_t to the sender.
+  std::vector<Subscription> Responders() {
+    std::vector<Subscription> subs;
+    for (int r = 1; r < kRobots; ++r) {
+      SimTransport* t = robots[r].get();
+      subs.push_back(t->Subscribe<query_t>(channels::kQueryAll, [t, r](const query_t& q) {
+        match_t m{};
+        m.utime = t->Now().us();
+        m.query_robot = q.robot;
+        m.query_frame = q.frame;
+        m.responder = static_cast<std::int16_t>(r);
+        t->Publish(channels::Match(RobotId(q.robot)), m);
+      }));
+    }
+    return subs;
+  }
+};
+
+TEST_F(SimTransportTest, QueryAndRepliesArriveAtHandWorkedTimes) {
+  auto responders = Responders();
+  std::vector<std::pair<SimTime, int>> matches;
+  auto sub = robots[0]->Subscribe<match_t>(channels::Match(RobotId(0)), [&](const match_t& m) {
+    matches.emplace_back(robots[0]->Now(), m.responder);
+  });
+  EXPECT_EQ(robots[0]->Publish(channels::kQueryAll, Query(0, 17)), 536u);
+  sim.Run();
+  ASSERT_EQ(matches.size(), 2u);
+  EXPECT_EQ(matches[0], std::make_pair(kMatchArrival, 1));
+  EXPECT_EQ(matches[1], std::make_pair(kMatchArrival, 2));
+  EXPECT_EQ(net.Counters(NodeId(0), NodeId(1)).wire_bytes, 589);
+  EXPECT_EQ(net.Counters(NodeId(2), NodeId(0)).wire_bytes, 86);
+}
+
+TEST_F(SimTransportTest, ClockAndTimersAreVirtual) {
+  std::vector<SimTime> fired;
+  robots[1]->ScheduleAfter(SimTime::Millis(250), [&] { fired.push_back(robots[1]->Now()); });
+  robots[1]->ScheduleAfter(SimTime::Zero(), [&] { fired.push_back(robots[1]->Now()); });
+  sim.Run();
+  EXPECT_EQ(fired, (std::vector<SimTime>{SimTime::Zero(), SimTime::Millis(250)}));
+}
+
+TEST_F(SimTransportTest, DroppedSubscriptionStopsDelivery) {
+  int received = 0;
+  {
+    auto sub = robots[1]->Subscribe<query_t>(channels::kQueryAll, [&](const query_t&) { ++received; });
+    robots[0]->Publish(channels::kQueryAll, Query(0, 1));
+    sim.Run();
+  }
+  robots[0]->Publish(channels::kQueryAll, Query(0, 2));
+  sim.Run();
+  EXPECT_EQ(received, 1);
+  EXPECT_EQ(net.Counters(NodeId(0), NodeId(1)).messages, 1u);  // unsubscribed: no longer a destination
+}
+
+TEST_F(SimTransportTest, HandlerMayUnsubscribeItselfWithoutSkippingTheNext) {
+  std::vector<std::string> calls;
+  Subscription first;
+  first = robots[1]->Subscribe<query_t>(channels::kQueryAll, [&](const query_t&) {
+    calls.push_back("first");
+    first.Reset();
+  });
+  auto second = robots[1]->Subscribe<query_t>(channels::kQueryAll, [&](const query_t&) { calls.push_back("second"); });
+  robots[0]->Publish(channels::kQueryAll, Query(0, 1));
+  robots[0]->Publish(channels::kQueryAll, Query(0, 2));
+  sim.Run();
+  EXPECT_EQ(calls, (std::vector<std::string>{"first", "second", "second"}));
+}
+
+TEST_F(SimTransportTest, WrongTypeOnAChannelIsCountedAsMalformed) {
+  int received = 0;
+  auto sub = robots[1]->Subscribe<query_t>(channels::kQueryAll, [&](const query_t&) { ++received; });
+  robots[0]->Publish(channels::kQueryAll, match_t{});
+  sim.Run();
+  EXPECT_EQ(received, 0);
+  EXPECT_EQ(robots[1]->MalformedCount(), 1u);
+}
+
+// Writes an LCM log of a small simulation, reads it back with lcm/eventlog.h
+// and decodes every event into its type.
+TEST_F(SimTransportTest, EventLogReadsBackAndDecodes) {
+  const std::filesystem::path path = std::filesystem::path(DVPR_TEST_TMP) / "sim_transport_events.lcmlog";
+  std::filesystem::create_directories(path.parent_path());
+  {
+    LcmEventLogWriter writer(path);
+    net.SetEventLog(&writer);
+    auto responders = Responders();
+    auto sub = robots[0]->Subscribe<match_t>(channels::Match(RobotId(0)), [](const match_t&) {});
+    robots[0]->Publish(channels::kQueryAll, Query(0, 17));
+    sim.Run();
+    net.SetEventLog(nullptr);
+    EXPECT_EQ(writer.EventsWritten(), 3);  // the broadcast query once, two matches
+  }
+  lcm_eventlog_t* log = lcm_eventlog_create(path.c_str(), "r");
+  ASSERT_NE(log, nullptr);
+  std::vector<std::pair<std::string, std::int64_t>> seen;
+  int queries = 0, matches = 0;
+  while (lcm_eventlog_event_t* e = lcm_eventlog_read_next_event(log)) {
+    const std::string channel(e->channel, static_cast<std::size_t>(e->channellen));
+    const std::span<const std::uint8_t> data(static_cast<const std::uint8_t*>(e->data),
+                                             static_cast<std::size_t>(e->datalen));
+    seen.emplace_back(channel, e->timestamp);
+    if (channel == channels::kQueryAll) {
+      const auto q = Decode<query_t>(data);
+      ASSERT_TRUE(q.has_value());
+      EXPECT_EQ(q->frame, 17);
+      ++queries;
+    } else {
+      const auto m = Decode<match_t>(data);
+      ASSERT_TRUE(m.has_value()) << channel;
+      EXPECT_EQ(m->query_frame, 17);
+      ++matches;
+    }
+    lcm_eventlog_free_event(e);
+  }
+  lcm_eventlog_destroy(log);
+  EXPECT_EQ(queries, 1);
+  EXPECT_EQ(matches, 2);
+  ASSERT_EQ(seen.size(), 3u);
+  EXPECT_EQ(seen[0], std::make_pair(std::string("DVPR_QUERY_ALL"), kQueryArrival.us()));
+  EXPECT_EQ(seen[1], std::make_pair(std::string("DVPR_MATCH_0"), kMatchArrival.us()));
+  EXPECT_EQ(ReadLcmEventLog(path).size(), 3u);
+}
+
+}  // namespace
+}  // namespace dvpr
