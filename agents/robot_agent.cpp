@@ -52,10 +52,11 @@ void RobotAgent::Start() {
   }
 }
 
+// A robot that fails does not leave its channels: what others keep sending it
+// is lost in the network (and counted there), not silently unaddressed.
 void RobotAgent::GoOffline() {
   online_ = false;
   queue_.clear();
-  subscriptions_.clear();
 }
 
 bool RobotAgent::Contains(const std::vector<RobotId>& robots, RobotId r) const {
@@ -87,6 +88,7 @@ void RobotAgent::TakeFrame(int k) {
     task.querier = id_;
     task.frame = frame;
     task.descriptor.assign(descriptor, descriptor + frames_.descriptors->cols());
+    task.store = Contains(decision.store_at, id_);
     Enqueue(std::move(task));
   } else if (Contains(decision.store_at, id_)) {
     index_.Add(id_, frame, descriptor);
@@ -105,16 +107,20 @@ void RobotAgent::PublishQuery(int k, const RoutingDecision& decision) {
   const float* d = frames_.descriptors->row(frame.value).data();
   q.descriptor.assign(d, d + dim);
 
-  const bool any_remote = std::any_of(decision.search_at.begin(), decision.search_at.end(),
-                                      [this](RobotId r) { return r != id_; });
-  if (!any_remote) return;
+  // Robots that search it, then robots that only store it (boundary
+  // replication); each remote robot gets the query once.
+  std::vector<RobotId> remote;
+  for (const auto* robots : {&decision.search_at, &decision.store_at}) {
+    for (RobotId r : *robots) {
+      if (r != id_ && !Contains(remote, r)) remote.push_back(r);
+    }
+  }
+  if (remote.empty()) return;
   if (routing_.UsesBroadcastChannel()) {
     transport_.Publish(channels::kQueryAll, q);
     return;
   }
-  for (RobotId r : decision.search_at) {
-    if (r != id_) transport_.Publish(channels::Query(r), q);
-  }
+  for (RobotId r : remote) transport_.Publish(channels::Query(r), q);
 }
 
 void RobotAgent::Enqueue(Task task) {
@@ -148,10 +154,9 @@ void RobotAgent::ServeSearch(const Task& task) {
   load_.comparisons += result.comparisons;
   load_.busy += duration;
 
-  const bool store = Contains(routing_.Route(task.querier, task.descriptor.data()).store_at, id_);
-  transport_.ScheduleAfter(duration, [this, task, best = result.best, store] {
+  transport_.ScheduleAfter(duration, [this, task, best = result.best] {
     if (!online_) return;
-    if (store) {
+    if (task.store) {
       index_.Add(task.querier, task.frame, task.descriptor.data());
       ++load_.stored;
     }
@@ -200,16 +205,29 @@ void RobotAgent::ServeVerify(const Task& task) {
   });
 }
 
+// The routing decision is re-evaluated here (strategies are deterministic):
+// a robot asked to search serves the query; a robot that is only a replica
+// stores it and sends nothing back.
 void RobotAgent::OnQuery(const query_t& q) {
-  if (q.robot == id_.value || q.dim != frames_.descriptors->cols()) return;
+  if (!online_ || q.robot == id_.value || q.dim != frames_.descriptors->cols()) return;
+  const RoutingDecision decision = routing_.Route(RobotId(q.robot), q.descriptor.data());
+  if (!Contains(decision.search_at, id_)) {
+    if (Contains(decision.store_at, id_) && online_) {
+      index_.Add(RobotId(q.robot), FrameId(q.frame), q.descriptor.data());
+      ++load_.stored;
+    }
+    return;
+  }
   Task task;
   task.querier = RobotId(q.robot);
   task.frame = FrameId(q.frame);
   task.descriptor = q.descriptor;
+  task.store = Contains(decision.store_at, id_);
   Enqueue(std::move(task));
 }
 
 void RobotAgent::OnMatch(const match_t& m) {
+  if (!online_) return;
   if (m.query_robot != id_.value || LocalIndexOf(FrameId(m.query_frame)) < 0) return;
   std::optional<IndexMatch> match;
   if (m.has_match) match = IndexMatch{RobotId(m.match_robot), FrameId(m.match_frame), m.distance};
@@ -254,6 +272,7 @@ void RobotAgent::MaybeVerify(int k) {
 }
 
 void RobotAgent::OnVerifyRequest(const verify_request_t& r) {
+  if (!online_) return;
   if (r.match_robot != id_.value) return;
   Task task;
   task.kind = Task::Kind::kVerify;
@@ -265,6 +284,7 @@ void RobotAgent::OnVerifyRequest(const verify_request_t& r) {
 }
 
 void RobotAgent::OnVerifyResult(const verify_result_t& r) {
+  if (!online_) return;
   const int k = LocalIndexOf(FrameId(r.query_frame));
   if (r.query_robot != id_.value || k < 0) return;
   QueryOutcome& o = outcomes_[static_cast<std::size_t>(k)];

@@ -97,6 +97,7 @@ class RobotAgent {
     RobotId querier;
     FrameId frame;
     std::vector<float> descriptor;  // kSearch
+    bool store = false;             // kSearch: keep the descriptor after searching
     FrameId match_frame;            // kVerify
     RobotId match_robot;
   };
