@@ -39,7 +39,7 @@ std::string PlotSeries(const fs::path& data_dir, const std::string& stem, const 
   std::string cmd = "plot ";
   for (std::size_t i = 0; i < titles.size(); ++i) {
     cmd += (i ? ", \\\n     " : "") + std::string("'") + (data_dir / (stem + ".dat")).string() +
-           "' index " + std::to_string(i) + " using 1:2 " + style + " lw 2 pt 7 ps 0.8 title '" +
+           "' index " + std::to_string(i) + " using 1:2 " + style + " title '" +
            Escape(titles[i]) + "'";
   }
   return cmd + "\n";
@@ -56,7 +56,7 @@ std::string ConfusionScript(const fs::path& data_dir, const fs::path& png) {
     << "set xlabel 'frame index'\nset ylabel 'frame index'\nset cblabel 'squared L2 distance'\n"
     << "set size ratio -1\nset xrange [0:" << m * step << "]\nset yrange [" << m * step
     << ":0]\nset palette defined (0 '#000004', 1 '#3b0f70', 2 '#8c2981', 3 '#de4968', "
-       "4 '#fe9f6d', 5 '#fcfdbf')\nunset grid\n"
+       "4 '#fe9f6d', 5 '#fcfdbf')\nunset grid\nunset key\n"
     << "plot '" << (data_dir / "confusion.f32").string() << "' binary array=(" << m << "," << m
     << ") format='%float32' dx=" << step << " dy=" << step
     << " origin=(0,0) with image notitle\n";
@@ -67,7 +67,7 @@ std::string PrScript(const fs::path& data_dir, const fs::path& png) {
   return Preamble(png) +
          "set title 'Precision-recall: centralized vs decentralized (paper protocol, run 0)'\n"
          "set xlabel 'recall'\nset ylabel 'precision'\nset xrange [0:1]\nset yrange [0:1.02]\n"
-         "set key bottom left\n" + PlotSeries(data_dir, "pr_curves", "with lines");
+         "set key bottom left\n" + PlotSeries(data_dir, "pr_curves", "with lines lw 2");
 }
 
 std::string DimsScript(const fs::path& data_dir, const fs::path& png) {
@@ -101,14 +101,14 @@ std::string BytesScript(const fs::path& data_dir, const fs::path& png) {
   return Preamble(png) +
          "set title 'Bytes on the wire per query vs team size (simulation, mean over runs)'\n"
          "set xlabel 'robots n'\nset ylabel 'wire bytes per query'\nset logscale y\n"
-         "set key top left\n" + PlotSeries(data_dir, "bytes_per_query", "with linespoints");
+         "set key top left\n" + PlotSeries(data_dir, "bytes_per_query", "with linespoints lw 2 pt 7 ps 0.8");
 }
 
 std::string LatencyScript(const fs::path& data_dir, const fs::path& png) {
   return Preamble(png) +
          "set title 'Query latency vs team size (simulation, mean over runs)'\n"
          "set xlabel 'robots n'\nset ylabel 'mean query latency [ms]'\nset logscale y\n"
-         "set key top left\n" + PlotSeries(data_dir, "query_latency", "with linespoints");
+         "set key top left\n" + PlotSeries(data_dir, "query_latency", "with linespoints lw 2 pt 7 ps 0.8");
 }
 
 // Writes the script, runs gnuplot into a temporary PNG and renames it into place.

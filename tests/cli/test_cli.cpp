@@ -1,0 +1,107 @@
+// The dvpr binary on bad configs: one error line naming the key, non-zero exit, nothing written.
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status = -1;
+  std::string err;
+};
+
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(DVPR_TEST_TMP) / "cli" /
+           ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  // Writes `yaml` to a config file and runs `dvpr run` on it (stderr captured).
+  Result RunConfig(const std::string& yaml, const std::string& extra = "") {
+    const fs::path config = dir_ / "bad.yaml";
+    std::ofstream(config) << yaml;
+    return Dvpr("run '" + config.string() + "' --quiet --out '" + Out().string() + "' " + extra);
+  }
+  Result Dvpr(const std::string& args) {
+    const fs::path err = dir_ / "stderr.txt";
+    const std::string cmd = std::string("'") + DVPR_BINARY_DIR + "/dvpr' " + args + " > '" +
+                            (dir_ / "stdout.txt").string() + "' 2> '" + err.string() + "'";
+    Result r;
+    const int raw = std::system(cmd.c_str());
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    std::ifstream in(err);
+    r.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return r;
+  }
+  fs::path Out() const { return dir_ / "out"; }
+  // Exit 1, exactly one line on stderr that contains `expected`, no output folder.
+  void ExpectConfigError(const Result& r, const std::string& expected) {
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.rfind("dvpr: error: ", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(Out()));
+  }
+  fs::path dir_;
+};
+
+TEST_F(CliTest, HelpListsSubcommands) {
+  const Result r = Dvpr("--help");
+  EXPECT_EQ(r.status, 0);
+  std::ifstream in(dir_ / "stdout.txt");
+  const std::string out((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(out.find("dvpr run CONFIG.yaml"), std::string::npos);
+  EXPECT_NE(out.find("dvpr plot DIR"), std::string::npos);
+}
+
+TEST_F(CliTest, UnknownKey) {
+  ExpectConfigError(RunConfig("network: {bandwith: 10Mbps}\n"),
+                    "bad.yaml: network.bandwith: unknown key (expected one of:");
+}
+
+TEST_F(CliTest, WrongType) {
+  ExpectConfigError(RunConfig("runs: many\n"), "bad.yaml: runs: expected an integer, got 'many'");
+}
+
+TEST_F(CliTest, MissingFile) {
+  ExpectConfigError(RunConfig("dataset: {source: files, descriptors: nothing_here.npy}\n"),
+                    "bad.yaml: dataset.descriptors: file not found: 'nothing_here.npy'");
+}
+
+TEST_F(CliTest, RobotsBelowTwo) {
+  ExpectConfigError(RunConfig("robots: [1, 4]\n"), "bad.yaml: robots[0]: must be at least 2");
+}
+
+TEST_F(CliTest, RunsBelowOne) {
+  ExpectConfigError(RunConfig("runs: 0\n"), "bad.yaml: runs: must be at least 1, got 0");
+}
+
+TEST_F(CliTest, BandwidthWithoutUnit) {
+  ExpectConfigError(RunConfig("network: {bandwidth: 10}\n"),
+                    "bad.yaml: network.bandwidth: expected a data rate with a unit");
+}
+
+TEST_F(CliTest, DimLargerThanDescriptors) {
+  std::ofstream(dir_ / "d.csv") << "1,2,3\n4,5,6\n7,8,9\n";
+  std::ofstream poses(dir_ / "p.txt");
+  for (int i = 0; i < 3; ++i) poses << "1 0 0 " << i << " 0 1 0 0 0 0 1 0\n";
+  poses.close();
+  ExpectConfigError(RunConfig("dataset: {source: files, poses: p.txt, descriptors: d.csv, "
+                              "dim: 8}\nrobots: [2]\nprotocols: [paper]\n"),
+                    "bad.yaml: dataset.descriptors: ");
+}
+
+TEST_F(CliTest, BadOverride) {
+  ExpectConfigError(RunConfig("runs: 2\n", "--set runs=0"), "runs: must be at least 1");
+}
+
+}  // namespace
