@@ -1,11 +1,11 @@
-// The protocols `dvpr run` knows: the static paper protocol (experiments/static_protocol.h).
-// The simulation registers here too once its run function exists (issue 5); until then a config
-// asking for protocol sim is refused by RunExperiment with a message saying so.
+// The protocols `dvpr run` knows: the static paper protocol (experiments/static_protocol.h)
+// and the simulation (experiments/sim_protocol.h).
 #include <algorithm>
 #include <iterator>
 #include <memory>
 
 #include "experiments/run_executor.h"
+#include "experiments/sim_protocol.h"
 #include "experiments/static_protocol.h"
 
 namespace dvpr {
@@ -89,6 +89,7 @@ RunFunction MakePaperRun(const SharedInputs& in) {
 ProtocolRegistry BuiltinProtocols() {
   ProtocolRegistry registry;
   registry.Add("paper", MakePaperRun);
+  registry.Add("sim", MakeSimRun);
   return registry;
 }
 

@@ -177,6 +177,12 @@ CentroidMatrix RunCentroids(const DescriptorMatrix& training, const PaperProtoco
 
 }  // namespace
 
+CentroidMatrix PaperRunCentroids(const DescriptorMatrix& training, const PaperProtocolParams& params,
+                                 int robots, int run) {
+  std::uint64_t seed = 0;
+  return RunCentroids(training, params, robots, run, seed);
+}
+
 PaperRunResult RunPaperRun(const PaperEvaluator& evaluator, const DescriptorMatrix& training,
                            const PaperProtocolParams& params, int robots, int run) {
   auto start = std::chrono::steady_clock::now();

@@ -111,6 +111,12 @@ class PaperEvaluator {
   PaperTimings timings_;
 };
 
+// The centroids of run (robots, run): k-means with PaperRunSeed on `training`, or the file
+// params.centroids_pattern names. The simulation uses the same ones, so its runs compare
+// with the paper protocol's.
+CentroidMatrix PaperRunCentroids(const DescriptorMatrix& training, const PaperProtocolParams& params,
+                                 int robots, int run);
+
 // One (robots, run) of the sweep: centroids (k-means on `training` or loaded), routing, metrics,
 // centroids written if asked.
 PaperRunResult RunPaperRun(const PaperEvaluator& evaluator, const DescriptorMatrix& training,
