@@ -14,9 +14,10 @@ namespace dvpr {
 class EventCallback {
  public:
   // Room for a std::function (32 bytes on libstdc++) or a lambda capturing up
-  // to six pointers.
-  static constexpr std::size_t kInlineSize = 48;
-  static constexpr std::size_t kInlineAlign = alignof(std::max_align_t);
+  // to five pointers; with the two function pointers and the Simulator's key,
+  // a slot is one 64-byte cache line.
+  static constexpr std::size_t kInlineSize = 40;
+  static constexpr std::size_t kInlineAlign = alignof(void*);
 
   EventCallback() = default;
   EventCallback(const EventCallback&) = delete;

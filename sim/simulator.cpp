@@ -4,18 +4,7 @@
 #include <string>
 
 namespace dvpr {
-namespace {
-
-struct Earlier {
-  template <typename E>
-  bool operator()(const E& a, const E& b) const {
-    return a.time < b.time || (a.time == b.time && a.key < b.key);
-  }
-};
-
-}  // namespace
-
-Simulator::Simulator() { heap_.reserve(1024); }
+Simulator::Simulator() = default;
 Simulator::~Simulator() = default;
 
 std::pair<std::uint64_t, std::uint64_t> Simulator::AllocateSlot() {
@@ -34,42 +23,6 @@ std::pair<std::uint64_t, std::uint64_t> Simulator::AllocateSlot() {
   SlotAt(slot).key = key;
   ++pending_;
   return {slot, key};
-}
-
-// Sift-up with a hole: one write per level instead of a swap.
-void Simulator::Push(SimTime when, std::uint64_t key) {
-  const Entry e{when.ns(), key};
-  std::size_t i = heap_.size();
-  heap_.push_back(e);
-  Entry* h = heap_.data();
-  while (i > 0) {
-    const std::size_t parent = (i - 1) / 2;
-    if (!Earlier{}(e, h[parent])) break;
-    h[i] = h[parent];
-    i = parent;
-  }
-  h[i] = e;
-}
-
-// Moves the last entry into the root's hole, sifting it down.
-Simulator::Entry Simulator::PopTop() {
-  Entry* h = heap_.data();
-  const Entry top = h[0];
-  const Entry last = h[heap_.size() - 1];
-  heap_.pop_back();
-  const std::size_t n = heap_.size();
-  if (n == 0) return top;
-  std::size_t i = 0;
-  for (;;) {
-    std::size_t child = 2 * i + 1;
-    if (child >= n) break;
-    if (child + 1 < n && Earlier{}(h[child + 1], h[child])) ++child;
-    if (!Earlier{}(h[child], last)) break;
-    h[i] = h[child];
-    i = child;
-  }
-  h[i] = last;
-  return top;
 }
 
 bool Simulator::Cancel(EventId id) {
@@ -106,8 +59,8 @@ void Simulator::Execute(const Entry& e) {
 void Simulator::RunUntil(std::int64_t until) {
   stop_ = false;
   while (!heap_.empty() && !stop_) {
-    if (heap_.front().time > until) break;
-    const Entry e = PopTop();
+    if (heap_.top().time > until) break;
+    const Entry e = heap_.Pop();
     if (SlotAt(e.key & kSlotMask).key != e.key) continue;  // cancelled
     Execute(e);
   }

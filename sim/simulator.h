@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "sim/event_callback.h"
+#include "sim/event_heap.h"
 #include "sim/sim_time.h"
 
 namespace dvpr {
@@ -78,11 +79,9 @@ class Simulator {
   static constexpr std::uint64_t kSlotMask = (std::uint64_t{1} << kSlotBits) - 1;
   static constexpr int kChunkBits = 12;  // slots per slab chunk: 4096
 
-  struct Entry {
-    std::int64_t time;
-    std::uint64_t key;
-  };
-  struct Slot {
+  using Entry = EventHeap::Entry;
+  // One cache line per pending event.
+  struct alignas(64) Slot {
     EventCallback fn;
     std::uint64_t key = 0;  // key of the pending event here; 0 when free or running
   };
@@ -91,15 +90,14 @@ class Simulator {
     return chunks_[slot >> kChunkBits][slot & ((std::uint64_t{1} << kChunkBits) - 1)];
   }
   std::pair<std::uint64_t, std::uint64_t> AllocateSlot();
-  void Push(SimTime when, std::uint64_t key);
-  Entry PopTop();
+  void Push(SimTime when, std::uint64_t key) { heap_.Push(Entry{when.ns(), key}); }
   void RunUntil(std::int64_t until);
   void Execute(const Entry& e);
   [[noreturn]] static void ThrowNegativeDelay(SimTime delay);
   [[noreturn]] void ThrowPast(SimTime when) const;
 
   SimTime now_;
-  std::vector<Entry> heap_;
+  EventHeap heap_;
   std::vector<std::unique_ptr<Slot[]>> chunks_;
   std::vector<std::uint32_t> free_slots_;
   std::uint64_t slots_used_ = 0;  // slots ever handed out (high-water mark)
