@@ -84,7 +84,9 @@ CentroidMatrix SeedPlusPlus(const Points& p, int k, Xoshiro256& rng) {
 
 struct Assignment {
   std::vector<int> labels;
-  std::vector<float> distance;  // squared distance to the assigned centroid
+  std::vector<float> distance;  // squared distance to the assigned centroid (full passes only)
+  std::vector<double> upper;    // Hamerly: >= distance to the assigned centroid (not squared)
+  std::vector<double> lower;    // Hamerly: <= distance to every other centroid
   SumMatrix sums;               // per cluster, sum of its points (double: order-independent enough)
   std::vector<Index> counts;
   double inertia = 0;
@@ -110,15 +112,23 @@ void Assign(const Points& p, const CentroidMatrix& centers, Assignment& a) {
       const Index i = first + r;
       int best = 0;
       float best_score = cn[0] - 2.0f * dots(r, 0);
+      float second_score = std::numeric_limits<float>::infinity();
       for (Index c = 1; c < k; ++c) {
         const float score = cn[c] - 2.0f * dots(r, c);
-        if (score < best_score) best_score = score, best = static_cast<int>(c);
+        if (score < best_score) {
+          second_score = best_score, best_score = score, best = static_cast<int>(c);
+        } else if (score < second_score) {
+          second_score = score;
+        }
       }
       auto& label = a.labels[static_cast<std::size_t>(i)];
       a.changed += (label != best);
       label = best;
       const float dist = std::max(0.0f, p.norms[i] + best_score);
       a.distance[static_cast<std::size_t>(i)] = dist;
+      a.upper[static_cast<std::size_t>(i)] = std::sqrt(static_cast<double>(dist));
+      a.lower[static_cast<std::size_t>(i)] =
+          std::sqrt(static_cast<double>(std::max(0.0f, p.norms[i] + second_score)));
       a.inertia += dist;
       a.sums.row(best) += p.x.row(i).cast<double>();
       ++a.counts[static_cast<std::size_t>(best)];
@@ -156,40 +166,164 @@ int RelocateEmpty(const Points& p, Assignment& a) {
   return static_cast<int>(empty.size());
 }
 
+// Mean over dimensions of the per-dimension variance, in one streaming pass (no double copy).
 double MeanVariance(const DescriptorMatrix& x) {
-  const Eigen::RowVectorXd mean = x.cast<double>().colwise().mean();
-  const double ss = (x.cast<double>().rowwise() - mean).squaredNorm();
-  return ss / static_cast<double>(x.rows() * x.cols());
+  Eigen::RowVectorXd sum = Eigen::RowVectorXd::Zero(x.cols());
+  Eigen::RowVectorXd sum_sq = Eigen::RowVectorXd::Zero(x.cols());
+  for (Index i = 0; i < x.rows(); ++i) {
+    const Eigen::RowVectorXd row = x.row(i).cast<double>();
+    sum += row;
+    sum_sq += row.cwiseProduct(row);
+  }
+  const double n = static_cast<double>(x.rows());
+  return (sum_sq / n - (sum / n).cwiseProduct(sum / n)).mean();
 }
 
+// Half the distance from each centroid to its nearest other centroid: a point closer than that
+// to its own centroid cannot be closer to any other (Hamerly 2010).
+std::vector<double> HalfGaps(const CentroidMatrix& centers) {
+  const Index k = centers.rows();
+  std::vector<double> gap(static_cast<std::size_t>(k), std::numeric_limits<double>::infinity());
+  for (Index c = 0; c < k; ++c) {
+    for (Index o = 0; o < k; ++o) {
+      if (o == c) continue;
+      const double d = std::sqrt(static_cast<double>((centers.row(c) - centers.row(o)).squaredNorm()));
+      gap[static_cast<std::size_t>(c)] = std::min(gap[static_cast<std::size_t>(c)], 0.5 * d);
+    }
+  }
+  return gap;
+}
+
+// Nearest and second-nearest centroid of the points `todo` (gathered in blocks for GEMM); moves
+// the points that change cluster, with their sums.
+void ReassignGathered(const Points& p, const CentroidMatrix& centers, const std::vector<Index>& todo,
+                      Assignment& a) {
+  const Index k = centers.rows();
+  const Eigen::VectorXf cn = SquaredNorms(centers);
+  DescriptorMatrix block;
+  DistanceMatrix dots;
+  for (std::size_t first = 0; first < todo.size(); first += kBlockRows) {
+    const auto rows = static_cast<Index>(std::min<std::size_t>(kBlockRows, todo.size() - first));
+    block.resize(rows, p.x.cols());
+    for (Index r = 0; r < rows; ++r) block.row(r) = p.x.row(todo[first + static_cast<std::size_t>(r)]);
+    dots.resize(rows, k);
+    dots.noalias() = block * centers.transpose();
+    for (Index r = 0; r < rows; ++r) {
+      const Index i = todo[first + static_cast<std::size_t>(r)];
+      const auto ui = static_cast<std::size_t>(i);
+      int best = 0;
+      float best_score = std::numeric_limits<float>::infinity();
+      float second_score = best_score;
+      for (Index c = 0; c < k; ++c) {
+        const float score = cn[c] - 2.0f * dots(r, c);
+        if (score < best_score) {
+          second_score = best_score, best_score = score, best = static_cast<int>(c);
+        } else if (score < second_score) {
+          second_score = score;
+        }
+      }
+      a.upper[ui] = std::sqrt(static_cast<double>(std::max(0.0f, p.norms[i] + best_score)));
+      a.lower[ui] = std::sqrt(static_cast<double>(std::max(0.0f, p.norms[i] + second_score)));
+      const int own = a.labels[ui];
+      if (best == own) continue;
+      ++a.changed;
+      a.sums.row(own) -= p.x.row(i).cast<double>();
+      a.sums.row(best) += p.x.row(i).cast<double>();
+      --a.counts[static_cast<std::size_t>(own)];
+      ++a.counts[static_cast<std::size_t>(best)];
+      a.labels[ui] = best;
+    }
+  }
+}
+
+// One Hamerly assignment pass: only points whose bounds cannot exclude a change are measured,
+// and the sums follow the points that move.
+void AssignWithBounds(const Points& p, const CentroidMatrix& centers, Assignment& a,
+                      std::vector<Index>& todo) {
+  const std::vector<double> gap = HalfGaps(centers);
+  a.changed = 0;
+  todo.clear();
+  for (Index i = 0; i < p.x.rows(); ++i) {
+    const auto ui = static_cast<std::size_t>(i);
+    const int own = a.labels[ui];
+    const double limit = std::max(gap[static_cast<std::size_t>(own)], a.lower[ui]);
+    if (a.upper[ui] <= limit) continue;
+    a.upper[ui] = std::sqrt(static_cast<double>((p.x.row(i) - centers.row(own)).squaredNorm()));
+    if (a.upper[ui] <= limit) continue;
+    todo.push_back(i);
+  }
+  ReassignGathered(p, centers, todo, a);
+}
+
+// Loosens the bounds by how far the centroids moved.
+void MoveBounds(const std::vector<double>& moved, Assignment& a) {
+  std::size_t far = 0;
+  for (std::size_t c = 1; c < moved.size(); ++c) far = moved[c] > moved[far] ? c : far;
+  double second = 0;
+  for (std::size_t c = 0; c < moved.size(); ++c) second = c == far ? second : std::max(second, moved[c]);
+  for (std::size_t i = 0; i < a.labels.size(); ++i) {
+    const auto own = static_cast<std::size_t>(a.labels[i]);
+    a.upper[i] += moved[own];
+    a.lower[i] -= own == far ? second : moved[far];
+  }
+}
+
+// Exact squared distance of every point to its own centroid (for the empty-cluster re-seed).
+void OwnDistances(const Points& p, const CentroidMatrix& centers, Assignment& a) {
+  for (Index i = 0; i < p.x.rows(); ++i) {
+    a.distance[static_cast<std::size_t>(i)] =
+        (p.x.row(i) - centers.row(a.labels[static_cast<std::size_t>(i)])).squaredNorm();
+  }
+}
+
+// Lloyd's iterations, accelerated with Hamerly's bounds: the same fixed points as plain Lloyd
+// (up to float rounding), but late iterations measure only the few points near a boundary.
 KMeansResult Lloyd(const Points& p, const KMeansParams& params, std::uint64_t seed,
                    double abs_tolerance) {
   Xoshiro256 rng(seed);
   KMeansResult result;
   result.centroids = SeedPlusPlus(p, params.k, rng);
   Assignment a;
-  a.labels.assign(static_cast<std::size_t>(p.x.rows()), -1);
-  a.distance.assign(static_cast<std::size_t>(p.x.rows()), 0.0f);
+  const auto n = static_cast<std::size_t>(p.x.rows());
+  a.labels.assign(n, -1);
+  a.distance.assign(n, 0.0f);
+  a.upper.assign(n, 0.0);
+  a.lower.assign(n, 0.0);
+  bool full = true;  // first pass, and after a re-seed: measure everything with GEMM
+  std::vector<double> moved(static_cast<std::size_t>(params.k));
+  std::vector<Index> todo;
   for (int it = 0; it < params.max_iterations; ++it) {
-    Assign(p, result.centroids, a);
+    if (full) {
+      Assign(p, result.centroids, a);
+    } else {
+      AssignWithBounds(p, result.centroids, a, todo);
+    }
     result.iterations = it + 1;
     if (it > 0 && a.changed == 0) {  // same labels, same centroids: a fixed point
       result.converged = true;
       break;
     }
-    result.empty_cluster_reseeds += RelocateEmpty(p, a);
+    full = std::find(a.counts.begin(), a.counts.end(), 0) != a.counts.end();
+    if (full) {
+      OwnDistances(p, result.centroids, a);
+      result.empty_cluster_reseeds += RelocateEmpty(p, a);
+    }
     double shift = 0;
     for (Index c = 0; c < result.centroids.rows(); ++c) {
       const auto count = a.counts[static_cast<std::size_t>(c)];
+      moved[static_cast<std::size_t>(c)] = 0;
       if (count == 0) continue;  // no point to move it to: keep the old centroid
       const Eigen::RowVectorXf mean = (a.sums.row(c) / static_cast<double>(count)).cast<float>();
-      shift += (mean - result.centroids.row(c)).cast<double>().squaredNorm();
+      const double step = (mean - result.centroids.row(c)).cast<double>().squaredNorm();
+      shift += step;
+      moved[static_cast<std::size_t>(c)] = std::sqrt(step);
       result.centroids.row(c) = mean;
     }
     if (shift <= abs_tolerance) {
       result.converged = true;
       break;
     }
+    if (!full) MoveBounds(moved, a);
   }
   Assign(p, result.centroids, a);  // labels and inertia of the final centroids
   result.labels = std::move(a.labels);
@@ -205,7 +339,7 @@ KMeansResult KMeansDetailed(const DescriptorMatrix& points, const KMeansParams& 
     throw std::invalid_argument("KMeans: " + std::to_string(points.rows()) +
                                 " points for k = " + std::to_string(params.k));
   }
-  if (!points.allFinite()) throw std::invalid_argument("KMeans: points contain NaN or Inf");
+  if (!AllFinite(points)) throw std::invalid_argument("KMeans: points contain NaN or Inf");
   const Points p{points, SquaredNorms(points)};
   const double abs_tolerance = params.tolerance * MeanVariance(points);
   KMeansResult best;

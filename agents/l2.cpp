@@ -63,6 +63,22 @@ float GemmErrorBound(float sq_norm_a, float sq_norm_b, Eigen::Index dim) {
   return static_cast<float>(2.0 * static_cast<double>(dim + 4) * 0x1.0p-24 * scale * scale);
 }
 
+bool AllFinite(const DescriptorMatrix& m) {
+  // x * 0 is 0 for finite x and NaN otherwise; independent lanes keep the sum vectorisable.
+  constexpr int kLanes = 16;
+  float acc[kLanes] = {};
+  const float* p = m.data();
+  const Eigen::Index n = m.size();
+  Eigen::Index i = 0;
+  for (; i + kLanes <= n; i += kLanes) {
+    for (int l = 0; l < kLanes; ++l) acc[l] += p[i + l] * 0.0f;
+  }
+  for (int l = 0; i < n; ++i, ++l) acc[l] += p[i] * 0.0f;
+  float total = 0;
+  for (float a : acc) total += a;
+  return total == 0.0f;
+}
+
 std::vector<int> NearestRows(const DescriptorMatrix& queries, const DescriptorMatrix& references) {
   if (references.rows() == 0) throw std::invalid_argument("NearestRows: no references");
   const Eigen::VectorXf q_norms = SquaredNorms(queries);

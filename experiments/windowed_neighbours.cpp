@@ -21,7 +21,7 @@ WindowedNeighbours::WindowedNeighbours(const DescriptorMatrix& descriptors, int 
     : x_(descriptors), n_(descriptors.rows()), window_(suppression_frames), list_size_(list_size) {
   if (suppression_frames < 0) throw std::invalid_argument("WindowedNeighbours: window < 0");
   if (list_size < 1) throw std::invalid_argument("WindowedNeighbours: list_size must be >= 1");
-  if (!descriptors.allFinite()) {
+  if (!AllFinite(descriptors)) {
     throw std::invalid_argument("WindowedNeighbours: descriptors contain NaN or Inf");
   }
   const auto cells = static_cast<std::size_t>(n_) * static_cast<std::size_t>(list_size_);
