@@ -14,9 +14,10 @@ namespace {
 namespace fs = std::filesystem;
 
 // Same terminal, font and size for every figure; `noenhanced` so underscores print as such.
+// Scripts run in figures/data/, so the PNG (in figures/) is one level up.
 std::string Preamble(const fs::path& png, int width = 900, int height = 600) {
   return "set terminal pngcairo size " + std::to_string(width) + "," + std::to_string(height) +
-         " font 'DejaVu Sans,11' noenhanced\nset output '" + png.string() +
+         " font 'DejaVu Sans,11' noenhanced\nset output '../" + png.filename().string() +
          "'\nset grid lc rgb '#dddddd'\nset border lw 1\nset key box opaque\n";
 }
 
@@ -38,7 +39,7 @@ std::string PlotSeries(const fs::path& data_dir, const std::string& stem, const 
   const auto titles = ReadLines(data_dir / (stem + ".titles"));
   std::string cmd = "plot ";
   for (std::size_t i = 0; i < titles.size(); ++i) {
-    cmd += (i ? ", \\\n     " : "") + std::string("'") + (data_dir / (stem + ".dat")).string() +
+    cmd += (i ? ", \\\n     " : "") + std::string("'") + stem + ".dat" +
            "' index " + std::to_string(i) + " using 1:2 " + style + " title '" +
            Escape(titles[i]) + "'";
   }
@@ -57,7 +58,7 @@ std::string ConfusionScript(const fs::path& data_dir, const fs::path& png) {
     << "set size ratio -1\nset xrange [0:" << m * step << "]\nset yrange [" << m * step
     << ":0]\nset palette defined (0 '#000004', 1 '#3b0f70', 2 '#8c2981', 3 '#de4968', "
        "4 '#fe9f6d', 5 '#fcfdbf')\nunset grid\nunset key\n"
-    << "plot '" << (data_dir / "confusion.f32").string() << "' binary array=(" << m << "," << m
+    << "plot 'confusion.f32' binary array=(" << m << "," << m
     << ") format='%float32' dx=" << step << " dy=" << step
     << " origin=(0,0) with image notitle\n";
   return s.str();
@@ -81,7 +82,7 @@ std::string DimsScript(const fs::path& data_dir, const fs::path& png) {
 std::string RelativeAucScript(const fs::path& data_dir, const fs::path& png) {
   const std::string protocol = ReadLines(data_dir / "relative_auc.protocol").at(0);
   auto panel = [&](const std::string& stem, const std::string& ylabel, const std::string& title) {
-    const std::string dat = (data_dir / (stem + ".dat")).string();
+    const std::string dat = stem + ".dat";
     return "set title '" + title + "'\nset xlabel 'robots n'\nset ylabel '" + ylabel +
            "'\nplot '" + dat + "' index 0 using 1:2 with points pt 7 ps 0.6 lc rgb '#7f9fcf' "
            "title 'every run', '" + dat + "' index 1 using 1:2 with linespoints lw 2 pt 7 "
@@ -118,7 +119,10 @@ bool Draw(const fs::path& data_dir, const fs::path& png, const std::string& name
   const fs::path gp = data_dir / (name + ".gp");
   WriteFileAtomic(gp, script(data_dir, tmp));
   const fs::path err = data_dir / (name + ".log");
-  const std::string cmd = "gnuplot '" + gp.string() + "' 2> '" + err.string() + "'";
+  // Run inside the data folder: the scripts name their files relative to it, so they do not
+  // depend on where the results folder is (and can be rerun after moving it).
+  const std::string cmd = "cd '" + data_dir.string() + "' && gnuplot '" + gp.filename().string() +
+                          "' 2> '" + err.filename().string() + "'";
   if (std::system(cmd.c_str()) != 0 || !fs::exists(tmp)) {
     log << "dvpr: figure " << png.filename().string() << " not drawn (gnuplot failed, see "
         << err.string() << ")\n";
