@@ -1,89 +1,161 @@
 #include "agents/lcm_transport.h"
 
+#include <poll.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 namespace dvpr {
 
 LcmTransport::LcmTransport(const std::string& url, double speedup)
-    : lcm_(url), speedup_(speedup), start_(std::chrono::steady_clock::now()) {
+    : lcm_(url), speedup_(speedup), zero_(WallClock::now()) {
+  if (!(speedup > 0.0) || !std::isfinite(speedup)) {
+    throw std::invalid_argument("LcmTransport: speedup must be a positive number");
+  }
   if (!lcm_.good()) {
     throw std::runtime_error("LCM could not be initialised with URL '" + url +
                              "' (for loopback multicast the interface needs multicast enabled and a route "
                              "for 224.0.0.0/4, see README)");
   }
-  if (!(speedup > 0.0)) throw std::invalid_argument("LcmTransport: speedup must be positive");
 }
 
 LcmTransport::~LcmTransport() {
-  for (auto& [id, h] : handlers_) lcm_.unsubscribe(h->subscription);
+  for (auto& [channel, sub] : channels_) lcm_.unsubscribe(sub.subscription);
+}
+
+LcmTransport::WallClock::duration LcmTransport::ToWall(SimTime agent) const {
+  const double ns = static_cast<double>(agent.ns()) / speedup_;
+  return std::chrono::duration_cast<WallClock::duration>(std::chrono::nanoseconds(std::llround(ns)));
 }
 
 SimTime LcmTransport::Now() const {
-  const auto wall = std::chrono::steady_clock::now() - start_;
-  const double ns = static_cast<double>(std::chrono::duration_cast<std::chrono::nanoseconds>(wall).count());
-  return SimTime::Nanos(std::llround(ns * speedup_));
+  const auto wall = std::chrono::duration_cast<std::chrono::nanoseconds>(WallClock::now() - zero_);
+  return SimTime::Nanos(std::llround(static_cast<double>(wall.count()) * speedup_));
+}
+
+void LcmTransport::SetEpoch(std::chrono::system_clock::time_point epoch) {
+  // steady_clock cannot be set, system_clock can: convert once, now.
+  const auto from_now = epoch - std::chrono::system_clock::now();
+  zero_ = WallClock::now() + std::chrono::duration_cast<WallClock::duration>(from_now);
 }
 
 void LcmTransport::ScheduleAfter(SimTime delay, Callback fn) {
   const std::uint64_t id = next_id_++;
-  timers_.push(Timer{Now() + std::max(delay, SimTime::Zero()), id});
+  const WallClock::time_point base = std::max(running_due_.value_or(WallClock::now()), zero_);
+  timers_.push(Timer{base + ToWall(std::max(delay, SimTime::Zero())), id});
   timer_callbacks_.emplace(id, std::move(fn));
 }
 
 void LcmTransport::DoPublish(const std::string& channel, const char*, std::vector<std::uint8_t> bytes) {
-  if (lcm_.publish(channel, bytes.data(), static_cast<unsigned>(bytes.size())) == 0) {
-    ++published_;
-    published_bytes_ += bytes.size();
+  if (lcm_.publish(channel, bytes.data(), static_cast<unsigned>(bytes.size())) != 0) {
+    ++publish_failures_;  // a full socket buffer: the message is lost, like a dropped packet
+    return;
   }
+  ++published_;
+  published_bytes_ += bytes.size();
+  if (on_publish_) on_publish_(channel, bytes);
 }
 
 std::uint64_t LcmTransport::DoSubscribe(const std::string& channel, RawHandler handler) {
   const std::uint64_t id = next_id_++;
-  auto h = std::make_unique<Handler>(Handler{this, std::move(handler), nullptr});
-  h->subscription = lcm_.subscribeFunction(channel, &LcmTransport::OnRaw, h.get());
-  handlers_.emplace(id, std::move(h));
+  ChannelSubscription& sub = channels_[channel];
+  if (sub.subscription == nullptr) {
+    // LCM treats the channel as a regular expression; ours are plain names.
+    sub.subscription = lcm_.subscribeFunction(channel, &LcmTransport::OnRaw, this);
+    if (sub.subscription == nullptr) throw std::runtime_error("LCM: cannot subscribe to " + channel);
+  }
+  sub.handlers.emplace(id, std::move(handler));
+  channel_of_.emplace(id, channel);
   return id;
 }
 
 void LcmTransport::DoUnsubscribe(std::uint64_t id) {
-  const auto it = handlers_.find(id);
-  if (it == handlers_.end()) return;
-  lcm_.unsubscribe(it->second->subscription);
-  handlers_.erase(it);
+  const auto it = channel_of_.find(id);
+  if (it == channel_of_.end()) return;
+  const auto sub = channels_.find(it->second);
+  sub->second.handlers.erase(id);
+  if (sub->second.handlers.empty()) {
+    lcm_.unsubscribe(sub->second.subscription);
+    channels_.erase(sub);
+  }
+  channel_of_.erase(it);
 }
 
-void LcmTransport::OnRaw(const lcm::ReceiveBuffer* rbuf, const std::string& channel, Handler* handler) {
-  ++handler->self->received_;
-  handler->fn(channel, std::span(static_cast<const std::uint8_t*>(rbuf->data), rbuf->data_size));
+void LcmTransport::OnRaw(const lcm::ReceiveBuffer* rbuf, const std::string& channel, LcmTransport* self) {
+  const std::span<const std::uint8_t> bytes(static_cast<const std::uint8_t*>(rbuf->data), rbuf->data_size);
+  self->Dispatch(channel, bytes);
+}
+
+void LcmTransport::Dispatch(const std::string& channel, std::span<const std::uint8_t> bytes) {
+  ++received_;
+  if (on_receive_ && !on_receive_(channel, bytes)) return;
+  const auto sub = channels_.find(channel);
+  if (sub == channels_.end()) return;
+  // A handler may unsubscribe (itself or others): call copies, skip removed ones.
+  std::vector<std::uint64_t> ids;
+  for (const auto& [id, fn] : sub->second.handlers) ids.push_back(id);
+  for (std::uint64_t id : ids) {
+    const auto again = channels_.find(channel);
+    if (again == channels_.end()) return;
+    const auto h = again->second.handlers.find(id);
+    if (h == again->second.handlers.end()) continue;
+    RawHandler fn = h->second;
+    fn(channel, bytes);
+  }
 }
 
 void LcmTransport::RunDueTimers() {
-  while (!timers_.empty() && timers_.top().when <= Now() && !stopped_) {
+  while (!timers_.empty() && !stopped_ && timers_.top().due <= WallClock::now()) {
     const Timer t = timers_.top();
     timers_.pop();
     auto it = timer_callbacks_.find(t.seq);
     Callback fn = std::move(it->second);
     timer_callbacks_.erase(it);
-    fn();
+    running_due_ = t.due;
+    try {
+      fn();
+    } catch (...) {
+      running_due_.reset();
+      throw;
+    }
+    running_due_.reset();
   }
 }
 
-bool LcmTransport::Run(SimTime deadline) {
+// Waits up to `wait` for a message and handles at most one.
+void LcmTransport::WaitAndHandle(WallClock::duration wait) {
+  const int fd = lcm_.getFileno();
+  if (fd < 0) throw std::runtime_error("LCM: no file descriptor to wait on");
+  const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(std::max(wait, WallClock::duration::zero()));
+  timespec timeout{static_cast<time_t>(ns.count() / 1000000000), static_cast<long>(ns.count() % 1000000000)};
+  pollfd pfd{fd, POLLIN, 0};
+  const int ready = ppoll(&pfd, 1, &timeout, nullptr);
+  if (ready < 0) {
+    if (errno == EINTR) return;
+    throw std::runtime_error(std::string("LCM: poll failed: ") + std::strerror(errno));
+  }
+  if (ready > 0 && lcm_.handle() != 0) throw std::runtime_error("LCM: handle failed");
+}
+
+bool LcmTransport::RunUntilWall(WallClock::time_point deadline) {
   while (!stopped_) {
     RunDueTimers();
     if (stopped_) break;
-    const SimTime now = Now();
+    const auto now = WallClock::now();
     if (now >= deadline) return false;
-    SimTime wait = deadline - now;
-    if (!timers_.empty()) wait = std::min(wait, timers_.top().when - now);
-    // Agent time runs `speedup_` times faster than the wall clock.
-    const double wall_ms = std::max(0.0, wait.ToMillis() / speedup_);
-    const int timeout_ms = static_cast<int>(std::min(std::ceil(wall_ms), 100.0));
-    if (lcm_.handleTimeout(timeout_ms) < 0) throw std::runtime_error("LCM: handleTimeout failed");
+    auto wait = deadline - now;
+    if (!timers_.empty()) wait = std::min(wait, timers_.top().due - now);
+    WaitAndHandle(wait);
   }
   return true;
+}
+
+bool LcmTransport::Run(SimTime deadline) {
+  if (deadline == SimTime::Max()) return RunUntilWall(WallClock::time_point::max());
+  return RunUntilWall(zero_ + ToWall(deadline));
 }
 
 }  // namespace dvpr

@@ -1,13 +1,27 @@
 #pragma once
 // Transport over real LCM (UDP multicast by default): the same agents, run as
 // processes in wall-clock time. Timers and message handlers run on the thread
-// that calls Run(), so agent code needs no locks, as in the simulator.
+// that calls Run()/RunUntilWall(), so agent code needs no locks, as in the
+// simulator.
+//
+// The agent clock: agent time = (wall time since the epoch) x speedup. The
+// epoch is construction time until SetEpoch() moves it (a team starts
+// together at an agreed wall-clock instant). Timers are kept in wall time, so
+// moving the epoch does not move timers already scheduled; a timer scheduled
+// before the epoch counts its delay from the epoch ("time stands still until
+// the start"). A timer scheduled from inside a timer callback counts from that
+// timer's due time, not from when the callback happened to run, so a periodic
+// chain (a frame every 1/fps) does not drift when the process is scheduled
+// late. Waits use ppoll() with nanosecond timeouts, so short service-time
+// timers are not rounded up to whole milliseconds.
 #include <chrono>
 #include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <queue>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -19,53 +33,93 @@ namespace dvpr {
 
 class LcmTransport final : public Transport {
  public:
+  using WallClock = std::chrono::steady_clock;
+  // Sees every publication.
+  using Observer = std::function<void(const std::string& channel, std::span<const std::uint8_t> bytes)>;
+  // Sees every message of a subscribed channel before it is decoded (once per
+  // datagram, whatever the number of subscriptions); false drops it unseen
+  // by the handlers (e.g. a well-formed message from outside the team).
+  using Filter = std::function<bool(const std::string& channel, std::span<const std::uint8_t> bytes)>;
+
   // url: an LCM provider URL, e.g. "udpm://239.255.76.67:7667?ttl=0"; empty
   // uses LCM's default (or $LCM_DEFAULT_URL). speedup > 1 runs the agent's
   // clock faster than the wall clock (frames at fps x speedup).
   // Throws std::runtime_error when LCM cannot be initialised.
   explicit LcmTransport(const std::string& url, double speedup = 1.0);
   ~LcmTransport() override;
+  LcmTransport(const LcmTransport&) = delete;
+  LcmTransport& operator=(const LcmTransport&) = delete;
 
-  SimTime Now() const override;
+  SimTime Now() const override;  // negative before the epoch
   void ScheduleAfter(SimTime delay, Callback fn) override;
+
+  // Agent time 0 is the wall-clock instant `epoch` (may be in the future).
+  void SetEpoch(std::chrono::system_clock::time_point epoch);
+  double speedup() const { return speedup_; }
 
   // Handles messages and timers until Stop() is called or `deadline` (agent
   // clock) passes. Returns false when it stopped at the deadline.
   bool Run(SimTime deadline);
+  // The same with a wall-clock deadline (status loops, barriers).
+  bool RunUntilWall(WallClock::time_point deadline);
   void Stop() { stopped_ = true; }
+  void ClearStop() { stopped_ = false; }
+
+  // Publishes bytes as they are, typed or not (tools, fault-injection tests).
+  void PublishRaw(const std::string& channel, std::span<const std::uint8_t> bytes) {
+    DoPublish(channel, "", std::vector<std::uint8_t>(bytes.begin(), bytes.end()));
+  }
+
+  void SetReceiveFilter(Filter fn) { on_receive_ = std::move(fn); }
+  void SetPublishObserver(Observer fn) { on_publish_ = std::move(fn); }
 
   std::uint64_t Published() const { return published_; }
   std::uint64_t PublishedBytes() const { return published_bytes_; }
+  std::uint64_t PublishFailures() const { return publish_failures_; }
   std::uint64_t Received() const { return received_; }
 
  private:
   struct Timer {
-    SimTime when;
+    WallClock::time_point due;
     std::uint64_t seq;
-    bool operator>(const Timer& o) const { return when != o.when ? when > o.when : seq > o.seq; }
+    bool operator>(const Timer& o) const { return due != o.due ? due > o.due : seq > o.seq; }
   };
   struct Handler {
     LcmTransport* self;
     RawHandler fn;
     lcm::Subscription* subscription;
   };
+  struct ChannelSubscription {
+    lcm::Subscription* subscription = nullptr;
+    std::map<std::uint64_t, RawHandler> handlers;
+  };
 
   void DoPublish(const std::string& channel, const char* type_name, std::vector<std::uint8_t> bytes) override;
   std::uint64_t DoSubscribe(const std::string& channel, RawHandler handler) override;
   void DoUnsubscribe(std::uint64_t id) override;
-  static void OnRaw(const lcm::ReceiveBuffer* rbuf, const std::string& channel, Handler* handler);
+  static void OnRaw(const lcm::ReceiveBuffer* rbuf, const std::string& channel, LcmTransport* self);
+  void Dispatch(const std::string& channel, std::span<const std::uint8_t> bytes);
   void RunDueTimers();
+  void WaitAndHandle(WallClock::duration wait);
+  WallClock::duration ToWall(SimTime agent) const;
 
   lcm::LCM lcm_;
   double speedup_;
-  std::chrono::steady_clock::time_point start_;
+  WallClock::time_point zero_;
+  std::optional<WallClock::time_point> running_due_;  // due time of the timer being run
   std::priority_queue<Timer, std::vector<Timer>, std::greater<>> timers_;
   std::map<std::uint64_t, Callback> timer_callbacks_;
-  std::map<std::uint64_t, std::unique_ptr<Handler>> handlers_;
+  // One LCM subscription per channel; handlers by subscription id. Removing a
+  // handler while it runs is safe: handlers are copied before being called.
+  std::map<std::string, ChannelSubscription> channels_;
+  std::map<std::uint64_t, std::string> channel_of_;
+  Filter on_receive_;
+  Observer on_publish_;
   std::uint64_t next_id_ = 1;
   bool stopped_ = false;
   std::uint64_t published_ = 0;
   std::uint64_t published_bytes_ = 0;
+  std::uint64_t publish_failures_ = 0;
   std::uint64_t received_ = 0;
 };
 

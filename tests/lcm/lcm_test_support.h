@@ -1,0 +1,116 @@
+#pragma once
+// Shared by the LCM tests: an isolated network namespace per test (loopback
+// only, multicast routed to it), `dvpr agent` processes, the small config.
+#include <fcntl.h>
+#include <poll.h>
+#include <sched.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "agents/lcm_transport.h"
+
+namespace dvpr::lcm_test {
+
+namespace fs = std::filesystem;
+
+// Moves this test process (and the agents it starts) into a fresh network
+// namespace with only loopback, multicast-capable: nothing reaches real
+// interfaces and tests running in parallel do not hear each other. Returns
+// the reason when that is impossible (then the test skips).
+inline std::string IsolateNetwork() {
+  if (unshare(CLONE_NEWNET) != 0) return std::string("unshare(CLONE_NEWNET) failed: ") + std::strerror(errno);
+  const int rc = std::system(
+      "ip link set lo up && ip link set lo multicast on && ip route add 224.0.0.0/4 dev lo");
+  if (rc != 0) return "could not set up loopback multicast in the new namespace (ip failed)";
+  return "";
+}
+
+inline std::string Url(int port) { return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0"; }
+
+// The small team every test runs: KITTI 00's first 300 frames, a short
+// suppression window so matches exist, a small training set for a quick
+// k-means, queries written.
+inline std::vector<std::string> SmallConfigSets() {
+  return {"dataset.frames=300", "evaluation.suppression_frames=20", "training.synthetic.samples=2000",
+          "outputs.queries=true", "outputs.figures=false"};
+}
+
+inline std::string ConfigPath() { return std::string(DVPR_SOURCE_DIR) + "/experiments/configs/paper_kitti00.yaml"; }
+inline std::string Dvpr() { return std::string(DVPR_BINARY_DIR) + "/dvpr"; }
+
+inline fs::path TestDir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = fs::path(DVPR_TEST_TMP) / "lcm" / (std::string(info->test_suite_name()) + "." + info->name());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// fork/exec with stdout and stderr to `log`.
+inline pid_t Spawn(const std::vector<std::string>& argv, const fs::path& log) {
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  const std::string out = log.string();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int fd = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) {
+      dup2(fd, 1);
+      dup2(fd, 2);
+    }
+    execv(args[0], args.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+inline std::vector<std::string> AgentArgv(int robot, int robots, const std::string& strategy, int port,
+                                          double speedup, const fs::path& log) {
+  std::vector<std::string> a{Dvpr(), "agent", "--config", ConfigPath()};
+  for (const auto& s : SmallConfigSets()) {
+    a.push_back("--set");
+    a.push_back(s);
+  }
+  for (const std::string& s : {std::string("--robot"), std::to_string(robot), std::string("--robots"),
+                               std::to_string(robots), std::string("--strategy"), strategy, std::string("--lcm"),
+                               Url(port), std::string("--speedup"), std::to_string(speedup),
+                               std::string("--out"), log.string()}) {
+    a.push_back(s);
+  }
+  return a;
+}
+
+// Waits for `pid` up to `timeout`, handling `transport`'s messages meanwhile
+// (the wait is the transport's poll, not a sleep). Kills it at the timeout.
+// Returns the wait status, or -1 when it had to be killed.
+inline int WaitFor(pid_t pid, std::chrono::seconds timeout, LcmTransport* transport = nullptr) {
+  const auto end = std::chrono::steady_clock::now() + timeout;
+  int status = 0;
+  while (std::chrono::steady_clock::now() < end) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return status;
+    if (transport != nullptr) {
+      transport->RunUntilWall(std::chrono::steady_clock::now() + std::chrono::milliseconds(20));
+    } else {
+      // No transport to wait on: block in waitpid with a timer signal would be
+      // overkill for a test helper; poll at 20 ms via ppoll on nothing.
+      timespec ts{0, 20000000};
+      ppoll(nullptr, 0, &ts, nullptr);
+    }
+  }
+  kill(pid, SIGKILL);
+  waitpid(pid, &status, 0);
+  return -1;
+}
+
+}  // namespace dvpr::lcm_test

@@ -1,0 +1,296 @@
+// Real agent processes over loopback multicast, each test in its own network
+// namespace: a launched team matches the simulation on the ideal network; a
+// team survives one of its agents being SIGKILLed; garbage and foreign
+// messages on every channel are counted and ignored.
+#include <algorithm>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "agents/centroid_table.h"
+#include "experiments/agent_log.h"
+#include "experiments/config.h"
+#include "experiments/inputs.h"
+#include "experiments/lcm_launch.h"
+#include "experiments/sim_protocol.h"
+#include "experiments/split.h"
+#include "experiments/static_protocol.h"
+#include "lcm_test_support.h"
+
+namespace dvpr {
+namespace {
+
+using namespace lcm_test;
+
+class LcmTeamTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const std::string why = IsolateNetwork();
+    if (!why.empty()) GTEST_SKIP() << why;
+    dir_ = TestDir();
+  }
+  ExperimentConfig Config() const {
+    std::vector<ConfigOverride> sets;
+    for (const auto& s : SmallConfigSets()) sets.push_back(ParseOverride(s));
+    return LoadConfig(ConfigPath(), sets);
+  }
+  fs::path dir_;
+};
+
+using Row = std::map<std::string, std::string>;
+
+std::vector<Row> ReadCsv(const fs::path& path) {
+  std::ifstream in(path);
+  EXPECT_TRUE(in.good()) << path;
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  std::stringstream hs(line);
+  for (std::string c; std::getline(hs, c, ',');) header.push_back(c);
+  std::vector<Row> rows;
+  while (std::getline(in, line)) {
+    Row row;
+    std::stringstream ls(line);
+    std::size_t i = 0;
+    for (std::string c; i < header.size(); ++i) {
+      if (!std::getline(ls, c, ',')) c.clear();
+      row[header[i]] = c;
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// Which stored frames a query could be matched against, split by whether the
+// order of wall-clock delivery can change their presence. With the frame
+// period long against delivery, everything taken `slack` or more periods
+// before the query is stored everywhere before the query is searched, in the
+// simulation and in the real run alike: those are certain. Frames taken in
+// the same or a neighbouring period may or may not be stored yet (in the
+// simulation, by event order at equal times; for real, by which datagram
+// arrives first): those are ambiguous. A query whose best certain candidate is
+// strictly better than every ambiguous one has one correct answer.
+struct Reference {
+  bool unambiguous = false;
+  int frame = -1;
+};
+
+std::vector<Reference> References(const Dataset& data, const CentroidTable* table, int robots, int window, int slack) {
+  const int n = static_cast<int>(data.size());
+  const SequenceSplit split = SplitSequence(n, robots);
+  std::vector<int> step(static_cast<std::size_t>(n));
+  for (const FrameRange& r : split.ranges)
+    for (int k = 0; k < r.size(); ++k) step[static_cast<std::size_t>(r.begin.value + k)] = k;
+  std::vector<Reference> refs(static_cast<std::size_t>(n));
+  for (int f = 0; f < n; ++f) {
+    float certain = std::numeric_limits<float>::infinity(), ambiguous = certain;
+    int best = -1;
+    for (int g = 0; g < n; ++g) {
+      if (std::abs(f - g) <= window) continue;
+      // Decentralized: only the owner of f's cluster searches, over what it stores.
+      if (table != nullptr && table->RouteOf(data.descriptors.row(g).data()) != table->RouteOf(data.descriptors.row(f).data())) continue;
+      const int dk = step[static_cast<std::size_t>(f)] - step[static_cast<std::size_t>(g)];
+      if (dk < -slack) continue;  // taken later: never a candidate
+      const float d = (data.descriptors.row(f) - data.descriptors.row(g)).squaredNorm();
+      if (dk > slack) {
+        if (d < certain) certain = d, best = g;
+      } else {
+        ambiguous = std::min(ambiguous, d);
+      }
+    }
+    refs[static_cast<std::size_t>(f)] = {certain < ambiguous, best};
+  }
+  return refs;
+}
+
+TEST_F(LcmTeamTest, LaunchedTeamMatchesTheIdealSimulation) {
+  constexpr int kRobots = 4;
+  // 10 fps x 5: a frame every 20 ms of wall time, long against loopback delivery.
+  std::vector<std::string> launch{Dvpr(), "launch", "--config", ConfigPath(), "--robots", std::to_string(kRobots),
+                                  "--speedup", "5", "--lcm", Url(7701), "--out", (dir_ / "lcm").string(),
+                                  "--timeout", "240"};
+  std::vector<std::string> sim{Dvpr(), "run", ConfigPath(), "--quiet", "--out", (dir_ / "sim").string(),
+                               "--set", "protocols=[sim]", "--set", "robots=[4]", "--set", "runs=1",
+                               "--set", "network.model=ideal"};
+  for (const auto& s : SmallConfigSets()) {
+    for (auto* argv : {&launch, &sim}) {
+      argv->push_back("--set");
+      argv->push_back(s);
+    }
+  }
+  const int launched = WaitFor(Spawn(launch, dir_ / "launch.out"), std::chrono::seconds(300));
+  ASSERT_TRUE(WIFEXITED(launched) && WEXITSTATUS(launched) == 0) << "see " << (dir_ / "launch.out");
+  const int simulated = WaitFor(Spawn(sim, dir_ / "sim.out"), std::chrono::seconds(300));
+  ASSERT_TRUE(WIFEXITED(simulated) && WEXITSTATUS(simulated) == 0) << "see " << (dir_ / "sim.out");
+
+  const ExperimentConfig config = Config();
+  const SharedInputs inputs = LoadSharedInputs(config, ConfigPath());
+  const CentroidTable table = CentroidTable::RoundRobin(
+      PaperRunCentroids(inputs.training, CentroidParams(config), kRobots, 0), kRobots);
+  std::map<std::string, std::map<int, Row>> sim_rows;
+  for (const Row& r : ReadCsv(dir_ / "sim" / "queries.csv")) sim_rows[r.at("strategy")][std::stoi(r.at("frame"))] = r;
+  const std::vector<Row> lcm_rows = ReadCsv(dir_ / "lcm" / "queries.csv");
+  ASSERT_EQ(lcm_rows.size(), 2u * 300u);  // both strategies, every frame
+
+  std::map<std::string, int> compared, equal, ambiguous, ambiguous_equal;
+  const std::map<std::string, std::vector<Reference>> refs{
+      {"decentralized", References(inputs.deployment, &table, kRobots, 20, 1)},
+      {"broadcast", References(inputs.deployment, nullptr, kRobots, 20, 1)}};
+  for (const Row& r : lcm_rows) {
+    const std::string strategy = r.at("strategy");
+    EXPECT_EQ(r.at("protocol"), "lcm");
+    EXPECT_FALSE(r.at("latency_ns").empty()) << strategy << " frame " << r.at("frame") << ": a reply is missing";
+    const int frame = std::stoi(r.at("frame"));
+    const Row& s = sim_rows.at(strategy).at(frame);
+    const Reference ref = refs.at(strategy)[static_cast<std::size_t>(frame)];
+    const bool same = r.at("match_robot") == s.at("match_robot") && r.at("match_frame") == s.at("match_frame") &&
+                      r.at("distance") == s.at("distance");
+    if (ref.unambiguous) {
+      ++compared[strategy];
+      equal[strategy] += same ? 1 : 0;
+      EXPECT_TRUE(same) << strategy << " frame " << frame << ": lcm " << r.at("match_frame") << " sim "
+                        << s.at("match_frame");
+      EXPECT_EQ(s.at("match_frame"), ref.frame < 0 ? "" : std::to_string(ref.frame)) << "the reference itself";
+    } else {
+      ++ambiguous[strategy];
+      ambiguous_equal[strategy] += same ? 1 : 0;
+    }
+  }
+  for (const auto& [strategy, n] : compared) {
+    std::cout << strategy << ": " << equal[strategy] << " of " << n << " unambiguous queries equal the simulation; "
+              << ambiguous_equal[strategy] << " of " << ambiguous[strategy] << " ambiguous ones equal too\n";
+    EXPECT_GT(n, 200) << strategy << ": too few queries compared for the test to mean much";
+  }
+  // The runs.csv rows are there, with the broadcast reference.
+  const std::vector<Row> runs = ReadCsv(dir_ / "lcm" / "runs.csv");
+  ASSERT_EQ(runs.size(), 2u);
+  for (const Row& r : runs) {
+    EXPECT_EQ(r.at("protocol"), "lcm");
+    EXPECT_FALSE(r.at("relative_auc").empty());
+    EXPECT_EQ(r.at("dropped_messages"), "0");
+  }
+}
+
+// Starts a decentralized team of 4, SIGKILLs robot 2 once it has taken some
+// frames; the others must still finish (at their deadline: robot 2 never
+// announces done), and the queries they routed to it are counted as lost.
+TEST_F(LcmTeamTest, KilledAgentDoesNotHangTheOthers) {
+  constexpr int kRobots = 4, kVictim = 2, kPort = 7702;
+  std::vector<pid_t> pids;
+  for (int r = 0; r < kRobots; ++r) {
+    pids.push_back(Spawn(AgentArgv(r, kRobots, "decentralized", kPort, 5.0, dir_ / ("r" + std::to_string(r) + ".log")),
+                         dir_ / ("r" + std::to_string(r) + ".out")));
+  }
+  // Watch the heartbeats until the victim is well into its frames.
+  LcmTransport watcher(Url(kPort));
+  int victim_frames = 0;
+  Subscription sub = watcher.Subscribe<agent_status_t>("DVPR_STATUS", [&](const agent_status_t& s) {
+    if (s.robot == kVictim) victim_frames = std::max(victim_frames, s.frames_taken);
+  });
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(240);
+  while (victim_frames < 20 && std::chrono::steady_clock::now() < give_up) {
+    watcher.RunUntilWall(std::chrono::steady_clock::now() + std::chrono::milliseconds(20));
+  }
+  ASSERT_GE(victim_frames, 20) << "the team never started; see " << dir_;
+  ASSERT_EQ(kill(pids[kVictim], SIGKILL), 0);
+  EXPECT_EQ(WaitFor(pids[kVictim], std::chrono::seconds(10)), SIGKILL);
+
+  std::vector<std::optional<AgentLog>> logs(kRobots);
+  for (int r = 0; r < kRobots; ++r) {
+    if (r == kVictim) continue;
+    // Deadline: the team's last frame (75 frames at 50 fps: 1.5 s) + 2 s grace, after start-up.
+    const int status = WaitFor(pids[static_cast<std::size_t>(r)], std::chrono::seconds(120), &watcher);
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "robot " << r << " hung or failed; see " << dir_;
+    logs[static_cast<std::size_t>(r)] = ReadAgentLog(dir_ / ("r" + std::to_string(r) + ".log"));
+    EXPECT_EQ(logs[static_cast<std::size_t>(r)]->end_reason, "deadline");
+    EXPECT_EQ(logs[static_cast<std::size_t>(r)]->queries.size(), 75u);  // every frame taken
+  }
+  const ExperimentConfig config = Config();
+  const SharedInputs inputs = LoadSharedInputs(config, ConfigPath());
+  const GatheredRun g = GatherTeam(config, inputs, "decentralized", kRobots, 0, logs, kNotApplicable);
+  EXPECT_EQ(g.missing_robots, std::vector<int>{kVictim});
+  EXPECT_EQ(g.queries, 3 * 75);
+  EXPECT_GT(g.incomplete, 0) << "queries routed to the dead robot must be counted as lost";
+  std::int64_t dropped_to_victim = 0;
+  for (const LinkRow& l : g.rows.links) {
+    if (l.dst == kVictim) {
+      EXPECT_EQ(l.dropped, l.messages);
+      dropped_to_victim += l.dropped;
+    }
+  }
+  EXPECT_GT(dropped_to_victim, 0);
+  EXPECT_EQ(g.rows.runs.front().dropped_messages, dropped_to_victim);
+}
+
+// Garbage bytes, truncated messages, messages of the wrong type, a query whose
+// length field lies, and well-formed messages from robots outside the team,
+// on every channel the agents listen to, all run long: counted, ignored, and
+// the team still finishes with every reply.
+TEST_F(LcmTeamTest, GarbageOnEveryChannelIsCountedAndIgnored) {
+  constexpr int kRobots = 3, kPort = 7703;
+  std::vector<pid_t> pids;
+  for (int r = 0; r < kRobots; ++r) {
+    pids.push_back(Spawn(AgentArgv(r, kRobots, "decentralized", kPort, 5.0, dir_ / ("r" + std::to_string(r) + ".log")),
+                         dir_ / ("r" + std::to_string(r) + ".out")));
+  }
+  LcmTransport noise(Url(kPort));
+  std::vector<std::string> channels{"DVPR_STATUS", "DVPR_QUERY_ALL"};
+  for (int r = 0; r < kRobots; ++r) {
+    for (const char* prefix : {"DVPR_QUERY_", "DVPR_MATCH_", "DVPR_VREQ_", "DVPR_VRES_"}) {
+      channels.push_back(prefix + std::to_string(r));
+    }
+  }
+  query_t foreign_query;
+  foreign_query.robot = 99;  // not in the team
+  foreign_query.frame = 5;
+  foreign_query.dim = 128;
+  foreign_query.descriptor.assign(128, 0.5f);
+  std::vector<std::uint8_t> lying = Encode(foreign_query);
+  lying[22] = 0x7f;  // dim claims 32k floats
+  lying[23] = 0xff;
+  match_t wrong_type;
+  agent_status_t foreign_status;
+  foreign_status.robot = 1;
+  foreign_status.robots = kRobots;
+  foreign_status.team_key = 42;  // another team
+  const std::vector<std::vector<std::uint8_t>> payloads{
+      {}, {0x00}, {0xde, 0xad, 0xbe, 0xef, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17},
+      std::vector<std::uint8_t>(Encode(foreign_query).begin(), Encode(foreign_query).begin() + 30), lying,
+      Encode(wrong_type), Encode(foreign_query), Encode(foreign_status)};
+
+  std::vector<int> status(kRobots, -2);
+  int rounds = 0;
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(240);
+  auto running = [&] { return std::count(status.begin(), status.end(), -2) > 0; };
+  while (running() && std::chrono::steady_clock::now() < give_up) {
+    for (const auto& c : channels) {
+      for (const auto& p : payloads) noise.PublishRaw(c, p);
+    }
+    ++rounds;
+    noise.RunUntilWall(std::chrono::steady_clock::now() + std::chrono::milliseconds(30));
+    for (int r = 0; r < kRobots; ++r) {
+      int st = 0;
+      if (status[static_cast<std::size_t>(r)] == -2 && waitpid(pids[static_cast<std::size_t>(r)], &st, WNOHANG) > 0) {
+        status[static_cast<std::size_t>(r)] = st;
+      }
+    }
+  }
+  for (int r = 0; r < kRobots; ++r) {
+    if (status[static_cast<std::size_t>(r)] == -2) status[static_cast<std::size_t>(r)] = WaitFor(pids[static_cast<std::size_t>(r)], std::chrono::seconds(1));
+    ASSERT_TRUE(WIFEXITED(status[static_cast<std::size_t>(r)]) && WEXITSTATUS(status[static_cast<std::size_t>(r)]) == 0)
+        << "robot " << r << "; see " << dir_;
+    const AgentLog log = ReadAgentLog(dir_ / ("r" + std::to_string(r) + ".log"));
+    EXPECT_EQ(log.end_reason, "all_done") << "robot " << r;
+    EXPECT_EQ(log.queries.size(), 100u);
+    for (const AgentQueryLog& q : log.queries) EXPECT_EQ(q.received, q.expected) << "robot " << r << " frame " << q.record.frame.value;
+    EXPECT_GT(log.malformed, 0u) << "robot " << r;
+    EXPECT_GT(log.foreign, 0u) << "robot " << r;
+    std::cout << "robot " << r << ": " << log.malformed << " malformed, " << log.foreign << " foreign, over " << rounds
+              << " rounds of noise\n";
+  }
+}
+
+}  // namespace
+}  // namespace dvpr
