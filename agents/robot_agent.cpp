@@ -138,15 +138,15 @@ void RobotAgent::StartNextTask() {
   Task task = std::move(queue_.front());
   queue_.pop_front();
   if (task.kind == Task::Kind::kSearch) {
-    ServeSearch(task);
+    ServeSearch(std::move(task));
   } else {
-    ServeVerify(task);
+    ServeVerify(std::move(task));
   }
 }
 
 // The search runs on what is stored when service starts; its result is
 // delivered when the service time has elapsed.
-void RobotAgent::ServeSearch(const Task& task) {
+void RobotAgent::ServeSearch(Task task) {
   IndexSearchResult result = index_.Search(task.descriptor.data(), task.frame, params_.suppression_frames);
   const SimTime duration = params_.service_fixed + params_.service_per_comparison * result.comparisons;
   ++load_.searches;
@@ -154,7 +154,7 @@ void RobotAgent::ServeSearch(const Task& task) {
   load_.comparisons += result.comparisons;
   load_.busy += duration;
 
-  transport_.ScheduleAfter(duration, [this, task, best = result.best] {
+  transport_.ScheduleAfter(duration, [this, task = std::move(task), best = result.best] {
     if (!online_) return;
     if (task.store) {
       index_.Add(task.querier, task.frame, task.descriptor.data());
@@ -179,10 +179,10 @@ void RobotAgent::ServeSearch(const Task& task) {
   });
 }
 
-void RobotAgent::ServeVerify(const Task& task) {
+void RobotAgent::ServeVerify(Task task) {
   ++load_.verifications;
   load_.busy += params_.verify_service;
-  transport_.ScheduleAfter(params_.verify_service, [this, task] {
+  transport_.ScheduleAfter(params_.verify_service, [this, task = std::move(task)] {
     if (!online_) return;
     const VerifyVerdict verdict = verifier_(task.frame, task.match_frame);
     if (task.querier == id_) {
@@ -210,9 +210,9 @@ void RobotAgent::ServeVerify(const Task& task) {
 // stores it and sends nothing back.
 void RobotAgent::OnQuery(const query_t& q) {
   if (!online_ || q.robot == id_.value || q.dim != frames_.descriptors->cols()) return;
-  const RoutingDecision decision = routing_.Route(RobotId(q.robot), q.descriptor.data());
-  if (!Contains(decision.search_at, id_)) {
-    if (Contains(decision.store_at, id_) && online_) {
+  const RoutingStrategy::Role role = routing_.RoleOf(RobotId(q.robot), q.descriptor.data(), id_);
+  if (!role.search) {
+    if (role.store) {
       index_.Add(RobotId(q.robot), FrameId(q.frame), q.descriptor.data());
       ++load_.stored;
     }
@@ -222,7 +222,7 @@ void RobotAgent::OnQuery(const query_t& q) {
   task.querier = RobotId(q.robot);
   task.frame = FrameId(q.frame);
   task.descriptor = q.descriptor;
-  task.store = Contains(decision.store_at, id_);
+  task.store = role.store;
   Enqueue(std::move(task));
 }
 

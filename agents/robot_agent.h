@@ -106,8 +106,8 @@ class RobotAgent {
   void PublishQuery(int k, const RoutingDecision& decision);
   void Enqueue(Task task);
   void StartNextTask();
-  void ServeSearch(const Task& task);
-  void ServeVerify(const Task& task);
+  void ServeSearch(Task task);
+  void ServeVerify(Task task);
   void OnQuery(const query_t& q);
   void OnMatch(const match_t& m);
   void OnVerifyRequest(const verify_request_t& r);

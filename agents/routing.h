@@ -33,6 +33,23 @@ class RoutingStrategy {
     return decision;
   }
 
+  // What `robot` does with a query from `querier`: the decision of Route() as
+  // seen by one robot. Responders call it for every query they receive, so
+  // strategies whose answer is cheaper than a whole decision override it.
+  struct Role {
+    bool search = false;
+    bool store = false;
+  };
+  virtual Role RoleOf(RobotId querier, const float* descriptor, RobotId robot) const {
+    const RoutingDecision d = Route(querier, descriptor);
+    const auto has = [robot](const std::vector<RobotId>& v) {
+      for (RobotId r : v)
+        if (r == robot) return true;
+      return false;
+    };
+    return {has(d.search_at), has(d.store_at)};
+  }
+
   // True: the remote searches are one publication on the broadcast channel
   // (one transmission on a shared medium) instead of one unicast each.
   virtual bool UsesBroadcastChannel() const { return false; }
@@ -52,6 +69,7 @@ class BroadcastRouting final : public RoutingStrategy {
   explicit BroadcastRouting(int num_robots) : RoutingStrategy(num_robots) {}
   std::string_view name() const override { return "broadcast"; }
   bool UsesBroadcastChannel() const override { return true; }
+  Role RoleOf(RobotId querier, const float*, RobotId robot) const override { return {true, robot == querier}; }
 
  private:
   void DoRoute(RobotId self, const float*, RoutingDecision& out) const override {
