@@ -43,13 +43,14 @@ SyntheticDeploymentKnobs ReadDeploymentKnobs(const Field& f) {
       {"length_scale_min_m", &k.length_scale_min_m, true},
       {"length_scale_max_m", &k.length_scale_max_m, true},
       {"heading_scale", &k.heading_scale, true},
+      {"heading_fraction", &k.heading_fraction, false},
       {"variance_decay", &k.variance_decay, false},
       {"noise", &k.noise, false},
       {"appearance_change", &k.appearance_change, false},
       {"appearance_time_scale_frames", &k.appearance_time_scale_frames, true},
       {"environment_offset", &k.environment_offset, false}};
   f.ExpectMap({"place_features", "length_scale_min_m", "length_scale_max_m", "heading_scale",
-               "variance_decay", "noise", "appearance_change", "appearance_time_scale_frames",
+               "heading_fraction", "variance_decay", "noise", "appearance_change", "appearance_time_scale_frames",
                "environment_offset"});
   if (auto c = f.Child("place_features"); c.present()) {
     k.place_features = static_cast<int>(c.Int(1, 1 << 20));
@@ -62,6 +63,7 @@ SyntheticDeploymentKnobs ReadDeploymentKnobs(const Field& f) {
       c.Fail(knob.positive ? "must be positive" : "must not be negative");
     }
   }
+  if (k.heading_fraction > 1) f.Child("heading_fraction").Fail("must lie in [0, 1]");
   if (k.length_scale_max_m < k.length_scale_min_m) {
     f.Child("length_scale_max_m").Fail("must be at least length_scale_min_m");
   }

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "experiments/synthetic.h"
 #include "net_models/units.h"
 #include "sim/sim_time.h"
 
@@ -36,21 +37,22 @@ class ConfigError : public std::runtime_error {
 // Knobs of the synthetic appearance model (experiments/synthetic.h, SyntheticParams; the YAML keys
 // are the field names, defaults are SyntheticParams' defaults). dim comes from dataset.dim.
 struct SyntheticDeploymentKnobs {  // dataset.synthetic
-  int place_features = 256;
-  double length_scale_min_m = 3.0;
-  double length_scale_max_m = 40.0;
-  double heading_scale = 0.7;
-  double variance_decay = 1.0;
-  double noise = 0.25;
-  double appearance_change = 0.5;
-  double appearance_time_scale_frames = 200.0;
-  double environment_offset = 1.0;
+  int place_features = SyntheticParams{}.place_features;
+  double length_scale_min_m = SyntheticParams{}.length_scale_min_m;
+  double length_scale_max_m = SyntheticParams{}.length_scale_max_m;
+  double heading_scale = SyntheticParams{}.heading_scale;
+  double heading_fraction = SyntheticParams{}.heading_fraction;
+  double variance_decay = SyntheticParams{}.variance_decay;
+  double noise = SyntheticParams{}.noise;
+  double appearance_change = SyntheticParams{}.appearance_change;
+  double appearance_time_scale_frames = SyntheticParams{}.appearance_time_scale_frames;
+  double environment_offset = SyntheticParams{}.environment_offset;
   bool operator==(const SyntheticDeploymentKnobs&) const = default;
 };
 struct SyntheticTrainingKnobs {    // training.synthetic
   int samples = 20000;             // training descriptors generated
-  int environments = 30;           // synthetic_diverse: environments in the training set
-  double training_area_m = 2000.0; // side of the square training places are drawn from
+  int environments = SyntheticParams{}.environments;  // synthetic_diverse: environments mixed
+  double training_area_m = SyntheticParams{}.training_area_m;  // side of the square places are drawn from
   bool operator==(const SyntheticTrainingKnobs&) const = default;
 };
 

@@ -53,6 +53,7 @@ void EmitDataset(YAML::Emitter& out, const DatasetConfig& d) {
       << YAML::Key << "length_scale_min_m" << YAML::Value << Num(k.length_scale_min_m)
       << YAML::Key << "length_scale_max_m" << YAML::Value << Num(k.length_scale_max_m)
       << YAML::Key << "heading_scale" << YAML::Value << Num(k.heading_scale)
+      << YAML::Key << "heading_fraction" << YAML::Value << Num(k.heading_fraction)
       << YAML::Key << "variance_decay" << YAML::Value << Num(k.variance_decay)
       << YAML::Key << "noise" << YAML::Value << Num(k.noise)
       << YAML::Key << "appearance_change" << YAML::Value << Num(k.appearance_change)

@@ -15,6 +15,7 @@ SyntheticParams ToSyntheticParams(const ExperimentConfig& config) {
   p.length_scale_min_m = d.length_scale_min_m;
   p.length_scale_max_m = d.length_scale_max_m;
   p.heading_scale = d.heading_scale;
+  p.heading_fraction = d.heading_fraction;
   p.variance_decay = d.variance_decay;
   p.noise = d.noise;
   p.appearance_change = d.appearance_change;
