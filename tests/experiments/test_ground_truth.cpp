@@ -23,13 +23,13 @@ TEST(GroundTruth, WindowExcludesNeighboursInTheSequence) {
   // x = 0.1, right next to frame 0 but inside its window. Window 3: |i - j| <= 3 excluded.
   //   g(0): candidates 4..7 -> frame 6 at 0.5 m -> 0.25
   //   g(1): candidates 5..7 -> frame 6 at 0.4 m -> 0.16
-  //   g(3): candidates 0, 7 -> frame 0 at 30 m -> 900 (frame 6 at |3 - 6| = 3 is excluded)
+  //   g(3): candidate 7 only (frames 0 and 6 are exactly 3 away: excluded) -> 40 m -> 1600
   //   g(6): candidates 0..2 -> frame 1 at 0.4 m -> 0.16
   const Positions p = OnLine({0, 0.1, 20, 30, 40, 50, 0.5, 70});
   const std::vector<double> g = NearestOutsideWindowSquared(p, 3);
   EXPECT_NEAR(g[0], 0.25, 1e-12);
   EXPECT_NEAR(g[1], 0.16, 1e-12);
-  EXPECT_NEAR(g[3], 900.0, 1e-9);
+  EXPECT_NEAR(g[3], 1600.0, 1e-9);
   EXPECT_NEAR(g[6], 0.16, 1e-12);
   const auto relevant = RelevantFlags(p, {.radius_m = 1, .suppression_frames = 3});
   EXPECT_EQ(relevant, (std::vector<std::uint8_t>{1, 1, 0, 0, 0, 0, 1, 0}));

@@ -53,10 +53,16 @@ TEST(WindowedNeighbours, EqualsBruteForceForAnyListSize) {
     for (int i = 0; i < 150; ++i) {
       const MatchOutcome want = BruteForce(x, pool, 5, i);
       ASSERT_EQ(got[static_cast<std::size_t>(i)].match, want.match) << "list " << list_size << " query " << i;
-      if (want.match) EXPECT_NEAR(got[static_cast<std::size_t>(i)].score, want.score, 1e-12 * want.score);
+      if (want.match) {
+        EXPECT_NEAR(got[static_cast<std::size_t>(i)].score, want.score, 1e-12 * want.score);
+      }
     }
-    if (list_size == 1) EXPECT_GT(fallbacks, 0);  // the fallback path was exercised
-    if (list_size == 200) EXPECT_EQ(fallbacks, 0);
+    if (list_size == 1) {
+      EXPECT_GT(fallbacks, 0);  // the fallback path was exercised
+    }
+    if (list_size == 200) {
+      EXPECT_EQ(fallbacks, 0);
+    }
   }
   EXPECT_FALSE(WindowedNeighbours(x, 5, 8, 1).BestMatches(pool)[149].match.has_value());
 }
