@@ -4,9 +4,11 @@
 #include <stdexcept>
 
 #include "dvpr/version.h"
+#include "experiments/agent_process.h"
 #include "experiments/config.h"
 #include "experiments/experiment.h"
 #include "experiments/figures.h"
+#include "experiments/lcm_launch.h"
 #include "experiments/run_executor.h"
 
 namespace dvpr {
@@ -21,12 +23,23 @@ Usage:
                      (default results/<config name>): config.yaml, runs.csv,
                      per_robot.csv, links.csv, summary.json, figures/*.png
   dvpr plot DIR      redraw DIR/figures/*.png from the files in DIR
+  dvpr agent --config C --robot R [--robots N] [--run K] [--strategy S] [--lcm URL]
+             [--speedup X] [--out FILE] [--set key.path=value ...] [--grace SEC]
+                     one robot as a real process over LCM (UDP multicast), in
+                     wall-clock time at the config's fps x speedup; writes its log
+  dvpr launch --config C --robots N [--run K] [--out DIR] [--lcm URL] [--speedup X]
+              [--set key.path=value ...] [--grace SEC] [--timeout SEC]
+                     N agent processes on this machine, each configured strategy
+                     in turn; gathers their logs into DIR (default
+                     results/<config name>_lcm) with protocol=lcm
   dvpr --help        this text
   dvpr --version     the version
 
 Examples:
   dvpr run experiments/configs/paper_kitti00.yaml
   dvpr run experiments/configs/paper_kitti00.yaml --set runs=2 --set robots={from: 2, to: 6}
+  dvpr launch --config experiments/configs/paper_kitti00.yaml --robots 4 --speedup 5 \
+              --set dataset.frames=600 --set evaluation.suppression_frames=50
 )";
 
 struct RunArgs {
@@ -92,6 +105,19 @@ int Plot(const std::vector<std::string>& args, std::ostream& out, std::ostream& 
   return 0;
 }
 
+// Parses a subcommand's options; bad usage is exit status 2, as for dvpr run.
+template <typename Parse, typename Body>
+int WithOptions(const char* name, const std::vector<std::string>& args, std::ostream& err, Parse parse, Body body) {
+  decltype(parse(args)) options;
+  try {
+    options = parse(args);
+  } catch (const std::invalid_argument& e) {
+    err << "dvpr " << name << ": " << e.what() << " (see dvpr --help)\n";
+    return 2;
+  }
+  return body(options);
+}
+
 }  // namespace
 
 int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -111,6 +137,13 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   try {
     if (cmd == "run") return Run(args, out, err);
     if (cmd == "plot") return Plot(args, out, err);
+    if (cmd == "agent") {
+      return WithOptions("agent", args, err, ParseAgentArgs,
+                         [&](const AgentProcessOptions& o) { return RunAgentProcess(o, out); });
+    }
+    if (cmd == "launch") {
+      return WithOptions("launch", args, err, ParseLaunchArgs, [&](const LaunchOptions& o) { return RunLaunch(o, out); });
+    }
   } catch (const std::exception& e) {
     err << "dvpr: error: " << e.what() << "\n";
     return 1;

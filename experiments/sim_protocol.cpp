@@ -41,12 +41,7 @@ SimRunParams ToSimParams(const ExperimentConfig& c, const RunSpec& spec) {
   SimRunParams p;
   p.robots = spec.robots;
   p.seed = spec.seed;
-  p.agent.suppression_frames = c.evaluation.suppression_frames;
-  p.agent.service_fixed = c.service.fixed;
-  p.agent.service_per_comparison = c.service.per_comparison;
-  p.agent.verify_service = c.service.fixed;
-  p.agent.verify_max_distance = static_cast<float>(c.verification.max_distance);
-  p.agent.verify_request_bytes = static_cast<int>(c.verification.request_bytes.value());
+  p.agent = ToAgentParams(c);
   p.network = ToNetworkModelParams(spec.network->settings);
   p.gt_radius_m = c.evaluation.gt_radius_m;
   // A dropout applies to the teams that have that robot.
@@ -61,6 +56,8 @@ std::string LogName(const RunSpec& spec, const std::string& strategy) {
   return "sim_" + strategy + "_n" + std::to_string(spec.robots) + "_r" + std::to_string(spec.run) + "_v" +
          std::to_string(spec.network->index) + ".lcmlog";
 }
+
+}  // namespace
 
 void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLog& log, const SimRunSummary& s,
                 const ExperimentConfig& c, RunOutput& out) {
@@ -130,7 +127,24 @@ RunResult MakeRow(const RunSpec& spec, const std::string& strategy, const SimRun
   return row;
 }
 
-}  // namespace
+AgentParams ToAgentParams(const ExperimentConfig& c) {
+  AgentParams p;
+  p.suppression_frames = c.evaluation.suppression_frames;
+  p.service_fixed = c.service.fixed;
+  p.service_per_comparison = c.service.per_comparison;
+  p.verify_service = c.service.fixed;
+  p.verify_max_distance = static_cast<float>(c.verification.max_distance);
+  p.verify_request_bytes = static_cast<int>(c.verification.request_bytes.value());
+  return p;
+}
+
+PaperProtocolParams CentroidParams(const ExperimentConfig& c) {
+  PaperProtocolParams p;
+  p.seed = c.seed;
+  p.clusters_per_robot = c.training.clusters_per_robot;
+  p.centroids_pattern = c.training.centroids.value_or("");
+  return p;
+}
 
 NetworkModelParams ToNetworkModelParams(const NetworkSettings& settings) {
   NetworkModelParams p;
@@ -168,10 +182,7 @@ RunFunction MakeSimRun(const SharedInputs& in) {
     log_dir = in.out_dir / "lcm";
     std::filesystem::create_directories(log_dir);
   }
-  PaperProtocolParams centroid_params;
-  centroid_params.seed = config->seed;
-  centroid_params.clusters_per_robot = config->training.clusters_per_robot;
-  centroid_params.centroids_pattern = config->training.centroids.value_or("");
+  const PaperProtocolParams centroid_params = CentroidParams(*config);
   return [config, data, training, log_dir, centroid_params](const RunSpec& spec) {
     auto table = std::make_shared<const CentroidTable>(
         CentroidTable::RoundRobin(PaperRunCentroids(*training, centroid_params, spec.robots, spec.run), spec.robots));

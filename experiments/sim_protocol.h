@@ -10,6 +10,8 @@
 #include "agents/routing.h"
 #include "experiments/config.h"
 #include "experiments/run_executor.h"
+#include "experiments/simulation.h"
+#include "experiments/static_protocol.h"
 #include "net_models/link_factory.h"
 
 namespace dvpr {
@@ -23,5 +25,17 @@ std::unique_ptr<RoutingStrategy> MakeStrategy(const std::string& name, std::shar
                                               int robots);
 
 RunFunction MakeSimRun(const SharedInputs& inputs);
+
+// Shared with the real-agent protocol (experiments/lcm_launch.h), which turns
+// its gathered logs into the same rows.
+AgentParams ToAgentParams(const ExperimentConfig& config);
+// The centroid settings of the config (seed, clusters per robot, given files)
+// for PaperRunCentroids.
+PaperProtocolParams CentroidParams(const ExperimentConfig& config);
+// runs.csv row of one strategy; reference_auc: broadcast's AUC of the same run (NaN: none).
+RunResult MakeRow(const RunSpec& spec, const std::string& strategy, const SimRunSummary& s, double reference_auc);
+// per_robot, links and (when outputs.queries) queries rows of one strategy's run.
+void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLog& log, const SimRunSummary& s,
+                const ExperimentConfig& c, RunOutput& out);
 
 }  // namespace dvpr

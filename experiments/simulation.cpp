@@ -6,6 +6,7 @@
 #include <string>
 
 #include "agents/sim_transport.h"
+#include "experiments/agent_records.h"
 #include "experiments/metrics.h"
 #include "experiments/split.h"
 #include "net_models/lcm_event_log.h"
@@ -31,19 +32,6 @@ void SimRunParams::Validate(const Dataset& data) const {
 }
 
 namespace {
-
-// Geometric verification as an oracle on the ground-truth poses: a real
-// verifier accepts a match when enough keypoints agree, which for a true
-// revisit (within the radius) they do. Inliers fall with the distance.
-GeometricVerifier PoseOracle(const Positions& positions, double radius_m) {
-  return [&positions, radius_m](FrameId query, FrameId match) {
-    const double d = (positions.row(query.value) - positions.row(match.value)).norm();
-    VerifyVerdict v;
-    v.accepted = d < radius_m;
-    v.inliers = static_cast<int>(std::lround(100.0 * std::exp(-d / radius_m)));
-    return v;
-  };
-}
 
 std::vector<MessageRow> CollectMessages(const Network& network) {
   std::vector<MessageRow> rows;
@@ -110,16 +98,7 @@ SimRunLog RunSimulation(const Dataset& data, const RoutingStrategy& strategy, co
     log.loads.push_back(agent->load());
     for (const QueryOutcome& o : agent->outcomes()) {
       if (o.expected_replies == 0) continue;  // never taken (robot went offline first)
-      QueryRecord q;
-      q.robot = agent->id();
-      q.frame = o.frame;
-      q.sent = o.sent;
-      if (o.best) {
-        q.match_robot = o.best->robot;
-        q.match_frame = o.best->frame;
-        q.distance = o.best->distance;
-      }
-      if (o.Complete() && o.last_reply) q.latency = *o.last_reply - o.sent;
+      const QueryRecord q = ToQueryRecord(agent->id(), o);
       log.verify_requested += o.verify_requested ? 1 : 0;
       log.verify_accepted += o.verify_accepted.value_or(false) ? 1 : 0;
       log.queries.push_back(q);
