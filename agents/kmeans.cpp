@@ -8,7 +8,7 @@
 #include <string>
 
 #include "agents/l2.h"
-#include "agents/random_bits.h"
+#include "sim/random_bits.h"
 
 namespace dvpr {
 

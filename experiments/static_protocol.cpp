@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "agents/random_bits.h"
+#include "sim/random_bits.h"
 #include "experiments/npy.h"
 #include "experiments/parallel_for.h"
 

@@ -6,7 +6,7 @@
 // relative AUC and the worst balance ratio. Ground truth (R) stays global.
 //
 // Seeding: run (n, run) clusters with seed PaperRunSeed(config seed, n, run) =
-// MixSeed(MixSeed(seed, n), run) (agents/random_bits.h), so a run's centroids depend only on
+// MixSeed(MixSeed(seed, n), run) (sim/random_bits.h), so a run's centroids depend only on
 // its own key: adding robot counts or runs, or changing the thread count, changes nothing else.
 //
 // Speed: descriptor distances are computed once for all runs (WindowedNeighbours), so a run
@@ -94,6 +94,10 @@ class PaperEvaluator {
   const PrResult& centralized() const { return centralized_; }
   std::int64_t relevant() const { return relevant_; }
   const PaperTimings& timings() const { return timings_; }
+  // For evaluations of other routings (experiments/static_strategies.h) over the same data.
+  const Dataset& deployment() const { return deployment_; }
+  const GroundTruthParams& evaluation() const { return evaluation_; }
+  const WindowedNeighbours& neighbours() const { return neighbours_; }
 
   // One routing: every frame goes to table.RouteOf(descriptor). Fills everything but the row's
   // run/seed and the centroids.

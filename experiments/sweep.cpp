@@ -1,6 +1,6 @@
 #include "experiments/sweep.h"
 
-#include "agents/random_bits.h"
+#include "sim/random_bits.h"
 
 namespace dvpr {
 

@@ -7,7 +7,7 @@
 // robots, run): the sim runs decentralized and broadcast on the same data and needs broadcast's
 // AUC for the relative AUC; the paper protocol's reference is the centralized AUC, computed once.
 //
-// Seeding: seed = MixSeed(MixSeed(config seed, robots), run) (agents/random_bits.h), the same
+// Seeding: seed = MixSeed(MixSeed(config seed, robots), run) (sim/random_bits.h), the same
 // formula as the static protocol's PaperRunSeed. It does not depend on the protocol or network
 // variant, so one (robots, run) trains the same centroids everywhere and network variants are
 // compared on identical data; adding robot counts or runs changes no other run's seed.

@@ -1,5 +1,7 @@
 #include "experiments/synthetic.h"
 
+#include "sim/random_bits.h"
+
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -9,30 +11,13 @@
 namespace dvpr {
 namespace {
 
-// Own generator and normal sampler: std::normal_distribution differs between standard libraries.
+// Normal sampler with a spare value over the shared xoshiro256**: std::normal_distribution
+// differs between standard libraries.
 class Rng {
  public:
-  explicit Rng(std::uint64_t seed) {
-    for (auto& word : s_) word = SplitMix64(seed);
-  }
-  static std::uint64_t SplitMix64(std::uint64_t& state) {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
-  std::uint64_t Next() {  // xoshiro256** 1.0
-    const std::uint64_t result = Rotl(s_[1] * 5, 7) * 9;
-    const std::uint64_t t = s_[1] << 17;
-    s_[2] ^= s_[0];
-    s_[3] ^= s_[1];
-    s_[1] ^= s_[2];
-    s_[0] ^= s_[3];
-    s_[2] ^= t;
-    s_[3] = Rotl(s_[3], 45);
-    return result;
-  }
-  double Uniform() { return static_cast<double>(Next() >> 11) * 0x1.0p-53; }  // [0, 1)
+  explicit Rng(std::uint64_t seed) : gen_(seed) {}
+  std::uint64_t Next() { return gen_.Next(); }
+  double Uniform() { return gen_.Uniform(); }  // [0, 1)
   double Uniform(double lo, double hi) { return lo + (hi - lo) * Uniform(); }
   double Normal() {  // Box-Muller; the second value of each pair is kept for the next call
     if (has_spare_) {
@@ -48,8 +33,7 @@ class Rng {
   }
 
  private:
-  static std::uint64_t Rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
-  std::uint64_t s_[4]{};
+  Xoshiro256 gen_;
   double spare_ = 0.0;
   bool has_spare_ = false;
 };
@@ -64,8 +48,8 @@ enum Stream : std::uint64_t {
 };
 Rng StreamRng(std::uint64_t seed, std::uint64_t stream) {
   std::uint64_t state = seed;
-  std::uint64_t mixed = Rng::SplitMix64(state) ^ (stream * 0xD1B54A32D192ED03ULL);
-  return Rng(Rng::SplitMix64(mixed));
+  std::uint64_t mixed = SplitMix64(state) ^ (stream * 0xD1B54A32D192ED03ULL);
+  return Rng(SplitMix64(mixed));
 }
 
 constexpr int kTimeFeatures = 32;

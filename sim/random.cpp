@@ -7,13 +7,6 @@
 namespace dvpr {
 namespace {
 
-std::uint64_t SplitMix64(std::uint64_t& state) {
-  std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  return z ^ (z >> 31);
-}
-
 std::uint64_t Rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
 
 }  // namespace
@@ -32,30 +25,16 @@ RandomStream::RandomStream(std::uint64_t run_seed, std::uint64_t component_id) {
   // nearby (seed, id) pairs give unrelated streams.
   std::uint64_t a = run_seed;
   std::uint64_t b = component_id ^ 0xD1B54A32D192ED03ULL;
-  std::uint64_t state = SplitMix64(a) ^ Rotl(SplitMix64(b), 17);
-  for (auto& word : s_) word = SplitMix64(state);
+  gen_ = Xoshiro256(SplitMix64(a) ^ Rotl(SplitMix64(b), 17));
 }
 
 RandomStream RandomStream::FromState(std::uint64_t s0, std::uint64_t s1, std::uint64_t s2, std::uint64_t s3) {
   RandomStream r;
-  r.s_[0] = s0;
-  r.s_[1] = s1;
-  r.s_[2] = s2;
-  r.s_[3] = s3;
+  r.gen_ = Xoshiro256::FromState(s0, s1, s2, s3);
   return r;
 }
 
-std::uint64_t RandomStream::NextU64() {
-  const std::uint64_t result = Rotl(s_[1] * 5, 7) * 9;
-  const std::uint64_t t = s_[1] << 17;
-  s_[2] ^= s_[0];
-  s_[3] ^= s_[1];
-  s_[1] ^= s_[2];
-  s_[0] ^= s_[3];
-  s_[2] ^= t;
-  s_[3] = Rotl(s_[3], 45);
-  return result;
-}
+std::uint64_t RandomStream::NextU64() { return gen_.Next(); }
 
 double RandomStream::Uniform01() {
   return static_cast<double>(NextU64() >> 11) * 0x1.0p-53;

@@ -13,6 +13,8 @@
 #include <limits>
 #include <string_view>
 
+#include "sim/random_bits.h"
+
 namespace dvpr {
 
 // A stable 64-bit id for a named component ("link", "robot/3"): FNV-1a.
@@ -47,7 +49,7 @@ class RandomStream {
 
  private:
   RandomStream() = default;
-  std::uint64_t s_[4] = {};
+  Xoshiro256 gen_{0};
 };
 
 }  // namespace dvpr

@@ -5,7 +5,7 @@
 
 #include "agents/centroid_table.h"
 #include "agents/l2.h"
-#include "agents/random_bits.h"
+#include "sim/random_bits.h"
 
 namespace dvpr {
 namespace {

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "agents/kmeans.h"
-#include "agents/random_bits.h"
+#include "sim/random_bits.h"
 
 namespace dvpr {
 namespace {

@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/random_bits.h"
+#include "sim/random_bits.h"
 #include "experiments/npy.h"
 #include "experiments/static_protocol.h"
 

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/random_bits.h"
+#include "sim/random_bits.h"
 #include "experiments/config.h"
 #include "experiments/sweep.h"
 

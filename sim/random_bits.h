@@ -1,6 +1,6 @@
 #pragma once
-// Portable pseudo-random bits for the place-recognition algorithms (k-means seeding, run
-// seeds). Written out here rather than taken from <random> so that a seed gives byte-identical
+// Portable pseudo-random bits: the one xoshiro256** and SplitMix64 of dvpr, used by the random
+// streams (sim/random.h), k-means seeding, run seeds and the synthetic data. Written out here rather than taken from <random> so that a seed gives byte-identical
 // results with every standard library: std::*_distribution is implementation-defined.
 #include <cstdint>
 
@@ -29,6 +29,15 @@ class Xoshiro256 {
  public:
   explicit constexpr Xoshiro256(std::uint64_t seed) {
     for (auto& word : s_) word = SplitMix64(seed);
+  }
+  // A generator in a raw state (not all zero), e.g. to check the reference outputs.
+  static constexpr Xoshiro256 FromState(std::uint64_t s0, std::uint64_t s1, std::uint64_t s2, std::uint64_t s3) {
+    Xoshiro256 x(0);
+    x.s_[0] = s0;
+    x.s_[1] = s1;
+    x.s_[2] = s2;
+    x.s_[3] = s3;
+    return x;
   }
 
   constexpr std::uint64_t Next() {
