@@ -25,7 +25,9 @@ std::vector<std::pair<double, int>> RankCentroids(const CentroidTable& table, co
 std::vector<RobotId> OwnersWithin(const CentroidTable& table, const float* descriptor, double epsilon,
                                   int max_centroids) {
   const auto ranked = RankCentroids(table, descriptor);
-  const double limit = ranked.front().first * (1.0 + epsilon);
+  // An infinite epsilon means no bound at all: (1 + inf) x 0 would be NaN when the descriptor
+  // sits exactly on a centroid.
+  const double limit = std::isinf(epsilon) ? INFINITY : ranked.front().first * (1.0 + epsilon);
   std::vector<RobotId> owners;
   const auto n = std::min<std::size_t>(ranked.size(), static_cast<std::size_t>(std::max(1, max_centroids)));
   for (std::size_t i = 0; i < n; ++i) {
