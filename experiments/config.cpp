@@ -11,6 +11,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "experiments/config_reader.h"
+#include "experiments/strategy_catalogue.h"
 
 namespace dvpr {
 
@@ -20,7 +21,12 @@ using config_detail::Origin;
 namespace {
 
 std::vector<std::string>& StrategyRegistry() {
-  static std::vector<std::string> names{"decentralized", "broadcast"};
+  static std::vector<std::string> names = [] {
+    std::vector<std::string> v{"decentralized", "broadcast"};
+    const std::vector<std::string> beyond = BeyondPaperStrategyNames();  // issue 8's catalogue
+    v.insert(v.end(), beyond.begin(), beyond.end());
+    return v;
+  }();
   return names;
 }
 

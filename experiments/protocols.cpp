@@ -7,6 +7,8 @@
 #include "experiments/run_executor.h"
 #include "experiments/sim_protocol.h"
 #include "experiments/static_protocol.h"
+#include "experiments/static_strategies.h"
+#include "experiments/strategy_catalogue.h"
 
 namespace dvpr {
 
@@ -51,6 +53,22 @@ RunResult PaperBroadcastRow(const RunSpec& spec, const PaperEvaluator& evaluator
   return row;
 }
 
+// A catalogued strategy (experiments/strategy_catalogue.h) in the static protocol: its table
+// for this run, then EvaluateRouting.
+PaperRunResult PaperStrategyRun(const StrategySpec& spec, const RunSpec& run, const PaperEvaluator& evaluator,
+                                const DescriptorMatrix& training, const PaperProtocolParams& params) {
+  PaperProtocolParams table_params = params;
+  table_params.centroids_out_dir.clear();  // the paper run writes its own centroids
+  const auto table = BuildStrategyTable(spec, training, evaluator.deployment().descriptors, table_params,
+                                        run.robots, run.run);
+  PaperRunResult r = EvaluateRouting(evaluator, *MakeSpecRouting(spec, table), spec.name, params.keep_curves);
+  r.row.key = run.Key(spec.name);
+  r.row.seed = params.centroids_pattern.empty() ? PaperRunSeed(params.seed, run.robots, run.run) : 0;
+  for (auto& load : r.per_robot) load.key = r.row.key;
+  r.curve.run = run.run;
+  return r;
+}
+
 RunFunction MakePaperRun(const SharedInputs& in) {
   PaperProtocolParams params = ToPaperParams(in);
   if (!params.centroids_out_dir.empty()) std::filesystem::create_directories(params.centroids_out_dir);
@@ -67,16 +85,20 @@ RunFunction MakePaperRun(const SharedInputs& in) {
         out.runs.push_back(PaperBroadcastRow(spec, *evaluator, frames));
         continue;
       }
-      if (strategy != "decentralized") continue;  // a strategy the static protocol has no form of
-      PaperRunResult r = RunPaperRun(*evaluator, *training, run_params, spec.robots, spec.run);
-      r.row.key = spec.Key("decentralized");
+      const StrategySpec* beyond = FindStrategySpec(strategy);
+      if (strategy != "decentralized" && !beyond) continue;  // a strategy the static protocol has no form of
+      PaperRunResult r = beyond ? PaperStrategyRun(*beyond, spec, *evaluator, *training, run_params)
+                                : RunPaperRun(*evaluator, *training, run_params, spec.robots, spec.run);
+      r.row.key = spec.Key(strategy);
       for (auto& load : r.per_robot) load.key = r.row.key;
       out.runs.push_back(r.row);
       std::move(r.per_robot.begin(), r.per_robot.end(), std::back_inserter(out.per_robot));
       if (run_params.keep_curves) {
         const PrResult& central = evaluator->centralized();
-        out.curves.push_back(PrCurve{"centralized", spec.robots, spec.run, central.recall,
-                                     central.precision});
+        const bool first = out.curves.empty();  // the centralized curve once, however many strategies
+        if (first) {
+          out.curves.push_back(PrCurve{"centralized", spec.robots, spec.run, central.recall, central.precision});
+        }
         out.curves.push_back(std::move(r.curve));
       }
     }

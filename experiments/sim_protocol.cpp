@@ -7,6 +7,7 @@
 #include "agents/decentralized_routing.h"
 #include "experiments/simulation.h"
 #include "experiments/static_protocol.h"
+#include "experiments/strategy_catalogue.h"
 
 namespace dvpr {
 
@@ -170,6 +171,10 @@ std::unique_ptr<RoutingStrategy> MakeStrategy(const std::string& name, std::shar
                                               int robots) {
   if (name == "broadcast") return std::make_unique<BroadcastRouting>(robots);
   if (name == "decentralized") return std::make_unique<DecentralizedRouting>(std::move(table));
+  // Catalogued routings over the paper's table (issue 8); load-balanced tables are built per run.
+  if (const StrategySpec* s = FindStrategySpec(name); s && s->table == StrategySpec::Table::kPaper) {
+    return MakeSpecRouting(*s, std::move(table));
+  }
   throw std::invalid_argument("strategies: '" + name + "' has no simulation form");
 }
 
@@ -189,7 +194,12 @@ RunFunction MakeSimRun(const SharedInputs& in) {
     SimRunParams params = ToSimParams(*config, spec);
     const auto run_one = [&](const std::string& strategy) {
       params.lcm_log = log_dir.empty() ? std::filesystem::path() : log_dir / LogName(spec, strategy);
-      const auto routing = MakeStrategy(strategy, table, spec.robots);
+      const StrategySpec* own_table = FindStrategySpec(strategy);
+      if (own_table && own_table->table == StrategySpec::Table::kPaper) own_table = nullptr;
+      const auto routing =
+          own_table ? MakeSpecRouting(*own_table, BuildStrategyTable(*own_table, *training, data->descriptors,
+                                                                     centroid_params, spec.robots, spec.run))
+                    : MakeStrategy(strategy, table, spec.robots);
       SimRunLog log = RunSimulation(*data, *routing, params);
       SimRunSummary summary = SummarizeSimRun(log, data->trajectory.positions, config->evaluation.gt_radius_m,
                                               config->evaluation.suppression_frames);

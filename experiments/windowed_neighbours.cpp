@@ -135,4 +135,37 @@ std::vector<MatchOutcome> WindowedNeighbours::BestMatches(std::span<const RobotI
   return outcomes;
 }
 
+std::vector<MatchOutcome> WindowedNeighbours::BestMatchesWhere(const CandidateTest& candidate,
+                                                               std::int64_t* fallbacks) const {
+  std::vector<MatchOutcome> outcomes;
+  outcomes.reserve(static_cast<std::size_t>(n_));
+  std::int64_t fell_back = 0;
+  for (std::int64_t i = 0; i < n_; ++i) {
+    const auto base = static_cast<std::size_t>(i) * static_cast<std::size_t>(list_size_);
+    const double complete_below = complete_below_[static_cast<std::size_t>(i)];
+    MatchOutcome out{FrameId(static_cast<std::int32_t>(i)), std::nullopt, 0};
+    bool proven = false;
+    for (std::int32_t e = 0; e < length_[static_cast<std::size_t>(i)]; ++e) {
+      const std::int32_t j = frame_[base + static_cast<std::size_t>(e)];
+      if (!candidate(i, j)) continue;
+      const double dist = distance_[base + static_cast<std::size_t>(e)];
+      if (dist < complete_below) out = {out.query, FrameId(j), dist}, proven = true;
+      break;  // as in BestMatches(pool): the first candidate in the list is the best listed
+    }
+    if (!proven && complete_below < kInf) {
+      ++fell_back;
+      double best = kInf;
+      for (std::int64_t j = 0; j < n_; ++j) {  // ascending: strict < keeps the lowest frame
+        if ((j >= i - window_ && j <= i + window_) || !candidate(i, j)) continue;
+        const double dist = ExactSquaredL2(x_.row(i).data(), x_.row(j).data(), x_.cols());
+        if (!out.match || dist < best) best = dist, out.match = FrameId(static_cast<std::int32_t>(j));
+      }
+      if (out.match) out.score = best;
+    }
+    outcomes.push_back(out);
+  }
+  if (fallbacks) *fallbacks = fell_back;
+  return outcomes;
+}
+
 }  // namespace dvpr

@@ -11,6 +11,7 @@
 // Results equal argmin_j D[i, j] in exact arithmetic with ties to the lowest frame (numpy.argmin);
 // list_size changes only the speed.
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -37,6 +38,14 @@ class WindowedNeighbours {
   // answer (diagnostics).
   std::vector<MatchOutcome> BestMatches(std::span<const RobotId> pool,
                                         std::int64_t* fallbacks = nullptr) const;
+
+  // Best match of every query i among the frames j outside its window with candidate(i, j):
+  // pools generalised to routings where a frame is stored at several robots or a query searched
+  // at several (j is a candidate of i when j is stored where i is searched). Same results as a
+  // full scan; a query the list cannot answer scans every frame.
+  using CandidateTest = std::function<bool(std::int64_t query, std::int64_t frame)>;
+  std::vector<MatchOutcome> BestMatchesWhere(const CandidateTest& candidate,
+                                             std::int64_t* fallbacks = nullptr) const;
 
  private:
   void BuildRows(const Eigen::VectorXf& norms, std::int64_t first, std::int64_t count);
