@@ -1,8 +1,10 @@
 #include "experiments/strategy_catalogue.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "agents/decentralized_routing.h"
+#include "agents/kmeans.h"
 
 namespace dvpr {
 
@@ -20,11 +22,11 @@ std::vector<Spec> RoutingParts() {
     s.probe = {.probes = m, .epsilon = eps};
     parts.push_back(s);
   };
-  const auto replicate = [&](std::string name, double eps) {
+  const auto replicate = [&](std::string name, double eps, int replicas = 3) {
     Spec s;
     s.name = std::move(name);
     s.routing = Spec::Routing::kReplicate;
-    s.replicate = {.epsilon = eps, .max_replicas = 3};
+    s.replicate = {.epsilon = eps, .max_replicas = replicas};
     parts.push_back(s);
   };
   probe("multi_probe_2", 2, -1);
@@ -35,6 +37,10 @@ std::vector<Spec> RoutingParts() {
   replicate("replicate_0.05", 0.05);
   replicate("replicate_0.1", 0.1);
   replicate("replicate_0.2", 0.2);
+  replicate("replicate_0.3", 0.3);
+  replicate("replicate_0.5", 0.5);
+  replicate("replicate_0.5_r5", 0.5, 5);
+  replicate("replicate_1_r8", 1.0, 8);
   return parts;
 }
 
@@ -56,6 +62,8 @@ std::vector<Spec> TableParts() {
   table("lpt_c10_train", Spec::Table::kLpt, 10, -1, true);
   table("bounded_c10_0.1", Spec::Table::kBounded, 10, 0.1, false);
   table("bounded_c10_0.25", Spec::Table::kBounded, 10, 0.25, false);
+  table("sample_c2", Spec::Table::kSampleKMeans, 2, -1, false);
+  table("sample_c4", Spec::Table::kSampleKMeans, 4, -1, false);
   return parts;
 }
 
@@ -108,6 +116,16 @@ std::shared_ptr<const CentroidTable> BuildStrategyTable(const StrategySpec& spec
                                                         const DescriptorMatrix& deployment,
                                                         PaperProtocolParams params, int robots, int run) {
   if (spec.clusters_per_robot > 0) params.clusters_per_robot = spec.clusters_per_robot;
+  if (spec.table == StrategySpec::Table::kSampleKMeans) {
+    // The clusters follow where the deployment actually is, so no cluster holds half the team's
+    // frames; the sample (shared at start) also gives the loads.
+    const DescriptorMatrix sample = DeploymentSample(deployment);
+    KMeansParams kmeans = params.kmeans;
+    kmeans.k = std::min<int>(robots * params.clusters_per_robot, static_cast<int>(sample.rows()));
+    kmeans.seed = PaperRunSeed(params.seed, robots, run);
+    return std::make_shared<const CentroidTable>(
+        LoadBalancedTable(KMeans(sample, kmeans), sample, robots, spec.balance));
+  }
   CentroidMatrix centroids = PaperRunCentroids(training, params, robots, run);
   if (spec.table == StrategySpec::Table::kPaper) {
     return std::make_shared<const CentroidTable>(CentroidTable::RoundRobin(std::move(centroids), robots));

@@ -5,11 +5,13 @@
 //   multi_probe_M             search at the owners of the M nearest centroids (FAISS nprobe)
 //   adaptive_probe_E          search at the owners of centroids within (1 + E) of the nearest,
 //                             at most 8 (SPANN query-aware pruning)
-//   replicate_E               store also at owners of centroids within (1 + E), at most 3
-//                             (SPANN closure assignment)
+//   replicate_E[_rR]          store also at owners of centroids within (1 + E), at most R
+//                             centroids (default 3; SPANN closure assignment)
 //   lpt_cC                    C clusters per robot packed onto robots by LPT on expected load
 //   lpt_cC_train              the same with loads from the training set's cluster sizes
 //   bounded_cC_B              C clusters per robot, bounded loads (1 + B) x average
+//   sample_cC                 C clusters per robot from k-means on the shared deployment sample
+//                             (not the training set), packed by LPT on the sample's counts
 //   <table>+<routing>         a load-balanced table combined with probing or replication,
 //                             e.g. lpt_c10+adaptive_probe_0.1
 //
@@ -32,7 +34,7 @@ namespace dvpr {
 inline constexpr int kSampleStride = 20;
 
 struct StrategySpec {
-  enum class Table { kPaper, kLpt, kBounded };
+  enum class Table { kPaper, kLpt, kBounded, kSampleKMeans };
   enum class Routing { kNearest, kProbe, kReplicate };
   std::string name;
   Table table = Table::kPaper;

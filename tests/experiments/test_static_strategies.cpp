@@ -123,6 +123,21 @@ TEST(StrategyCatalogue, NamesAreKnownToConfigsAndCarryTheirParameters) {
   }
 }
 
+TEST(StrategyCatalogue, SampleTablesClusterWhereTheDeploymentIs) {
+  // Deployment: 20 frames at 0, then 20 at 100; the sample (frames 0 and 20) is {0, 100}, so
+  // k-means (k = min(2 x 2, 2 sample rows)) puts one centroid on each and LPT gives one per robot,
+  // whatever the training set says.
+  DescriptorMatrix deployment(40, 1);
+  for (int i = 0; i < 40; ++i) deployment(i, 0) = i < 20 ? 0.0f : 100.0f;
+  const DescriptorMatrix training = DescriptorMatrix::Constant(10, 1, 50.0f);
+  const StrategySpec* spec = FindStrategySpec("sample_c2");
+  ASSERT_NE(spec, nullptr);
+  const auto table = BuildStrategyTable(*spec, training, deployment, PaperProtocolParams{}, 2, 0);
+  EXPECT_EQ(table->num_centroids(), 2);
+  const float a = 1, b = 99;
+  EXPECT_NE(table->RouteOf(&a), table->RouteOf(&b));
+}
+
 TEST(StrategyCatalogue, DeploymentSampleTakesEveryTwentiethFrame) {
   DescriptorMatrix x(41, 1);
   for (int i = 0; i < 41; ++i) x(i, 0) = static_cast<float>(i);
