@@ -13,6 +13,7 @@
 #include "experiments/agent_log.h"
 #include "experiments/agent_records.h"
 #include "experiments/inputs.h"
+#include "experiments/option_reader.h"
 #include "experiments/sim_protocol.h"
 #include "experiments/split.h"
 #include "experiments/static_protocol.h"
@@ -33,24 +34,21 @@ void AgentProcessOptions::Validate() const {
 
 AgentProcessOptions ParseAgentArgs(const std::vector<std::string>& args) {
   AgentProcessOptions o;
-  for (std::size_t i = 1; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
-      return args[++i];
-    };
-    if (a == "--config") o.config = value();
-    else if (a == "--set") o.overrides.push_back(ParseOverride(value()));
-    else if (a == "--robot") o.robot = std::stoi(value());
-    else if (a == "--robots") o.robots = std::stoi(value());
-    else if (a == "--run") o.run = std::stoi(value());
-    else if (a == "--strategy") o.strategy = value();
-    else if (a == "--lcm") o.lcm_url = value();
-    else if (a == "--speedup") o.speedup = std::stod(value());
-    else if (a == "--out") o.out = value();
-    else if (a == "--grace") o.grace_s = std::stod(value());
-    else if (a == "--barrier-timeout") o.barrier_timeout_s = std::stod(value());
-    else throw std::invalid_argument("unknown option " + a);
+  OptionReader in(args);
+  while (in.Next()) {
+    const std::string& f = in.flag();
+    if (f == "--config") o.config = in.Text();
+    else if (f == "--set") o.overrides.push_back(ParseOverride(in.Text()));
+    else if (f == "--robot") o.robot = in.Int();
+    else if (f == "--robots") o.robots = in.Int();
+    else if (f == "--run") o.run = in.Int();
+    else if (f == "--strategy") o.strategy = in.Text();
+    else if (f == "--lcm") o.lcm_url = in.Text();
+    else if (f == "--speedup") o.speedup = in.Double();
+    else if (f == "--out") o.out = in.Text();
+    else if (f == "--grace") o.grace_s = in.Double();
+    else if (f == "--barrier-timeout") o.barrier_timeout_s = in.Double();
+    else in.Unknown();
   }
   o.Validate();
   return o;

@@ -14,6 +14,7 @@
 
 #include "experiments/agent_process.h"
 #include "experiments/inputs.h"
+#include "experiments/option_reader.h"
 #include "experiments/result_writers.h"
 #include "experiments/sim_protocol.h"
 #include "experiments/split.h"
@@ -32,22 +33,19 @@ void LaunchOptions::Validate() const {
 
 LaunchOptions ParseLaunchArgs(const std::vector<std::string>& args) {
   LaunchOptions o;
-  for (std::size_t i = 1; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
-      return args[++i];
-    };
-    if (a == "--config") o.config = value();
-    else if (a == "--set") o.overrides.push_back(ParseOverride(value()));
-    else if (a == "--robots") o.robots = std::stoi(value());
-    else if (a == "--run") o.run = std::stoi(value());
-    else if (a == "--out") o.out = value();
-    else if (a == "--lcm") o.lcm_url = value();
-    else if (a == "--speedup") o.speedup = std::stod(value());
-    else if (a == "--grace") o.grace_s = std::stod(value());
-    else if (a == "--timeout") o.timeout_s = std::stod(value());
-    else throw std::invalid_argument("unknown option " + a);
+  OptionReader in(args);
+  while (in.Next()) {
+    const std::string& f = in.flag();
+    if (f == "--config") o.config = in.Text();
+    else if (f == "--set") o.overrides.push_back(ParseOverride(in.Text()));
+    else if (f == "--robots") o.robots = in.Int();
+    else if (f == "--run") o.run = in.Int();
+    else if (f == "--out") o.out = in.Text();
+    else if (f == "--lcm") o.lcm_url = in.Text();
+    else if (f == "--speedup") o.speedup = in.Double();
+    else if (f == "--grace") o.grace_s = in.Double();
+    else if (f == "--timeout") o.timeout_s = in.Double();
+    else in.Unknown();
   }
   o.Validate();
   return o;
