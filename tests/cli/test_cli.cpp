@@ -105,3 +105,16 @@ TEST_F(CliTest, BadOverride) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(CliTest, BadNumberInAFlagNamesTheFlag) {
+  const Result agent = Dvpr("agent --robot x");
+  EXPECT_EQ(agent.status, 2) << agent.err;
+  EXPECT_NE(agent.err.find("--robot: expected an integer, got 'x'"), std::string::npos) << agent.err;
+  const Result launch = Dvpr("launch --speedup fast");
+  EXPECT_EQ(launch.status, 2) << launch.err;
+  EXPECT_NE(launch.err.find("--speedup: expected a number, got 'fast'"), std::string::npos) << launch.err;
+}
+
+}  // namespace
