@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "agents/balanced_kmeans.h"
 #include "agents/decentralized_routing.h"
 #include "agents/kmeans.h"
 
@@ -64,6 +65,11 @@ std::vector<Spec> TableParts() {
   table("bounded_c10_0.25", Spec::Table::kBounded, 10, 0.25, false);
   table("sample_c2", Spec::Table::kSampleKMeans, 2, -1, false);
   table("sample_c4", Spec::Table::kSampleKMeans, 4, -1, false);
+  table("balanced_c1", Spec::Table::kBalanced, 1, -1, false);
+  table("balanced_c4", Spec::Table::kBalanced, 4, -1, false);
+  table("balanced_sample_c1", Spec::Table::kBalancedSample, 1, -1, false);
+  table("balanced_sample_c2", Spec::Table::kBalancedSample, 2, -1, false);
+  table("balanced_sample_c4", Spec::Table::kBalancedSample, 4, -1, false);
   return parts;
 }
 
@@ -116,18 +122,28 @@ std::shared_ptr<const CentroidTable> BuildStrategyTable(const StrategySpec& spec
                                                         const DescriptorMatrix& deployment,
                                                         PaperProtocolParams params, int robots, int run) {
   if (spec.clusters_per_robot > 0) params.clusters_per_robot = spec.clusters_per_robot;
-  if (spec.table == StrategySpec::Table::kSampleKMeans) {
+  using Table = StrategySpec::Table;
+  if (spec.table == Table::kSampleKMeans || spec.table == Table::kBalancedSample) {
     // The clusters follow where the deployment actually is, so no cluster holds half the team's
     // frames; the sample (shared at start) also gives the loads.
     const DescriptorMatrix sample = DeploymentSample(deployment);
     KMeansParams kmeans = params.kmeans;
     kmeans.k = std::min<int>(robots * params.clusters_per_robot, static_cast<int>(sample.rows()));
     kmeans.seed = PaperRunSeed(params.seed, robots, run);
-    return std::make_shared<const CentroidTable>(
-        LoadBalancedTable(KMeans(sample, kmeans), sample, robots, spec.balance));
+    CentroidMatrix centroids =
+        spec.table == Table::kBalancedSample ? BalancedKMeans(sample, kmeans) : KMeans(sample, kmeans);
+    return std::make_shared<const CentroidTable>(LoadBalancedTable(std::move(centroids), sample, robots, spec.balance));
+  }
+  if (spec.table == Table::kBalanced) {
+    // Equal-size clusters of the training set, round robin: equal loads as far as the deployment
+    // looks like the training set. Seeded as the paper's k-means of the run.
+    KMeansParams kmeans = params.kmeans;
+    kmeans.k = robots * params.clusters_per_robot;
+    kmeans.seed = PaperRunSeed(params.seed, robots, run);
+    return std::make_shared<const CentroidTable>(CentroidTable::RoundRobin(BalancedKMeans(training, kmeans), robots));
   }
   CentroidMatrix centroids = PaperRunCentroids(training, params, robots, run);
-  if (spec.table == StrategySpec::Table::kPaper) {
+  if (spec.table == Table::kPaper) {
     return std::make_shared<const CentroidTable>(CentroidTable::RoundRobin(std::move(centroids), robots));
   }
   const DescriptorMatrix sample = spec.loads_from_training ? training : DeploymentSample(deployment);

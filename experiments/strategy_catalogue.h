@@ -12,6 +12,10 @@
 //   bounded_cC_B              C clusters per robot, bounded loads (1 + B) x average
 //   sample_cC                 C clusters per robot from k-means on the shared deployment sample
 //                             (not the training set), packed by LPT on the sample's counts
+//   balanced_cC               C clusters per robot from balanced (size-constrained) k-means on the
+//                             training set, round robin (agents/balanced_kmeans.h)
+//   balanced_sample_cC        balanced k-means on the shared deployment sample, packed by LPT on
+//                             the sample's nearest-centroid counts
 //   <table>+<routing>         a load-balanced table combined with probing or replication,
 //                             e.g. lpt_c10+adaptive_probe_0.1
 //
@@ -34,7 +38,7 @@ namespace dvpr {
 inline constexpr int kSampleStride = 20;
 
 struct StrategySpec {
-  enum class Table { kPaper, kLpt, kBounded, kSampleKMeans };
+  enum class Table { kPaper, kLpt, kBounded, kSampleKMeans, kBalanced, kBalancedSample };
   enum class Routing { kNearest, kProbe, kReplicate };
   std::string name;
   Table table = Table::kPaper;
