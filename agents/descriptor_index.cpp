@@ -1,5 +1,6 @@
 #include "agents/descriptor_index.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
@@ -16,6 +17,24 @@ void IncrementalIndex::Add(RobotId robot, FrameId frame, const float* descriptor
   data_.insert(data_.end(), descriptor, descriptor + dim_);
   norms_.push_back(Eigen::Map<const Eigen::VectorXf>(descriptor, dim_).squaredNorm());
   entries_.push_back({robot, frame});
+}
+
+void IncrementalIndex::RemoveIf(const std::function<bool(std::size_t)>& remove) {
+  const auto dim = static_cast<std::size_t>(dim_);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < entries_.size(); ++i) {
+    if (remove(i)) continue;
+    if (kept != i) {
+      std::copy_n(data_.begin() + static_cast<std::ptrdiff_t>(i * dim), dim,
+                  data_.begin() + static_cast<std::ptrdiff_t>(kept * dim));
+      norms_[kept] = norms_[i];
+      entries_[kept] = entries_[i];
+    }
+    ++kept;
+  }
+  entries_.resize(kept);
+  norms_.resize(kept);
+  data_.resize(kept * dim);
 }
 
 IndexSearchResult IncrementalIndex::Search(const float* query, FrameId query_frame, int window) const {

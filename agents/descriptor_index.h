@@ -8,6 +8,7 @@
 // expansion the static protocol's batched distances use.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -47,6 +48,13 @@ class IncrementalIndex {
   IndexSearchResult Search(const float* query, FrameId query_frame, int window) const;
 
   const std::vector<IndexEntry>& entries() const { return entries_; }
+  // The stored descriptor of entry i (dim() floats), valid until the next Add or RemoveIf.
+  const float* Descriptor(std::size_t i) const { return data_.data() + i * static_cast<std::size_t>(dim_); }
+
+  // Removes every entry i with remove(i) true; the others keep their order, so ties in Search
+  // still go to the entry added first. Re-clustering (agents/recluster_agent.h) moves stored
+  // descriptors to their new owner with it.
+  void RemoveIf(const std::function<bool(std::size_t)>& remove);
 
  private:
   int dim_;

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include <dvpr/centroid_table_t.hpp>
+#include <dvpr/descriptor_batch_t.hpp>
 #include <dvpr/match_t.hpp>
 #include <dvpr/query_t.hpp>
 #include <dvpr/verify_request_t.hpp>
@@ -65,6 +67,26 @@ inline bool LengthFieldFits<verify_request_t>(std::span<const std::uint8_t> buf)
   const auto size = ReadBigEndian(buf, kSizeOffset, 4);
   if (!size) return false;
   return *size >= 0 && static_cast<std::size_t>(*size) <= buf.size() - (kSizeOffset + 4);
+}
+// Re-clustering messages (agents/recluster_agent.h): rows x (per-row bytes) must fit.
+inline bool RowsFit(std::span<const std::uint8_t> buf, std::size_t header, std::optional<std::int64_t> rows,
+                    std::optional<std::int64_t> dim, std::int64_t fixed_per_row) {
+  if (!rows || !dim || *rows < 0 || *dim < 0 || buf.size() < header) return false;
+  const auto per_row = static_cast<std::uint64_t>(fixed_per_row + 4 * *dim);
+  return static_cast<std::uint64_t>(*rows) * per_row <= buf.size() - header;
+}
+
+template <>
+inline bool LengthFieldFits<descriptor_batch_t>(std::span<const std::uint8_t> buf) {
+  constexpr std::size_t kCountOffset = 8 + 8 + 4 + 2;  // fingerprint, utime, epoch, sender
+  return RowsFit(buf, kCountOffset + 6, ReadBigEndian(buf, kCountOffset, 4), ReadBigEndian(buf, kCountOffset + 4, 2),
+                 2 + 4);
+}
+
+template <>
+inline bool LengthFieldFits<centroid_table_t>(std::span<const std::uint8_t> buf) {
+  constexpr std::size_t kKOffset = 8 + 8 + 4 + 2;  // fingerprint, utime, epoch, leader
+  return RowsFit(buf, kKOffset + 4, ReadBigEndian(buf, kKOffset, 2), ReadBigEndian(buf, kKOffset + 2, 2), 2);
 }
 }  // namespace codec_detail
 

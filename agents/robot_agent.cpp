@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "agents/channels.h"
+#include "agents/recluster_agent.h"  // ReclusterState complete for the constructor
 
 namespace dvpr {
 
@@ -37,6 +38,7 @@ RobotAgent::RobotAgent(RobotId id, const AgentParams& params, Transport& transpo
   if (frames_.descriptors == nullptr) throw std::invalid_argument("RobotAgent: no descriptors");
   if (!(frames_.fps > 0.0)) throw std::invalid_argument("RobotAgent: fps must be positive");
   outcomes_.resize(static_cast<std::size_t>(frames_.count));
+  InitRecluster();
 }
 
 void RobotAgent::Start() {
@@ -47,6 +49,7 @@ void RobotAgent::Start() {
       channels::VerifyRequest(id_), [this](const verify_request_t& r) { OnVerifyRequest(r); }));
   subscriptions_.push_back(transport_.Subscribe<verify_result_t>(
       channels::VerifyResult(id_), [this](const verify_result_t& r) { OnVerifyResult(r); }));
+  if (recluster_) StartRecluster();
   if (frames_.count > 0) {
     transport_.ScheduleAfter(frames_.TimeOf(0), [this] { TakeFrame(0); });
   }
@@ -75,7 +78,7 @@ void RobotAgent::TakeFrame(int k) {
   }
   const FrameId frame(frames_.first.value + k);
   const float* descriptor = frames_.descriptors->row(frame.value).data();
-  const RoutingDecision decision = routing_.Route(id_, descriptor);
+  const RoutingDecision decision = recluster_ ? ReclusterRoute(descriptor) : routing_.Route(id_, descriptor);
 
   QueryOutcome& outcome = outcomes_[static_cast<std::size_t>(k)];
   outcome.frame = frame;
@@ -156,10 +159,7 @@ void RobotAgent::ServeSearch(Task task) {
 
   transport_.ScheduleAfter(duration, [this, task = std::move(task), best = result.best] {
     if (!online_) return;
-    if (task.store) {
-      index_.Add(task.querier, task.frame, task.descriptor.data());
-      ++load_.stored;
-    }
+    if (task.store) StoreQuery(task.querier, task.frame, task.descriptor.data());
     if (task.querier == id_) {
       RecordReply(task.frame, best);
     } else {
@@ -210,7 +210,9 @@ void RobotAgent::ServeVerify(Task task) {
 // stores it and sends nothing back.
 void RobotAgent::OnQuery(const query_t& q) {
   if (!online_ || q.robot == id_.value || q.dim != frames_.descriptors->cols()) return;
-  const RoutingStrategy::Role role = routing_.RoleOf(RobotId(q.robot), q.descriptor.data(), id_);
+  // Re-clustering: the receiver always searches; StoreQuery keeps or forwards by its own table.
+  const RoutingStrategy::Role role =
+      recluster_ ? RoutingStrategy::Role{true, true} : routing_.RoleOf(RobotId(q.robot), q.descriptor.data(), id_);
   if (!role.search) {
     if (role.store) {
       index_.Add(RobotId(q.robot), FrameId(q.frame), q.descriptor.data());
@@ -224,6 +226,15 @@ void RobotAgent::OnQuery(const query_t& q) {
   task.descriptor = q.descriptor;
   task.store = role.store;
   Enqueue(std::move(task));
+}
+
+void RobotAgent::StoreQuery(RobotId robot, FrameId frame, const float* descriptor) {
+  if (recluster_) {
+    StoreOrForward(robot, frame, descriptor);
+    return;
+  }
+  index_.Add(robot, frame, descriptor);
+  ++load_.stored;
 }
 
 void RobotAgent::OnMatch(const match_t& m) {

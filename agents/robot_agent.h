@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -74,12 +75,18 @@ struct VerifyVerdict {
 // query's keypoints. The simulation supplies one that checks the poses.
 using GeometricVerifier = std::function<VerifyVerdict(FrameId query, FrameId match)>;
 
+class CentroidTable;
+class centroid_table_t;
+class descriptor_batch_t;
+struct ReclusterState;
+
 class RobotAgent {
  public:
   RobotAgent(RobotId id, const AgentParams& params, Transport& transport, const RoutingStrategy& routing,
              FrameStream frames, GeometricVerifier verifier);
   RobotAgent(const RobotAgent&) = delete;
   RobotAgent& operator=(const RobotAgent&) = delete;
+  ~RobotAgent();
 
   // Subscribes to the robot's channels and schedules its first frame at t = 0.
   void Start();
@@ -90,6 +97,10 @@ class RobotAgent {
   const std::vector<QueryOutcome>& outcomes() const { return outcomes_; }
   const RobotLoad& load() const { return load_; }
   const IncrementalIndex& index() const { return index_; }
+  // Adaptive re-clustering (agents/recluster_agent.h), when the routing is a ReclusterRouting:
+  // this robot's current epoch and table. 0 and nullptr for every other routing.
+  int recluster_epoch() const;
+  const CentroidTable* recluster_table() const;
 
  private:
   struct Task {
@@ -116,6 +127,20 @@ class RobotAgent {
   void MaybeVerify(int k);
   int LocalIndexOf(FrameId frame) const;
   bool Contains(const std::vector<RobotId>& robots, RobotId r) const;
+  void StoreQuery(RobotId robot, FrameId frame, const float* descriptor);
+
+  // Re-clustering (robot_agent_recluster.cpp); recluster_ stays null for other routings, whose
+  // code paths do not change.
+  void InitRecluster();
+  void StartRecluster();
+  RoutingDecision ReclusterRoute(const float* descriptor) const;
+  void StoreOrForward(RobotId robot, FrameId frame, const float* descriptor);
+  void OnEpochBoundary(int epoch);
+  void OnSample(const descriptor_batch_t& b);
+  void LeaderCompute(int epoch, bool timed_out);
+  void OnTable(const centroid_table_t& t);
+  void AdoptTable(std::shared_ptr<const CentroidTable> table, int epoch);
+  void OnMigration(const descriptor_batch_t& b);
 
   RobotId id_;
   AgentParams params_;
@@ -130,6 +155,7 @@ class RobotAgent {
   bool busy_ = false;
   bool online_ = true;
   std::vector<Subscription> subscriptions_;
+  std::unique_ptr<ReclusterState> recluster_;
 };
 
 }  // namespace dvpr

@@ -7,6 +7,7 @@
 #include "experiments/run_executor.h"
 #include "experiments/sim_protocol.h"
 #include "experiments/static_protocol.h"
+#include "experiments/static_recluster.h"
 #include "experiments/static_strategies.h"
 #include "experiments/strategy_catalogue.h"
 
@@ -61,7 +62,13 @@ PaperRunResult PaperStrategyRun(const StrategySpec& spec, const RunSpec& run, co
   table_params.centroids_out_dir.clear();  // the paper run writes its own centroids
   const auto table = BuildStrategyTable(spec, training, evaluator.deployment().descriptors, table_params,
                                         run.robots, run.run);
-  PaperRunResult r = EvaluateRouting(evaluator, *MakeSpecRouting(spec, table), spec.name, params.keep_curves);
+  PaperRunResult r =
+      spec.recluster_period > 0
+          ? EvaluateRecluster(evaluator,
+                              PlanStaticRecluster(evaluator.deployment().descriptors, table,
+                                                  ReclusterParamsOf(spec, params.seed, run.robots, run.run)),
+                              spec.name, params.keep_curves)
+          : EvaluateRouting(evaluator, *MakeSpecRouting(spec, table), spec.name, params.keep_curves);
   r.row.key = run.Key(spec.name);
   r.row.seed = params.centroids_pattern.empty() ? PaperRunSeed(params.seed, run.robots, run.run) : 0;
   for (auto& load : r.per_robot) load.key = r.row.key;

@@ -5,7 +5,10 @@
 #include <stdexcept>
 
 #include "agents/decentralized_routing.h"
+#include "agents/recluster_agent.h"
 #include "experiments/simulation.h"
+#include "experiments/split.h"
+#include "experiments/static_recluster.h"
 #include "experiments/static_protocol.h"
 #include "experiments/strategy_catalogue.h"
 
@@ -56,6 +59,25 @@ SimRunParams ToSimParams(const ExperimentConfig& c, const RunSpec& spec) {
 std::string LogName(const RunSpec& spec, const std::string& strategy) {
   return "sim_" + strategy + "_n" + std::to_string(spec.robots) + "_r" + std::to_string(spec.run) + "_v" +
          std::to_string(spec.network->index) + ".lcmlog";
+}
+
+// Adaptive re-clustering (agents/recluster_agent.h): the team's plan for this run. The leader
+// waits half a period for the samples.
+std::unique_ptr<RoutingStrategy> MakeReclusterRouting(const StrategySpec& s, std::shared_ptr<const CentroidTable> initial,
+                                                      const Dataset& data, std::uint64_t config_seed,
+                                                      const RunSpec& spec) {
+  ReclusterPlan plan;
+  plan.params = ReclusterParamsOf(s, config_seed, spec.robots, spec.run);
+  plan.initial = std::move(initial);
+  const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), spec.robots);
+  int longest = 0;
+  for (const FrameRange& r : split.ranges) {
+    plan.stream_first.push_back(r.begin);
+    longest = std::max(longest, r.size());
+  }
+  plan.epochs = ReclusterEpochs(longest, plan.params);
+  plan.sample_timeout = SimTime::Seconds(0.5 * plan.params.period / data.fps);
+  return std::make_unique<ReclusterRouting>(std::move(plan));
 }
 
 }  // namespace
@@ -196,10 +218,15 @@ RunFunction MakeSimRun(const SharedInputs& in) {
       params.lcm_log = log_dir.empty() ? std::filesystem::path() : log_dir / LogName(spec, strategy);
       const StrategySpec* own_table = FindStrategySpec(strategy);
       if (own_table && own_table->table == StrategySpec::Table::kPaper) own_table = nullptr;
-      const auto routing =
-          own_table ? MakeSpecRouting(*own_table, BuildStrategyTable(*own_table, *training, data->descriptors,
-                                                                     centroid_params, spec.robots, spec.run))
-                    : MakeStrategy(strategy, table, spec.robots);
+      std::unique_ptr<RoutingStrategy> routing;
+      if (own_table) {
+        auto own = BuildStrategyTable(*own_table, *training, data->descriptors, centroid_params, spec.robots, spec.run);
+        routing = own_table->recluster_period > 0
+                      ? MakeReclusterRouting(*own_table, std::move(own), *data, centroid_params.seed, spec)
+                      : MakeSpecRouting(*own_table, std::move(own));
+      } else {
+        routing = MakeStrategy(strategy, table, spec.robots);
+      }
       SimRunLog log = RunSimulation(*data, *routing, params);
       SimRunSummary summary = SummarizeSimRun(log, data->trajectory.positions, config->evaluation.gt_radius_m,
                                               config->evaluation.suppression_frames);

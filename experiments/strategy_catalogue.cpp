@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "agents/balanced_kmeans.h"
 #include "agents/decentralized_routing.h"
@@ -73,6 +75,22 @@ std::vector<Spec> TableParts() {
   return parts;
 }
 
+// Adaptive re-clustering: (C, P). The team starts from lpt_cC_train's table (no deployment
+// knowledge); no routing combinations (the agents route by their current table).
+std::vector<Spec> ReclusterParts() {
+  std::vector<Spec> parts;
+  for (const auto& [c, p] : {std::pair{4, 50}, std::pair{4, 100}, std::pair{2, 50}}) {
+    Spec s;
+    s.name = "recluster_c" + std::to_string(c) + "_p" + std::to_string(p);
+    s.table = Spec::Table::kLpt;
+    s.clusters_per_robot = c;
+    s.loads_from_training = true;
+    s.recluster_period = p;
+    parts.push_back(s);
+  }
+  return parts;
+}
+
 std::vector<Spec> BuildCatalogue() {
   std::vector<Spec> all = RoutingParts();
   const std::vector<Spec> tables = TableParts();
@@ -88,6 +106,8 @@ std::vector<Spec> BuildCatalogue() {
       all.push_back(s);
     }
   }
+  const std::vector<Spec> recluster = ReclusterParts();
+  all.insert(all.end(), recluster.begin(), recluster.end());
   return all;
 }
 

@@ -16,6 +16,9 @@
 //                             training set, round robin (agents/balanced_kmeans.h)
 //   balanced_sample_cC        balanced k-means on the shared deployment sample, packed by LPT on
 //                             the sample's nearest-centroid counts
+//   recluster_cC_pP           starts as lpt_cC_train; every P frames of each robot's stream the
+//                             leader re-clusters (k = C n) a sample of the descriptors seen so far
+//                             and the robots move what they no longer own (agents/recluster.h)
 //   <table>+<routing>         a load-balanced table combined with probing or replication,
 //                             e.g. lpt_c10+adaptive_probe_0.1
 //
@@ -48,6 +51,10 @@ struct StrategySpec {
   Routing routing = Routing::kNearest;
   MultiProbeParams probe;
   ReplicationParams replicate;
+  // > 0: adaptive re-clustering every this many frames of each robot's stream (recluster_cC_pP;
+  // experiments/static_recluster.h, agents/recluster_agent.h); the table above (lpt_cC_train)
+  // is the one the team starts with.
+  int recluster_period = 0;
 };
 
 // Every name the catalogue defines, in a fixed order (config registers them).
