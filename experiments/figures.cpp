@@ -144,6 +144,8 @@ std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::ostream& log) {
   const bool have3 = WriteRelativeAucData(data, rows);
   const bool have5 = WriteBytesPerQueryData(data, rows);
   const bool have6 = WriteLatencyData(data, rows);
+  const bool have7 = WriteStrategyTradeoffData(data, rows);
+  const bool have8 = WriteStrategySweepData(data, rows);
   if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
     log << "dvpr: figures not drawn: gnuplot is not installed (scripts/setup.sh installs it)\n";
     return {};
@@ -158,7 +160,9 @@ std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::ostream& log) {
       {"relative_auc_balance", have3, RelativeAucScript, "no decentralized runs"},
       {"descriptor_dims", fs::exists(data / "descriptor_dims.titles"), DimsScript, "no data"},
       {"bytes_per_query", have5, BytesScript, "needs protocol sim"},
-      {"query_latency", have6, LatencyScript, "needs protocol sim"}};
+      {"query_latency", have6, LatencyScript, "needs protocol sim"},
+      {"strategy_tradeoff", have7, StrategyTradeoffScript, "no relative AUC in runs.csv"},
+      {"strategy_sweep", have8, StrategySweepScript, "needs a relative AUC at two or more n"}};
   std::vector<fs::path> drawn;
   for (const Figure& f : figures) {
     const fs::path png = fig / (std::string(f.name) + ".png");

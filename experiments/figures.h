@@ -11,6 +11,10 @@
 //   4 descriptor_dims.png    descriptor dimensions 1 and 2, training vs deployment
 //   5 bytes_per_query.png    bytes per query vs n, per strategy and network model (sim)
 //   6 query_latency.png      mean query latency vs n, per strategy and bandwidth (sim)
+//   7 strategy_tradeoff.png  every strategy at two n (10 and 20): relative AUC, worst balance,
+//                            bytes per query (dot plots, min-max over runs), and relative AUC vs
+//                            worst balance (one labelled point per strategy, the issue-8 target)
+//   8 strategy_sweep.png     relative AUC, worst balance, bytes per query vs n, every strategy
 #include <filesystem>
 #include <ostream>
 #include <string>
@@ -44,7 +48,51 @@ bool WriteBytesPerQueryData(const std::filesystem::path& data_dir,
                             const std::vector<RunResult>& rows);
 bool WriteLatencyData(const std::filesystem::path& data_dir, const std::vector<RunResult>& rows);
 
-// Reads out_dir/runs.csv, writes the data of figures 3, 5, 6, then draws every figure whose data
+// Figures 7 and 8 (experiments/figures_strategies.cpp): runs.csv aggregated per (strategy, n).
+// Mean, min and max over the runs that have the metric (NaN and runs = 0 when none).
+struct RunSpread {
+  int runs = 0;
+  double mean = kNotApplicable;
+  double min = kNotApplicable;
+  double max = kNotApplicable;
+};
+struct StrategyStats {
+  std::string strategy;
+  int robots = 0;
+  RunSpread relative_auc;     // rows of StrategyTable::accuracy_protocol
+  RunSpread worst_balance;    // idem
+  RunSpread bytes_per_query;  // sim rows of network variant StrategyTable::bytes_variant
+};
+struct StrategyTable {
+  // "paper" (the static protocol) when runs.csv has paper rows with a relative AUC, else "sim"
+  // (its first network variant), else "" (nothing to plot).
+  std::string accuracy_protocol;
+  int bytes_variant = -1;             // smallest sim network variant with bytes; -1: no sim rows
+  std::string bytes_network;          // e.g. "point-to-point 10 Mbit/s"
+  std::vector<std::string> strategies;  // every strategy of runs.csv, in order of appearance
+  std::vector<int> robots;            // every n, ascending
+  std::vector<StrategyStats> stats;   // every (strategy, n) with a row, strategy-major, n ascending
+  // nullptr when (strategy, robots) has no row.
+  const StrategyStats* Find(const std::string& strategy, int robots) const;
+};
+StrategyTable TabulateStrategies(const std::vector<RunResult>& rows);
+// The n of figure 7: {10, 20} when both were swept, else the two largest (or the only one).
+std::vector<int> ComparedRobots(const std::vector<int>& robots);
+// Data of figures 7 and 8; false (nothing written) when there is no relative AUC to plot, or,
+// for figure 8, fewer than two robot counts.
+bool WriteStrategyTradeoffData(const std::filesystem::path& data_dir,
+                               const std::vector<RunResult>& rows);
+bool WriteStrategySweepData(const std::filesystem::path& data_dir,
+                            const std::vector<RunResult>& rows);
+// Their gnuplot scripts (script text; `png` is the file it writes, next to data_dir's parent).
+std::string StrategyTradeoffScript(const std::filesystem::path& data_dir,
+                                   const std::filesystem::path& png);
+std::string StrategySweepScript(const std::filesystem::path& data_dir,
+                                const std::filesystem::path& png);
+// "point-to-point 10 Mbit/s": how the figures name a network variant.
+std::string NetworkText(const NetworkLabel& network);
+
+// Reads out_dir/runs.csv, writes the data of figures 3, 5, 6, 7, 8, then draws every figure whose data
 // exists. Figures that cannot be drawn (no data, gnuplot missing or failing) are reported on
 // `log` and skipped. Returns the PNGs written.
 std::vector<std::filesystem::path> DrawFigures(const std::filesystem::path& out_dir,

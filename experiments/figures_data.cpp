@@ -78,6 +78,10 @@ std::string ModelLabel(const std::string& model) {
 
 }  // namespace
 
+std::string NetworkText(const NetworkLabel& network) {
+  return ModelLabel(network.model) + " " + BandwidthLabel(network.bandwidth_bps);
+}
+
 void WriteConfusionData(const std::filesystem::path& data_dir, const DescriptorMatrix& deployment,
                         int step) {
   const Eigen::Index m = (deployment.rows() + step - 1) / step;
