@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "agents/lcm_codec.h"
+#include "agents/recluster_agent.h"
 
 namespace dvpr {
 namespace {
@@ -77,6 +78,58 @@ TEST(MessageSize, VerifyRequestIs32BytesPlusPayload) {
   // 8 + 8 + 2 + 4 + 2 + 4 + payload_size 4 = 32, then the payload
   EXPECT_EQ(Encode(MakeVerifyRequest(0)).size(), 32u);
   EXPECT_EQ(Encode(MakeVerifyRequest(25000)).size(), 25032u);
+}
+
+// Re-clustering messages (agents/recluster_agent.h).
+descriptor_batch_t MakeBatch(int count, int dim) {
+  descriptor_batch_t b;
+  b.utime = 5;
+  b.epoch = 3;
+  b.sender = 2;
+  b.count = count;
+  b.dim = static_cast<std::int16_t>(dim);
+  for (int i = 0; i < count; ++i) {
+    b.robots.push_back(static_cast<std::int16_t>(i % 3));
+    b.frames.push_back(1000 + i);
+    std::vector<float> row;
+    for (int c = 0; c < dim; ++c) row.push_back(static_cast<float>(i) - 0.5f * static_cast<float>(c));
+    b.descriptors.push_back(row);
+  }
+  return b;
+}
+
+centroid_table_t MakeTable(int k, int dim) {
+  centroid_table_t t;
+  t.utime = 7;
+  t.epoch = 2;
+  t.leader = 0;
+  t.k = static_cast<std::int16_t>(k);
+  t.dim = static_cast<std::int16_t>(dim);
+  for (int c = 0; c < k; ++c) {
+    t.centroids.emplace_back(static_cast<std::size_t>(dim), 0.25f * static_cast<float>(c));
+    t.owners.push_back(static_cast<std::int16_t>(c % 4));
+  }
+  return t;
+}
+
+TEST(MessageSize, DescriptorBatchIs28BytesPlus6Plus4DimPerDescriptor) {
+  // 8 + utime 8 + epoch 4 + sender 2 + count 4 + dim 2 = 28; each descriptor: robot 2 + frame 4
+  // + dim x 4. Empty: 28; one of dim 1: 38; two of dim 1: 48; three of 128 floats:
+  // 28 + 3 x (6 + 512) = 1582.
+  EXPECT_EQ(Encode(MakeBatch(0, 128)).size(), 28u);
+  EXPECT_EQ(Encode(MakeBatch(1, 1)).size(), 38u);
+  EXPECT_EQ(Encode(MakeBatch(2, 1)).size(), 48u);
+  EXPECT_EQ(Encode(MakeBatch(3, 128)).size(), 1582u);
+  EXPECT_EQ(DescriptorBatchBytes(3, 128), 1582);
+  EXPECT_EQ(DescriptorBatchBytes(0, 128), 28);
+}
+
+TEST(MessageSize, CentroidTableIs26BytesPlus4DimPlus2PerCentroid) {
+  // 8 + utime 8 + epoch 4 + leader 2 + k 2 + dim 2 = 26; each centroid dim x 4 + owner 2.
+  // k = 2, dim 1: 26 + 2 x 6 = 38; k = 40, dim 128: 26 + 40 x 514 = 20586.
+  EXPECT_EQ(Encode(MakeTable(2, 1)).size(), 38u);
+  EXPECT_EQ(Encode(MakeTable(40, 128)).size(), 20586u);
+  EXPECT_EQ(CentroidTableBytes(40, 128), 20586);
 }
 
 TEST(MessageSize, VerifyResultIs33Bytes) {
@@ -174,6 +227,32 @@ TEST(MessageDecode, GarbageLengthFieldDoesNotAllocate) {
   auto q = Encode(MakeQuery(4));
   q[22] = 0x80;  // dim = -32768 + ...: negative
   EXPECT_FALSE(Decode<query_t>(q).has_value());
+}
+
+TEST(MessageRoundTrip, DescriptorBatchAndCentroidTable) {
+  const descriptor_batch_t b = MakeBatch(3, 5);
+  const descriptor_batch_t b2 = RoundTrip(b);
+  EXPECT_EQ(b2.epoch, 3);
+  EXPECT_EQ(b2.sender, 2);
+  EXPECT_EQ(b2.frames, b.frames);
+  EXPECT_EQ(b2.robots, b.robots);
+  EXPECT_EQ(b2.descriptors, b.descriptors);
+  const centroid_table_t t = MakeTable(3, 4);
+  const centroid_table_t t2 = RoundTrip(t);
+  EXPECT_EQ(t2.epoch, 2);
+  EXPECT_EQ(t2.centroids, t.centroids);
+  EXPECT_EQ(t2.owners, t.owners);
+  ExpectEveryTruncationFails(MakeBatch(2, 3));
+  ExpectEveryTruncationFails(MakeTable(2, 3));
+}
+
+TEST(MessageDecode, ReclusteringLengthFieldsThatClaimTooMuchAreRejected) {
+  auto b = Encode(MakeBatch(1, 2));
+  b[22] = 0x7f;  // count (offset 8 + 8 + 4 + 2) = 2^31 - ...: far more rows than bytes
+  EXPECT_FALSE(Decode<descriptor_batch_t>(b).has_value());
+  auto t = Encode(MakeTable(1, 2));
+  t[24] = 0x7f;  // dim (offset 8 + 8 + 4 + 2 + 2): 32k floats per centroid
+  EXPECT_FALSE(Decode<centroid_table_t>(t).has_value());
 }
 
 }  // namespace
