@@ -259,7 +259,7 @@ TEST_F(LcmTeamTest, GarbageOnEveryChannelIsCountedAndIgnored) {
   std::vector<std::uint8_t> lying = full;
   lying[22] = 0x7f;  // dim claims 32k floats
   lying[23] = 0xff;
-  match_t wrong_type;
+  match_t wrong_type{};  // zeroed: encoding uninitialised fields is undefined (Release -Werror=maybe-uninitialized)
   agent_status_t foreign_status;
   foreign_status.robot = 1;
   foreign_status.robots = kRobots;
