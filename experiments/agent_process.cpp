@@ -17,6 +17,7 @@
 #include "experiments/sim_protocol.h"
 #include "experiments/split.h"
 #include "experiments/static_protocol.h"
+#include "experiments/strategy_catalogue.h"
 #include "net_models/wire_format.h"
 
 namespace dvpr {
@@ -197,6 +198,7 @@ struct Team {
   int robots = 0;
   std::string strategy;
   std::shared_ptr<const CentroidTable> table;
+  const StrategySpec* own_table = nullptr;  // a catalogued strategy with its own table
   std::int64_t key = 0;
 };
 
@@ -213,9 +215,18 @@ Team LoadTeam(const AgentProcessOptions& o) {
                                 " frames (at least 2, at most one per frame)");
   }
   if (o.robot >= t.robots) throw std::invalid_argument("--robot " + std::to_string(o.robot) + " is not in a team of " + std::to_string(t.robots));
-  const CentroidMatrix centroids = PaperRunCentroids(t.inputs.training, CentroidParams(t.config), t.robots, o.run);
-  t.key = TeamKey(t.config, t.inputs.deployment, centroids, t.strategy, t.robots, o.run);
-  t.table = std::make_shared<const CentroidTable>(CentroidTable::RoundRobin(centroids, t.robots));
+  // The paper's table, or the strategy's own (issue 8's load-balanced tables), built by every
+  // process from the same inputs, so the whole team routes alike.
+  const StrategySpec* spec = FindStrategySpec(t.strategy);
+  if (spec && spec->table != StrategySpec::Table::kPaper) {
+    t.own_table = spec;
+    t.table = BuildStrategyTable(*spec, t.inputs.training, t.inputs.deployment.descriptors, CentroidParams(t.config),
+                                 t.robots, o.run);
+  } else {
+    t.table = std::make_shared<const CentroidTable>(CentroidTable::RoundRobin(
+        PaperRunCentroids(t.inputs.training, CentroidParams(t.config), t.robots, o.run), t.robots));
+  }
+  t.key = TeamKey(t.config, t.inputs.deployment, t.table->centroids(), t.strategy, t.robots, o.run);
   return t;
 }
 
@@ -271,7 +282,7 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   o.Validate();
   const Team t = LoadTeam(o);
   const Dataset& data = t.inputs.deployment;
-  const auto routing = MakeStrategy(t.strategy, t.table, t.robots);
+  const auto routing = t.own_table ? MakeSpecRouting(*t.own_table, t.table) : MakeStrategy(t.strategy, t.table, t.robots);
   const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), t.robots);
   const FrameRange range = split.ranges.at(static_cast<std::size_t>(o.robot));
 

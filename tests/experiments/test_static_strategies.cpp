@@ -138,6 +138,59 @@ TEST(StrategyCatalogue, SampleTablesClusterWhereTheDeploymentIs) {
   EXPECT_NE(table->RouteOf(&a), table->RouteOf(&b));
 }
 
+// The lopsided set of tests/agents/test_balanced_kmeans.cpp: plain k-means (k = 2) puts the
+// outlier 100 alone (centroids 4.8 and 100), balanced k-means splits 3 + 3 (centroids 1 and
+// 40.33). A query at 30 is nearest 4.8 in the first table (25.2 < 70) but 40.33 in the second
+// (10.33 < 29): it then goes to the robot that owns 100's cluster, not 1's.
+DescriptorMatrix Lopsided() {
+  DescriptorMatrix x(6, 1);
+  x << 0, 1, 2, 10, 11, 100;
+  return x;
+}
+
+TEST(StrategyCatalogue, BalancedTablesSplitTheTrainingSetIntoEqualClusters) {
+  const StrategySpec* spec = FindStrategySpec("balanced_c1");
+  ASSERT_NE(spec, nullptr);
+  EXPECT_EQ(spec->table, StrategySpec::Table::kBalanced);
+  const DescriptorMatrix training = Lopsided();
+  const DescriptorMatrix deployment = DescriptorMatrix::Constant(10, 1, 50.0f);
+  const auto balanced = BuildStrategyTable(*spec, training, deployment, PaperProtocolParams{}, 2, 0);
+  ASSERT_EQ(balanced->num_centroids(), 2);
+  const float one = 1, thirty = 30, hundred = 100;
+  EXPECT_NE(balanced->RouteOf(&thirty), balanced->RouteOf(&one));
+  EXPECT_EQ(balanced->RouteOf(&thirty), balanced->RouteOf(&hundred));
+  // The paper's table on the same training set sends 30 with 1.
+  const auto paper = BuildStrategyTable(*FindStrategySpec("replicate_0.1"), training, deployment, PaperProtocolParams{}, 2, 0);
+  EXPECT_EQ(paper->RouteOf(&thirty), paper->RouteOf(&one));
+  EXPECT_NE(paper->RouteOf(&thirty), paper->RouteOf(&hundred));
+}
+
+TEST(StrategyCatalogue, BalancedSampleTablesSplitTheDeploymentSample) {
+  // 101 deployment frames whose every 20th frame is the lopsided set; the training set is
+  // irrelevant. balanced_sample_c1 clusters the sample into 3 + 3 as above; sample_c2 is not
+  // comparable (k = 4), so the paper-like contrast is plain k-means on the same sample.
+  DescriptorMatrix deployment = DescriptorMatrix::Constant(101, 1, 50.0f);
+  const DescriptorMatrix lopsided = Lopsided();
+  for (int i = 0; i < 6; ++i) deployment(i * 20, 0) = lopsided(i, 0);
+  const DescriptorMatrix training = DescriptorMatrix::Constant(10, 1, -7.0f);
+  const StrategySpec* spec = FindStrategySpec("balanced_sample_c1+replicate_0.5_r5");
+  ASSERT_NE(spec, nullptr);
+  EXPECT_EQ(spec->table, StrategySpec::Table::kBalancedSample);
+  EXPECT_EQ(spec->routing, StrategySpec::Routing::kReplicate);
+  const auto table = BuildStrategyTable(*spec, training, deployment, PaperProtocolParams{}, 2, 0);
+  ASSERT_EQ(table->num_centroids(), 2);
+  const float one = 1, thirty = 30, hundred = 100;
+  EXPECT_NE(table->RouteOf(&thirty), table->RouteOf(&one));
+  EXPECT_EQ(table->RouteOf(&thirty), table->RouteOf(&hundred));
+  // Replication within 1.5 x the nearest distance: 30 is 10.33 from 40.33 and 29 from 1
+  // (29 > 15.5): stored at one robot; 20 is 19 from 1 and 20.33 from 40.33 (<= 28.5): at both.
+  const auto routing = MakeSpecRouting(*spec, table);
+  EXPECT_EQ(routing->Route(RobotId(0), &thirty).store_at.size(), 1U);
+  const float twenty = 20;
+  EXPECT_EQ(routing->Route(RobotId(0), &twenty).store_at.size(), 2U);
+  EXPECT_EQ(routing->Route(RobotId(0), &twenty).search_at.size(), 1U);
+}
+
 TEST(StrategyCatalogue, DeploymentSampleTakesEveryTwentiethFrame) {
   DescriptorMatrix x(41, 1);
   for (int i = 0; i < 41; ++i) x(i, 0) = static_cast<float>(i);
