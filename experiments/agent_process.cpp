@@ -218,6 +218,11 @@ Team LoadTeam(const AgentProcessOptions& o) {
   // The paper's table, or the strategy's own (issue 8's load-balanced tables), built by every
   // process from the same inputs, so the whole team routes alike.
   const StrategySpec* spec = FindStrategySpec(t.strategy);
+  if (spec && spec->recluster_period > 0) {
+    throw std::invalid_argument("--strategy: '" + t.strategy +
+                                "' re-clusters during the run, which dvpr agent does not implement; run it in the "
+                                "simulation (dvpr run)");
+  }
   if (spec && spec->table != StrategySpec::Table::kPaper) {
     t.own_table = spec;
     t.table = BuildStrategyTable(*spec, t.inputs.training, t.inputs.deployment.descriptors, CentroidParams(t.config),

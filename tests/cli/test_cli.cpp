@@ -118,3 +118,19 @@ TEST_F(CliTest, BadNumberInAFlagNamesTheFlag) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(CliTest, AgentRefusesAStrategyItCannotRunInsteadOfRunningAnother) {
+  // recluster_* re-clusters during the run, which only the simulation implements; an agent that
+  // routed with the start table instead would give a silently different team.
+  const std::string config = std::string(DVPR_SOURCE_DIR) + "/experiments/configs/paper_kitti00.yaml";
+  const Result r = Dvpr("agent --config '" + config +
+                        "' --robot 0 --robots 2 --strategy recluster_c4_p50 --set dataset.frames=300"
+                        " --set training.synthetic.samples=2000 --out '" + (dir_ / "agent.log").string() + "'");
+  EXPECT_NE(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("--strategy: 'recluster_c4_p50' re-clusters during the run"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "agent.log"));
+}
+
+}  // namespace
