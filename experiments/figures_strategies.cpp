@@ -178,8 +178,9 @@ struct PlacedLabel {
 
 // Greedy: each point takes the first candidate inside the panel that overlaps no label placed
 // so far and no other point; if none is free, the one with the least overlap.
-std::vector<PlacedLabel> PlaceLabels(const std::vector<ScatterPoint>& points, double pw, double ph,
-                                     std::vector<Box> taken) {
+std::vector<PlacedLabel> PlaceLabels(const std::vector<ScatterPoint>& points, double pw,
+                                     double ph) {
+  std::vector<Box> taken;
   std::vector<PlacedLabel> placed;
   const std::vector<Candidate> candidates = Candidates();
   for (const auto& p : points) {
@@ -190,7 +191,7 @@ std::vector<PlacedLabel> PlaceLabels(const std::vector<ScatterPoint>& points, do
       double cost = (b.x0 < 0 || b.x1 > pw || b.y0 < 0 || b.y1 > ph) ? 1e9 : 0;
       for (const auto& t : taken) cost += t.Overlap(b);
       for (const auto& q : points) {
-        if (&q != &p) cost += Box{q.px - 5, q.py - 5, q.px + 5, q.py + 5}.Overlap(b) * 4;
+        if (&q != &p) cost += Box{q.px - 7, q.py - 7, q.px + 7, q.py + 7}.Overlap(b) * 4;
       }
       if (cost < best_cost) {
         best_cost = cost;
@@ -231,10 +232,8 @@ std::vector<ScatterPoint> ScatterPoints(const StrategyTable& t, int n, const Tra
 std::string LabelLines(const StrategyTable& t, int n, const TradeoffAxes& a) {
   const double pw = kScatterWidth * kTradeoffWidth;
   const double ph = (kScatterTop - kScatterBottom) * kTradeoffHeight;
-  // The target corner's caption sits at the top left of the panel.
-  const std::vector<Box> taken = {{0, ph - 3.4 * kCharHeight, 15 * kCharWidth, ph}};
   std::ostringstream out;
-  for (const auto& l : PlaceLabels(ScatterPoints(t, n, a, pw, ph), pw, ph, taken)) {
+  for (const auto& l : PlaceLabels(ScatterPoints(t, n, a, pw, ph), pw, ph)) {
     const bool leader = std::abs(l.where.dy) > 1.5 * kCharHeight;
     out << FormatDouble((l.point.px + l.where.dx) / pw, 4) << ' '
         << FormatDouble((l.point.py + l.where.dy) / ph, 4) << ' '
@@ -386,6 +385,44 @@ bool WriteStrategyTradeoffData(const fs::path& data_dir, const std::vector<RunRe
   return true;
 }
 
+namespace {
+
+// Groups of strategies whose worst balance is the same at every n (their lines coincide in
+// figure 8), one "a = b = c" per group; e.g. routings that only add stores keep their table's.
+std::vector<std::string> CoincidingBalance(const StrategyTable& t) {
+  auto series = [&](const std::string& name) {
+    std::vector<double> v;
+    for (int n : t.robots) {
+      const StrategyStats* s = t.Find(name, n);
+      v.push_back(s ? s->worst_balance.mean : kNotApplicable);
+    }
+    return v;
+  };
+  auto same = [](const std::vector<double>& a, const std::vector<double>& b) {
+    bool any = false;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      if (std::isnan(a[i]) != std::isnan(b[i])) return false;
+      if (!std::isnan(a[i]) && std::abs(a[i] - b[i]) > 1e-9 * std::abs(a[i])) return false;
+      any = any || !std::isnan(a[i]);
+    }
+    return any;
+  };
+  std::vector<std::string> groups;
+  std::vector<bool> used(t.strategies.size(), false);
+  for (std::size_t i = 0; i < t.strategies.size(); ++i) {
+    std::string group = t.strategies[i];
+    for (std::size_t j = i + 1; j < t.strategies.size(); ++j) {
+      if (used[i] || used[j] || !same(series(t.strategies[i]), series(t.strategies[j]))) continue;
+      used[j] = true;
+      group += " = " + t.strategies[j];
+    }
+    if (group != t.strategies[i]) groups.push_back(group);
+  }
+  return groups;
+}
+
+}  // namespace
+
 bool WriteStrategySweepData(const fs::path& data_dir, const std::vector<RunResult>& rows) {
   const StrategyTable t = TabulateStrategies(rows);
   if (t.accuracy_protocol.empty() || t.robots.size() < 2) return false;
@@ -421,6 +458,7 @@ bool WriteStrategySweepData(const fs::path& data_dir, const std::vector<RunResul
   meta << "\nprotocol " << t.accuracy_protocol << "\nnetwork " << (bytes ? t.bytes_network : "")
        << "\nruns " << MaxRuns(t) << "\nbalance_hi "
        << FormatDouble(ChooseAxes(t, t.robots).balance_hi, 0) << "\n";
+  for (const auto& g : CoincidingBalance(t)) meta << "same_balance " << g << '\n';
   WriteFileAtomic(data_dir / "strategy_sweep.titles", names.str());
   WriteFileAtomic(data_dir / "strategy_sweep.meta", meta.str());
   return true;
@@ -534,15 +572,14 @@ std::string TradeoffScatter(const fs::path& data_dir, const std::map<std::string
   std::ostringstream s;
   s << "unset object\nunset arrow\nunset label\nunset key\nset grid xtics ytics lc rgb '#dddddd'\n"
     << Margins(left, left + kScatterWidth, kScatterBottom, kScatterTop)
-    << "set title " << Quote("n = " + std::to_string(ns[k]) + ": relative AUC vs worst balance, one point per strategy")
-    << "\nset xlabel 'worst balance ratio (log scale)'\nset ylabel 'relative AUC'\n"
+    << "set title \"n = " << ns[k] << ": relative AUC vs worst balance, one point per strategy\\n"
+    << "green: the issue-8 target (balance ≤ 1.5, relative AUC ≥ 0.95)\"\n"
+    << "set xlabel 'worst balance ratio (log scale)'\nset ylabel 'relative AUC'\n"
     << "set logscale x\nset xrange [0.9:" << meta.at("balance_hi") << "]\n"
     << BalanceTics('x', std::stod(meta.at("balance_hi"))) << "set format x '%g'\n"
     << "set yrange [" << meta.at("auc_lo") << ":1.02]\nset ytics auto\nset format y '%.2f'\n"
     << "set object rect from 0.9, " << kTargetAuc << " to " << kTargetBalance
     << ", 1.02 fc rgb '#d9f0d3' fs solid noborder behind\n"
-    << "set label \"target:\\nbalance ≤ 1.5\\nAUC ≥ 0.95\" at graph 0.008, graph 0.985 left "
-       "front tc rgb '#2e7d32' font ',9' offset 0,-0.3\n"
     << ReferenceLine('x', kTargetBalance) << ReferenceLine('y', kTargetAuc);
   for (const auto& line : Lines(data_dir / ("strategy_tradeoff_labels_" + std::to_string(k) + ".txt"))) {
     std::istringstream in(line);
@@ -639,6 +676,19 @@ std::string StrategySweepScript(const fs::path& data_dir, const fs::path& png) {
     s << SweepPanel("strategy_sweep_balance.dat", names, false) << "unset arrow\nunset logscale y\n"
       << panel(2) << "set title 'Bytes per query (simulation)'\nset ylabel 'wire kB per query'\n"
       << "set yrange [0:*]\nset ytics auto\n";
+  }
+  std::string same;  // one strategy per line: the legend column is narrow
+  for (const auto& line : Lines(data_dir / "strategy_sweep.meta")) {
+    if (line.rfind("same_balance ", 0) != 0) continue;
+    std::string group = line.substr(13);
+    for (std::size_t at = group.find(" = "); at != std::string::npos; at = group.find(" = ", at + 8)) {
+      group.replace(at, 3, "\\n    = ");  // 8 characters, the last three " = " again
+    }
+    same += "\\n" + group;
+  }
+  if (!same.empty()) {
+    s << "set label \"Same worst balance at every n\\n(their lines coincide):" << same
+      << "\" at screen " << key_left + 0.005 << ", 0.40 left font ',10' tc rgb '#444444'\n";
   }
   s << "set key at screen " << key_left + 0.005 << ", 0.86 left top Left reverse samplen 2.5 "
     << "spacing 1.15 font ',11' box opaque\n"

@@ -158,6 +158,25 @@ TEST_F(StrategyFigures, SweepDataOneBlockPerStrategy) {
   EXPECT_EQ(Slurp(dir_ / "strategy_sweep.titles"), "decentralized\nbroadcast\nsample_c4\n");
 }
 
+TEST_F(StrategyFigures, SweepNamesStrategiesWhoseBalanceLinesCoincide) {
+  // replicate_* only add stores: same balance as decentralized at every n; lpt_c10 differs at 20.
+  std::vector<RunResult> rows;
+  for (const char* s : {"decentralized", "replicate_0.2", "lpt_c10", "replicate_0.5_r5"}) {
+    const bool lpt = std::string(s) == "lpt_c10";
+    rows.push_back(Paper(s, 10, 0, 0.8, 4.0));
+    rows.push_back(Paper(s, 20, 0, 0.8, lpt ? 5.0 : 9.0));
+  }
+  ASSERT_TRUE(WriteStrategySweepData(dir_, rows));
+  const std::string meta = Slurp(dir_ / "strategy_sweep.meta");
+  EXPECT_NE(meta.find("\nsame_balance decentralized = replicate_0.2 = replicate_0.5_r5\n"),
+            std::string::npos) << meta;
+  EXPECT_EQ(meta.find("lpt_c10"), std::string::npos);
+  // The script puts one name per line under the legend.
+  EXPECT_NE(StrategySweepScript(dir_, dir_ / "x.png")
+                .find("decentralized\\n    = replicate_0.2\\n    = replicate_0.5_r5\""),
+            std::string::npos);
+}
+
 TEST_F(StrategyFigures, NothingWrittenWithoutData) {
   RunResult no_auc = Paper("decentralized", 10, 0, kNotApplicable, 2.0);
   EXPECT_FALSE(WriteStrategyTradeoffData(dir_, {no_auc}));
