@@ -644,6 +644,25 @@ std::string SweepPanel(const std::string& file, const std::vector<std::string>& 
   return cmd + "\n";
 }
 
+// The groups of equal balance (strategy_sweep.meta) as a note under the legend, one strategy per
+// line since the legend column is narrow; "" when there are none.
+std::string CoincidingNote(const fs::path& data_dir, double left) {
+  std::string same;
+  for (const auto& line : Lines(data_dir / "strategy_sweep.meta")) {
+    if (line.rfind("same_balance ", 0) != 0) continue;
+    std::string group = line.substr(13);
+    for (std::size_t at = group.find(" = "); at != std::string::npos; at = group.find(" = ", at + 8)) {
+      group.replace(at, 3, "\\n    = ");  // 8 characters, the last three " = " again
+    }
+    same += "\\n" + group;
+  }
+  if (same.empty()) return "";
+  std::ostringstream s;
+  s << "set label \"Same worst balance at every n\\n(their lines coincide):" << same
+    << "\" at screen " << left << ", 0.40 left font ',10' tc rgb '#444444'\n";
+  return s.str();
+}
+
 }  // namespace
 
 std::string StrategySweepScript(const fs::path& data_dir, const fs::path& png) {
@@ -677,19 +696,7 @@ std::string StrategySweepScript(const fs::path& data_dir, const fs::path& png) {
       << panel(2) << "set title 'Bytes per query (simulation)'\nset ylabel 'wire kB per query'\n"
       << "set yrange [0:*]\nset ytics auto\n";
   }
-  std::string same;  // one strategy per line: the legend column is narrow
-  for (const auto& line : Lines(data_dir / "strategy_sweep.meta")) {
-    if (line.rfind("same_balance ", 0) != 0) continue;
-    std::string group = line.substr(13);
-    for (std::size_t at = group.find(" = "); at != std::string::npos; at = group.find(" = ", at + 8)) {
-      group.replace(at, 3, "\\n    = ");  // 8 characters, the last three " = " again
-    }
-    same += "\\n" + group;
-  }
-  if (!same.empty()) {
-    s << "set label \"Same worst balance at every n\\n(their lines coincide):" << same
-      << "\" at screen " << key_left + 0.005 << ", 0.40 left font ',10' tc rgb '#444444'\n";
-  }
+  s << CoincidingNote(data_dir, key_left + 0.005);
   s << "set key at screen " << key_left + 0.005 << ", 0.86 left top Left reverse samplen 2.5 "
     << "spacing 1.15 font ',11' box opaque\n"
     << SweepPanel(bytes ? "strategy_sweep_bytes.dat" : "strategy_sweep_balance.dat", names, true);
