@@ -10,16 +10,12 @@
 #include "agents/balanced_kmeans.h"
 #include "agents/kmeans.h"
 #include "sim/random_bits.h"
+#include "tests/test_support.h"
 
 namespace dvpr {
 namespace {
 
-DescriptorMatrix Column(std::initializer_list<float> values) {
-  DescriptorMatrix m(static_cast<Eigen::Index>(values.size()), 1);
-  Eigen::Index i = 0;
-  for (float v : values) m(i++, 0) = v;
-  return m;
-}
+using dvpr::testing_support::Column;
 
 std::vector<int> Sorted(std::vector<int> v) {
   std::sort(v.begin(), v.end());

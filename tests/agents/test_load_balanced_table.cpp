@@ -7,15 +7,12 @@
 #include <gtest/gtest.h>
 
 #include "agents/load_balanced_table.h"
+#include "tests/test_support.h"
 
 namespace dvpr {
 namespace {
 
-std::vector<RobotId> Robots(std::initializer_list<int> ids) {
-  std::vector<RobotId> out;
-  for (int id : ids) out.push_back(RobotId(id));
-  return out;
-}
+using dvpr::testing_support::Robots;
 
 TEST(AssignByLoad, LptGivesTheLargestClusterToTheLeastLoadedRobot) {
   // Graham's classic: 3 3 2 2 2 on two robots. 3->r0, 3->r1, 2->r0 (tie, lowest id), 2->r1,

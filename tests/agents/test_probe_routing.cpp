@@ -6,15 +6,12 @@
 #include <gtest/gtest.h>
 
 #include "agents/probe_routing.h"
+#include "tests/test_support.h"
 
 namespace dvpr {
 namespace {
 
-std::vector<RobotId> Robots(std::initializer_list<int> ids) {
-  std::vector<RobotId> out;
-  for (int id : ids) out.push_back(RobotId(id));
-  return out;
-}
+using dvpr::testing_support::Robots;
 
 // Centroids at 0, 10, 20, 30 owned by robots 0, 1, 2, 0.
 class ProbeRoutingTest : public ::testing::Test {

@@ -7,22 +7,13 @@
 
 #include "agents/descriptor_index.h"
 #include "agents/recluster.h"
+#include "tests/test_support.h"
 
 namespace dvpr {
 namespace {
 
-DescriptorMatrix Column(std::initializer_list<float> values) {
-  DescriptorMatrix m(static_cast<Eigen::Index>(values.size()), 1);
-  Eigen::Index i = 0;
-  for (float v : values) m(i++, 0) = v;
-  return m;
-}
-
-std::vector<RobotId> Robots(std::initializer_list<int> ids) {
-  std::vector<RobotId> out;
-  for (int id : ids) out.push_back(RobotId(id));
-  return out;
-}
+using dvpr::testing_support::Column;
+using dvpr::testing_support::Robots;
 
 TEST(Recluster, SampleTakesTheStrideOfTheStepsBeforeTheBoundary) {
   ReclusterParams p;

@@ -6,18 +6,14 @@
 #include <gtest/gtest.h>
 
 #include "experiments/result_writers.h"
+#include "tests/test_support.h"
 
 namespace dvpr {
 namespace {
 
-namespace fs = std::filesystem;
+using dvpr::testing_support::Slurp;
 
-std::string Slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+namespace fs = std::filesystem;
 
 RunResult SimRow(int run, double rel) {
   RunResult r;
