@@ -11,6 +11,7 @@ PACKAGES=(
   libgtest-dev libbenchmark-dev
   gnuplot-nox                                # figures
   python3 python3-numpy                      # independent cross-checks in the tests
+  iproute2                                   # ip: loopback multicast for the LCM team tests
 )
 
 missing=()
