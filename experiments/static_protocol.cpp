@@ -122,14 +122,25 @@ PaperRunResult PaperEvaluator::Evaluate(const CentroidTable& table, bool keep_cu
   PrResult pr = EvaluatePr(matches, deployment_.trajectory.positions, evaluation_.radius_m, relevant_);
   const std::vector<std::int64_t> per_robot = CountPerRobot(routes, robots);
   const std::vector<std::int64_t> comparisons = Comparisons(routes, robots);
+  FillResult("decentralized", std::move(pr), per_robot, comparisons, per_robot, keep_curve, result);
+  result.timings.metrics_s = SecondsSince(start);
+  return result;
+}
+
+void PaperEvaluator::FillResult(const std::string& strategy, PrResult pr, const std::vector<std::int64_t>& searches,
+                                const std::vector<std::int64_t>& comparisons,
+                                const std::vector<std::int64_t>& stored, bool keep_curve,
+                                PaperRunResult& result) const {
+  const int robots = static_cast<int>(searches.size());
   RunResult& row = result.row;
   row.key.protocol = "paper";
-  row.key.strategy = "decentralized";
+  row.key.strategy = strategy;
   row.key.robots = robots;
   row.auc = pr.auc;
   row.auc_reference = centralized_.auc;
   row.relative_auc = RelativeAuc(pr.auc, centralized_.auc);
-  row.worst_balance_ratio = WorstBalanceRatio(per_robot);
+  const double fair_share = static_cast<double>(deployment_.size()) / robots;
+  row.worst_balance_ratio = static_cast<double>(*std::max_element(searches.begin(), searches.end())) / fair_share;
   row.queries = deployment_.size();
   result.ranked_queries = pr.ranked;
   for (int r = 0; r < robots; ++r) {
@@ -137,19 +148,12 @@ PaperRunResult PaperEvaluator::Evaluate(const CentroidTable& table, bool keep_cu
     RobotLoadRow load;
     load.key = row.key;
     load.robot = r;
-    load.queries_received = per_robot[ur];
+    load.queries_received = searches[ur];
     load.comparisons = comparisons[ur];
-    load.stored = per_robot[ur];
+    load.stored = stored[ur];
     result.per_robot.push_back(std::move(load));
   }
-  if (keep_curve) {
-    result.curve.label = "decentralized";
-    result.curve.robots = robots;
-    result.curve.recall = std::move(pr.recall);
-    result.curve.precision = std::move(pr.precision);
-  }
-  result.timings.metrics_s = SecondsSince(start);
-  return result;
+  if (keep_curve) result.curve = PrCurve{strategy, robots, 0, std::move(pr.recall), std::move(pr.precision)};
 }
 
 namespace {

@@ -103,6 +103,14 @@ class PaperEvaluator {
   // run/seed and the centroids.
   PaperRunResult Evaluate(const CentroidTable& table, bool keep_curve) const;
 
+  // The row and per-robot load of one evaluated routing, into `result`: key {"paper", strategy,
+  // robots = searches.size()}, AUC against the centralized one, worst balance ratio = busiest
+  // robot's searches / (N / n) (a routing that searches at m robots pays m times), queries = N,
+  // per robot queries_received = searches, comparisons, stored; the curve when keep_curve.
+  void FillResult(const std::string& strategy, PrResult pr, const std::vector<std::int64_t>& searches,
+                  const std::vector<std::int64_t>& comparisons, const std::vector<std::int64_t>& stored,
+                  bool keep_curve, PaperRunResult& result) const;
+
  private:
   std::vector<std::int64_t> Comparisons(const std::vector<RobotId>& routes, int robots) const;
 

@@ -143,29 +143,9 @@ PaperRunResult EvaluateRecluster(const PaperEvaluator& evaluator, const StaticRe
     }
   }
   const ReclusterTraffic traffic = CountReclusterTraffic(plan, static_cast<int>(data.descriptors.cols()));
-  RunResult& row = result.row;
-  row.key.protocol = "paper";
-  row.key.strategy = name;
-  row.key.robots = plan.robots;
-  row.auc = pr.auc;
-  row.auc_reference = evaluator.centralized().auc;
-  row.relative_auc = RelativeAuc(pr.auc, row.auc_reference);
-  const double fair_share = static_cast<double>(n_frames) / plan.robots;
-  row.worst_balance_ratio = static_cast<double>(*std::max_element(searches.begin(), searches.end())) / fair_share;
-  row.queries = n_frames;
-  row.messages = traffic.messages();
-  row.payload_bytes = traffic.bytes();
-  result.ranked_queries = pr.ranked;
-  for (std::size_t r = 0; r < robots; ++r) {
-    RobotLoadRow load;
-    load.key = row.key;
-    load.robot = static_cast<int>(r);
-    load.queries_received = searches[r];
-    load.comparisons = comparisons[r];
-    load.stored = stored[r];
-    result.per_robot.push_back(std::move(load));
-  }
-  if (keep_curve) result.curve = PrCurve{name, plan.robots, 0, std::move(pr.recall), std::move(pr.precision)};
+  evaluator.FillResult(name, std::move(pr), searches, comparisons, stored, keep_curve, result);
+  result.row.messages = traffic.messages();
+  result.row.payload_bytes = traffic.bytes();
   return result;
 }
 

@@ -79,7 +79,6 @@ std::vector<std::int64_t> Comparisons(const RoutedFrames& f, std::int64_t frames
 PaperRunResult EvaluateRouting(const PaperEvaluator& evaluator, const RoutingStrategy& routing,
                                const std::string& name, bool keep_curve) {
   const Dataset& data = evaluator.deployment();
-  const int robots = routing.num_robots();
   const RoutedFrames f = RouteEveryFrame(data.descriptors, routing);
   PaperRunResult result;
   const auto matches = evaluator.neighbours().BestMatchesWhere(
@@ -88,28 +87,7 @@ PaperRunResult EvaluateRouting(const PaperEvaluator& evaluator, const RoutingStr
                            evaluator.relevant());
   const std::vector<std::int64_t> comparisons =
       Comparisons(f, data.size(), evaluator.evaluation().suppression_frames);
-  RunResult& row = result.row;
-  row.key.protocol = "paper";
-  row.key.strategy = name;
-  row.key.robots = robots;
-  row.auc = pr.auc;
-  row.auc_reference = evaluator.centralized().auc;
-  row.relative_auc = RelativeAuc(pr.auc, row.auc_reference);
-  const double fair_share = static_cast<double>(data.size()) / robots;
-  row.worst_balance_ratio = static_cast<double>(*std::max_element(f.searches.begin(), f.searches.end())) / fair_share;
-  row.queries = data.size();
-  result.ranked_queries = pr.ranked;
-  for (int r = 0; r < robots; ++r) {
-    const auto ur = static_cast<std::size_t>(r);
-    RobotLoadRow load;
-    load.key = row.key;
-    load.robot = r;
-    load.queries_received = f.searches[ur];
-    load.comparisons = comparisons[ur];
-    load.stored = f.stored[ur];
-    result.per_robot.push_back(std::move(load));
-  }
-  if (keep_curve) result.curve = PrCurve{name, robots, 0, std::move(pr.recall), std::move(pr.precision)};
+  evaluator.FillResult(name, std::move(pr), f.searches, comparisons, f.stored, keep_curve, result);
   return result;
 }
 
