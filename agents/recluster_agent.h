@@ -46,7 +46,7 @@ inline const std::string kTable = "DVPR_TABLE";
 }  // namespace channels
 
 // LCM-encoded sizes (fingerprint included), worked out from LCM's rules and pinned against
-// Encode() in tests/lcmtypes/test_messages.cpp. The static protocol counts bytes with them.
+// Encode() in tests/agents/test_lcm_messages.cpp. The static protocol counts bytes with them.
 // descriptor_batch_t: 8 + utime 8 + epoch 4 + sender 2 + count 4 + dim 2 = 28, then per
 // descriptor robot 2 + frame 4 + dim floats.
 inline std::int64_t DescriptorBatchBytes(std::int64_t count, int dim) { return 28 + count * (6 + 4 * std::int64_t{dim}); }

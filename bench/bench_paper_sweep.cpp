@@ -8,9 +8,9 @@
 
 #include <benchmark/benchmark.h>
 
-#include "experiments/loaders.h"
-#include "experiments/static_protocol.h"
-#include "experiments/synthetic.h"
+#include "experiments/data/loaders.h"
+#include "experiments/protocols/paper/static_protocol.h"
+#include "experiments/data/synthetic.h"
 
 namespace dvpr {
 namespace {

@@ -12,9 +12,9 @@
 #include "agents/centroid_table.h"
 #include "agents/decentralized_routing.h"
 #include "agents/kmeans.h"
-#include "experiments/loaders.h"
-#include "experiments/simulation.h"
-#include "experiments/synthetic.h"
+#include "experiments/data/loaders.h"
+#include "experiments/protocols/sim/simulation.h"
+#include "experiments/data/synthetic.h"
 
 namespace dvpr {
 namespace {

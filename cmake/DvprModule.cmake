@@ -1,10 +1,13 @@
 # dvpr_module(<target> DEPS <targets...>)
-# One static library per top-level folder, built from every .cpp below it
-# (main.cpp excluded), so adding a file needs no CMake edit. The module joins
-# the umbrella target dvpr_all that tests, benchmarks and the dvpr command link.
+# One static library per folder, built from the .cpp files directly in it
+# (subfolders are libraries of their own; main.cpp is excluded), so adding a
+# file needs no CMake edit. DEPS are the modules and packages it may use: the
+# direction written in docs/architecture.md, which scripts/check_layers.py
+# checks against the includes. Every module also joins the umbrella target
+# dvpr_all (benchmarks).
 function(dvpr_module target)
   cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
-  file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
   list(FILTER sources EXCLUDE REGEX ".*/main\\.cpp$")
   if(sources)
     add_library(${target} STATIC ${sources})

@@ -1,0 +1,158 @@
+#include "experiments/app/experiment.h"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+
+#include "experiments/figures/figures.h"
+#include "experiments/protocols/inputs.h"
+#include "experiments/results/result_writers.h"
+#include "experiments/sweep/sweep.h"
+
+namespace dvpr {
+
+namespace {
+
+void CheckProtocolsAvailable(const ExperimentConfig& config, const std::string& origin,
+                             const ProtocolRegistry& protocols) {
+  for (const auto& p : config.sweep.protocols) {
+    if (protocols.Find(p) != nullptr) continue;
+    std::string have;
+    for (const auto& n : protocols.Names()) have += (have.empty() ? "" : ", ") + n;
+    throw ConfigError(origin + ": protocols: '" + p + "' is not available in this build of dvpr "
+                      "(available: " + have + "); e.g. --set protocols=[" + have + "]");
+  }
+}
+
+// The row files, open as temporaries until every run has been written.
+struct RowFiles {
+  RowFiles(const std::filesystem::path& dir, const OutputsConfig& outputs)
+      : runs(dir / "runs.csv"), per_robot(dir / "per_robot.csv"), links(dir / "links.csv") {
+    runs.stream() << kRunsHeader << '\n';
+    per_robot.stream() << kPerRobotHeader << '\n';
+    links.stream() << kLinksHeader << '\n';
+    if (outputs.queries) {
+      queries.emplace(dir / "queries.csv");
+      queries->stream() << kQueriesHeader << '\n';
+    }
+    if (outputs.messages) {
+      messages.emplace(dir / "messages.csv");
+      messages->stream() << kMessagesHeader << '\n';
+    }
+  }
+  void Write(const RunOutput& out) {
+    for (const auto& r : out.runs) runs.stream() << CsvRow(r) << '\n';
+    for (const auto& r : out.per_robot) per_robot.stream() << CsvRow(r) << '\n';
+    for (const auto& r : out.links) links.stream() << CsvRow(r) << '\n';
+    if (queries) for (const auto& r : out.queries) queries->stream() << CsvRow(r) << '\n';
+    if (messages) for (const auto& r : out.messages) messages->stream() << CsvRow(r) << '\n';
+  }
+  void Commit() {
+    runs.Commit();
+    per_robot.Commit();
+    links.Commit();
+    if (queries) queries->Commit();
+    if (messages) messages->Commit();
+  }
+  AtomicFile runs, per_robot, links;
+  std::optional<AtomicFile> queries, messages;
+};
+
+}  // namespace
+
+std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::string& origin,
+                                     const std::filesystem::path& out_dir,
+                                     const ProtocolRegistry& protocols,
+                                     const ExecutorOptions& options, std::ostream& summary) {
+  CheckProtocolsAvailable(config, origin, protocols);
+  SharedInputs inputs = LoadSharedInputs(config, origin);
+  CreateOutputDir(out_dir);
+  inputs.out_dir = out_dir;
+  const std::vector<NetworkVariant> networks = ExpandNetworks(config.network);
+  const std::vector<RunSpec> specs = ExpandSweep(config, networks);
+  std::map<std::string, RunFunction> run_functions;
+  for (const auto& p : config.sweep.protocols) run_functions[p] = (*protocols.Find(p))(inputs);
+
+  WriteFileAtomic(out_dir / "config.yaml", EmitConfig(config));
+  RowFiles files(out_dir, config.outputs);
+  std::vector<RunResult> rows;
+  std::vector<PrCurve> curves;
+  ExecuteRuns(
+      specs, run_functions,
+      [&](const RunSpec&, RunOutput&& out) {
+        files.Write(out);
+        rows.insert(rows.end(), out.runs.begin(), out.runs.end());
+        for (auto& c : out.curves) curves.push_back(std::move(c));
+      },
+      options);
+  files.Commit();
+  WriteFileAtomic(out_dir / "summary.json", SummaryJson(rows));
+  if (config.outputs.figures) {
+    WriteFigureData(out_dir, FigureData{&inputs.deployment.descriptors, &inputs.training, &curves,
+                                        config.evaluation.suppression_frames});
+    DrawFigures(out_dir, std::cerr);
+  }
+  PrintSummaryTable(rows, summary);
+  return rows;
+}
+
+namespace {
+
+std::string Cell(double v, int decimals) {
+  if (std::isnan(v)) return "-";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+// At most ~5 robot counts per group: the first, the last and evenly spaced ones between.
+std::set<int> ShownRobots(const std::vector<RunResult>& rows) {
+  std::set<int> all;
+  for (const auto& r : rows) all.insert(r.key.robots);
+  if (all.size() <= 5) return all;
+  const std::vector<int> v(all.begin(), all.end());
+  std::set<int> shown;
+  for (int i = 0; i < 5; ++i) shown.insert(v[static_cast<std::size_t>(i) * (v.size() - 1) / 4]);
+  return shown;
+}
+
+}  // namespace
+
+void PrintSummaryTable(const std::vector<RunResult>& rows, std::ostream& out) {
+  struct Acc { std::string label; int robots; int n = 0; double sums[5]{}; int counts[5]{}; };
+  std::vector<Acc> groups;
+  std::map<std::string, std::size_t> index;
+  const std::set<int> shown = ShownRobots(rows);
+  for (const auto& r : rows) {
+    if (!shown.contains(r.key.robots)) continue;
+    std::string label = r.key.protocol + " " + r.key.strategy;
+    if (!r.key.network.model.empty()) label += " net" + std::to_string(r.key.network.variant);
+    const std::string id = label + "|" + std::to_string(r.key.robots);
+    auto [it, added] = index.emplace(id, groups.size());
+    if (added) groups.push_back(Acc{label, r.key.robots});
+    Acc& a = groups[it->second];
+    ++a.n;
+    const double v[5] = {r.auc, r.relative_auc, r.worst_balance_ratio, r.bytes_per_query,
+                         r.mean_latency_ms};
+    for (int i = 0; i < 5; ++i) {
+      if (!std::isnan(v[i])) { a.sums[i] += v[i]; ++a.counts[i]; }
+    }
+  }
+  char line[256];
+  std::snprintf(line, sizeof line, "%-34s %6s %5s %7s %8s %9s %11s %10s\n", "protocol strategy",
+                "robots", "runs", "auc", "rel_auc", "worst_bal", "bytes/query", "latency_ms");
+  out << line;
+  for (const Acc& a : groups) {
+    auto mean = [&](int i) { return a.counts[i] ? a.sums[i] / a.counts[i] : std::nan(""); };
+    std::snprintf(line, sizeof line, "%-34s %6d %5d %7s %8s %9s %11s %10s\n", a.label.c_str(),
+                  a.robots, a.n, Cell(mean(0), 3).c_str(), Cell(mean(1), 3).c_str(),
+                  Cell(mean(2), 2).c_str(), Cell(mean(3), 0).c_str(), Cell(mean(4), 3).c_str());
+    out << line;
+  }
+}
+
+}  // namespace dvpr

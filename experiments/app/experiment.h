@@ -1,0 +1,27 @@
+#pragma once
+// `dvpr run`: a validated config in, the output folder of DESIGN.md section 6 out.
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "experiments/config/config.h"
+#include "experiments/results/results.h"
+#include "experiments/sweep/run_executor.h"
+
+namespace dvpr {
+
+// Loads the inputs (errors here leave nothing on disk), creates out_dir, runs the sweep in
+// parallel, writes config.yaml, runs.csv, per_robot.csv, links.csv, summary.json (and
+// queries.csv / messages.csv when asked), the figures when outputs.figures, and prints the
+// summary table to `summary`. Returns the runs.csv rows. `origin` names the config in errors.
+std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::string& origin,
+                                     const std::filesystem::path& out_dir,
+                                     const ProtocolRegistry& protocols,
+                                     const ExecutorOptions& options, std::ostream& summary);
+
+// The table printed at the end: per protocol, strategy, network and a few robot counts, the
+// means of the main metrics.
+void PrintSummaryTable(const std::vector<RunResult>& rows, std::ostream& out);
+
+}  // namespace dvpr

@@ -1,0 +1,12 @@
+// The dvpr command: see README.md and ../shared/DESIGN.md section 6. The subcommands live in
+// experiments/app/cli.cpp.
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "experiments/app/cli.h"
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  return dvpr::RunCli(args, std::cout, std::cerr);
+}

@@ -1,0 +1,361 @@
+// YAML -> ExperimentConfig. One function per section; each reads only the keys it lists in
+// ExpectMap, so a key the parser does not know is always reported.
+#include "experiments/config/config.h"
+
+#include <algorithm>
+#include <charconv>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+
+#include "experiments/config/config_reader.h"
+#include "experiments/strategies/strategy_catalogue.h"
+
+namespace dvpr {
+
+using config_detail::Field;
+using config_detail::Origin;
+
+namespace {
+
+std::vector<std::string>& StrategyRegistry() {
+  static std::vector<std::string> names = [] {
+    std::vector<std::string> v{"decentralized", "broadcast"};
+    const std::vector<std::string> beyond = BeyondPaperStrategyNames();  // issue 8's catalogue
+    v.insert(v.end(), beyond.begin(), beyond.end());
+    return v;
+  }();
+  return names;
+}
+
+template <typename Enum>
+Enum ReadEnum(const Field& f, const std::vector<std::string>& names) {
+  return static_cast<Enum>(f.Choice(names));
+}
+
+const std::vector<std::string> kDatasetSources{"synthetic", "files"};
+const std::vector<std::string> kTrainingSources{"synthetic_diverse", "synthetic_deployment_like",
+                                                "files", "deployment"};
+
+// The synthetic knobs are all plain numbers: a table keeps the reader short.
+struct DoubleKnob { const char* key; double* value; bool positive; };
+
+SyntheticDeploymentKnobs ReadDeploymentKnobs(const Field& f) {
+  SyntheticDeploymentKnobs k;
+  if (!f.present()) return k;
+  const DoubleKnob knobs[] = {
+      {"length_scale_min_m", &k.length_scale_min_m, true},
+      {"length_scale_max_m", &k.length_scale_max_m, true},
+      {"heading_scale", &k.heading_scale, true},
+      {"heading_fraction", &k.heading_fraction, false},
+      {"variance_decay", &k.variance_decay, false},
+      {"noise", &k.noise, false},
+      {"appearance_change", &k.appearance_change, false},
+      {"appearance_time_scale_frames", &k.appearance_time_scale_frames, true},
+      {"environment_offset", &k.environment_offset, false}};
+  f.ExpectMap({"place_features", "length_scale_min_m", "length_scale_max_m", "heading_scale",
+               "heading_fraction", "variance_decay", "noise", "appearance_change", "appearance_time_scale_frames",
+               "environment_offset"});
+  if (auto c = f.Child("place_features"); c.present()) {
+    k.place_features = static_cast<int>(c.Int(1, 1 << 20));
+  }
+  for (const DoubleKnob& knob : knobs) {
+    const Field c = f.Child(knob.key);
+    if (!c.present()) continue;
+    *knob.value = c.Double();
+    if (knob.positive ? *knob.value <= 0 : *knob.value < 0) {
+      c.Fail(knob.positive ? "must be positive" : "must not be negative");
+    }
+  }
+  if (k.heading_fraction > 1) f.Child("heading_fraction").Fail("must lie in [0, 1]");
+  if (k.length_scale_max_m < k.length_scale_min_m) {
+    f.Child("length_scale_max_m").Fail("must be at least length_scale_min_m");
+  }
+  return k;
+}
+
+SyntheticTrainingKnobs ReadTrainingKnobs(const Field& f) {
+  SyntheticTrainingKnobs k;
+  if (!f.present()) return k;
+  f.ExpectMap({"samples", "environments", "training_area_m"});
+  if (auto c = f.Child("samples"); c.present()) k.samples = static_cast<int>(c.Int(1, 10000000));
+  if (auto c = f.Child("environments"); c.present()) {
+    k.environments = static_cast<int>(c.Int(1, 100000));
+  }
+  if (auto c = f.Child("training_area_m"); c.present()) {
+    k.training_area_m = c.Double();
+    if (k.training_area_m <= 0) c.Fail("must be positive");
+  }
+  return k;
+}
+
+DatasetConfig ReadDataset(const Field& f) {
+  DatasetConfig d;
+  f.ExpectMap({"source", "poses", "descriptors", "bin_width", "dim", "fps", "frames", "synthetic"});
+  if (auto c = f.Child("source"); c.present()) d.source = ReadEnum<DatasetSource>(c, kDatasetSources);
+  const Field poses = f.Child("poses");
+  d.poses = poses.present() ? poses.ExistingFile()
+                            : Field(f.origin(), YAML::Node("data/kitti/00_poses.txt"), poses.path())
+                                  .ExistingFile();
+  const Field desc = f.Child("descriptors");
+  if (desc.present()) d.descriptors = desc.ExistingFile();
+  if (d.source == DatasetSource::kFiles && !d.descriptors) {
+    desc.Fail("required when dataset.source is files (an .npy, .bin or .csv file)");
+  }
+  if (auto c = f.Child("bin_width"); c.present()) d.bin_width = static_cast<int>(c.Int(1, 1 << 20));
+  if (auto c = f.Child("dim"); c.present()) d.dim = static_cast<int>(c.Int(1, 1 << 20));
+  if (auto c = f.Child("fps"); c.present()) {
+    d.fps = c.Double();
+    if (d.fps <= 0) c.Fail("must be positive");
+  }
+  if (auto c = f.Child("frames"); c.present()) {
+    if (!(c.node().IsScalar() && c.node().Scalar() == "all")) {
+      d.frames = static_cast<int>(c.Int(1, 1 << 30));
+    }
+  }
+  d.synthetic = ReadDeploymentKnobs(f.Child("synthetic"));
+  return d;
+}
+
+// Makes a centroid file pattern absolute and checks every file the sweep will read.
+std::string ResolveCentroids(const Field& f, const SweepConfig& sweep) {
+  const std::string pattern = f.String();
+  for (const auto& dir : config_detail::SearchDirs(f.origin())) {
+    const std::filesystem::path candidate =
+        std::filesystem::path(pattern).is_absolute() ? std::filesystem::path(pattern) : dir / pattern;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(CentroidPath(candidate.string(), sweep.robots[0], 0), ec)) {
+      continue;
+    }
+    for (int n : sweep.robots) {
+      for (int r = 0; r < sweep.runs; ++r) {
+        const auto file = CentroidPath(candidate.string(), n, r);
+        if (!std::filesystem::is_regular_file(file, ec)) {
+          f.Fail("file not found: '" + file.string() + "' (robots " + std::to_string(n) +
+                 ", run " + std::to_string(r) + ")");
+        }
+      }
+    }
+    return std::filesystem::absolute(candidate).lexically_normal().string();
+  }
+  f.Fail("file not found: '" + CentroidPath(pattern, sweep.robots[0], 0).string() +
+         "' (the pattern for robots " + std::to_string(sweep.robots[0]) + ", run 0)");
+}
+
+TrainingConfig ReadTraining(const Field& f, const SweepConfig& sweep) {
+  TrainingConfig t;
+  if (!f.present()) return t;
+  f.ExpectMap({"source", "descriptors", "centroids", "clusters_per_robot", "synthetic"});
+  if (auto c = f.Child("source"); c.present()) {
+    t.source = ReadEnum<TrainingSource>(c, kTrainingSources);
+  }
+  const Field desc = f.Child("descriptors");
+  if (desc.present()) t.descriptors = desc.ExistingFile();
+  if (t.source == TrainingSource::kFiles && !t.descriptors) {
+    desc.Fail("required when training.source is files (an .npy, .bin or .csv file)");
+  }
+  if (auto c = f.Child("centroids"); c.present()) t.centroids = ResolveCentroids(c, sweep);
+  if (auto c = f.Child("clusters_per_robot"); c.present()) {
+    t.clusters_per_robot = static_cast<int>(c.Int(1, 1000));
+  }
+  t.synthetic = ReadTrainingKnobs(f.Child("synthetic"));
+  return t;
+}
+
+std::vector<int> ReadRobots(const Field& f) {
+  std::vector<int> robots;
+  if (f.node().IsMap()) {
+    f.ExpectMap({"from", "to"});
+    const int from = static_cast<int>(f.Child("from").Int(2, 100000));
+    const int to = static_cast<int>(f.Child("to").Int(2, 100000));
+    if (to < from) f.Child("to").Fail("must be at least robots.from (" + std::to_string(from) + ")");
+    for (int n = from; n <= to; ++n) robots.push_back(n);
+    return robots;
+  }
+  for (const Field& item : f.Items()) {
+    const int n = static_cast<int>(item.Int(2, 100000));
+    if (std::find(robots.begin(), robots.end(), n) != robots.end()) item.Fail("listed twice");
+    robots.push_back(n);
+  }
+  return robots;
+}
+
+std::vector<std::string> ReadNames(const Field& f, const std::vector<std::string>& known) {
+  std::vector<std::string> names;
+  for (const Field& item : f.Items()) {
+    const std::string name = known[item.Choice(known)];
+    if (std::find(names.begin(), names.end(), name) != names.end()) item.Fail("listed twice");
+    names.push_back(name);
+  }
+  return names;
+}
+
+SweepConfig ReadSweep(const Field& root) {
+  SweepConfig s;
+  if (auto c = root.Child("robots"); c.present()) s.robots = ReadRobots(c);
+  if (auto c = root.Child("runs"); c.present()) s.runs = static_cast<int>(c.Int(1, 100000));
+  if (auto c = root.Child("protocols"); c.present()) s.protocols = ReadNames(c, KnownProtocols());
+  if (auto c = root.Child("strategies"); c.present()) {
+    s.strategies = ReadNames(c, KnownStrategies());
+  }
+  return s;
+}
+
+EvaluationConfig ReadEvaluation(const Field& f) {
+  EvaluationConfig e;
+  if (!f.present()) return e;
+  f.ExpectMap({"gt_radius_m", "suppression_frames"});
+  if (auto c = f.Child("gt_radius_m"); c.present()) {
+    e.gt_radius_m = c.Double();
+    if (e.gt_radius_m <= 0) c.Fail("must be positive");
+  }
+  if (auto c = f.Child("suppression_frames"); c.present()) {
+    e.suppression_frames = static_cast<int>(c.Int(0, 1 << 30));
+  }
+  return e;
+}
+
+}  // namespace
+
+// Declared in config_sections.cpp (network, verification, service, dropout, outputs).
+namespace config_detail {
+NetworkConfig ReadNetwork(const Field& f);
+VerificationConfig ReadVerification(const Field& f);
+ServiceConfig ReadService(const Field& f);
+std::vector<Dropout> ReadDropout(const Field& f, const SweepConfig& sweep);
+OutputsConfig ReadOutputs(const Field& f, const SweepConfig& sweep);
+}  // namespace config_detail
+
+namespace {
+
+ExperimentConfig ReadExperiment(const Field& root, const std::string& default_name) {
+  if (!root.present()) root.Fail("the config is empty");
+  root.ExpectMap({"name", "seed", "dataset", "training", "robots", "runs", "protocols",
+                  "strategies", "evaluation", "network", "verification", "service", "dropout",
+                  "outputs"});
+  ExperimentConfig c;
+  c.name = default_name;
+  if (auto f = root.Child("name"); f.present()) {
+    c.name = f.String();
+    if (c.name.empty() || c.name.find_first_of("/\\") != std::string::npos) {
+      f.Fail("expected a non-empty name without slashes (it names the output folder)");
+    }
+  }
+  if (auto f = root.Child("seed"); f.present()) {
+    c.seed = static_cast<std::uint64_t>(f.Int(0, std::numeric_limits<long long>::max()));
+  }
+  const Field dataset = root.Child("dataset");
+  c.dataset = ReadDataset(dataset.present() ? dataset
+                                            : Field(root.origin(), YAML::Node(YAML::NodeType::Map),
+                                                    "dataset"));
+  c.sweep = ReadSweep(root);
+  c.training = ReadTraining(root.Child("training"), c.sweep);
+  c.evaluation = ReadEvaluation(root.Child("evaluation"));
+  c.network = config_detail::ReadNetwork(root.Child("network"));
+  c.verification = config_detail::ReadVerification(root.Child("verification"));
+  c.service = config_detail::ReadService(root.Child("service"));
+  c.dropout = config_detail::ReadDropout(root.Child("dropout"), c.sweep);
+  c.outputs = config_detail::ReadOutputs(root.Child("outputs"), c.sweep);
+  return c;
+}
+
+bool IsIndex(const std::string& s) {
+  return !s.empty() && s.find_first_not_of("0123456789") == std::string::npos;
+}
+
+// Walks (and creates) the maps along `path` and sets the last key to `value`.
+void ApplyOverride(YAML::Node& root, const ConfigOverride& o, const std::string& origin) {
+  YAML::Node value;
+  try {
+    value = YAML::Load(o.value);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(origin + ": --set " + o.path + ": value is not valid YAML: " + e.msg);
+  }
+  if (!root.IsMap()) root = YAML::Node(YAML::NodeType::Map);
+  YAML::Node cur = root;
+  std::istringstream segments(o.path);
+  std::vector<std::string> keys;
+  for (std::string s; std::getline(segments, s, '.');) keys.push_back(s);
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    const std::string& key = keys[i];
+    const bool last = i + 1 == keys.size();
+    if (cur.IsSequence() && IsIndex(key)) {
+      const std::size_t idx = std::stoul(key);
+      if (idx >= cur.size()) {
+        throw ConfigError(origin + ": --set " + o.path + ": index " + key + " is past the end");
+      }
+      if (last) { cur[idx] = value; return; }
+      YAML::Node next = cur[idx];
+      cur.reset(next);
+      continue;
+    }
+    if (!cur.IsMap()) cur = YAML::Node(YAML::NodeType::Map);  // replaces a scalar in place
+    if (last) { cur[key] = value; return; }
+    if (!cur[key].IsMap() && !cur[key].IsSequence()) cur[key] = YAML::Node(YAML::NodeType::Map);
+    YAML::Node next = cur[key];
+    cur.reset(next);
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& KnownProtocols() {
+  static const std::vector<std::string> names{"paper", "sim"};
+  return names;
+}
+const std::vector<std::string>& KnownStrategies() { return StrategyRegistry(); }
+void RegisterStrategyName(const std::string& name) {
+  auto& names = StrategyRegistry();
+  if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+}
+
+ConfigOverride ParseOverride(const std::string& arg) {
+  const auto eq = arg.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw ConfigError("--set " + arg + ": expected key.path=value");
+  }
+  ConfigOverride o{arg.substr(0, eq), arg.substr(eq + 1)};
+  if (o.path.front() == '.' || o.path.back() == '.' || o.path.find("..") != std::string::npos) {
+    throw ConfigError("--set " + arg + ": malformed key path '" + o.path + "'");
+  }
+  return o;
+}
+
+ExperimentConfig ParseConfig(const std::string& yaml_text, const std::filesystem::path& base_dir,
+                             const std::vector<ConfigOverride>& overrides,
+                             const std::string& origin) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(origin + ": not valid YAML: " + e.what());
+  }
+  for (const auto& o : overrides) ApplyOverride(root, o, origin);
+  const Origin where{origin, base_dir};
+  const std::string stem = std::filesystem::path(origin).stem().string();
+  return ReadExperiment(Field(where, root, ""), stem.empty() || stem[0] == '<' ? "experiment" : stem);
+}
+
+ExperimentConfig LoadConfig(const std::filesystem::path& file,
+                            const std::vector<ConfigOverride>& overrides) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw ConfigError(file.string() + ": cannot read the config file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const auto base = std::filesystem::absolute(file).parent_path();
+  return ParseConfig(text.str(), base, overrides, file.string());
+}
+
+std::filesystem::path CentroidPath(const std::string& pattern, int robots, int run) {
+  std::string out = pattern;
+  for (const auto& [key, value] : {std::pair<std::string, int>{"{robots}", robots}, {"{run}", run}}) {
+    for (auto pos = out.find(key); pos != std::string::npos; pos = out.find(key, pos)) {
+      out.replace(pos, key.size(), std::to_string(value));
+    }
+  }
+  return out;
+}
+
+}  // namespace dvpr

@@ -1,0 +1,208 @@
+// ExperimentConfig -> YAML: every key written, in the order of DESIGN.md section 7, numbers in
+// their shortest round-trip form, so the file parses back to an equal config.
+#include <charconv>
+#include <string>
+
+#include <yaml-cpp/yaml.h>
+
+#include "experiments/config/config.h"
+
+namespace dvpr {
+
+namespace {
+
+std::string Num(double v) {
+  char buf[64];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, end);
+}
+
+// Short lists of scalars read better on one line: [1Mbps, 10Mbps].
+template <typename T, typename Fn>
+void EmitList(YAML::Emitter& out, const std::vector<T>& values, Fn to_string) {
+  out << YAML::Flow << YAML::BeginSeq;
+  for (const auto& v : values) out << to_string(v);
+  out << YAML::EndSeq;
+}
+
+void EmitLoss(YAML::Emitter& out, const LossConfig& l) {
+  out << YAML::Flow << YAML::BeginMap << YAML::Key << "model" << YAML::Value << ToString(l.model);
+  if (l.model == LossModel::kBernoulli) out << YAML::Key << "p" << YAML::Value << Num(l.p);
+  if (l.model == LossModel::kGilbertElliott) {
+    out << YAML::Key << "p_good_to_bad" << YAML::Value << Num(l.p_good_to_bad)
+        << YAML::Key << "p_bad_to_good" << YAML::Value << Num(l.p_bad_to_good)
+        << YAML::Key << "loss_good" << YAML::Value << Num(l.loss_good)
+        << YAML::Key << "loss_bad" << YAML::Value << Num(l.loss_bad);
+  }
+  out << YAML::EndMap;
+}
+
+void EmitDataset(YAML::Emitter& out, const DatasetConfig& d) {
+  out << YAML::Key << "dataset" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "source" << YAML::Value << ToString(d.source);
+  out << YAML::Key << "poses" << YAML::Value << d.poses.string();
+  if (d.descriptors) out << YAML::Key << "descriptors" << YAML::Value << d.descriptors->string();
+  out << YAML::Key << "bin_width" << YAML::Value << d.bin_width;
+  out << YAML::Key << "dim" << YAML::Value << d.dim;
+  out << YAML::Key << "fps" << YAML::Value << Num(d.fps);
+  out << YAML::Key << "frames" << YAML::Value
+      << (d.frames ? std::to_string(*d.frames) : std::string("all"));
+  const auto& k = d.synthetic;
+  out << YAML::Key << "synthetic" << YAML::Value << YAML::BeginMap
+      << YAML::Key << "place_features" << YAML::Value << k.place_features
+      << YAML::Key << "length_scale_min_m" << YAML::Value << Num(k.length_scale_min_m)
+      << YAML::Key << "length_scale_max_m" << YAML::Value << Num(k.length_scale_max_m)
+      << YAML::Key << "heading_scale" << YAML::Value << Num(k.heading_scale)
+      << YAML::Key << "heading_fraction" << YAML::Value << Num(k.heading_fraction)
+      << YAML::Key << "variance_decay" << YAML::Value << Num(k.variance_decay)
+      << YAML::Key << "noise" << YAML::Value << Num(k.noise)
+      << YAML::Key << "appearance_change" << YAML::Value << Num(k.appearance_change)
+      << YAML::Key << "appearance_time_scale_frames" << YAML::Value
+      << Num(k.appearance_time_scale_frames)
+      << YAML::Key << "environment_offset" << YAML::Value << Num(k.environment_offset)
+      << YAML::EndMap;
+  out << YAML::EndMap;
+}
+
+void EmitTraining(YAML::Emitter& out, const TrainingConfig& t) {
+  out << YAML::Key << "training" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "source" << YAML::Value << ToString(t.source);
+  if (t.descriptors) out << YAML::Key << "descriptors" << YAML::Value << t.descriptors->string();
+  if (t.centroids) out << YAML::Key << "centroids" << YAML::Value << *t.centroids;
+  out << YAML::Key << "clusters_per_robot" << YAML::Value << t.clusters_per_robot;
+  out << YAML::Key << "synthetic" << YAML::Value << YAML::Flow << YAML::BeginMap
+      << YAML::Key << "samples" << YAML::Value << t.synthetic.samples
+      << YAML::Key << "environments" << YAML::Value << t.synthetic.environments
+      << YAML::Key << "training_area_m" << YAML::Value << Num(t.synthetic.training_area_m)
+      << YAML::EndMap;
+  out << YAML::EndMap;
+}
+
+void EmitSweep(YAML::Emitter& out, const SweepConfig& s) {
+  out << YAML::Key << "robots" << YAML::Value;
+  EmitList(out, s.robots, [](int n) { return n; });
+  out << YAML::Key << "runs" << YAML::Value << s.runs;
+  out << YAML::Key << "protocols" << YAML::Value;
+  EmitList(out, s.protocols, [](const std::string& x) { return x; });
+  out << YAML::Key << "strategies" << YAML::Value;
+  EmitList(out, s.strategies, [](const std::string& x) { return x; });
+}
+
+void EmitNetwork(YAML::Emitter& out, const NetworkConfig& n) {
+  out << YAML::Key << "network" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "model" << YAML::Value;
+  EmitList(out, n.model, [](NetworkModel m) { return ToString(m); });
+  out << YAML::Key << "bandwidth" << YAML::Value;
+  EmitList(out, n.bandwidth, [](DataRate r) { return ToString(r); });
+  out << YAML::Key << "latency" << YAML::Value;
+  EmitList(out, n.latency, [](SimTime t) { return FormatDuration(t); });
+  out << YAML::Key << "queue_packets" << YAML::Value;
+  EmitList(out, n.queue_packets, [](int q) { return q; });
+  out << YAML::Key << "mtu" << YAML::Value;
+  EmitList(out, n.mtu, [](Bytes b) { return b.value(); });
+  out << YAML::Key << "loss" << YAML::Value;
+  EmitLoss(out, n.loss);
+  out << YAML::Key << "links" << YAML::Value << YAML::BeginSeq;
+  for (const auto& l : n.links) {
+    out << YAML::Flow << YAML::BeginMap << YAML::Key << "src" << YAML::Value << l.src
+        << YAML::Key << "dst" << YAML::Value << l.dst;
+    if (l.bandwidth) out << YAML::Key << "bandwidth" << YAML::Value << ToString(*l.bandwidth);
+    if (l.latency) out << YAML::Key << "latency" << YAML::Value << FormatDuration(*l.latency);
+    if (l.loss) {
+      out << YAML::Key << "loss" << YAML::Value;
+      EmitLoss(out, *l.loss);
+    }
+    out << YAML::EndMap;
+  }
+  out << YAML::EndSeq << YAML::EndMap;
+}
+
+void EmitRest(YAML::Emitter& out, const ExperimentConfig& c) {
+  out << YAML::Key << "verification" << YAML::Value << YAML::Flow << YAML::BeginMap
+      << YAML::Key << "request_bytes" << YAML::Value << c.verification.request_bytes.value()
+      << YAML::Key << "max_distance" << YAML::Value << Num(c.verification.max_distance)
+      << YAML::EndMap;
+  out << YAML::Key << "service" << YAML::Value << YAML::Flow << YAML::BeginMap
+      << YAML::Key << "fixed" << YAML::Value << FormatDuration(c.service.fixed)
+      << YAML::Key << "per_comparison" << YAML::Value << FormatDuration(c.service.per_comparison)
+      << YAML::EndMap;
+  out << YAML::Key << "dropout" << YAML::Value << YAML::BeginSeq;
+  for (const auto& d : c.dropout) {
+    out << YAML::Flow << YAML::BeginMap << YAML::Key << "robot" << YAML::Value << d.robot
+        << YAML::Key << "at" << YAML::Value << FormatDuration(d.at) << YAML::EndMap;
+  }
+  out << YAML::EndSeq;
+  const auto& o = c.outputs;
+  out << YAML::Key << "outputs" << YAML::Value << YAML::Flow << YAML::BeginMap
+      << YAML::Key << "figures" << YAML::Value << o.figures
+      << YAML::Key << "queries" << YAML::Value << o.queries
+      << YAML::Key << "messages" << YAML::Value << o.messages
+      << YAML::Key << "lcm_log" << YAML::Value << o.lcm_log;
+  if (o.pr_robots) out << YAML::Key << "pr_robots" << YAML::Value << *o.pr_robots;
+  out << YAML::EndMap;
+}
+
+}  // namespace
+
+std::string EmitConfig(const ExperimentConfig& c) {
+  YAML::Emitter out;
+  out.SetBoolFormat(YAML::TrueFalseBool);
+  out << YAML::Comment("dvpr resolved config: every key, absolute paths. Run it again with "
+                       "`dvpr run config.yaml`.");
+  out << YAML::BeginMap;
+  out << YAML::Key << "name" << YAML::Value << c.name;
+  out << YAML::Key << "seed" << YAML::Value << c.seed;
+  EmitDataset(out, c.dataset);
+  EmitTraining(out, c.training);
+  EmitSweep(out, c.sweep);
+  out << YAML::Key << "evaluation" << YAML::Value << YAML::Flow << YAML::BeginMap
+      << YAML::Key << "gt_radius_m" << YAML::Value << Num(c.evaluation.gt_radius_m)
+      << YAML::Key << "suppression_frames" << YAML::Value << c.evaluation.suppression_frames
+      << YAML::EndMap;
+  EmitNetwork(out, c.network);
+  EmitRest(out, c);
+  out << YAML::EndMap;
+  return std::string(out.c_str()) + "\n";
+}
+
+std::string ToString(NetworkModel m) {
+  switch (m) {
+    case NetworkModel::kIdeal: return "ideal";
+    case NetworkModel::kPointToPoint: return "point_to_point";
+    case NetworkModel::kSharedMedium: return "shared_medium";
+  }
+  return "?";
+}
+
+std::string ToString(LossModel m) {
+  switch (m) {
+    case LossModel::kNone: return "none";
+    case LossModel::kBernoulli: return "bernoulli";
+    case LossModel::kGilbertElliott: return "gilbert_elliott";
+  }
+  return "?";
+}
+
+std::string ToString(DatasetSource s) { return s == DatasetSource::kFiles ? "files" : "synthetic"; }
+
+std::string ToString(TrainingSource s) {
+  switch (s) {
+    case TrainingSource::kSyntheticDiverse: return "synthetic_diverse";
+    case TrainingSource::kSyntheticDeploymentLike: return "synthetic_deployment_like";
+    case TrainingSource::kFiles: return "files";
+    case TrainingSource::kDeployment: return "deployment";
+  }
+  return "?";
+}
+
+std::string FormatDuration(SimTime t) {
+  const std::int64_t ns = t.ns();
+  struct Unit { std::int64_t per; const char* name; };
+  for (const Unit u : {Unit{3600'000'000'000, "h"}, Unit{60'000'000'000, "min"},
+                       Unit{1'000'000'000, "s"}, Unit{1'000'000, "ms"}, Unit{1'000, "us"}}) {
+    if (ns != 0 && ns % u.per == 0) return std::to_string(ns / u.per) + u.name;
+  }
+  return std::to_string(ns) + "ns";
+}
+
+}  // namespace dvpr

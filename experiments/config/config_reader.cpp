@@ -1,0 +1,174 @@
+#include "experiments/config/config_reader.h"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+#include <system_error>
+
+namespace dvpr::config_detail {
+
+namespace {
+
+std::string Quoted(const std::string& s) { return "'" + s + "'"; }
+
+std::string KindOf(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Map: return "a map";
+    case YAML::NodeType::Sequence: return "a list";
+    case YAML::NodeType::Scalar: return Quoted(node.Scalar());
+    default: return "nothing";
+  }
+}
+
+}  // namespace
+
+void Field::Fail(const std::string& problem) const {
+  throw ConfigError(origin_->name + ": " + (path_.empty() ? "(top level)" : path_) + ": " +
+                    problem);
+}
+
+void Field::ExpectMap(std::initializer_list<std::string_view> allowed) const {
+  if (!node_.IsMap()) Fail("expected a map, got " + KindOf(node_));
+  for (const auto& entry : node_) {
+    const std::string key = entry.first.Scalar();
+    bool known = false;
+    for (std::string_view a : allowed) known = known || a == key;
+    if (known) continue;
+    std::string list;
+    for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+    Child(key).Fail("unknown key (expected one of: " + list + ")");
+  }
+}
+
+Field Field::Child(std::string_view key) const {
+  const std::string k(key);
+  return Field(*origin_, node_.IsMap() ? node_[k] : YAML::Node(YAML::NodeType::Undefined),
+               path_.empty() ? k : path_ + "." + k);
+}
+
+std::vector<Field> Field::Items() const {
+  if (node_.IsMap()) Fail("expected a value or a list of values, got a map");
+  if (!node_.IsSequence()) return {*this};
+  if (node_.size() == 0) Fail("expected at least one value, got an empty list");
+  std::vector<Field> items;
+  for (std::size_t i = 0; i < node_.size(); ++i) {
+    items.emplace_back(*origin_, node_[i], path_ + "[" + std::to_string(i) + "]");
+  }
+  return items;
+}
+
+const std::string& Field::Scalar(std::string_view expected) const {
+  if (!node_.IsScalar()) Fail("expected " + std::string(expected) + ", got " + KindOf(node_));
+  return node_.Scalar();
+}
+
+std::string Field::String() const { return Scalar("a string"); }
+
+long long Field::Int(long long min, long long max) const {
+  const std::string& s = Scalar("an integer");
+  long long v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size()) {
+    Fail("expected an integer, got " + Quoted(s));
+  }
+  if (v < min) Fail("must be at least " + std::to_string(min) + ", got " + s);
+  if (v > max) Fail("must be at most " + std::to_string(max) + ", got " + s);
+  return v;
+}
+
+double Field::Double() const {
+  const std::string& s = Scalar("a number");
+  double v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) {
+    Fail("expected a number, got " + Quoted(s));
+  }
+  return v;
+}
+
+double Field::Probability() const {
+  const double p = Double();
+  if (p < 0.0 || p > 1.0) Fail("expected a probability in [0, 1], got " + node_.Scalar());
+  return p;
+}
+
+bool Field::Bool() const {
+  const std::string& s = Scalar("true or false");
+  if (s == "true") return true;
+  if (s == "false") return false;
+  Fail("expected true or false, got " + Quoted(s));
+}
+
+DataRate Field::Rate() const {
+  const std::string& s = Scalar("a data rate with a unit, e.g. 10Mbps");
+  try {
+    const DataRate r = ParseDataRate(s);
+    if (r.bps() <= 0) Fail("expected a positive data rate, got " + Quoted(s));
+    return r;
+  } catch (const std::invalid_argument& e) {
+    Fail(std::string("expected a data rate with a unit, e.g. 10Mbps (") + e.what() + ")");
+  }
+}
+
+SimTime Field::Duration() const {
+  const std::string& s = Scalar("a duration with a unit, e.g. 5ms");
+  try {
+    return ParseDuration(s);
+  } catch (const std::invalid_argument& e) {
+    Fail(std::string("expected a duration with a unit, e.g. 5ms (") + e.what() + ")");
+  }
+}
+
+Bytes Field::Size(bool plain_integer_is_bytes) const {
+  const std::string& s = Scalar("a size with a unit, e.g. 25kB");
+  if (plain_integer_is_bytes && !s.empty() &&
+      s.find_first_not_of("0123456789") == std::string::npos) {
+    return Bytes(Int(0, std::int64_t{1} << 40));
+  }
+  try {
+    return ParseBytes(s);
+  } catch (const std::invalid_argument& e) {
+    Fail(std::string("expected a size with a unit, e.g. 25kB (") + e.what() + ")");
+  }
+}
+
+std::size_t Field::Choice(const std::vector<std::string>& names) const {
+  const std::string& s = Scalar("a name");
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i] == s) return i;
+  }
+  std::string list;
+  for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+  Fail("unknown value " + Quoted(s) + " (expected one of: " + list + ")");
+}
+
+std::vector<std::filesystem::path> SearchDirs(const Origin& origin) {
+  std::vector<std::filesystem::path> dirs{origin.base_dir};
+  std::error_code ec;
+  const auto cwd = std::filesystem::current_path(ec);
+  if (!ec) dirs.push_back(cwd);
+  dirs.emplace_back(DVPR_SOURCE_TREE);
+  return dirs;
+}
+
+std::filesystem::path Field::ExistingFile() const {
+  const std::filesystem::path p = String();
+  if (p.empty()) Fail("expected a file path, got an empty string");
+  std::vector<std::filesystem::path> tried;
+  if (p.is_absolute()) {
+    tried.push_back(p);
+  } else {
+    for (const auto& dir : SearchDirs(*origin_)) tried.push_back(dir / p);
+  }
+  for (const auto& candidate : tried) {
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(candidate, ec)) {
+      return std::filesystem::absolute(candidate).lexically_normal();
+    }
+  }
+  std::ostringstream where;
+  for (std::size_t i = 0; i < tried.size(); ++i) where << (i ? ", " : "") << tried[i].string();
+  Fail("file not found: " + Quoted(p.string()) + " (looked for " + where.str() + ")");
+}
+
+}  // namespace dvpr::config_detail

@@ -1,0 +1,67 @@
+#pragma once
+// Internal to the config parser (config.cpp): typed reads from a YAML node that carry the key path
+// into every error, and the check for unknown keys. Not for use outside experiments/config*.cpp.
+#include <filesystem>
+#include <initializer_list>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "experiments/config/config.h"
+
+namespace dvpr::config_detail {
+
+// Where a config came from, for error messages and relative paths.
+struct Origin {
+  std::string name;                // the file (or "<config>")
+  std::filesystem::path base_dir;  // its folder
+};
+
+// A node and its dotted key path ("network.loss.p", "dropout[1].at").
+class Field {
+ public:
+  Field(const Origin& origin, YAML::Node node, std::string path)
+      : origin_(&origin), node_(std::move(node)), path_(std::move(path)) {}
+
+  const std::string& path() const { return path_; }
+  const YAML::Node& node() const { return node_; }
+  bool present() const { return node_.IsDefined() && !node_.IsNull(); }
+  const Origin& origin() const { return *origin_; }
+
+  [[noreturn]] void Fail(const std::string& problem) const;
+
+  // Requires a map whose keys are all in `allowed`; the error lists them.
+  void ExpectMap(std::initializer_list<std::string_view> allowed) const;
+  Field Child(std::string_view key) const;
+  // A list's items; a scalar counts as a one-item list (so `bandwidth: 10Mbps` and
+  // `bandwidth: [1Mbps, 10Mbps]` both work). Fails on an empty list.
+  std::vector<Field> Items() const;
+
+  std::string String() const;
+  long long Int(long long min, long long max) const;
+  double Double() const;
+  double Probability() const;
+  bool Bool() const;
+  DataRate Rate() const;
+  SimTime Duration() const;
+  Bytes Size(bool plain_integer_is_bytes) const;
+  // One of `names`; returns its index.
+  std::size_t Choice(const std::vector<std::string>& names) const;
+  // A file that must exist: absolute, or resolved against the config's folder, the current
+  // directory, then the source tree.
+  std::filesystem::path ExistingFile() const;
+
+ private:
+  const std::string& Scalar(std::string_view expected) const;
+
+  const Origin* origin_;
+  YAML::Node node_;
+  std::string path_;
+};
+
+// Candidate locations of a relative path, in the order they are tried.
+std::vector<std::filesystem::path> SearchDirs(const Origin& origin);
+
+}  // namespace dvpr::config_detail

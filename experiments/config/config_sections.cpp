@@ -1,0 +1,159 @@
+// The network-side sections of the config: network (with its sweepable lists), verification,
+// service, dropout, outputs.
+#include <algorithm>
+
+#include "experiments/config/config.h"
+#include "experiments/config/config_reader.h"
+
+namespace dvpr::config_detail {
+
+namespace {
+
+const std::vector<std::string> kNetworkModels{"ideal", "point_to_point", "shared_medium"};
+const std::vector<std::string> kLossModels{"none", "bernoulli", "gilbert_elliott"};
+
+LossConfig ReadLoss(const Field& f) {
+  LossConfig l;
+  if (!f.present()) return l;
+  if (!f.node().IsMap()) f.Fail("expected a map such as {model: none} or {model: bernoulli, p: 0.01}");
+  const Field model = f.Child("model");
+  if (!model.present()) model.Fail("required (none, bernoulli or gilbert_elliott)");
+  l.model = static_cast<LossModel>(model.Choice(kLossModels));
+  switch (l.model) {
+    case LossModel::kNone:
+      f.ExpectMap({"model"});
+      break;
+    case LossModel::kBernoulli:
+      f.ExpectMap({"model", "p"});
+      if (!f.Child("p").present()) f.Child("p").Fail("required for the bernoulli loss model");
+      l.p = f.Child("p").Probability();
+      break;
+    case LossModel::kGilbertElliott:
+      f.ExpectMap({"model", "p_good_to_bad", "p_bad_to_good", "loss_good", "loss_bad"});
+      for (const char* k : {"p_good_to_bad", "p_bad_to_good"}) {
+        if (!f.Child(k).present()) f.Child(k).Fail("required for the gilbert_elliott loss model");
+      }
+      l.p_good_to_bad = f.Child("p_good_to_bad").Probability();
+      l.p_bad_to_good = f.Child("p_bad_to_good").Probability();
+      if (auto c = f.Child("loss_good"); c.present()) l.loss_good = c.Probability();
+      if (auto c = f.Child("loss_bad"); c.present()) l.loss_bad = c.Probability();
+      break;
+  }
+  return l;
+}
+
+std::vector<LinkOverride> ReadLinks(const Field& f) {
+  std::vector<LinkOverride> links;
+  if (!f.present()) return links;
+  if (!f.node().IsSequence()) f.Fail("expected a list of {src, dst, bandwidth, latency, loss}");
+  for (const Field& item : f.Items()) {
+    item.ExpectMap({"src", "dst", "bandwidth", "latency", "loss"});
+    LinkOverride o;
+    o.src = static_cast<int>(item.Child("src").Int(0, 100000));
+    o.dst = static_cast<int>(item.Child("dst").Int(0, 100000));
+    if (o.src == o.dst) item.Child("dst").Fail("must differ from src");
+    if (auto c = item.Child("bandwidth"); c.present()) o.bandwidth = c.Rate();
+    if (auto c = item.Child("latency"); c.present()) o.latency = c.Duration();
+    if (auto c = item.Child("loss"); c.present()) o.loss = ReadLoss(c);
+    links.push_back(o);
+  }
+  return links;
+}
+
+template <typename T, typename ReadOne>
+std::vector<T> ReadList(const Field& f, ReadOne read_one) {
+  std::vector<T> values;
+  for (const Field& item : f.Items()) {
+    T v = read_one(item);
+    if (std::find(values.begin(), values.end(), v) != values.end()) item.Fail("listed twice");
+    values.push_back(v);
+  }
+  return values;
+}
+
+}  // namespace
+
+NetworkConfig ReadNetwork(const Field& f) {
+  NetworkConfig n;
+  if (!f.present()) return n;
+  f.ExpectMap({"model", "bandwidth", "latency", "queue_packets", "mtu", "loss", "links"});
+  if (auto c = f.Child("model"); c.present()) {
+    n.model = ReadList<NetworkModel>(
+        c, [](const Field& i) { return static_cast<NetworkModel>(i.Choice(kNetworkModels)); });
+  }
+  if (auto c = f.Child("bandwidth"); c.present()) {
+    n.bandwidth = ReadList<DataRate>(c, [](const Field& i) { return i.Rate(); });
+  }
+  if (auto c = f.Child("latency"); c.present()) {
+    n.latency = ReadList<SimTime>(c, [](const Field& i) { return i.Duration(); });
+  }
+  if (auto c = f.Child("queue_packets"); c.present()) {
+    n.queue_packets =
+        ReadList<int>(c, [](const Field& i) { return static_cast<int>(i.Int(1, 1 << 30)); });
+  }
+  if (auto c = f.Child("mtu"); c.present()) {
+    n.mtu = ReadList<Bytes>(c, [](const Field& i) {
+      const Bytes b = i.Size(/*plain_integer_is_bytes=*/true);
+      if (b.value() < 68) i.Fail("an IPv4 MTU is at least 68 bytes");
+      return b;
+    });
+  }
+  n.loss = ReadLoss(f.Child("loss"));
+  n.links = ReadLinks(f.Child("links"));
+  return n;
+}
+
+VerificationConfig ReadVerification(const Field& f) {
+  VerificationConfig v;
+  if (!f.present()) return v;
+  f.ExpectMap({"request_bytes", "max_distance"});
+  if (auto c = f.Child("request_bytes"); c.present()) v.request_bytes = c.Size(true);
+  if (auto c = f.Child("max_distance"); c.present()) {
+    v.max_distance = c.Double();
+    if (v.max_distance < 0) c.Fail("must not be negative");
+  }
+  return v;
+}
+
+ServiceConfig ReadService(const Field& f) {
+  ServiceConfig s;
+  if (!f.present()) return s;
+  f.ExpectMap({"fixed", "per_comparison"});
+  if (auto c = f.Child("fixed"); c.present()) s.fixed = c.Duration();
+  if (auto c = f.Child("per_comparison"); c.present()) s.per_comparison = c.Duration();
+  return s;
+}
+
+std::vector<Dropout> ReadDropout(const Field& f, const SweepConfig& sweep) {
+  std::vector<Dropout> out;
+  if (!f.present()) return out;
+  if (!f.node().IsSequence()) f.Fail("expected a list of {robot, at}");
+  const int largest = *std::max_element(sweep.robots.begin(), sweep.robots.end());
+  for (const Field& item : f.Items()) {
+    item.ExpectMap({"robot", "at"});
+    Dropout d;
+    d.robot = static_cast<int>(item.Child("robot").Int(0, largest - 1));
+    d.at = item.Child("at").Duration();
+    out.push_back(d);
+  }
+  return out;
+}
+
+OutputsConfig ReadOutputs(const Field& f, const SweepConfig& sweep) {
+  OutputsConfig o;
+  if (!f.present()) return o;
+  f.ExpectMap({"figures", "queries", "messages", "lcm_log", "pr_robots"});
+  if (auto c = f.Child("figures"); c.present()) o.figures = c.Bool();
+  if (auto c = f.Child("queries"); c.present()) o.queries = c.Bool();
+  if (auto c = f.Child("messages"); c.present()) o.messages = c.Bool();
+  if (auto c = f.Child("lcm_log"); c.present()) o.lcm_log = c.Bool();
+  if (auto c = f.Child("pr_robots"); c.present()) {
+    o.pr_robots = static_cast<int>(c.Int(2, 100000));
+    if (std::find(sweep.robots.begin(), sweep.robots.end(), *o.pr_robots) == sweep.robots.end()) {
+      c.Fail("must be one of the swept robot counts");
+    }
+  }
+  return o;
+}
+
+}  // namespace dvpr::config_detail

@@ -1,0 +1,73 @@
+#include "experiments/evaluation/ground_truth.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace dvpr {
+
+void GroundTruthParams::Validate() const {
+  if (!(radius_m > 0.0) || !std::isfinite(radius_m)) {
+    throw std::invalid_argument("GroundTruthParams.radius_m must be finite and > 0");
+  }
+  if (suppression_frames < 0) {
+    throw std::invalid_argument("GroundTruthParams.suppression_frames must be >= 0, got " +
+                                std::to_string(suppression_frames));
+  }
+}
+
+namespace {
+
+double SquaredDistance(const Positions& p, Eigen::Index i, Eigen::Index j) {
+  return (p.row(i) - p.row(j)).squaredNorm();
+}
+
+// Calls fn(j) for every j outside the window of i: [0, i - w) and (i + w, N).
+template <typename Fn>
+void ForEachOutsideWindow(Eigen::Index n, Eigen::Index i, int window, Fn&& fn) {
+  const Eigen::Index below = std::max<Eigen::Index>(0, i - window);  // j < below
+  for (Eigen::Index j = 0; j < below; ++j) fn(j);
+  for (Eigen::Index j = i + window + 1; j < n; ++j) fn(j);
+}
+
+}  // namespace
+
+std::vector<double> NearestOutsideWindowSquared(const Positions& positions, int suppression_frames) {
+  GroundTruthParams{.radius_m = 1.0, .suppression_frames = suppression_frames}.Validate();
+  const Eigen::Index n = positions.rows();
+  std::vector<double> g(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
+  for (Eigen::Index i = 0; i < n; ++i) {
+    double best = std::numeric_limits<double>::infinity();
+    ForEachOutsideWindow(n, i, suppression_frames,
+                         [&](Eigen::Index j) { best = std::min(best, SquaredDistance(positions, i, j)); });
+    g[static_cast<std::size_t>(i)] = best;
+  }
+  return g;
+}
+
+std::vector<std::uint8_t> RelevantFlags(const Positions& positions, const GroundTruthParams& params) {
+  params.Validate();
+  const double r2 = params.radius_m * params.radius_m;
+  const std::vector<double> g = NearestOutsideWindowSquared(positions, params.suppression_frames);
+  std::vector<std::uint8_t> relevant(g.size());
+  std::transform(g.begin(), g.end(), relevant.begin(), [r2](double v) { return v < r2 ? 1 : 0; });
+  return relevant;
+}
+
+std::int64_t CountRelevant(const Positions& positions, const GroundTruthParams& params) {
+  const auto flags = RelevantFlags(positions, params);
+  return std::count(flags.begin(), flags.end(), std::uint8_t{1});
+}
+
+bool IsCorrectMatch(const Positions& positions, std::int64_t query, std::int64_t match,
+                    double radius_m) {
+  const Eigen::Index n = positions.rows();
+  if (query < 0 || query >= n || match < 0 || match >= n) {
+    throw std::out_of_range("IsCorrectMatch: frame outside [0, " + std::to_string(n) + ")");
+  }
+  return SquaredDistance(positions, query, match) < radius_m * radius_m;
+}
+
+}  // namespace dvpr

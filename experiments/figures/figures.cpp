@@ -1,0 +1,178 @@
+// gnuplot scripts for the figures (see figures.h) and running them.
+#include "experiments/figures/figures.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "experiments/results/result_writers.h"
+
+namespace dvpr {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Same terminal, font and size for every figure; `noenhanced` so underscores print as such.
+// Scripts run in figures/data/, so the PNG (in figures/) is one level up.
+std::string Preamble(const fs::path& png, int width = 900, int height = 600) {
+  return "set terminal pngcairo size " + std::to_string(width) + "," + std::to_string(height) +
+         " font 'DejaVu Sans,11' noenhanced\nset output '../" + png.filename().string() +
+         "'\nset grid lc rgb '#dddddd'\nset border lw 1\nset key box opaque\n";
+}
+
+std::vector<std::string> ReadLines(const fs::path& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::string Escape(const std::string& s) {
+  std::string out;
+  for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
+  return out;
+}
+
+// "plot 'stem.dat' index 0 ... title '...', ..." for every block of a series file.
+std::string PlotSeries(const fs::path& data_dir, const std::string& stem, const std::string& style) {
+  const auto titles = ReadLines(data_dir / (stem + ".titles"));
+  std::string cmd = "plot ";
+  for (std::size_t i = 0; i < titles.size(); ++i) {
+    cmd += (i ? ", \\\n     " : "") + std::string("'") + stem + ".dat" +
+           "' index " + std::to_string(i) + " using 1:2 " + style + " title '" +
+           Escape(titles[i]) + "'";
+  }
+  return cmd + "\n";
+}
+
+std::string ConfusionScript(const fs::path& data_dir, const fs::path& png) {
+  std::istringstream meta(ReadLines(data_dir / "confusion.meta").at(0));
+  int m = 0, step = 0, frames = 0;
+  meta >> m >> step >> frames;
+  std::ostringstream s;
+  s << Preamble(png, 760, 680)
+    << "set title 'Descriptor distance between deployment frames (squared L2, every " << step
+    << "th of " << frames << " frames)'\n"
+    << "set xlabel 'frame index'\nset ylabel 'frame index'\nset cblabel 'squared L2 distance'\n"
+    << "set size ratio -1\nset xrange [0:" << m * step << "]\nset yrange [" << m * step
+    << ":0]\nset palette defined (0 '#000004', 1 '#3b0f70', 2 '#8c2981', 3 '#de4968', "
+       "4 '#fe9f6d', 5 '#fcfdbf')\nunset grid\nunset key\n"
+    << "plot 'confusion.f32' binary array=(" << m << "," << m
+    << ") format='%float32' dx=" << step << " dy=" << step
+    << " origin=(0,0) with image notitle\n";
+  return s.str();
+}
+
+std::string PrScript(const fs::path& data_dir, const fs::path& png) {
+  return Preamble(png) +
+         "set title 'Precision-recall: centralized vs decentralized (paper protocol, run 0)'\n"
+         "set xlabel 'recall'\nset ylabel 'precision'\nset xrange [0:1]\nset yrange [0:1.02]\n"
+         "set key bottom left\n" + PlotSeries(data_dir, "pr_curves", "with lines lw 2");
+}
+
+std::string DimsScript(const fs::path& data_dir, const fs::path& png) {
+  return Preamble(png, 760, 680) +
+         "set title 'First two descriptor dimensions: training vs deployment'\n"
+         "set xlabel 'descriptor dimension 1'\nset ylabel 'descriptor dimension 2'\n"
+         "set size ratio -1\nset key top right\n" +
+         PlotSeries(data_dir, "descriptor_dims", "with points pt 7 ps 0.25");
+}
+
+std::string RelativeAucScript(const fs::path& data_dir, const fs::path& png) {
+  const std::string protocol = ReadLines(data_dir / "relative_auc.protocol").at(0);
+  auto panel = [&](const std::string& stem, const std::string& ylabel, const std::string& title) {
+    const std::string dat = stem + ".dat";
+    return "set title '" + title + "'\nset xlabel 'robots n'\nset ylabel '" + ylabel +
+           "'\nplot '" + dat + "' index 0 using 1:2 with points pt 7 ps 0.6 lc rgb '#7f9fcf' "
+           "title 'every run', '" + dat + "' index 1 using 1:2 with linespoints lw 2 pt 7 "
+           "lc rgb '#1f3f8f' title 'mean over runs'\n";
+  };
+  return Preamble(png, 1200, 520) + "set multiplot layout 1,2\nset key top right\n"
+         "set xtics 2\nset yrange [0:*]\n" +
+         panel("relative_auc", "AUC(decentralized) / AUC(reference)",
+               "Relative AUC vs team size (" + protocol + " protocol)") +
+         "set yrange [0:*]\n" +
+         panel("balance", "max robot load / mean load",
+               "Worst balance ratio vs team size (" + protocol + " protocol)") +
+         "unset multiplot\n";
+}
+
+std::string BytesScript(const fs::path& data_dir, const fs::path& png) {
+  return Preamble(png) +
+         "set title 'Bytes on the wire per query vs team size (simulation, mean over runs)'\n"
+         "set xlabel 'robots n'\nset ylabel 'wire bytes per query'\nset logscale y\n"
+         "set key top left\n" + PlotSeries(data_dir, "bytes_per_query", "with linespoints lw 2 pt 7 ps 0.8");
+}
+
+std::string LatencyScript(const fs::path& data_dir, const fs::path& png) {
+  return Preamble(png) +
+         "set title 'Query latency vs team size (simulation, mean over runs)'\n"
+         "set xlabel 'robots n'\nset ylabel 'mean query latency [ms]'\nset logscale y\n"
+         "set key top left\n" + PlotSeries(data_dir, "query_latency", "with linespoints lw 2 pt 7 ps 0.8");
+}
+
+// Writes the script, runs gnuplot into a temporary PNG and renames it into place.
+bool Draw(const fs::path& data_dir, const fs::path& png, const std::string& name,
+          std::string (*script)(const fs::path&, const fs::path&), std::ostream& log) {
+  const fs::path tmp = png.parent_path() / ("." + png.filename().string() + ".tmp");
+  const fs::path gp = data_dir / (name + ".gp");
+  WriteFileAtomic(gp, script(data_dir, tmp));
+  const fs::path err = data_dir / (name + ".log");
+  // Run inside the data folder: the scripts name their files relative to it, so they do not
+  // depend on where the results folder is (and can be rerun after moving it).
+  const std::string cmd = "cd '" + data_dir.string() + "' && gnuplot '" + gp.filename().string() +
+                          "' 2> '" + err.filename().string() + "'";
+  if (std::system(cmd.c_str()) != 0 || !fs::exists(tmp)) {
+    log << "dvpr: figure " << png.filename().string() << " not drawn (gnuplot failed, see "
+        << err.string() << ")\n";
+    return false;
+  }
+  fs::rename(tmp, png);
+  std::error_code ec;
+  fs::remove(err, ec);
+  return true;
+}
+
+}  // namespace
+
+std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::ostream& log) {
+  const fs::path fig = out_dir / "figures";
+  const fs::path data = fig / "data";
+  fs::create_directories(data);
+  const std::vector<RunResult> rows = ReadRunsCsv(out_dir / "runs.csv");
+  const bool have3 = WriteRelativeAucData(data, rows);
+  const bool have5 = WriteBytesPerQueryData(data, rows);
+  const bool have6 = WriteLatencyData(data, rows);
+  const bool have7 = WriteStrategyTradeoffData(data, rows);
+  const bool have8 = WriteStrategySweepData(data, rows);
+  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
+    log << "dvpr: figures not drawn: gnuplot is not installed (scripts/setup.sh installs it)\n";
+    return {};
+  }
+  struct Figure {
+    const char* name; bool available; std::string (*script)(const fs::path&, const fs::path&);
+    const char* missing;
+  };
+  const Figure figures[] = {
+      {"confusion_matrix", fs::exists(data / "confusion.meta"), ConfusionScript, "no deployment data"},
+      {"pr_curves", fs::exists(data / "pr_curves.titles"), PrScript, "needs the paper protocol"},
+      {"relative_auc_balance", have3, RelativeAucScript, "no decentralized runs"},
+      {"descriptor_dims", fs::exists(data / "descriptor_dims.titles"), DimsScript, "no data"},
+      {"bytes_per_query", have5, BytesScript, "needs protocol sim"},
+      {"query_latency", have6, LatencyScript, "needs protocol sim"},
+      {"strategy_tradeoff", have7, StrategyTradeoffScript, "no relative AUC in runs.csv"},
+      {"strategy_sweep", have8, StrategySweepScript, "needs a relative AUC at two or more n"}};
+  std::vector<fs::path> drawn;
+  for (const Figure& f : figures) {
+    const fs::path png = fig / (std::string(f.name) + ".png");
+    if (!f.available) {
+      log << "dvpr: figure " << f.name << ".png skipped (" << f.missing << ")\n";
+      continue;
+    }
+    if (Draw(data, png, f.name, f.script, log)) drawn.push_back(png);
+  }
+  return drawn;
+}
+
+}  // namespace dvpr

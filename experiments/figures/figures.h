@@ -1,0 +1,101 @@
+#pragma once
+// The figures of an experiment (PNG, gnuplot's pngcairo terminal). Each figure is two steps:
+// its data goes to DIR/figures/data/ as plain text (or raw float32 for the confusion matrix),
+// then a gnuplot script next to it draws DIR/figures/<name>.png. So `dvpr plot DIR` can redraw
+// everything from the files alone, and a user can edit a script and rerun gnuplot on it.
+// Fixed fonts and sizes, no date stamps: the same data gives the same PNG.
+//
+//   1 confusion_matrix.png   squared descriptor distances of the deployment, every 5th frame
+//   2 pr_curves.png          precision-recall, centralized vs decentralized at one n
+//   3 relative_auc_balance.png  relative AUC and worst balance ratio vs n (mean line, runs dots)
+//   4 descriptor_dims.png    descriptor dimensions 1 and 2, training vs deployment
+//   5 bytes_per_query.png    bytes per query vs n, per strategy and network model (sim)
+//   6 query_latency.png      mean query latency vs n, per strategy and bandwidth (sim)
+//   7 strategy_tradeoff.png  every strategy at two n (10 and 20): relative AUC, worst balance,
+//                            bytes per query (dot plots, min-max over runs), and relative AUC vs
+//                            worst balance (one labelled point per strategy, the issue-8 target)
+//   8 strategy_sweep.png     relative AUC, worst balance, bytes per query vs n, every strategy
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "agents/descriptors.h"
+#include "experiments/results/results.h"
+
+namespace dvpr {
+
+// Data files of figures 1, 2 and 4 (they come from the inputs, not from runs.csv).
+void WriteConfusionData(const std::filesystem::path& data_dir, const DescriptorMatrix& deployment,
+                        int step);
+void WritePrCurveData(const std::filesystem::path& data_dir, const std::vector<PrCurve>& curves);
+void WriteDescriptorDimsData(const std::filesystem::path& data_dir,
+                             const DescriptorMatrix& training, const DescriptorMatrix& deployment);
+
+struct FigureData {
+  const DescriptorMatrix* deployment = nullptr;
+  const DescriptorMatrix* training = nullptr;
+  const std::vector<PrCurve>* curves = nullptr;
+  int suppression_frames = 250;
+};
+// All three of the above into out_dir/figures/data/.
+void WriteFigureData(const std::filesystem::path& out_dir, const FigureData& data);
+
+// Data files of figures 3, 5 and 6, from runs.csv rows. Each returns false (and writes nothing)
+// when the rows hold nothing to plot (e.g. no sim rows for figure 5).
+bool WriteRelativeAucData(const std::filesystem::path& data_dir, const std::vector<RunResult>& rows);
+bool WriteBytesPerQueryData(const std::filesystem::path& data_dir,
+                            const std::vector<RunResult>& rows);
+bool WriteLatencyData(const std::filesystem::path& data_dir, const std::vector<RunResult>& rows);
+
+// Figures 7 and 8 (experiments/figures/figures_strategies.cpp): runs.csv aggregated per (strategy, n).
+// Mean, min and max over the runs that have the metric (NaN and runs = 0 when none).
+struct RunSpread {
+  int runs = 0;
+  double mean = kNotApplicable;
+  double min = kNotApplicable;
+  double max = kNotApplicable;
+};
+struct StrategyStats {
+  std::string strategy;
+  int robots = 0;
+  RunSpread relative_auc;     // rows of StrategyTable::accuracy_protocol
+  RunSpread worst_balance;    // idem
+  RunSpread bytes_per_query;  // sim rows of network variant StrategyTable::bytes_variant
+};
+struct StrategyTable {
+  // "paper" (the static protocol) when runs.csv has paper rows with a relative AUC, else "sim"
+  // (its first network variant), else "" (nothing to plot).
+  std::string accuracy_protocol;
+  int bytes_variant = -1;             // smallest sim network variant with bytes; -1: no sim rows
+  std::string bytes_network;          // e.g. "point-to-point 10 Mbit/s"
+  std::vector<std::string> strategies;  // every strategy of runs.csv, in order of appearance
+  std::vector<int> robots;            // every n, ascending
+  std::vector<StrategyStats> stats;   // every (strategy, n) with a row, strategy-major, n ascending
+  // nullptr when (strategy, robots) has no row.
+  const StrategyStats* Find(const std::string& strategy, int robots) const;
+};
+StrategyTable TabulateStrategies(const std::vector<RunResult>& rows);
+// The n of figure 7: {10, 20} when both were swept, else the two largest (or the only one).
+std::vector<int> ComparedRobots(const std::vector<int>& robots);
+// Data of figures 7 and 8; false (nothing written) when there is no relative AUC to plot, or,
+// for figure 8, fewer than two robot counts.
+bool WriteStrategyTradeoffData(const std::filesystem::path& data_dir,
+                               const std::vector<RunResult>& rows);
+bool WriteStrategySweepData(const std::filesystem::path& data_dir,
+                            const std::vector<RunResult>& rows);
+// Their gnuplot scripts (script text; `png` is the file it writes, next to data_dir's parent).
+std::string StrategyTradeoffScript(const std::filesystem::path& data_dir,
+                                   const std::filesystem::path& png);
+std::string StrategySweepScript(const std::filesystem::path& data_dir,
+                                const std::filesystem::path& png);
+// "point-to-point 10 Mbit/s": how the figures name a network variant.
+std::string NetworkText(const NetworkLabel& network);
+
+// Reads out_dir/runs.csv, writes the data of figures 3, 5, 6, 7, 8, then draws every figure whose data
+// exists. Figures that cannot be drawn (no data, gnuplot missing or failing) are reported on
+// `log` and skipped. Returns the PNGs written.
+std::vector<std::filesystem::path> DrawFigures(const std::filesystem::path& out_dir,
+                                               std::ostream& log);
+
+}  // namespace dvpr

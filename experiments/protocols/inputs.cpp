@@ -1,0 +1,111 @@
+#include "experiments/protocols/inputs.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "experiments/data/loaders.h"
+
+namespace dvpr {
+
+SyntheticParams ToSyntheticParams(const ExperimentConfig& config) {
+  const SyntheticDeploymentKnobs& d = config.dataset.synthetic;
+  SyntheticParams p;
+  p.dim = config.dataset.dim;
+  p.place_features = d.place_features;
+  p.length_scale_min_m = d.length_scale_min_m;
+  p.length_scale_max_m = d.length_scale_max_m;
+  p.heading_scale = d.heading_scale;
+  p.heading_fraction = d.heading_fraction;
+  p.variance_decay = d.variance_decay;
+  p.noise = d.noise;
+  p.appearance_change = d.appearance_change;
+  p.appearance_time_scale_frames = d.appearance_time_scale_frames;
+  p.environment_offset = d.environment_offset;
+  p.environments = config.training.synthetic.environments;
+  p.training_area_m = config.training.synthetic.training_area_m;
+  return p;
+}
+
+namespace {
+
+// Runs `load`, turning any loader error into a ConfigError naming the config key.
+template <typename Fn>
+auto WithKey(const std::string& origin, const std::string& key, Fn&& load) {
+  try {
+    return load();
+  } catch (const ConfigError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw ConfigError(origin + ": " + key + ": " + e.what());
+  }
+}
+
+Dataset LoadDeployment(const ExperimentConfig& c, const std::string& origin) {
+  const DatasetConfig& d = c.dataset;
+  if (d.source == DatasetSource::kFiles) {
+    DatasetFiles files{.name = c.name, .poses = d.poses, .descriptors = *d.descriptors,
+                       .dim = d.dim, .bin_frame_width = d.bin_width, .fps = d.fps,
+                       .frames = d.frames.value_or(-1)};
+    return WithKey(origin, "dataset.descriptors", [&] { return LoadDataset(files); });
+  }
+  Dataset ds;
+  ds.name = c.name;
+  ds.fps = d.fps;
+  ds.trajectory = WithKey(origin, "dataset.poses", [&] { return LoadKittiPoses(d.poses); });
+  if (d.frames && *d.frames < ds.trajectory.size()) {
+    ds.trajectory.positions.conservativeResize(*d.frames, Eigen::NoChange);
+    ds.trajectory.headings.conservativeResize(*d.frames, Eigen::NoChange);
+  }
+  const SyntheticParams params = ToSyntheticParams(c);
+  ds.descriptors = WithKey(origin, "dataset.synthetic", [&] {
+    params.Validate();
+    return SyntheticDeployment(ds.trajectory, params, c.seed);
+  });
+  return ds;
+}
+
+DescriptorMatrix LoadTraining(const ExperimentConfig& c, const Dataset& deployment,
+                              const std::string& origin) {
+  const TrainingConfig& t = c.training;
+  if (t.centroids) return {};  // k-means is skipped
+  const SyntheticParams params = ToSyntheticParams(c);
+  switch (t.source) {
+    case TrainingSource::kSyntheticDiverse:
+      return WithKey(origin, "training.synthetic", [&] {
+        return SyntheticTrainingDiverse(t.synthetic.samples, params, c.seed);
+      });
+    case TrainingSource::kSyntheticDeploymentLike:
+      return WithKey(origin, "training.synthetic", [&] {
+        return SyntheticTrainingDeploymentLike(t.synthetic.samples, params, c.seed);
+      });
+    case TrainingSource::kFiles:
+      return WithKey(origin, "training.descriptors", [&] {
+        return LoadDescriptors(*t.descriptors, c.dataset.dim, c.dataset.bin_width);
+      });
+    case TrainingSource::kDeployment:
+      return deployment.descriptors;
+  }
+  return {};
+}
+
+}  // namespace
+
+SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string& origin) {
+  SharedInputs in;
+  in.config = &config;
+  in.deployment = LoadDeployment(config, origin);
+  const int largest = *std::max_element(config.sweep.robots.begin(), config.sweep.robots.end());
+  if (in.deployment.size() < largest) {
+    throw ConfigError(origin + ": robots: " + std::to_string(largest) + " robots but only " +
+                      std::to_string(in.deployment.size()) + " frames (dataset.frames)");
+  }
+  in.training = LoadTraining(config, in.deployment, origin);
+  const auto k = static_cast<Eigen::Index>(largest) * config.training.clusters_per_robot;
+  if (!config.training.centroids && in.training.rows() < k) {
+    throw ConfigError(origin + ": training: " + std::to_string(in.training.rows()) +
+                      " training descriptors, k-means needs at least " + std::to_string(k));
+  }
+  return in;
+}
+
+}  // namespace dvpr

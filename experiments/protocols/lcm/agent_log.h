@@ -1,0 +1,72 @@
+#pragma once
+// The log one `dvpr agent` process leaves for `dvpr launch` to gather: a small
+// text file, one record per line, comma-separated, '#' lines are comments.
+// Written atomically, so a file that exists is complete; a robot whose process
+// died leaves none.
+//
+//   agent,robot,robots,run,strategy,speedup,start_utime,end_ns,end_reason,
+//         published,published_bytes,publish_failures,received,malformed,foreign,medium_wire_bytes
+//   load,searches,remote_queries,comparisons,stored,verifications,busy_ns,max_queue
+//   sent,dst,messages,payload_bytes,wire_bytes        one line per destination robot
+//   recv,src,messages                                 one line per source robot
+//   query,frame,sent_ns,expected,received,match_robot,match_frame,distance,latency_ns,
+//         verify_requested,verify_accepted            one line per frame taken
+//
+// Times: start_utime is the team's agreed start (wall clock, us since the Unix
+// epoch); end_ns and sent_ns are agent time (frame k is taken at k/fps);
+// busy_ns is modelled service time (agent time); latency_ns is measured on the
+// wall clock (agent-time latency / speedup), empty when a reply is missing.
+// end_reason: all_done (every robot announced done) or deadline. Distances are
+// written in the shortest form that reads back to the same float.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "agents/robot_agent.h"
+#include "experiments/evaluation/sim_metrics.h"
+
+namespace dvpr {
+
+struct AgentLinkCount {
+  std::int64_t messages = 0;
+  std::int64_t payload_bytes = 0;
+  std::int64_t wire_bytes = 0;  // the wire-format model of DESIGN.md section 4
+};
+
+struct AgentQueryLog {
+  QueryRecord record;            // latency: wall clock
+  int expected = 0;
+  int received = 0;
+  bool verify_requested = false;
+  std::optional<bool> verify_accepted;
+};
+
+struct AgentLog {
+  int robot = 0;
+  int robots = 0;
+  int run = 0;
+  std::string strategy;
+  double speedup = 1.0;
+  std::int64_t start_utime = 0;
+  std::int64_t end_ns = 0;
+  std::string end_reason;
+  std::uint64_t published = 0;
+  std::uint64_t published_bytes = 0;
+  std::uint64_t publish_failures = 0;
+  std::uint64_t received = 0;    // datagrams on subscribed channels (own broadcast echoes included)
+  std::uint64_t malformed = 0;   // buffers that did not decode as the channel's type
+  std::uint64_t foreign = 0;     // well-formed messages of another team (heartbeats, ids out of range): dropped
+  std::int64_t medium_wire_bytes = 0;  // wire bytes of each publication once
+  RobotLoad load;
+  std::vector<AgentLinkCount> sent;            // per destination robot
+  std::vector<std::int64_t> received_from;     // per source robot (own echoes excluded)
+  std::vector<AgentQueryLog> queries;
+};
+
+void WriteAgentLog(const std::filesystem::path& path, const AgentLog& log);
+// Throws std::runtime_error naming the file and line on anything malformed.
+AgentLog ReadAgentLog(const std::filesystem::path& path);
+
+}  // namespace dvpr

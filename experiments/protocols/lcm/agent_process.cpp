@@ -1,0 +1,359 @@
+#include "experiments/protocols/lcm/agent_process.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "agents/channels.h"
+#include "agents/lcm_transport.h"
+#include "agents/robot_agent.h"
+#include "agents/team_sync.h"
+#include "experiments/protocols/lcm/agent_log.h"
+#include "experiments/protocols/sim/agent_records.h"
+#include "experiments/protocols/inputs.h"
+#include "experiments/config/option_reader.h"
+#include "experiments/protocols/sim/sim_protocol.h"
+#include "experiments/data/split.h"
+#include "experiments/strategies/strategy_catalogue.h"
+#include "net_models/wire_format.h"
+
+namespace dvpr {
+
+void AgentProcessOptions::Validate() const {
+  auto fail = [](const std::string& what) { throw std::invalid_argument(what); };
+  if (config.empty()) fail("--config is required");
+  if (robot < 0) fail("--robot is required (0..robots-1)");
+  if (robots && robot >= *robots) fail("--robot " + std::to_string(robot) + " is not in a team of " + std::to_string(*robots));
+  if (run < 0) fail("--run must be >= 0");
+  if (!(speedup > 0.0) || !std::isfinite(speedup)) fail("--speedup must be a positive number");
+  if (!(grace_s >= 0.0)) fail("--grace must be >= 0");
+  if (!(barrier_timeout_s > 0.0)) fail("--barrier-timeout must be > 0");
+}
+
+AgentProcessOptions ParseAgentArgs(const std::vector<std::string>& args) {
+  AgentProcessOptions o;
+  OptionReader in(args);
+  while (in.Next()) {
+    const std::string& f = in.flag();
+    if (f == "--config") o.config = in.Text();
+    else if (f == "--set") o.overrides.push_back(ParseOverride(in.Text()));
+    else if (f == "--robot") o.robot = in.Int();
+    else if (f == "--robots") o.robots = in.Int();
+    else if (f == "--run") o.run = in.Int();
+    else if (f == "--strategy") o.strategy = in.Text();
+    else if (f == "--lcm") o.lcm_url = in.Text();
+    else if (f == "--speedup") o.speedup = in.Double();
+    else if (f == "--out") o.out = in.Text();
+    else if (f == "--grace") o.grace_s = in.Double();
+    else if (f == "--barrier-timeout") o.barrier_timeout_s = in.Double();
+    else in.Unknown();
+  }
+  o.Validate();
+  return o;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr auto kAnnouncePeriod = std::chrono::milliseconds(50);
+constexpr int kFinalAnnouncements = 4;  // DONE repeated before leaving, so others hear it despite loss
+
+std::int64_t WallUtime() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+// Everything the agents of one team must agree on, hashed: if one process has
+// other data, centroids or parameters, it routes differently and must not join.
+std::int64_t TeamKey(const ExperimentConfig& c, const Dataset& data, const CentroidMatrix& centroids,
+                     const std::string& strategy, int robots, int run) {
+  Fnv1a h;
+  h.AddValue(robots);
+  h.AddValue(run);
+  h.Add(strategy.data(), strategy.size());
+  h.Add(centroids.data(), static_cast<std::size_t>(centroids.size()) * sizeof(float));
+  h.Add(data.descriptors.data(), static_cast<std::size_t>(data.descriptors.size()) * sizeof(float));
+  h.AddValue(data.fps);
+  h.AddValue(c.evaluation.suppression_frames);
+  h.AddValue(c.service.fixed.ns());
+  h.AddValue(c.service.per_comparison.ns());
+  h.AddValue(c.verification.max_distance);
+  return h.value();
+}
+
+// The destination robot of a unicast channel ("DVPR_MATCH_3" -> 3).
+std::optional<int> UnicastDestination(const std::string& channel) {
+  const auto pos = channel.rfind('_');
+  if (pos == std::string::npos || pos + 1 >= channel.size()) return std::nullopt;
+  int v = 0;
+  for (std::size_t i = pos + 1; i < channel.size(); ++i) {
+    if (channel[i] < '0' || channel[i] > '9') return std::nullopt;
+    v = v * 10 + (channel[i] - '0');
+  }
+  return v;
+}
+
+// The sender of a message received on one of the agent's channels, when it
+// decodes and every robot and frame id in it is in range; -1 when it decodes
+// but is not of this team; empty when it does not decode (the transport
+// counts it as malformed).
+std::optional<int> SourceOf(const std::string& channel, std::span<const std::uint8_t> bytes, int robots, int frames) {
+  const auto robot = [&](int r, bool none_ok) { return (r >= 0 && r < robots) || (none_ok && r == -1); };
+  const auto frame = [&](int f, bool none_ok) { return (f >= 0 && f < frames) || (none_ok && f == -1); };
+  auto check = [](bool ok, int src) { return ok ? src : -1; };
+  if (channel.rfind("DVPR_QUERY_", 0) == 0) {
+    if (auto q = Decode<query_t>(bytes)) return check(robot(q->robot, false) && frame(q->frame, false), q->robot);
+  } else if (channel.rfind("DVPR_MATCH_", 0) == 0) {
+    if (auto m = Decode<match_t>(bytes)) {
+      return check(robot(m->responder, false) && robot(m->query_robot, false) && frame(m->query_frame, false) &&
+                       robot(m->match_robot, !m->has_match) && frame(m->match_frame, !m->has_match),
+                   m->responder);
+    }
+  } else if (channel.rfind("DVPR_VREQ_", 0) == 0) {
+    if (auto r = Decode<verify_request_t>(bytes)) {
+      return check(robot(r->query_robot, false) && robot(r->match_robot, false) && frame(r->query_frame, false) &&
+                       frame(r->match_frame, false), r->query_robot);
+    }
+  } else if (channel.rfind("DVPR_VRES_", 0) == 0) {
+    if (auto r = Decode<verify_result_t>(bytes)) {
+      return check(robot(r->query_robot, false) && robot(r->match_robot, false) && frame(r->query_frame, false) &&
+                       frame(r->match_frame, false), r->match_robot);
+    }
+  }
+  return std::nullopt;
+}
+
+// Counts what the agent sends and receives, per robot (links.csv).
+struct TrafficCounters {
+  int self = 0;
+  WireParams wire;
+  std::vector<AgentLinkCount> sent;
+  std::vector<std::int64_t> received_from;
+  std::int64_t medium_wire_bytes = 0;
+  int frames = 0;
+  std::uint64_t foreign = 0;  // well-formed messages naming robots or frames outside the team
+
+  void OnPublish(const std::string& channel, std::size_t size) {
+    if (channel == channels::kStatus) return;
+    const std::int64_t wire_bytes =
+        ComputeWireFootprint(Bytes(static_cast<std::int64_t>(size)), static_cast<std::int64_t>(channel.size()), wire)
+            .wire_bytes.value();
+    medium_wire_bytes += wire_bytes;
+    auto count = [&](std::size_t dst) {
+      if (dst >= sent.size() || static_cast<int>(dst) == self) return;
+      ++sent[dst].messages;
+      sent[dst].payload_bytes += static_cast<std::int64_t>(size);
+      sent[dst].wire_bytes += wire_bytes;
+    };
+    if (channel == channels::kQueryAll) {
+      for (std::size_t d = 0; d < sent.size(); ++d) count(d);
+    } else if (const auto dst = UnicastDestination(channel)) {
+      count(static_cast<std::size_t>(*dst));
+    }
+  }
+  // Counts per source; drops well-formed messages from outside the team.
+  bool OnReceive(const std::string& channel, std::span<const std::uint8_t> bytes) {
+    if (channel == channels::kStatus) return true;
+    const auto src = SourceOf(channel, bytes, static_cast<int>(received_from.size()), frames);
+    if (!src) return true;  // let the handler's decoder count it as malformed
+    if (*src < 0) {
+      ++foreign;
+      return false;
+    }
+    if (*src != self) ++received_from[static_cast<std::size_t>(*src)];
+    return true;
+  }
+};
+
+struct OwnProgress {
+  int taken = 0;
+  bool all_answered = false;  // every frame taken, every reply and verification in
+};
+
+OwnProgress Progress(const RobotAgent& agent) {
+  OwnProgress p;
+  bool answered = true;
+  for (const QueryOutcome& o : agent.outcomes()) {
+    if (o.expected_replies == 0) {
+      answered = false;
+      continue;
+    }
+    ++p.taken;
+    if (!o.Complete() || (o.verify_requested && !o.verify_accepted)) answered = false;
+  }
+  p.all_answered = answered;
+  return p;
+}
+
+}  // namespace
+
+namespace {
+
+struct Team {
+  ExperimentConfig config;
+  SharedInputs inputs;
+  int robots = 0;
+  std::string strategy;
+  std::shared_ptr<const CentroidTable> table;
+  const StrategySpec* own_table = nullptr;  // a catalogued strategy with its own table
+  std::int64_t key = 0;
+};
+
+Team LoadTeam(const AgentProcessOptions& o) {
+  Team t;
+  t.config = LoadConfig(o.config, o.overrides);
+  t.inputs = LoadSharedInputs(t.config, o.config.string());
+  t.inputs.config = &t.config;
+  t.robots = o.robots.value_or(t.config.sweep.robots.front());
+  t.strategy = o.strategy.empty() ? t.config.sweep.strategies.front() : o.strategy;
+  const auto frames = t.inputs.deployment.size();
+  if (t.robots < 2 || t.robots > frames || t.robots > 32767) {
+    throw std::invalid_argument("--robots: " + std::to_string(t.robots) + " robots for " + std::to_string(frames) +
+                                " frames (at least 2, at most one per frame)");
+  }
+  if (o.robot >= t.robots) throw std::invalid_argument("--robot " + std::to_string(o.robot) + " is not in a team of " + std::to_string(t.robots));
+  // The paper's table, or the strategy's own (issue 8's load-balanced tables), built by every
+  // process from the same inputs, so the whole team routes alike.
+  const StrategySpec* spec = FindStrategySpec(t.strategy);
+  if (spec && spec->recluster_period > 0) {
+    throw std::invalid_argument("--strategy: '" + t.strategy +
+                                "' re-clusters during the run, which dvpr agent does not implement; run it in the "
+                                "simulation (dvpr run)");
+  }
+  if (spec && spec->table != StrategySpec::Table::kPaper) {
+    t.own_table = spec;
+    t.table = BuildStrategyTable(*spec, t.inputs.training, t.inputs.deployment.descriptors, CentroidParams(t.config),
+                                 t.robots, o.run);
+  } else {
+    t.table = std::make_shared<const CentroidTable>(CentroidTable::RoundRobin(
+        RunCentroids(t.inputs.training, CentroidParams(t.config), t.robots, o.run), t.robots));
+  }
+  t.key = TeamKey(t.config, t.inputs.deployment, t.table->centroids(), t.strategy, t.robots, o.run);
+  return t;
+}
+
+// Agent time of the team's last frame: no robot sends a query after it.
+SimTime LastFrameTime(const SequenceSplit& split, double fps) {
+  SimTime last = SimTime::Zero();
+  for (const FrameRange& r : split.ranges) {
+    if (r.size() > 0) last = std::max(last, FrameStream{nullptr, r.begin, r.size(), fps}.TimeOf(r.size() - 1));
+  }
+  return last;
+}
+
+AgentLog MakeLog(const AgentProcessOptions& o, const Team& t, const RobotAgent& agent, const LcmTransport& transport,
+                 const TeamSync& sync, const TrafficCounters& traffic, std::int64_t start_utime,
+                 const std::string& end_reason) {
+  AgentLog l;
+  l.robot = o.robot;
+  l.robots = t.robots;
+  l.run = o.run;
+  l.strategy = t.strategy;
+  l.speedup = o.speedup;
+  l.start_utime = start_utime;
+  l.end_ns = transport.Now().ns();
+  l.end_reason = end_reason;
+  l.published = transport.Published();
+  l.published_bytes = transport.PublishedBytes();
+  l.publish_failures = transport.PublishFailures();
+  l.received = transport.Received();
+  l.malformed = transport.MalformedCount();
+  l.foreign = sync.foreign() + traffic.foreign;
+  l.medium_wire_bytes = traffic.medium_wire_bytes;
+  l.load = agent.load();
+  l.sent = traffic.sent;
+  l.received_from = traffic.received_from;
+  for (const QueryOutcome& q : agent.outcomes()) {
+    if (q.expected_replies == 0) continue;  // never taken
+    AgentQueryLog ql;
+    ql.record = ToQueryRecord(agent.id(), q);
+    // Latency as the network delivered it: the wall clock, not agent time.
+    if (ql.record.latency) ql.record.latency = SimTime::Nanos(std::llround(static_cast<double>(ql.record.latency->ns()) / o.speedup));
+    ql.expected = q.expected_replies;
+    ql.received = q.received_replies;
+    ql.verify_requested = q.verify_requested;
+    ql.verify_accepted = q.verify_accepted;
+    l.queries.push_back(ql);
+  }
+  return l;
+}
+
+}  // namespace
+
+int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
+  o.Validate();
+  const Team t = LoadTeam(o);
+  const Dataset& data = t.inputs.deployment;
+  const auto routing = t.own_table ? MakeSpecRouting(*t.own_table, t.table) : MakeStrategy(t.strategy, t.table, t.robots);
+  const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), t.robots);
+  const FrameRange range = split.ranges.at(static_cast<std::size_t>(o.robot));
+
+  LcmTransport transport(o.lcm_url, o.speedup);
+  TrafficCounters traffic{o.robot, WireParams{}, std::vector<AgentLinkCount>(static_cast<std::size_t>(t.robots)),
+                          std::vector<std::int64_t>(static_cast<std::size_t>(t.robots), 0), 0,
+                          static_cast<int>(data.size()), 0};
+  traffic.wire.mtu = t.config.network.mtu.front();
+  transport.SetPublishObserver([&](const std::string& c, std::span<const std::uint8_t> b) { traffic.OnPublish(c, b.size()); });
+  transport.SetReceiveFilter([&](const std::string& c, std::span<const std::uint8_t> b) { return traffic.OnReceive(c, b); });
+  TeamSync sync(RobotId(o.robot), t.robots, t.key);
+  Subscription status = transport.Subscribe<agent_status_t>(channels::kStatus, [&](const agent_status_t& s) { sync.OnStatus(s); });
+  RobotAgent agent(RobotId(o.robot), ToAgentParams(t.config), transport, *routing,
+                   FrameStream{&data.descriptors, range.begin, range.size(), data.fps},
+                   PoseOracle(data.trajectory.positions, t.config.evaluation.gt_radius_m));
+
+  const std::int64_t ready_utime = WallUtime();
+  auto announce = [&](std::int8_t state) {
+    const agent_status_t s = sync.Announce(WallUtime(), state, ready_utime, Progress(agent).taken);
+    sync.OnStatus(s);  // hear ourselves even if the loopback copy is lost
+    transport.Publish(channels::kStatus, s);
+  };
+
+  // Start barrier: announce READY until every robot of the team is heard.
+  const auto barrier_end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.barrier_timeout_s));
+  std::optional<std::int64_t> start;
+  const auto margin_us = static_cast<std::int64_t>(o.start_margin_s * 1e6);
+  while (!(start = sync.StartUtime(margin_us))) {
+    if (Clock::now() > barrier_end) {
+      throw std::runtime_error("start barrier: heard " + std::to_string(sync.HeardCount()) + " of " +
+                               std::to_string(t.robots) + " robots in " + std::to_string(o.barrier_timeout_s) +
+                               " s (" + std::to_string(sync.foreign()) + " heartbeats of another team: same config, "
+                               "data, --robots, --run and --strategy everywhere? same --lcm URL?)");
+    }
+    announce(agent_status_t::READY);
+    transport.RunUntilWall(Clock::now() + kAnnouncePeriod);
+  }
+  transport.SetEpoch(std::chrono::system_clock::time_point(std::chrono::microseconds(*start)));
+  agent.Start();
+
+  // The run: serve until every robot is done, or give up at the deadline.
+  const SimTime deadline = LastFrameTime(split, data.fps) + SimTime::Seconds(o.grace_s * o.speedup);
+  std::string end_reason = "deadline";
+  int final_announcements = 0;
+  while (transport.Now() < deadline) {
+    const SimTime now = transport.Now();
+    const bool done = now >= SimTime::Zero() && Progress(agent).all_answered;
+    announce(now < SimTime::Zero() ? agent_status_t::READY : done ? agent_status_t::DONE : agent_status_t::RUNNING);
+    if (done && sync.AllDone() && ++final_announcements >= kFinalAnnouncements) {
+      end_reason = "all_done";
+      break;
+    }
+    const auto to_deadline = std::chrono::nanoseconds(std::llround(static_cast<double>((deadline - now).ns()) / o.speedup));
+    transport.RunUntilWall(Clock::now() + std::min<Clock::duration>(kAnnouncePeriod, to_deadline));
+  }
+
+  const AgentLog log = MakeLog(o, t, agent, transport, sync, traffic, *start, end_reason);
+  const std::filesystem::path path =
+      o.out.empty() ? std::filesystem::path("agent_" + t.strategy + "_n" + std::to_string(t.robots) + "_r" +
+                                            std::to_string(o.run) + "_robot" + std::to_string(o.robot) + ".log")
+                    : o.out;
+  WriteAgentLog(path, log);
+  const auto complete = std::count_if(log.queries.begin(), log.queries.end(), [](const AgentQueryLog& q) { return q.received == q.expected; });
+  out << "robot " << o.robot << ": " << log.queries.size() << " queries, " << complete << " with every reply, "
+      << log.malformed << " malformed, " << log.foreign << " foreign, end: " << end_reason << ", log " << path.string()
+      << "\n";
+  return 0;
+}
+
+}  // namespace dvpr

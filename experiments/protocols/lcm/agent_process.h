@@ -1,0 +1,46 @@
+#pragma once
+// `dvpr agent`: one robot of the team as a process, talking LCM (UDP
+// multicast) to the others in wall-clock time (README, "Running real agents").
+//
+// It loads the same inputs as `dvpr run` and computes the same centroids
+// (same config and seed), builds the routing strategy, joins the start
+// barrier on DVPR_STATUS (experiments agree on a wall-clock start instant),
+// drives a RobotAgent over LcmTransport, and ends when every robot announced
+// done or at its deadline (the team's last frame + grace), then writes its
+// log (experiments/protocols/lcm/agent_log.h).
+#include <filesystem>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "experiments/config/config.h"
+
+namespace dvpr {
+
+inline constexpr const char* kDefaultLcmUrl = "udpm://239.255.76.67:7667?ttl=0";
+
+struct AgentProcessOptions {
+  std::filesystem::path config;
+  std::vector<ConfigOverride> overrides;
+  int robot = -1;
+  std::optional<int> robots;       // default: the config's first robot count
+  int run = 0;
+  std::string strategy;            // default: the config's first strategy
+  std::string lcm_url = kDefaultLcmUrl;
+  double speedup = 1.0;
+  std::filesystem::path out;       // default: agent_<strategy>_n<robots>_r<run>_robot<robot>.log
+  double grace_s = 2.0;            // wall seconds after the team's last frame before giving up
+  double barrier_timeout_s = 120;  // wall seconds to wait for the whole team
+  double start_margin_s = 0.3;     // between the last robot ready and the start
+  void Validate() const;           // throws std::invalid_argument naming the option
+};
+
+// Parses the arguments after "agent". Throws std::invalid_argument.
+AgentProcessOptions ParseAgentArgs(const std::vector<std::string>& args);
+
+// Runs the agent to its end; returns the exit status (0: the log is written,
+// whether or not every reply came). Throws on errors before the run.
+int RunAgentProcess(const AgentProcessOptions& options, std::ostream& out);
+
+}  // namespace dvpr

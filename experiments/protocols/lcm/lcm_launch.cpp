@@ -1,0 +1,301 @@
+#include "experiments/protocols/lcm/lcm_launch.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "experiments/protocols/lcm/agent_process.h"
+#include "experiments/protocols/inputs.h"
+#include "experiments/config/option_reader.h"
+#include "experiments/results/result_writers.h"
+#include "experiments/protocols/sim/sim_protocol.h"
+#include "experiments/data/split.h"
+#include "experiments/strategies/run_centroids.h"
+
+namespace dvpr {
+
+void LaunchOptions::Validate() const {
+  if (config.empty()) throw std::invalid_argument("--config is required");
+  if (robots < 2) throw std::invalid_argument("--robots is required (at least 2)");
+  if (run < 0) throw std::invalid_argument("--run must be >= 0");
+  if (!(speedup > 0.0) || !std::isfinite(speedup)) throw std::invalid_argument("--speedup must be a positive number");
+  if (!(grace_s >= 0.0)) throw std::invalid_argument("--grace must be >= 0");
+  if (!(timeout_s >= 0.0)) throw std::invalid_argument("--timeout must be >= 0");
+}
+
+LaunchOptions ParseLaunchArgs(const std::vector<std::string>& args) {
+  LaunchOptions o;
+  OptionReader in(args);
+  while (in.Next()) {
+    const std::string& f = in.flag();
+    if (f == "--config") o.config = in.Text();
+    else if (f == "--set") o.overrides.push_back(ParseOverride(in.Text()));
+    else if (f == "--robots") o.robots = in.Int();
+    else if (f == "--run") o.run = in.Int();
+    else if (f == "--out") o.out = in.Text();
+    else if (f == "--lcm") o.lcm_url = in.Text();
+    else if (f == "--speedup") o.speedup = in.Double();
+    else if (f == "--grace") o.grace_s = in.Double();
+    else if (f == "--timeout") o.timeout_s = in.Double();
+    else in.Unknown();
+  }
+  o.Validate();
+  return o;
+}
+
+namespace {
+
+struct Child {
+  int robot = 0;
+  pid_t pid = -1;
+  int status = 0;
+  bool exited = false;
+  bool killed_at_timeout = false;
+};
+
+std::string Describe(const Child& c) {
+  if (c.killed_at_timeout) return "killed at the launch timeout";
+  if (WIFEXITED(c.status)) return "exit " + std::to_string(WEXITSTATUS(c.status));
+  if (WIFSIGNALED(c.status)) return std::string("signal ") + std::to_string(WTERMSIG(c.status));
+  return "unknown";
+}
+
+// fork/exec of `argv` with stdout and stderr to `log_file`.
+pid_t Spawn(const std::vector<std::string>& argv, const std::filesystem::path& log_file) {
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  const std::string log = log_file.string();
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
+  if (pid == 0) {  // child: only async-signal-safe calls until exec
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) {
+      dup2(fd, STDOUT_FILENO);
+      dup2(fd, STDERR_FILENO);
+      close(fd);
+    }
+    execv(args[0], args.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+// Waits for every child until `timeout`; SIGKILLs the ones still running then.
+void WaitAll(std::vector<Child>& children, std::chrono::steady_clock::duration timeout) {
+  const auto end = std::chrono::steady_clock::now() + timeout;
+  for (;;) {
+    bool running = false;
+    for (Child& c : children) {
+      if (c.exited) continue;
+      if (waitpid(c.pid, &c.status, WNOHANG) == c.pid) c.exited = true;
+      else running = true;
+    }
+    if (!running) return;
+    if (std::chrono::steady_clock::now() >= end) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));  // polling a handful of children
+  }
+  for (Child& c : children) {
+    if (c.exited) continue;
+    kill(c.pid, SIGKILL);
+    waitpid(c.pid, &c.status, 0);
+    c.exited = true;
+    c.killed_at_timeout = true;
+  }
+}
+
+std::vector<std::string> AgentArgv(const LaunchOptions& o, const std::string& strategy, int robot,
+                                   const std::filesystem::path& log) {
+  std::vector<std::string> a{o.binary.string(), "agent", "--config", o.config.string()};
+  for (const auto& s : o.overrides) {
+    a.push_back("--set");
+    a.push_back(s.path + "=" + s.value);
+  }
+  auto add = [&](const std::string& k, const std::string& v) { a.push_back(k); a.push_back(v); };
+  std::ostringstream speedup, grace;
+  speedup.precision(17);
+  grace.precision(17);
+  speedup << o.speedup;
+  grace << o.grace_s;
+  add("--robot", std::to_string(robot));
+  add("--robots", std::to_string(o.robots));
+  add("--run", std::to_string(o.run));
+  add("--strategy", strategy);
+  add("--lcm", o.lcm_url.empty() ? kDefaultLcmUrl : o.lcm_url);
+  add("--speedup", speedup.str());
+  add("--grace", grace.str());
+  add("--out", log.string());
+  return a;
+}
+
+}  // namespace
+
+namespace {
+
+SimRunLog ToRunLog(const Dataset& data, int robots, const std::vector<std::optional<AgentLog>>& logs) {
+  SimRunLog log;
+  log.robots = robots;
+  const auto n = static_cast<std::size_t>(robots);
+  log.loads.resize(n);
+  log.senders.resize(n);
+  log.links.resize(n * n);
+  const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), robots);
+  log.capture_time.resize(static_cast<std::size_t>(data.size()));
+  for (const FrameRange& r : split.ranges) {
+    const FrameStream frames{nullptr, r.begin, r.size(), data.fps};
+    for (int k = 0; k < r.size(); ++k) log.capture_time[static_cast<std::size_t>(r.begin.value + k)] = frames.TimeOf(k);
+  }
+  for (std::size_t s = 0; s < n; ++s) {
+    if (!logs[s]) continue;
+    const AgentLog& l = *logs[s];
+    log.loads[s] = l.load;
+    log.senders[s].medium_bytes = l.medium_wire_bytes;
+    log.end = std::max(log.end, SimTime::Nanos(l.end_ns));
+    for (const AgentQueryLog& q : l.queries) {
+      log.queries.push_back(q.record);
+      log.verify_requested += q.verify_requested ? 1 : 0;
+      log.verify_accepted += q.verify_accepted.value_or(false) ? 1 : 0;
+    }
+    for (std::size_t d = 0; d < n; ++d) {
+      if (d == s) continue;
+      LinkCounters& c = log.links[s * n + d];
+      const AgentLinkCount& sent = l.sent[d];
+      c.messages = static_cast<std::uint64_t>(sent.messages);
+      c.payload_bytes = sent.payload_bytes;
+      c.wire_bytes = sent.wire_bytes;
+      const std::int64_t received = logs[d] ? logs[d]->received_from[s] : 0;
+      c.delivered = static_cast<std::uint64_t>(std::min(received, sent.messages));
+      c.dropped = c.messages - c.delivered;
+    }
+  }
+  return log;
+}
+
+}  // namespace
+
+GatheredRun GatherTeam(const ExperimentConfig& config, const SharedInputs& inputs, const std::string& strategy,
+                       int robots, int run, const std::vector<std::optional<AgentLog>>& logs, double reference_auc) {
+  if (logs.size() != static_cast<std::size_t>(robots)) throw std::invalid_argument("GatherTeam: one log slot per robot");
+  for (std::size_t r = 0; r < logs.size(); ++r) {
+    if (logs[r] && (logs[r]->robots != robots || logs[r]->robot != static_cast<int>(r) || logs[r]->run != run ||
+                    logs[r]->strategy != strategy)) {
+      throw std::runtime_error("agent log of robot " + std::to_string(r) + " is of another team (robot " +
+                               std::to_string(logs[r]->robot) + " of " + std::to_string(logs[r]->robots) + ", run " +
+                               std::to_string(logs[r]->run) + ", " + logs[r]->strategy + ")");
+    }
+  }
+  const Dataset& data = inputs.deployment;
+  const SimRunLog log = ToRunLog(data, robots, logs);
+  const SimRunSummary summary = SummarizeSimRun(log, data.trajectory.positions, config.evaluation.gt_radius_m,
+                                                config.evaluation.suppression_frames);
+  NetworkVariant network;
+  network.label.model = "lcm";
+  RunSpec spec;
+  spec.protocol = "lcm";
+  spec.strategies = {strategy};
+  spec.robots = robots;
+  spec.run = run;
+  spec.seed = RunSeed(config.seed, robots, run);
+  spec.network = &network;
+  GatheredRun g;
+  g.rows.runs.push_back(MakeRow(spec, strategy, summary, reference_auc));
+  AppendRows(spec, strategy, log, summary, config, g.rows);
+  g.auc = summary.auc;
+  g.queries = summary.queries;
+  g.incomplete = summary.latency.incomplete;
+  for (std::size_t r = 0; r < logs.size(); ++r) {
+    if (!logs[r]) g.missing_robots.push_back(static_cast<int>(r));
+  }
+  return g;
+}
+
+int RunLaunch(const LaunchOptions& o, std::ostream& out) {
+  o.Validate();
+  const ExperimentConfig config = LoadConfig(o.config, o.overrides);
+  const auto dir = o.out.empty() ? std::filesystem::path("results") / (config.name + "_lcm") : o.out;
+  CreateOutputDir(dir / "agents");
+  // Broadcast first: its AUC is every strategy's reference.
+  std::vector<std::string> strategies = config.sweep.strategies;
+  std::stable_partition(strategies.begin(), strategies.end(), [](const std::string& s) { return s == "broadcast"; });
+
+  struct Team { std::string strategy; std::vector<Child> children; };
+  std::vector<Team> teams;
+  for (const std::string& strategy : strategies) {
+    Team team{strategy, {}};
+    for (int r = 0; r < o.robots; ++r) {
+      const auto stem = dir / "agents" / (strategy + "_robot" + std::to_string(r));
+      const auto log = std::filesystem::path(stem.string() + ".log");
+      std::filesystem::remove(log);  // a stale log must not pass for this run's
+      team.children.push_back(Child{r, Spawn(AgentArgv(o, strategy, r, log), stem.string() + ".out")});
+    }
+    out << "launch: " << strategy << ": " << o.robots << " agents started\n" << std::flush;
+    // The frames' wall time, plus the agents' grace, plus start-up and barrier.
+    const int frames = config.dataset.frames.value_or(1 << 20);
+    const double timeout_s = o.timeout_s > 0 ? o.timeout_s
+                                             : (frames / o.robots + 1) / config.dataset.fps / o.speedup + o.grace_s + 120;
+    WaitAll(team.children, std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(timeout_s)));
+    teams.push_back(std::move(team));
+  }
+
+  SharedInputs inputs = LoadSharedInputs(config, o.config.string());
+  inputs.config = &config;
+  RunOutput all;
+  std::ostringstream agents_csv;
+  agents_csv << "strategy,robot,exit,log,queries,incomplete\n";
+  double reference_auc = kNotApplicable;
+  bool clean = true;
+  for (const Team& team : teams) {
+    std::vector<std::optional<AgentLog>> logs(static_cast<std::size_t>(o.robots));
+    for (const Child& c : team.children) {
+      const auto path = dir / "agents" / (team.strategy + "_robot" + std::to_string(c.robot) + ".log");
+      const bool ok = WIFEXITED(c.status) && WEXITSTATUS(c.status) == 0 && !c.killed_at_timeout;
+      if (ok && std::filesystem::exists(path)) logs[static_cast<std::size_t>(c.robot)] = ReadAgentLog(path);
+      clean = clean && ok;
+      std::int64_t incomplete = 0;
+      if (const auto& l = logs[static_cast<std::size_t>(c.robot)]) {
+        for (const auto& q : l->queries) incomplete += q.received < q.expected ? 1 : 0;
+      }
+      const auto& l = logs[static_cast<std::size_t>(c.robot)];
+      agents_csv << team.strategy << ',' << c.robot << ',' << Describe(c) << ',' << (l ? path.filename().string() : "")
+                 << ',' << (l ? std::to_string(l->queries.size()) : "") << ',' << (l ? std::to_string(incomplete) : "") << '\n';
+      if (!ok) out << "launch: " << team.strategy << " robot " << c.robot << ": " << Describe(c) << " (see "
+                   << (dir / "agents" / (team.strategy + "_robot" + std::to_string(c.robot) + ".out")).string() << ")\n";
+    }
+    GatheredRun g = GatherTeam(config, inputs, team.strategy, o.robots, o.run, logs, reference_auc);
+    if (team.strategy == "broadcast") {
+      reference_auc = g.auc;
+      g.rows.runs.front().auc_reference = g.auc;
+      g.rows.runs.front().relative_auc = 1.0;
+    }
+    out << "launch: " << team.strategy << ": " << g.queries << " queries, " << g.incomplete
+        << " with a reply missing, auc " << FormatDouble(g.auc, 4) << "\n";
+    for (auto& r : g.rows.runs) all.runs.push_back(r);
+    all.per_robot.insert(all.per_robot.end(), g.rows.per_robot.begin(), g.rows.per_robot.end());
+    all.links.insert(all.links.end(), g.rows.links.begin(), g.rows.links.end());
+    all.queries.insert(all.queries.end(), g.rows.queries.begin(), g.rows.queries.end());
+  }
+  WriteFileAtomic(dir / "config.yaml", EmitConfig(config));
+  WriteRunsCsv(dir / "runs.csv", all.runs);
+  auto write = [&](const char* name, const char* header, const auto& rows) {
+    std::string text = std::string(header) + "\n";
+    for (const auto& r : rows) text += CsvRow(r) + "\n";
+    WriteFileAtomic(dir / name, text);
+  };
+  write("per_robot.csv", kPerRobotHeader, all.per_robot);
+  write("links.csv", kLinksHeader, all.links);
+  if (config.outputs.queries) write("queries.csv", kQueriesHeader, all.queries);
+  WriteFileAtomic(dir / "agents.csv", agents_csv.str());
+  WriteFileAtomic(dir / "summary.json", SummaryJson(all.runs));
+  out << "results in " << dir.string() << "\n";
+  return clean ? 0 : 1;
+}
+
+}  // namespace dvpr

@@ -1,0 +1,191 @@
+#include "experiments/protocols/paper/static_protocol.h"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+#include "experiments/data/npy.h"
+#include "experiments/parallel/parallel_for.h"
+
+namespace dvpr {
+
+namespace {
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void Accumulate(PaperTimings& total, const PaperTimings& t) {
+  total.ground_truth_s += t.ground_truth_s;
+  total.distances_s += t.distances_s;
+  total.kmeans_s += t.kmeans_s;
+  total.metrics_s += t.metrics_s;
+  total.io_s += t.io_s;
+}
+
+}  // namespace
+
+void PaperProtocolParams::Validate() const {
+  evaluation.Validate();
+  if (robots.empty()) throw std::invalid_argument("PaperProtocolParams.robots is empty");
+  for (int n : robots) {
+    if (n < 1) throw std::invalid_argument("PaperProtocolParams.robots: " + std::to_string(n) + " < 1");
+  }
+  if (runs < 1) throw std::invalid_argument("PaperProtocolParams.runs must be >= 1");
+  if (clusters_per_robot < 1) {
+    throw std::invalid_argument("PaperProtocolParams.clusters_per_robot must be >= 1");
+  }
+  if (candidate_list_size < 1) {
+    throw std::invalid_argument("PaperProtocolParams.candidate_list_size must be >= 1");
+  }
+  if (threads < 0) throw std::invalid_argument("PaperProtocolParams.threads must be >= 0");
+  KMeansParams probe = kmeans;
+  probe.k = 1;  // set per run
+  probe.Validate();
+}
+
+PaperEvaluator::PaperEvaluator(const Dataset& deployment, const GroundTruthParams& evaluation,
+                               int candidate_list_size, int threads)
+    : deployment_(deployment),
+      evaluation_((evaluation.Validate(), evaluation)),
+      build_start_(std::chrono::steady_clock::now()),
+      neighbours_(deployment.descriptors, evaluation.suppression_frames, candidate_list_size,
+                  threads) {
+  if (deployment.trajectory.size() != deployment.size()) {
+    throw std::invalid_argument("PaperEvaluator: " + std::to_string(deployment.trajectory.size()) +
+                                " poses but " + std::to_string(deployment.size()) + " descriptors");
+  }
+  const double build_s = SecondsSince(build_start_);
+  auto start = std::chrono::steady_clock::now();
+  relevant_ = CountRelevant(deployment.trajectory.positions, evaluation_);
+  timings_.ground_truth_s = SecondsSince(start);
+  start = std::chrono::steady_clock::now();
+  const std::vector<MatchOutcome> matches = neighbours_.BestMatches();
+  timings_.distances_s = build_s + SecondsSince(start);
+  start = std::chrono::steady_clock::now();
+  centralized_ = EvaluatePr(matches, deployment.trajectory.positions, evaluation_.radius_m, relevant_);
+  timings_.metrics_s = SecondsSince(start);
+}
+
+std::vector<std::int64_t> PaperEvaluator::Comparisons(const std::vector<RobotId>& routes,
+                                                      int robots) const {
+  std::vector<std::vector<std::int64_t>> members(static_cast<std::size_t>(robots));
+  for (std::size_t i = 0; i < routes.size(); ++i) {
+    members[static_cast<std::size_t>(routes[i].value)].push_back(static_cast<std::int64_t>(i));
+  }
+  std::vector<std::int64_t> comparisons(static_cast<std::size_t>(robots), 0);
+  const std::int64_t w = evaluation_.suppression_frames;
+  for (const auto& m : members) {
+    for (std::int64_t i : m) {  // candidates of i: its robot's frames outside the window
+      const auto in_window = std::upper_bound(m.begin(), m.end(), i + w) -
+                             std::lower_bound(m.begin(), m.end(), i - w);
+      comparisons[static_cast<std::size_t>(&m - members.data())] +=
+          static_cast<std::int64_t>(m.size()) - in_window;
+    }
+  }
+  return comparisons;
+}
+
+PaperRunResult PaperEvaluator::Evaluate(const CentroidTable& table, bool keep_curve) const {
+  if (table.dim() != deployment_.dim()) {
+    throw std::invalid_argument("PaperEvaluator: centroids have " + std::to_string(table.dim()) +
+                                " dimensions, descriptors " + std::to_string(deployment_.dim()));
+  }
+  const int robots = table.num_robots();
+  PaperRunResult result;
+  auto start = std::chrono::steady_clock::now();
+  const std::vector<RobotId> routes = table.RouteAll(deployment_.descriptors);
+  const std::vector<MatchOutcome> matches = neighbours_.BestMatches(routes, &result.fallback_scans);
+  result.timings.distances_s = SecondsSince(start);
+
+  start = std::chrono::steady_clock::now();
+  PrResult pr = EvaluatePr(matches, deployment_.trajectory.positions, evaluation_.radius_m, relevant_);
+  const std::vector<std::int64_t> per_robot = CountPerRobot(routes, robots);
+  const std::vector<std::int64_t> comparisons = Comparisons(routes, robots);
+  FillResult("decentralized", std::move(pr), per_robot, comparisons, per_robot, keep_curve, result);
+  result.timings.metrics_s = SecondsSince(start);
+  return result;
+}
+
+void PaperEvaluator::FillResult(const std::string& strategy, PrResult pr, const std::vector<std::int64_t>& searches,
+                                const std::vector<std::int64_t>& comparisons,
+                                const std::vector<std::int64_t>& stored, bool keep_curve,
+                                PaperRunResult& result) const {
+  const int robots = static_cast<int>(searches.size());
+  RunResult& row = result.row;
+  row.key.protocol = "paper";
+  row.key.strategy = strategy;
+  row.key.robots = robots;
+  row.auc = pr.auc;
+  row.auc_reference = centralized_.auc;
+  row.relative_auc = RelativeAuc(pr.auc, centralized_.auc);
+  const double fair_share = static_cast<double>(deployment_.size()) / robots;
+  row.worst_balance_ratio = static_cast<double>(*std::max_element(searches.begin(), searches.end())) / fair_share;
+  row.queries = deployment_.size();
+  result.ranked_queries = pr.ranked;
+  for (int r = 0; r < robots; ++r) {
+    const auto ur = static_cast<std::size_t>(r);
+    RobotLoadRow load;
+    load.key = row.key;
+    load.robot = r;
+    load.queries_received = searches[ur];
+    load.comparisons = comparisons[ur];
+    load.stored = stored[ur];
+    result.per_robot.push_back(std::move(load));
+  }
+  if (keep_curve) result.curve = PrCurve{strategy, robots, 0, std::move(pr.recall), std::move(pr.precision)};
+}
+
+PaperRunResult RunPaperRun(const PaperEvaluator& evaluator, const DescriptorMatrix& training,
+                           const PaperProtocolParams& params, int robots, int run) {
+  auto start = std::chrono::steady_clock::now();
+  std::uint64_t seed = 0;
+  CentroidMatrix centroids = RunCentroids(training, params, robots, run, &seed);
+  const double kmeans_s = SecondsSince(start);
+  PaperRunResult result = evaluator.Evaluate(CentroidTable::RoundRobin(centroids, robots),
+                                             params.keep_curves);
+  result.timings.kmeans_s = kmeans_s;
+  result.row.key.run = run;
+  result.row.seed = seed;
+  for (auto& r : result.per_robot) r.key.run = run;
+  result.curve.run = run;
+  if (!params.centroids_out_dir.empty()) {
+    start = std::chrono::steady_clock::now();
+    result.centroids_file = params.centroids_out_dir / ("centroids_n" + std::to_string(robots) +
+                                                        "_r" + std::to_string(run) + ".npy");
+    WriteNpy(result.centroids_file, centroids);
+    result.timings.io_s = SecondsSince(start);
+  }
+  result.centroids = std::move(centroids);
+  return result;
+}
+
+PaperProtocolResult RunPaperProtocol(const Dataset& deployment, const DescriptorMatrix& training,
+                                     const PaperProtocolParams& params) {
+  params.Validate();
+  if (params.centroids_pattern.empty() && training.cols() != deployment.dim()) {
+    throw std::invalid_argument("RunPaperProtocol: training descriptors have " +
+                                std::to_string(training.cols()) + " dimensions, deployment " +
+                                std::to_string(deployment.dim()));
+  }
+  if (!params.centroids_out_dir.empty()) std::filesystem::create_directories(params.centroids_out_dir);
+  const PaperEvaluator evaluator(deployment, params.evaluation, params.candidate_list_size,
+                                 params.threads);
+  PaperProtocolResult result;
+  result.centralized = evaluator.centralized();
+  result.timings = evaluator.timings();
+  const auto per_n = static_cast<std::int64_t>(params.runs);
+  result.runs.resize(params.robots.size() * static_cast<std::size_t>(params.runs));
+  const auto tasks = static_cast<std::int64_t>(result.runs.size());
+  ParallelFor(tasks, params.threads, [&](std::int64_t task) {
+    const std::int64_t t = tasks - 1 - task;  // largest n first: shorter tail on the last core
+    const int robots = params.robots[static_cast<std::size_t>(t / per_n)];
+    result.runs[static_cast<std::size_t>(t)] =
+        RunPaperRun(evaluator, training, params, robots, static_cast<int>(t % per_n));
+  });
+  for (const auto& run : result.runs) Accumulate(result.timings, run.timings);
+  return result;
+}
+
+}  // namespace dvpr

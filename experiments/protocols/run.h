@@ -1,0 +1,64 @@
+#pragma once
+// What a protocol (paper, sim, lcm) is given and gives back: one RunSpec of the sweep in, one
+// RunOutput out, with the inputs every run shares. The sweep (experiments/sweep/) expands a
+// config into RunSpecs and calls the protocols' RunFunctions; the protocols know nothing of it.
+//
+// A ProtocolFactory gets the SharedInputs, does its one-off work (e.g. the centralized AUC of the
+// paper protocol) and returns a RunFunction, which is then called from several threads at once
+// (it must be safe for that: const state only, or its own locking).
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "agents/descriptors.h"
+#include "experiments/config/config.h"
+#include "experiments/data/dataset.h"
+#include "experiments/results/results.h"
+
+namespace dvpr {
+
+// One network of the sweep, with its label for result files.
+struct NetworkVariant {
+  int index = 0;
+  NetworkSettings settings;
+  NetworkLabel label;
+  std::string name;  // "point_to_point 10Mbps 2ms" (human-readable, for tables and legends)
+};
+
+struct RunSpec {
+  std::size_t index = 0;               // position in the sweep
+  std::string protocol;                // paper | sim
+  std::vector<std::string> strategies; // as in the config
+  int robots = 0;
+  int run = 0;
+  std::uint64_t seed = 0;
+  const NetworkVariant* network = nullptr;  // null for protocol=paper
+  RunKey Key(const std::string& strategy) const;
+};
+
+// What every run reads; loaded once before the first run (experiments/protocols/inputs.h).
+struct SharedInputs {
+  const ExperimentConfig* config = nullptr;
+  Dataset deployment;
+  DescriptorMatrix training;           // empty when training.centroids gives the centroids
+  std::filesystem::path out_dir;       // centroids go to out_dir/centroids/
+};
+
+// Everything one spec produced: one RunResult per strategy, plus the detail rows. Run functions
+// fill each row's key with spec.Key(strategy) and the run's seed.
+struct RunOutput {
+  std::vector<RunResult> runs;
+  std::vector<RobotLoadRow> per_robot;
+  std::vector<LinkRow> links;
+  std::vector<QueryRow> queries;      // only when outputs.queries
+  std::vector<MessageRow> messages;   // only when outputs.messages
+  std::vector<PrCurve> curves;        // for figure 2; kept only at outputs.pr_robots, run 0
+};
+
+using RunFunction = std::function<RunOutput(const RunSpec&)>;
+using ProtocolFactory = std::function<RunFunction(const SharedInputs&)>;
+
+}  // namespace dvpr

@@ -1,0 +1,148 @@
+#include "experiments/protocols/sim/simulation.h"
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "agents/sim_transport.h"
+#include "experiments/protocols/sim/agent_records.h"
+#include "experiments/evaluation/metrics.h"
+#include "experiments/data/split.h"
+#include "net_models/lcm_event_log.h"
+#include "sim/simulator.h"
+
+namespace dvpr {
+
+void SimRunParams::Validate(const Dataset& data) const {
+  if (robots < 2) throw std::invalid_argument("robots: at least 2 robots are needed, got " + std::to_string(robots));
+  if (robots > data.size()) {
+    throw std::invalid_argument("robots: " + std::to_string(robots) + " robots but only " +
+                                std::to_string(data.size()) + " frames");
+  }
+  if (robots > 32767) throw std::invalid_argument("robots: at most 32767 (int16 robot ids on the wire)");
+  agent.Validate();
+  network.Validate(robots);
+  for (const auto& d : dropouts) {
+    if (d.robot.value < 0 || d.robot.value >= robots) {
+      throw std::invalid_argument("dropout.robot: " + std::to_string(d.robot.value) + " is not a robot of 0.." +
+                                  std::to_string(robots - 1));
+    }
+  }
+}
+
+namespace {
+
+std::vector<MessageRow> CollectMessages(const Network& network) {
+  std::vector<MessageRow> rows;
+  rows.reserve(network.Records().size());
+  for (const MessageRecord& r : network.Records()) {
+    MessageRow row;
+    row.sent_ns = r.sent.ns();
+    if (r.arrived && !r.dropped()) row.delivered_ns = r.delivered.ns();
+    row.src = r.src.value;
+    row.dst = r.dst.value;
+    row.channel = std::string(network.ChannelName(r.channel));
+    row.type = std::string(network.TypeName(r.type));
+    row.payload_bytes = r.payload_bytes;
+    row.wire_bytes = r.wire_bytes;
+    row.dropped = r.dropped();
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+}  // namespace
+
+SimRunLog RunSimulation(const Dataset& data, const RoutingStrategy& strategy, const SimRunParams& params) {
+  params.Validate(data);
+  if (strategy.num_robots() != params.robots) {
+    throw std::invalid_argument("routing strategy built for " + std::to_string(strategy.num_robots()) +
+                                " robots, run has " + std::to_string(params.robots));
+  }
+  const int n = params.robots;
+  Simulator sim;
+  Network network(sim, n, MakeLinkModel(params.network, n, params.seed), params.network.wire);
+  network.EnableRecords(params.record_messages);
+  std::unique_ptr<LcmEventLogWriter> event_log;
+  if (!params.lcm_log.empty()) {
+    event_log = std::make_unique<LcmEventLogWriter>(params.lcm_log);
+    network.SetEventLog(event_log.get());
+  }
+
+  const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), n);
+  const GeometricVerifier verifier = PoseOracle(data.trajectory.positions, params.gt_radius_m);
+  std::vector<std::unique_ptr<SimTransport>> transports;
+  std::vector<std::unique_ptr<RobotAgent>> agents;
+  SimRunLog log;
+  log.robots = n;
+  log.capture_time.resize(static_cast<std::size_t>(data.size()));
+  for (int r = 0; r < n; ++r) {
+    const FrameRange range = split.ranges[static_cast<std::size_t>(r)];
+    FrameStream frames{&data.descriptors, range.begin, range.size(), data.fps};
+    for (int k = 0; k < range.size(); ++k) log.capture_time[static_cast<std::size_t>(range.begin.value + k)] = frames.TimeOf(k);
+    transports.push_back(std::make_unique<SimTransport>(network, NodeId(r)));
+    agents.push_back(std::make_unique<RobotAgent>(RobotId(r), params.agent, *transports.back(), strategy, frames, verifier));
+  }
+  for (auto& agent : agents) agent->Start();
+  for (const auto& d : params.dropouts) {
+    network.SetOffline(NodeId(d.robot.value), d.at);
+    RobotAgent* agent = agents[static_cast<std::size_t>(d.robot.value)].get();
+    sim.ScheduleAt(d.at, [agent] { agent->GoOffline(); });
+  }
+  sim.Run();
+
+  log.events = sim.EventsExecuted();
+  log.end = sim.Now();
+  for (const auto& agent : agents) {
+    log.loads.push_back(agent->load());
+    for (const QueryOutcome& o : agent->outcomes()) {
+      if (o.expected_replies == 0) continue;  // never taken (robot went offline first)
+      const QueryRecord q = ToQueryRecord(agent->id(), o);
+      log.verify_requested += o.verify_requested ? 1 : 0;
+      log.verify_accepted += o.verify_accepted.value_or(false) ? 1 : 0;
+      log.queries.push_back(q);
+    }
+  }
+  log.links.reserve(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
+  for (int s = 0; s < n; ++s)
+    for (int d = 0; d < n; ++d) log.links.push_back(s == d ? LinkCounters{} : network.Counters(NodeId(s), NodeId(d)));
+  for (int s = 0; s < n; ++s) log.senders.push_back(network.Sender(NodeId(s)));
+  if (params.record_messages) log.messages = CollectMessages(network);
+  if (event_log) event_log->Close();
+  return log;
+}
+
+SimRunSummary SummarizeSimRun(const SimRunLog& log, const Positions& positions, double radius_m, int window) {
+  SimRunSummary s;
+  s.truth = ComputeOnlineTruth(log.queries, positions, log.capture_time, radius_m, window);
+  std::vector<MatchOutcome> outcomes;
+  outcomes.reserve(log.queries.size());
+  for (const auto& q : log.queries) {
+    MatchOutcome o;
+    o.query = q.frame;
+    o.match = q.match_frame;
+    o.score = q.distance;
+    outcomes.push_back(o);
+  }
+  for (bool r : s.truth.relevant) s.relevant += r ? 1 : 0;
+  const PrResult pr = EvaluatePr(outcomes, positions, radius_m, s.relevant);
+  s.auc = pr.auc;
+  s.precision = pr.precision;
+  s.recall = pr.recall;
+  s.queries = static_cast<std::int64_t>(log.queries.size());
+  for (const auto& c : log.links) {
+    s.messages += static_cast<std::int64_t>(c.messages);
+    s.payload_bytes += c.payload_bytes;
+    s.wire_bytes += c.wire_bytes;
+    s.dropped += static_cast<std::int64_t>(c.dropped);
+  }
+  for (const auto& c : log.senders) s.medium_bytes += c.medium_bytes;
+  s.latency = ComputeLatency(log.queries);
+  std::vector<std::int64_t> served;
+  for (const auto& l : log.loads) served.push_back(l.searches);
+  s.worst_balance_ratio = WorstBalanceRatio(served);
+  return s;
+}
+
+}  // namespace dvpr

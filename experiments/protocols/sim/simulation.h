@@ -1,0 +1,70 @@
+#pragma once
+// One simulation run (DESIGN.md section 3): n robot agents drive their
+// sub-sequences from t = 0, exchange LCM messages through the network model in
+// virtual time, and record what happened. Metrics come afterwards, from the
+// returned log (SummarizeSimRun).
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "agents/robot_agent.h"
+#include "agents/routing.h"
+#include "experiments/data/dataset.h"
+#include "experiments/results/results.h"
+#include "experiments/evaluation/sim_metrics.h"
+#include "net_models/link_factory.h"
+#include "net_models/network.h"
+
+namespace dvpr {
+
+struct RobotDropout {
+  RobotId robot;
+  SimTime at;  // from this time on the robot is offline
+};
+
+struct SimRunParams {
+  int robots = 2;
+  std::uint64_t seed = 1;                 // seeds the network's random streams (loss)
+  AgentParams agent;
+  NetworkModelParams network;
+  double gt_radius_m = 5.0;               // the verification oracle accepts matches this close
+  std::vector<RobotDropout> dropouts;
+  bool record_messages = false;           // keep one MessageRow per message and destination
+  std::filesystem::path lcm_log;          // non-empty: write every delivered message there
+  void Validate(const Dataset& data) const;
+};
+
+struct SimRunLog {
+  int robots = 0;
+  std::vector<QueryRecord> queries;       // robot by robot, frames in order
+  std::vector<RobotLoad> loads;           // per robot
+  std::vector<LinkCounters> links;        // robots x robots, row = source
+  std::vector<NodeCounters> senders;      // per robot: transmissions it put on the medium
+  std::vector<MessageRow> messages;       // when record_messages
+  std::vector<SimTime> capture_time;      // per frame of the sequence
+  std::int64_t verify_requested = 0;
+  std::int64_t verify_accepted = 0;
+  std::uint64_t events = 0;
+  SimTime end;
+};
+
+SimRunLog RunSimulation(const Dataset& data, const RoutingStrategy& strategy, const SimRunParams& params);
+
+struct SimRunSummary {
+  double auc = 0.0;
+  std::int64_t relevant = 0;
+  std::int64_t queries = 0;
+  std::int64_t messages = 0;
+  std::int64_t payload_bytes = 0;
+  std::int64_t wire_bytes = 0;            // per destination copy (sum over links.csv)
+  std::int64_t medium_bytes = 0;          // what was transmitted: a shared-medium broadcast once
+  std::int64_t dropped = 0;
+  LatencyStats latency;
+  double worst_balance_ratio = 0.0;       // from the searches each robot actually served
+  std::vector<double> precision, recall;  // the PR curve
+  OnlineTruth truth;
+};
+
+SimRunSummary SummarizeSimRun(const SimRunLog& log, const Positions& positions, double radius_m, int window);
+
+}  // namespace dvpr

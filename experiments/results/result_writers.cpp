@@ -1,0 +1,148 @@
+#include "experiments/results/result_writers.h"
+
+#include <unistd.h>
+
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+
+namespace dvpr {
+
+// Network columns come after the ones DESIGN.md requires, so scripts reading by position still
+// find the required columns first.
+#define DVPR_NETWORK_COLUMNS "network_variant,network_model,bandwidth_bps,latency_ms,loss"
+const char* const kRunsHeader =
+    "protocol,strategy,robots,run,seed,auc,auc_reference,relative_auc,worst_balance_ratio,"
+    "queries,messages,payload_bytes,wire_bytes,bytes_per_query,mean_latency_ms,p99_latency_ms,"
+    "dropped_messages," DVPR_NETWORK_COLUMNS;
+const char* const kPerRobotHeader =
+    "protocol,strategy,robots,run,robot,queries_received,comparisons,stored,busy_fraction,"
+    "max_queue," DVPR_NETWORK_COLUMNS;
+const char* const kLinksHeader =
+    "protocol,strategy,robots,run,src,dst,messages,payload_bytes,wire_bytes,dropped,"
+    DVPR_NETWORK_COLUMNS;
+const char* const kQueriesHeader =
+    "protocol,strategy,robots,run,robot,frame,sent_ns,match_robot,match_frame,distance,"
+    "latency_ns,relevant,correct," DVPR_NETWORK_COLUMNS;
+const char* const kMessagesHeader =
+    "protocol,strategy,robots,run,sent_ns,delivered_ns,src,dst,channel,type,payload_bytes,"
+    "wire_bytes,dropped," DVPR_NETWORK_COLUMNS;
+#undef DVPR_NETWORK_COLUMNS
+
+std::string FormatDouble(double v, int decimals) {
+  if (std::isnan(v)) return "";
+  if (v == 0.0) v = 0.0;  // no "-0.000000"
+  char buf[64];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
+  if (ec != std::errc()) return "";
+  return std::string(buf, end);
+}
+
+namespace {
+
+template <typename T>
+std::string Opt(const std::optional<T>& v) { return v ? std::to_string(*v) : std::string(); }
+
+std::string Key(const RunKey& k) {
+  return k.protocol + "," + k.strategy + "," + std::to_string(k.robots) + "," +
+         std::to_string(k.run);
+}
+
+std::string Network(const NetworkLabel& n) {
+  if (n.model.empty()) return ",,,,";  // protocol=paper: no network
+  return std::to_string(n.variant) + "," + n.model + "," + FormatDouble(n.bandwidth_bps, 0) +
+         "," + FormatDouble(n.latency_ms) + "," + n.loss;
+}
+
+}  // namespace
+
+std::string CsvRow(const RunResult& r) {
+  std::ostringstream s;
+  s << Key(r.key) << ',' << r.seed << ',' << FormatDouble(r.auc) << ','
+    << FormatDouble(r.auc_reference) << ',' << FormatDouble(r.relative_auc) << ','
+    << FormatDouble(r.worst_balance_ratio) << ',' << r.queries << ',' << r.messages << ','
+    << r.payload_bytes << ',' << r.wire_bytes << ',' << FormatDouble(r.bytes_per_query) << ','
+    << FormatDouble(r.mean_latency_ms) << ',' << FormatDouble(r.p99_latency_ms) << ','
+    << r.dropped_messages << ',' << Network(r.key.network);
+  return s.str();
+}
+
+std::string CsvRow(const RobotLoadRow& r) {
+  return Key(r.key) + "," + std::to_string(r.robot) + "," + std::to_string(r.queries_received) +
+         "," + std::to_string(r.comparisons) + "," + std::to_string(r.stored) + "," +
+         FormatDouble(r.busy_fraction) + "," + std::to_string(r.max_queue) + "," +
+         Network(r.key.network);
+}
+
+std::string CsvRow(const LinkRow& r) {
+  return Key(r.key) + "," + std::to_string(r.src) + "," + std::to_string(r.dst) + "," +
+         std::to_string(r.messages) + "," + std::to_string(r.payload_bytes) + "," +
+         std::to_string(r.wire_bytes) + "," + std::to_string(r.dropped) + "," +
+         Network(r.key.network);
+}
+
+std::string CsvRow(const QueryRow& r) {
+  return Key(r.key) + "," + std::to_string(r.robot) + "," + std::to_string(r.frame) + "," +
+         std::to_string(r.sent_ns) + "," + Opt(r.match_robot) + "," + Opt(r.match_frame) + "," +
+         FormatDouble(r.distance) + "," + Opt(r.latency_ns) + "," + (r.relevant ? "1" : "0") +
+         "," + (r.correct ? "1" : "0") + "," + Network(r.key.network);
+}
+
+std::string CsvRow(const MessageRow& r) {
+  return Key(r.key) + "," + std::to_string(r.sent_ns) + "," + Opt(r.delivered_ns) + "," +
+         std::to_string(r.src) + "," + std::to_string(r.dst) + "," + r.channel + "," + r.type +
+         "," + std::to_string(r.payload_bytes) + "," + std::to_string(r.wire_bytes) + "," +
+         (r.dropped ? "1" : "0") + "," + Network(r.key.network);
+}
+
+void CreateOutputDir(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) {
+    throw std::runtime_error(dir.string() + ": cannot create the output folder" +
+                             (ec ? " (" + ec.message() + ")" : std::string()));
+  }
+}
+
+AtomicFile::AtomicFile(std::filesystem::path path) : path_(std::move(path)) {
+  // pid in the name: two dvpr processes writing the same folder do not share a temporary.
+  tmp_ = path_.parent_path() /
+         ("." + path_.filename().string() + ".tmp" + std::to_string(::getpid()));
+  out_.open(tmp_, std::ios::binary | std::ios::trunc);
+  if (!out_) throw std::runtime_error(path_.string() + ": cannot open for writing");
+}
+
+AtomicFile::~AtomicFile() {
+  if (committed_) return;
+  out_.close();
+  std::error_code ec;
+  std::filesystem::remove(tmp_, ec);
+}
+
+void AtomicFile::Commit() {
+  out_.flush();
+  if (!out_) throw std::runtime_error(path_.string() + ": write failed");
+  out_.close();
+  std::error_code ec;
+  std::filesystem::rename(tmp_, path_, ec);
+  if (ec) throw std::runtime_error(path_.string() + ": cannot rename into place (" + ec.message() + ")");
+  committed_ = true;
+}
+
+void WriteFileAtomic(const std::filesystem::path& path, const std::string& content) {
+  AtomicFile f(path);
+  f.stream() << content;
+  f.Commit();
+}
+
+void WriteRunsCsv(const std::filesystem::path& path, const std::vector<RunResult>& rows) {
+  AtomicFile f(path);
+  f.stream() << kRunsHeader << '\n';
+  for (const auto& r : rows) f.stream() << CsvRow(r) << '\n';
+  f.Commit();
+}
+
+}  // namespace dvpr

@@ -1,0 +1,66 @@
+#pragma once
+// The result files of DESIGN.md section 6. Every file is written atomically (a temporary file in
+// the same folder, renamed over the target when complete), so a reader or a crashed run never
+// leaves a half-written file. Formatting is deterministic and locale-free: integers as they are,
+// doubles in fixed notation with 6 decimals (std::to_chars), NaN and empty optionals as empty
+// fields, booleans as 0/1.
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "experiments/results/results.h"
+
+namespace dvpr {
+
+// Creates `dir` (and parents); throws std::runtime_error naming it if that fails.
+void CreateOutputDir(const std::filesystem::path& dir);
+
+// Writes `content` to `path` atomically; throws std::runtime_error naming the path on failure.
+void WriteFileAtomic(const std::filesystem::path& path, const std::string& content);
+
+// A file written row by row into a temporary, renamed into place by Commit(); removed if never
+// committed (an error halfway leaves nothing behind).
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::filesystem::path path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  std::ostream& stream() { return out_; }
+  void Commit();
+
+ private:
+  std::filesystem::path path_;
+  std::filesystem::path tmp_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
+// CSV headers and rows, one function per file.
+extern const char* const kRunsHeader;       // runs.csv
+extern const char* const kPerRobotHeader;   // per_robot.csv
+extern const char* const kLinksHeader;      // links.csv
+extern const char* const kQueriesHeader;    // queries.csv
+extern const char* const kMessagesHeader;   // messages.csv
+std::string CsvRow(const RunResult& r);
+std::string CsvRow(const RobotLoadRow& r);
+std::string CsvRow(const LinkRow& r);
+std::string CsvRow(const QueryRow& r);
+std::string CsvRow(const MessageRow& r);
+
+// Whole files at once (tests, small outputs).
+void WriteRunsCsv(const std::filesystem::path& path, const std::vector<RunResult>& rows);
+// summary.json: per (protocol, strategy, robots, network variant), in order of first
+// appearance, the number of runs and the mean of every runs.csv metric (NaNs skipped; null
+// when no run has the metric).
+std::string SummaryJson(const std::vector<RunResult>& rows);
+
+// Reads runs.csv back (dvpr plot). Throws naming the file and line on a malformed row.
+std::vector<RunResult> ReadRunsCsv(const std::filesystem::path& path);
+
+// Number formatting shared with the figures' data files.
+std::string FormatDouble(double v, int decimals = 6);
+
+}  // namespace dvpr

@@ -1,0 +1,117 @@
+#pragma once
+// The rows of the result files (DESIGN.md section 6). The static protocol and the simulation fill
+// them; experiments/results/result_writers.h turns them into CSV/JSON. Plain data, no behaviour, so every
+// producer can fill them without knowing how they are written.
+//
+// Conventions:
+// - Identification fields (protocol, strategy, robots, run, seed, network_*) are stamped by the run
+//   executor from the RunSpec; a run function may leave them default.
+// - A double that does not apply (e.g. latency in the static protocol) stays NaN and is written as
+//   an empty CSV field; an optional that is empty is written as an empty field.
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace dvpr {
+
+inline constexpr double kNotApplicable = std::numeric_limits<double>::quiet_NaN();
+
+// Which network a row was produced on. Empty model for the paper protocol (no network).
+struct NetworkLabel {
+  int variant = 0;            // index into the sweep's network variants (0 when no sweep)
+  std::string model;          // ideal | point_to_point | shared_medium; "" for protocol=paper
+  double bandwidth_bps = kNotApplicable;
+  double latency_ms = kNotApplicable;
+  std::string loss;           // none | bernoulli | gilbert_elliott
+};
+
+// Common key of every row: which run of the sweep produced it.
+struct RunKey {
+  std::string protocol;       // paper | sim
+  std::string strategy;       // decentralized | broadcast | ...
+  int robots = 0;
+  int run = 0;                // numbered from 0
+  NetworkLabel network;
+};
+
+// One row of runs.csv.
+struct RunResult {
+  RunKey key;
+  std::uint64_t seed = 0;
+  double auc = kNotApplicable;
+  double auc_reference = kNotApplicable;  // centralized (paper) or broadcast of the same run (sim)
+  double relative_auc = kNotApplicable;   // auc / auc_reference
+  double worst_balance_ratio = kNotApplicable;
+  std::int64_t queries = 0;
+  std::int64_t messages = 0;
+  std::int64_t payload_bytes = 0;
+  std::int64_t wire_bytes = 0;
+  double bytes_per_query = kNotApplicable;  // wire bytes per query
+  double mean_latency_ms = kNotApplicable;
+  double p99_latency_ms = kNotApplicable;
+  std::int64_t dropped_messages = 0;
+};
+
+// One row of per_robot.csv.
+struct RobotLoadRow {
+  RunKey key;
+  int robot = 0;
+  std::int64_t queries_received = 0;
+  std::int64_t comparisons = 0;
+  std::int64_t stored = 0;
+  double busy_fraction = kNotApplicable;  // sim only
+  std::int64_t max_queue = 0;
+};
+
+// One row of links.csv: one directed pair (src -> dst) of one run.
+struct LinkRow {
+  RunKey key;
+  int src = 0;
+  int dst = 0;
+  std::int64_t messages = 0;
+  std::int64_t payload_bytes = 0;
+  std::int64_t wire_bytes = 0;
+  std::int64_t dropped = 0;
+};
+
+// One row of queries.csv (written when outputs.queries is true).
+struct QueryRow {
+  RunKey key;
+  int robot = 0;
+  std::int64_t frame = 0;              // index in the full sequence
+  std::int64_t sent_ns = 0;
+  std::optional<int> match_robot;      // empty when no match came back
+  std::optional<std::int64_t> match_frame;
+  double distance = kNotApplicable;    // squared L2 of the best match; NaN when none
+  std::optional<std::int64_t> latency_ns;
+  bool relevant = false;
+  bool correct = false;
+};
+
+// One row of messages.csv (written when outputs.messages is true): one message and destination.
+struct MessageRow {
+  RunKey key;
+  std::int64_t sent_ns = 0;
+  std::optional<std::int64_t> delivered_ns;  // empty when dropped
+  int src = 0;
+  int dst = 0;
+  std::string channel;
+  std::string type;                    // LCM type name, e.g. dvpr.query_t
+  std::int64_t payload_bytes = 0;
+  std::int64_t wire_bytes = 0;
+  bool dropped = false;
+};
+
+// A precision-recall curve in ranking order (for figure 2). label says what it is, e.g.
+// "centralized" or "decentralized".
+struct PrCurve {
+  std::string label;
+  int robots = 0;
+  int run = 0;
+  std::vector<double> recall;
+  std::vector<double> precision;
+};
+
+}  // namespace dvpr

@@ -1,0 +1,39 @@
+#pragma once
+// The centroids of one run (robots, run) of a sweep: k-means on the training descriptors with
+// k = robots x clusters_per_robot, or the run's file when the config names centroid files.
+// Every protocol (paper, sim, lcm) and every strategy's table starts from these, so the runs of
+// one (robots, run) compare on identical centroids.
+//
+// Seeding: RunSeed(config seed, robots, run) = MixSeed(MixSeed(seed, robots), run)
+// (sim/random_bits.h). A run's seed depends only on its own key: adding robot counts or runs, or
+// changing the thread count or the protocol, changes nothing else.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "agents/descriptors.h"
+#include "agents/kmeans.h"
+
+namespace dvpr {
+
+struct RunCentroidParams {
+  std::uint64_t seed = 1;               // the config seed
+  int clusters_per_robot = 1;           // k = n x this
+  // k-means settings; k and seed are set per run (k = n x clusters_per_robot, RunSeed).
+  KMeansParams kmeans;
+  // Non-empty: skip k-means and read each run's centroids (.npy, k x d) from this path, with
+  // "{robots}" and "{run}" replaced (ExpandCentroidPattern).
+  std::string centroids_pattern;
+};
+
+std::uint64_t RunSeed(std::uint64_t config_seed, int robots, int run);
+
+// `pattern` with every "{robots}" and "{run}" replaced by the numbers.
+std::filesystem::path ExpandCentroidPattern(const std::string& pattern, int robots, int run);
+
+// The centroids of run (robots, run). `seed_used` (if given) gets the k-means seed, 0 when the
+// centroids were read from a file.
+CentroidMatrix RunCentroids(const DescriptorMatrix& training, const RunCentroidParams& params, int robots, int run,
+                            std::uint64_t* seed_used = nullptr);
+
+}  // namespace dvpr

@@ -1,0 +1,55 @@
+#pragma once
+// Runs the specs of a sweep on all cores and hands the outputs on in spec order, so everything
+// written is identical to a serial run whatever the thread count.
+//
+// Protocols plug in through a ProtocolRegistry: a factory gets the inputs shared by all runs
+// (deployment data, training descriptors, the config), does its one-off work (e.g. the
+// centralized AUC of the paper protocol) and returns a RunFunction, which is then called from
+// several threads at once (it must be safe for that: const state only, or its own locking).
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "agents/descriptors.h"
+#include "experiments/config/config.h"
+#include "experiments/data/dataset.h"
+#include "experiments/results/results.h"
+#include "experiments/sweep/sweep.h"
+
+namespace dvpr {
+
+class ProtocolRegistry {
+ public:
+  void Add(const std::string& name, ProtocolFactory factory);
+  const ProtocolFactory* Find(const std::string& name) const;
+  std::vector<std::string> Names() const;
+
+ private:
+  std::map<std::string, ProtocolFactory> factories_;
+};
+
+// The protocols built into this dvpr (experiments/sweep/builtin_protocols.cpp).
+ProtocolRegistry BuiltinProtocols();
+
+struct ExecutorOptions {
+  int threads = 0;          // 0: all cores
+  bool progress = true;     // runs done/total, elapsed, estimate on stderr
+};
+
+// Calls run_functions.at(spec.protocol)(spec) for every spec, on worker threads, and consume()
+// on the calling thread in spec order as soon as each output and all before it are done (so
+// memory holds only the outputs waiting for a slower earlier run). The first exception (from a
+// run, with the run named, or from consume) stops new runs and is rethrown after the workers
+// have joined.
+void ExecuteRuns(const std::vector<RunSpec>& specs,
+                 const std::map<std::string, RunFunction>& run_functions,
+                 const std::function<void(const RunSpec&, RunOutput&&)>& consume,
+                 const ExecutorOptions& options = {});
+
+// "paper n=5 run 3" / "sim point_to_point 10Mbps 2ms n=5 run 3", for messages.
+std::string Describe(const RunSpec& spec);
+
+}  // namespace dvpr

@@ -1,0 +1,84 @@
+#include "experiments/sweep/sweep.h"
+
+#include "experiments/strategies/run_centroids.h"
+
+namespace dvpr {
+
+namespace {
+
+NetworkVariant MakeVariant(int index, const NetworkConfig& n, NetworkModel model, DataRate rate,
+                           SimTime latency, int queue, Bytes mtu) {
+  NetworkVariant v;
+  v.index = index;
+  v.settings = NetworkSettings{.model = model, .bandwidth = rate, .latency = latency,
+                               .queue_packets = queue, .mtu = mtu, .loss = n.loss,
+                               .links = n.links};
+  v.label.variant = index;
+  v.label.model = ToString(model);
+  v.label.loss = ToString(n.loss.model);
+  v.name = v.label.model;
+  if (model != NetworkModel::kIdeal) {
+    v.label.bandwidth_bps = static_cast<double>(rate.bps());
+    v.label.latency_ms = latency.ToMillis();
+    v.name += " " + ToString(rate) + " " + FormatDuration(latency);
+    if (n.queue_packets.size() > 1) v.name += " q" + std::to_string(queue);
+    if (n.mtu.size() > 1) v.name += " mtu" + std::to_string(mtu.value());
+  }
+  if (n.loss.model != LossModel::kNone) v.name += " loss:" + v.label.loss;
+  return v;
+}
+
+}  // namespace
+
+std::vector<NetworkVariant> ExpandNetworks(const NetworkConfig& n) {
+  std::vector<NetworkVariant> out;
+  for (NetworkModel model : n.model) {
+    if (model == NetworkModel::kIdeal) {
+      out.push_back(MakeVariant(static_cast<int>(out.size()), n, model, n.bandwidth.front(),
+                                n.latency.front(), n.queue_packets.front(), n.mtu.front()));
+      continue;
+    }
+    for (DataRate rate : n.bandwidth) {
+      for (SimTime latency : n.latency) {
+        for (int queue : n.queue_packets) {
+          for (Bytes mtu : n.mtu) {
+            out.push_back(MakeVariant(static_cast<int>(out.size()), n, model, rate, latency,
+                                      queue, mtu));
+          }
+        }
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<RunSpec> ExpandSweep(const ExperimentConfig& config,
+                                 const std::vector<NetworkVariant>& networks) {
+  std::vector<RunSpec> specs;
+  for (const std::string& protocol : config.sweep.protocols) {
+    std::vector<const NetworkVariant*> variants;
+    if (protocol == "sim") {
+      for (const auto& v : networks) variants.push_back(&v);
+    } else {
+      variants.push_back(nullptr);  // the static protocol has no network
+    }
+    for (const NetworkVariant* variant : variants) {
+      for (int robots : config.sweep.robots) {
+        for (int run = 0; run < config.sweep.runs; ++run) {
+          RunSpec s;
+          s.index = specs.size();
+          s.protocol = protocol;
+          s.strategies = config.sweep.strategies;
+          s.robots = robots;
+          s.run = run;
+          s.seed = RunSeed(config.seed, robots, run);
+          s.network = variant;
+          specs.push_back(std::move(s));
+        }
+      }
+    }
+  }
+  return specs;
+}
+
+}  // namespace dvpr

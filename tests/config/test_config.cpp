@@ -1,0 +1,169 @@
+// The config parser: every error names its key path; overrides; the resolved config round trip.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "experiments/config/config.h"
+
+namespace dvpr {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ConfigTest : public ::testing::Test {
+ protected:
+  // Parses `yaml` with relative paths resolved against the source tree.
+  static ExperimentConfig Parse(const std::string& yaml,
+                                const std::vector<ConfigOverride>& overrides = {}) {
+    return ParseConfig(yaml, DVPR_SOURCE_DIR, overrides, "test.yaml");
+  }
+  // The ConfigError message of parsing `yaml`.
+  static std::string ErrorOf(const std::string& yaml,
+                             const std::vector<ConfigOverride>& overrides = {}) {
+    try {
+      Parse(yaml, overrides);
+    } catch (const ConfigError& e) {
+      return e.what();
+    }
+    return "(no error)";
+  }
+};
+
+TEST_F(ConfigTest, DefaultsFromAnEmptyMap) {
+  const ExperimentConfig c = Parse("name: x\n");
+  EXPECT_EQ(c.sweep.robots.size(), 19u);
+  EXPECT_EQ(c.sweep.runs, 10);
+  EXPECT_EQ(c.network.bandwidth.at(0), DataRate::Mbps(10));
+  EXPECT_TRUE(c.dataset.poses.is_absolute());
+  EXPECT_TRUE(fs::exists(c.dataset.poses));
+}
+
+TEST_F(ConfigTest, DesignExampleParses) {
+  const ExperimentConfig c = Parse(R"(
+name: paper_kitti00
+seed: 1
+dataset: {source: synthetic, poses: data/kitti/00_poses.txt, dim: 128, fps: 10, frames: all}
+training: {source: synthetic_diverse}
+robots: {from: 2, to: 20}
+runs: 10
+protocols: [paper, sim]
+strategies: [decentralized, broadcast]
+evaluation: {gt_radius_m: 5, suppression_frames: 250}
+network: {model: point_to_point, bandwidth: 10Mbps, latency: 2ms, queue_packets: 100, loss: {model: none}}
+verification: {request_bytes: 25000, max_distance: 0.6}
+service: {fixed: 50us, per_comparison: 20ns}
+outputs: {figures: true, queries: false, messages: false, lcm_log: false}
+)");
+  EXPECT_EQ(c.sweep.robots.front(), 2);
+  EXPECT_EQ(c.sweep.robots.back(), 20);
+  EXPECT_EQ(c.verification.request_bytes, Bytes(25000));
+  EXPECT_EQ(c.service.per_comparison, SimTime::Nanos(20));
+  EXPECT_FALSE(c.dataset.frames.has_value());
+}
+
+TEST_F(ConfigTest, UnknownKeyNamesItsPathAndTheExpectedKeys) {
+  const std::string e = ErrorOf("network: {bandwith: 10Mbps}\n");
+  EXPECT_NE(e.find("test.yaml: network.bandwith: unknown key (expected one of: model, bandwidth"),
+            std::string::npos) << e;
+  EXPECT_NE(ErrorOf("colour: red\n").find("colour: unknown key"), std::string::npos);
+  EXPECT_NE(ErrorOf("network: {loss: {model: bernoulli, p: 0.1, q: 2}}\n")
+                .find("network.loss.q: unknown key"), std::string::npos);
+}
+
+TEST_F(ConfigTest, WrongTypes) {
+  EXPECT_NE(ErrorOf("runs: ten\n").find("runs: expected an integer, got 'ten'"), std::string::npos);
+  EXPECT_NE(ErrorOf("dataset: {dim: [1, 2]}\n").find("dataset.dim: expected an integer, got a list"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("outputs: {figures: maybe}\n").find("outputs.figures: expected true or false"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("network: 5\n").find("network: expected a map"), std::string::npos);
+  EXPECT_NE(ErrorOf("protocols: [paper, simulation]\n")
+                .find("protocols[1]: unknown value 'simulation' (expected one of: paper, sim)"),
+            std::string::npos);
+}
+
+TEST_F(ConfigTest, MissingFile) {
+  const std::string e = ErrorOf("dataset: {source: files, descriptors: no_such.npy}\n");
+  EXPECT_NE(e.find("dataset.descriptors: file not found: 'no_such.npy'"), std::string::npos) << e;
+  EXPECT_NE(ErrorOf("dataset: {source: files}\n").find("dataset.descriptors: required"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("training: {centroids: 'c_n{robots}_r{run}.npy'}\n")
+                .find("training.centroids: file not found"), std::string::npos);
+}
+
+TEST_F(ConfigTest, RobotsAndRunsBounds) {
+  EXPECT_NE(ErrorOf("robots: [1, 2]\n").find("robots[0]: must be at least 2, got 1"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("robots: {from: 1, to: 5}\n").find("robots.from: must be at least 2"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("robots: {from: 5, to: 3}\n").find("robots.to: must be at least robots.from"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("runs: 0\n").find("runs: must be at least 1, got 0"), std::string::npos);
+}
+
+TEST_F(ConfigTest, UnitsRequired) {
+  const std::string e = ErrorOf("network: {bandwidth: 10}\n");
+  EXPECT_NE(e.find("network.bandwidth: expected a data rate with a unit, e.g. 10Mbps"),
+            std::string::npos) << e;
+  EXPECT_NE(ErrorOf("network: {latency: 5}\n").find("network.latency: expected a duration"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("network: {bandwidth: [1Mbps, 10]}\n").find("network.bandwidth[1]:"),
+            std::string::npos);
+  // Plain integers are bytes only where DESIGN shows one.
+  EXPECT_EQ(Parse("verification: {request_bytes: 25kB}\n").verification.request_bytes, Bytes(25000));
+  EXPECT_EQ(Parse("network: {mtu: 576}\n").network.mtu.at(0), Bytes(576));
+}
+
+TEST_F(ConfigTest, ErrorsAreOneLine) {
+  for (const char* bad : {"network: {bandwith: 1Mbps}\n", "runs: 0\n", "robots: [1]\n",
+                          "network: {bandwidth: 10}\n", "dataset: {source: files}\n"}) {
+    EXPECT_EQ(ErrorOf(bad).find('\n'), std::string::npos) << bad;
+  }
+}
+
+TEST_F(ConfigTest, SetOverridesApplyBeforeValidation) {
+  const ExperimentConfig c = Parse("runs: 10\nnetwork: {bandwidth: 10Mbps}\n",
+                                   {ParseOverride("runs=2"),
+                                    ParseOverride("network.bandwidth=[1Mbps, 5Mbps]"),
+                                    ParseOverride("robots={from: 3, to: 4}"),
+                                    ParseOverride("network.loss.model=bernoulli"),
+                                    ParseOverride("network.loss.p=0.25")});
+  EXPECT_EQ(c.sweep.runs, 2);
+  EXPECT_EQ(c.network.bandwidth, (std::vector<DataRate>{DataRate::Mbps(1), DataRate::Mbps(5)}));
+  EXPECT_EQ(c.sweep.robots, (std::vector<int>{3, 4}));
+  EXPECT_EQ(c.network.loss.model, LossModel::kBernoulli);
+  EXPECT_DOUBLE_EQ(c.network.loss.p, 0.25);
+  EXPECT_NE(ErrorOf("runs: 2\n", {ParseOverride("runs=0")}).find("runs: must be at least 1"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("", {ParseOverride("network.bandwith=1Mbps")})
+                .find("network.bandwith: unknown key"), std::string::npos);
+  EXPECT_THROW(ParseOverride("runs"), ConfigError);
+}
+
+TEST_F(ConfigTest, ResolvedConfigRoundTrips) {
+  const ExperimentConfig c = Parse(R"(
+name: rt
+seed: 7
+dataset: {frames: 300, synthetic: {noise: 0.125}}
+robots: [2, 5, 9]
+runs: 3
+network:
+  model: [point_to_point, shared_medium, ideal]
+  bandwidth: [1Mbps, 1.5Mbps]
+  latency: [5ms, 250us]
+  loss: {model: gilbert_elliott, p_good_to_bad: 0.01, p_bad_to_good: 0.3, loss_bad: 0.7}
+  links: [{src: 0, dst: 1, bandwidth: 100kbps, latency: 1s}]
+dropout: [{robot: 1, at: 12s}]
+service: {fixed: 1ms, per_comparison: 7ns}
+outputs: {queries: true, pr_robots: 5}
+)");
+  const std::string yaml = EmitConfig(c);
+  const ExperimentConfig again = ParseConfig(yaml, "/nonexistent", {}, "config.yaml");
+  EXPECT_EQ(again, c) << yaml;
+  EXPECT_EQ(EmitConfig(again), yaml);
+}
+
+}  // namespace
+}  // namespace dvpr

@@ -1,0 +1,81 @@
+// Ground truth: the suppression window, the strict radius, and KITTI 00's 1706 relevant queries.
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "experiments/evaluation/ground_truth.h"
+
+namespace dvpr {
+namespace {
+
+Positions OnLine(const std::vector<double>& x) {
+  Positions p = Positions::Zero(static_cast<Eigen::Index>(x.size()), 3);
+  for (std::size_t i = 0; i < x.size(); ++i) p(static_cast<Eigen::Index>(i), 0) = x[i];
+  return p;
+}
+
+TEST(GroundTruth, WindowExcludesNeighboursInTheSequence) {
+  // Frame i at x = 10 i, except frame 6 back at x = 0.5 (a revisit of frame 0) and frame 1 at
+  // x = 0.1, right next to frame 0 but inside its window. Window 3: |i - j| <= 3 excluded.
+  //   g(0): candidates 4..7 -> frame 6 at 0.5 m -> 0.25
+  //   g(1): candidates 5..7 -> frame 6 at 0.4 m -> 0.16
+  //   g(3): candidate 7 only (frames 0 and 6 are exactly 3 away: excluded) -> 40 m -> 1600
+  //   g(6): candidates 0..2 -> frame 1 at 0.4 m -> 0.16
+  const Positions p = OnLine({0, 0.1, 20, 30, 40, 50, 0.5, 70});
+  const std::vector<double> g = NearestOutsideWindowSquared(p, 3);
+  EXPECT_NEAR(g[0], 0.25, 1e-12);
+  EXPECT_NEAR(g[1], 0.16, 1e-12);
+  EXPECT_NEAR(g[3], 1600.0, 1e-9);
+  EXPECT_NEAR(g[6], 0.16, 1e-12);
+  const auto relevant = RelevantFlags(p, {.radius_m = 1, .suppression_frames = 3});
+  EXPECT_EQ(relevant, (std::vector<std::uint8_t>{1, 1, 0, 0, 0, 0, 1, 0}));
+}
+
+TEST(GroundTruth, WindowBoundaryAndStrictRadius) {
+  // Two frames 5 m apart. Window 1: |0 - 1| = 1 is inside, so no candidate at all (+inf).
+  // Window 0: they are candidates, but 5 m is not < r = 5 m; r = 5.001 m makes both relevant.
+  const Positions p = OnLine({0, 5});
+  EXPECT_EQ(NearestOutsideWindowSquared(p, 1)[0], std::numeric_limits<double>::infinity());
+  EXPECT_EQ(CountRelevant(p, {.radius_m = 5, .suppression_frames = 0}), 0);
+  EXPECT_EQ(CountRelevant(p, {.radius_m = 5.001, .suppression_frames = 0}), 2);
+  EXPECT_TRUE(IsCorrectMatch(p, 0, 1, 5.001));
+  EXPECT_FALSE(IsCorrectMatch(p, 0, 1, 5.0));
+  EXPECT_THROW(IsCorrectMatch(p, 0, 2, 5.0), std::out_of_range);
+}
+
+TEST(GroundTruth, RejectsBadParams) {
+  EXPECT_THROW(RelevantFlags(OnLine({0}), {.radius_m = 0}), std::invalid_argument);
+  EXPECT_THROW(RelevantFlags(OnLine({0}), {.suppression_frames = -1}), std::invalid_argument);
+}
+
+// Positions of a KITTI pose file: values 4, 8, 12 (1-based) of each row. Parsed here rather than
+// with the loader so that this check depends on nothing but the file.
+Positions KittiPositions(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open " + path);
+  std::vector<double> xyz;
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream row(line);
+    double v[12];
+    for (double& x : v) row >> x;
+    if (!row) throw std::runtime_error("short row in " + path);
+    xyz.insert(xyz.end(), {v[3], v[7], v[11]});
+  }
+  return Eigen::Map<const Positions>(xyz.data(), static_cast<Eigen::Index>(xyz.size() / 3), 3);
+}
+
+TEST(GroundTruth, Kitti00Has1706RelevantQueries) {
+  // The number the issue states; an independent numpy computation on the same file agrees:
+  //   p = np.loadtxt(f)[:, [3, 7, 11]]; d = ((p[:, None] - p[None]) ** 2).sum(-1)
+  //   i = np.arange(len(p)); d[abs(i[:, None] - i[None]) <= 250] = inf; (d.min(1) < 25).sum()
+  const Positions p = KittiPositions(DVPR_SOURCE_DIR "/data/kitti/00_poses.txt");
+  ASSERT_EQ(p.rows(), 4541);
+  EXPECT_EQ(CountRelevant(p, {.radius_m = 5, .suppression_frames = 250}), 1706);
+}
+
+}  // namespace
+}  // namespace dvpr

@@ -1,0 +1,138 @@
+// The pieces of the real deployment that need no second process: the team
+// barrier's state, the agent log round trip, LcmTransport's clock and timers
+// over loopback multicast.
+#include <fstream>
+
+#include "agents/team_sync.h"
+#include "experiments/protocols/lcm/agent_log.h"
+#include "lcm_test_support.h"
+
+namespace dvpr {
+namespace {
+
+using namespace lcm_test;
+
+TEST(TeamSync, StartsAtTheLatestReadyInstantPlusMarginOnceAllAreHeard) {
+  TeamSync a(RobotId(0), 3, 7), b(RobotId(2), 3, 7);
+  const agent_status_t s0 = a.Announce(1, agent_status_t::READY, 1000, 0);
+  const agent_status_t s1 = TeamSync(RobotId(1), 3, 7).Announce(1, agent_status_t::READY, 5000, 0);
+  const agent_status_t s2 = b.Announce(1, agent_status_t::READY, 3000, 0);
+  for (const auto& s : {s0, s1}) EXPECT_TRUE(a.OnStatus(s));
+  EXPECT_FALSE(a.StartUtime(100));
+  EXPECT_TRUE(a.OnStatus(s2));
+  for (const auto& s : {s2, s1, s0}) b.OnStatus(s);  // another order, the same start
+  EXPECT_EQ(a.StartUtime(100), 5100);
+  EXPECT_EQ(b.StartUtime(100), 5100);
+  EXPECT_FALSE(a.AllDone());
+}
+
+TEST(TeamSync, ForeignHeartbeatsAreCountedNotTaken) {
+  TeamSync a(RobotId(0), 2, 7);
+  agent_status_t s = TeamSync(RobotId(1), 2, 8).Announce(1, agent_status_t::DONE, 1, 0);  // other key
+  EXPECT_FALSE(a.OnStatus(s));
+  s.team_key = 7;
+  s.robot = 5;  // out of range
+  EXPECT_FALSE(a.OnStatus(s));
+  s.robot = 1;
+  s.state = 9;
+  EXPECT_FALSE(a.OnStatus(s));
+  EXPECT_EQ(a.foreign(), 3u);
+  EXPECT_EQ(a.HeardCount(), 0);
+  s.state = agent_status_t::DONE;
+  EXPECT_TRUE(a.OnStatus(s));
+  EXPECT_FALSE(a.AllDone());
+  a.OnStatus(a.Announce(1, agent_status_t::DONE, 1, 0));
+  EXPECT_TRUE(a.AllDone());
+}
+
+TEST(AgentLog, RoundTripsExactly) {
+  AgentLog l;
+  l.robot = 1;
+  l.robots = 2;
+  l.strategy = "decentralized";
+  l.speedup = 2.5;
+  l.start_utime = 1700000000000000;
+  l.end_ns = 123;
+  l.end_reason = "all_done";
+  l.published = 5;
+  l.malformed = 3;
+  l.load.busy = SimTime::Nanos(77);
+  l.sent = {{1, 2, 3}, {0, 0, 0}};
+  l.received_from = {4, 0};
+  AgentQueryLog q;
+  q.record.robot = RobotId(1);
+  q.record.frame = FrameId(10);
+  q.record.sent = SimTime::Millis(100);
+  q.record.match_robot = RobotId(0);
+  q.record.match_frame = FrameId(3);
+  q.record.distance = 0.1f + 1e-7f;  // needs every digit to read back the same
+  q.record.latency = SimTime::Micros(250);
+  q.expected = q.received = 1;
+  q.verify_requested = true;
+  q.verify_accepted = false;
+  l.queries = {q, AgentQueryLog{}};
+  l.queries[1].record.robot = RobotId(1);
+  const fs::path path = fs::path(DVPR_TEST_TMP) / "agent_log_round_trip.log";
+  WriteAgentLog(path, l);
+  const AgentLog r = ReadAgentLog(path);
+  EXPECT_EQ(r.speedup, 2.5);
+  EXPECT_EQ(r.start_utime, l.start_utime);
+  EXPECT_EQ(r.sent[0].wire_bytes, 3);
+  EXPECT_EQ(r.received_from[0], 4);
+  ASSERT_EQ(r.queries.size(), 2u);
+  EXPECT_EQ(r.queries[0].record.distance, q.record.distance);
+  EXPECT_EQ(r.queries[0].record.latency, q.record.latency);
+  EXPECT_EQ(r.queries[0].verify_accepted, std::optional<bool>(false));
+  EXPECT_FALSE(r.queries[1].record.match_frame);
+  EXPECT_FALSE(r.queries[1].record.latency);
+}
+
+TEST(AgentLog, RejectsATruncatedLine) {
+  const fs::path path = fs::path(DVPR_TEST_TMP) / "agent_log_bad.log";
+  std::ofstream(path) << "agent,0,2,0,broadcast,1,0,0,deadline,0,0,0,0,0,0,0\nquery,1,2\n";
+  EXPECT_THROW(ReadAgentLog(path), std::runtime_error);
+}
+
+class LcmTransportTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const std::string why = IsolateNetwork();
+    if (!why.empty()) GTEST_SKIP() << why;
+  }
+};
+
+// Publish and receive through the loopback group; garbage is counted; timers
+// run in order, a chain scheduled from timers keeps its period (no drift);
+// a timer scheduled before the epoch counts from the epoch.
+TEST_F(LcmTransportTest, DeliversCountsGarbageAndKeepsTimersOnSchedule) {
+  LcmTransport t(Url(7710), 10.0);
+  std::vector<std::int32_t> frames;
+  Subscription sub = t.Subscribe<match_t>("DVPR_MATCH_0", [&](const match_t& m) { frames.push_back(m.query_frame); });
+  match_t m;
+  m.query_frame = 7;
+  t.Publish("DVPR_MATCH_0", m);
+  t.PublishRaw("DVPR_MATCH_0", std::vector<std::uint8_t>{1, 2, 3});
+  std::vector<SimTime> fired;
+  std::function<void()> tick = [&] {
+    fired.push_back(t.Now());
+    if (fired.size() < 5) t.ScheduleAfter(SimTime::Millis(100), tick);  // 10 ms of wall time
+  };
+  t.ScheduleAfter(SimTime::Millis(100), tick);
+  EXPECT_FALSE(t.Run(SimTime::Seconds(1.0)));
+  EXPECT_EQ(frames, std::vector<std::int32_t>{7});
+  EXPECT_EQ(t.MalformedCount(), 1u);
+  ASSERT_EQ(fired.size(), 5u);
+  for (std::size_t i = 0; i < fired.size(); ++i) {
+    EXPECT_GE(fired[i], SimTime::Millis(100) * static_cast<std::int64_t>(i + 1));  // never early
+  }
+  // The epoch moves agent time 0 into the future; a timer set now fires after it.
+  t.SetEpoch(std::chrono::system_clock::now() + std::chrono::milliseconds(30));
+  EXPECT_LT(t.Now(), SimTime::Zero());
+  bool after_epoch = false;
+  t.ScheduleAfter(SimTime::Zero(), [&] { after_epoch = t.Now() >= SimTime::Zero(); t.Stop(); });
+  EXPECT_TRUE(t.Run(SimTime::Seconds(10.0)));
+  EXPECT_TRUE(after_epoch);
+}
+
+}  // namespace
+}  // namespace dvpr

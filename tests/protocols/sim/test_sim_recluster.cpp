@@ -1,0 +1,270 @@
+// Adaptive re-clustering in the simulation (agents/recluster_agent.h): on the ideal network, a
+// hand-worked 1-D toy (which robot searches and stores each frame before and after the new
+// table, message counts and bytes), a random team checked against the static planner (same
+// tables, every descriptor at its owner under the final table), determinism and dropout.
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "agents/kmeans.h"
+#include "agents/recluster_agent.h"
+#include "agents/robot_agent.h"
+#include "agents/sim_transport.h"
+#include "experiments/protocols/sim/simulation.h"
+#include "experiments/data/split.h"
+#include "experiments/protocols/paper/static_recluster.h"
+#include "sim/random.h"
+#include "sim/simulator.h"
+
+namespace dvpr {
+namespace {
+
+AgentParams QuietAgent(int window) {
+  AgentParams p;
+  p.suppression_frames = window;
+  p.service_fixed = SimTime::Zero();
+  p.service_per_comparison = SimTime::Zero();
+  p.verify_max_distance = 0.0f;
+  return p;
+}
+
+ReclusterPlan MakePlan(const DescriptorMatrix& x, int robots, std::shared_ptr<const CentroidTable> initial,
+                       const ReclusterParams& params) {
+  ReclusterPlan plan;
+  plan.params = params;
+  plan.initial = std::move(initial);
+  const SequenceSplit split = SplitSequence(static_cast<int>(x.rows()), robots);
+  int longest = 0;
+  for (const FrameRange& r : split.ranges) {
+    plan.stream_first.push_back(r.begin);
+    longest = std::max(longest, r.size());
+  }
+  plan.epochs = ReclusterEpochs(longest, params);
+  plan.sample_timeout = SimTime::Millis(500);
+  return plan;
+}
+
+// A team on the ideal network, agents kept for inspection (as RunSimulation, which hides them).
+struct Team {
+  Team(const DescriptorMatrix& x, const ReclusterRouting& routing, const AgentParams& agent) {
+    const int n = routing.num_robots();
+    NetworkModelParams net;
+    net.model = LinkModelKind::kIdeal;
+    network = std::make_unique<Network>(sim, n, MakeLinkModel(net, n, 1), net.wire);
+    network->EnableRecords(true);
+    const SequenceSplit split = SplitSequence(static_cast<int>(x.rows()), n);
+    for (int r = 0; r < n; ++r) {
+      const FrameRange range = split.ranges[static_cast<std::size_t>(r)];
+      transports.push_back(std::make_unique<SimTransport>(*network, NodeId(r)));
+      agents.push_back(std::make_unique<RobotAgent>(RobotId(r), agent, *transports.back(), routing,
+                                                    FrameStream{&x, range.begin, range.size(), 10.0},
+                                                    [](FrameId, FrameId) { return VerifyVerdict{}; }));
+    }
+    for (auto& a : agents) a->Start();
+    sim.Run();
+  }
+  struct Traffic {
+    std::int64_t messages = 0, bytes = 0;
+  };
+  // By channel family (DVPR_SAMPLE, DVPR_MIGRATE, DVPR_TABLE) or type (query_t, match_t).
+  std::map<std::string, Traffic> ByKind() const {
+    std::map<std::string, Traffic> out;
+    for (const MessageRecord& r : network->Records()) {
+      std::string channel(network->ChannelName(r.channel));
+      std::string kind = std::string(network->TypeName(r.type));
+      if (channel.rfind("DVPR_SAMPLE", 0) == 0) kind = "sample";
+      if (channel.rfind("DVPR_MIGRATE", 0) == 0) kind = "migrate";
+      if (channel == channels::kTable) kind = "table";
+      ++out[kind].messages;
+      out[kind].bytes += r.payload_bytes;
+    }
+    return out;
+  }
+  Simulator sim;
+  std::unique_ptr<Network> network;
+  std::vector<std::unique_ptr<SimTransport>> transports;
+  std::vector<std::unique_ptr<RobotAgent>> agents;
+};
+
+std::shared_ptr<const CentroidTable> Table1D(float a, int owner_a, float b, int owner_b) {
+  CentroidMatrix c(2, 1);
+  c << a, b;
+  return std::make_shared<const CentroidTable>(c, std::vector<RobotId>{RobotId(owner_a), RobotId(owner_b)}, 2);
+}
+
+std::set<int> StoredFrames(const RobotAgent& a) {
+  std::set<int> frames;
+  for (const IndexEntry& e : a.index().entries()) frames.insert(e.frame.value);
+  return frames;
+}
+
+// Two robots of eight frames (0.1 s apart), values near 0 or near 100:
+//   robot 0, frames 0-7:  0  1  0 99  2 98  3 97
+//   robot 1, frames 8-15: 0  1 100 101 2 99  3 102
+// Initial table T0: near 0 -> robot 1, near 100 -> robot 0. Period 4, sample stride 2, one
+// cluster per robot: one re-clustering at t = 0.4 s; its sample is steps 0 and 2 = frames 0, 2, 8,
+// 10 = 0 0 0 100, so T1 has centroids 0 (load 4 -> robot 0) and 100 (load 2 -> robot 1): the
+// owners swap. Window 20: no matches, no verification traffic.
+class SimReclusterToy : public ::testing::Test {
+ protected:
+  SimReclusterToy() : x_(16, 1) {
+    x_.col(0) << 0, 1, 0, 99, 2, 98, 3, 97, 0, 1, 100, 101, 2, 99, 3, 102;
+    params_.clusters_per_robot = 1;
+    params_.period = 4;
+    params_.sample_stride = 2;
+  }
+  DescriptorMatrix x_;
+  ReclusterParams params_;
+};
+
+TEST_F(SimReclusterToy, RoutesByTheTableOfTheMomentAndMovesWhatChangedOwner) {
+  const ReclusterRouting routing(MakePlan(x_, 2, Table1D(0, 1, 100, 0), params_));
+  const Team team(x_, routing, QuietAgent(20));
+  // Before the boundary (T0): frames 0 1 2 of robot 0 go to robot 1, 10 11 of robot 1 to robot
+  // 0: 5 remote queries. At t = 0.4 s the frames 4 and 12 are taken before the samples arrive
+  // (still T0): frame 4 goes to robot 1, 12 stays local. Then the leader has both samples, sends
+  // T1 and moves frames 3 10 11 to robot 1 (one batch); robot 1 gets T1 and moves 0 1 2 8 9 12 to
+  // robot 0 (one batch); robot 1 then finishes searching frame 4 and, T1 giving it to robot 0,
+  // forwards it (a third batch). After (T1): 5 and 7 go to robot 1, 14 to robot 0: 3 more.
+  const auto kinds = team.ByKind();
+  EXPECT_EQ(kinds.at("query_t").messages, 9);
+  EXPECT_EQ(kinds.at("match_t").messages, 9);
+  // Sample: robot 1 holds frames 0 2 8 of the sample: 28 + 3 x (6 + 4) = 58 bytes.
+  EXPECT_EQ(kinds.at("sample").messages, 1);
+  EXPECT_EQ(kinds.at("sample").bytes, 58);
+  // Table: k = 2, dim 1: 26 + 2 x (4 + 2) = 38 bytes, one copy to robot 1.
+  EXPECT_EQ(kinds.at("table").messages, 1);
+  EXPECT_EQ(kinds.at("table").bytes, 38);
+  // Migrations: 3 descriptors (58) + 6 (28 + 60 = 88) + 1 forwarded (38) = 184 bytes.
+  EXPECT_EQ(kinds.at("migrate").messages, 3);
+  EXPECT_EQ(kinds.at("migrate").bytes, 184);
+  EXPECT_EQ(kinds.size(), 5u);
+  // Everything at its owner under T1: near 0 at robot 0, near 100 at robot 1.
+  for (const auto& a : team.agents) EXPECT_EQ(a->recluster_epoch(), 1);
+  EXPECT_EQ(StoredFrames(*team.agents[0]), (std::set<int>{0, 1, 2, 4, 6, 8, 9, 12, 14}));
+  EXPECT_EQ(StoredFrames(*team.agents[1]), (std::set<int>{3, 5, 7, 10, 11, 13, 15}));
+  EXPECT_EQ(team.agents[0]->load().stored, 9);
+  EXPECT_EQ(team.agents[1]->load().stored, 7);
+  // Searches (the robot a query was sent to): robot 0 its own 3 and 6, remote 10 11 14 = 5;
+  // robot 1 remote 0 1 2 4 5 7, its own 8 9 12 13 15 = 11.
+  EXPECT_EQ(team.agents[0]->load().searches, 5);
+  EXPECT_EQ(team.agents[1]->load().searches, 11);
+}
+
+TEST_F(SimReclusterToy, SameInputsSameMessages) {
+  const ReclusterRouting routing(MakePlan(x_, 2, Table1D(0, 1, 100, 0), params_));
+  const Team a(x_, routing, QuietAgent(20));
+  const Team b(x_, routing, QuietAgent(20));
+  ASSERT_EQ(a.network->Records().size(), b.network->Records().size());
+  for (std::size_t i = 0; i < a.network->Records().size(); ++i) {
+    const MessageRecord& r = a.network->Records()[i];
+    const MessageRecord& s = b.network->Records()[i];
+    EXPECT_EQ(r.sent, s.sent);
+    EXPECT_EQ(r.src, s.src);
+    EXPECT_EQ(r.dst, s.dst);
+    EXPECT_EQ(r.payload_bytes, s.payload_bytes);
+  }
+}
+
+// A random team: 4 robots x 60 frames of 16-D unit descriptors, initial table k-means (8
+// clusters) on the data, round robin. Two clusters per robot, period 15, stride 4: re-clusterings
+// at 1.5, 3.0 and 4.5 s ((60 - 1) / 15 = 3).
+class SimReclusterTeam : public ::testing::Test {
+ protected:
+  SimReclusterTeam() : x_(240, 16) {
+    RandomStream rng(3, ComponentId("recluster-test"));
+    for (Eigen::Index i = 0; i < x_.rows(); ++i) {
+      for (Eigen::Index c = 0; c < x_.cols(); ++c) x_(i, c) = static_cast<float>(rng.Normal());
+      x_.row(i).normalize();
+    }
+    KMeansParams k;
+    k.k = 8;
+    k.seed = 7;
+    initial_ = std::make_shared<const CentroidTable>(CentroidTable::RoundRobin(KMeans(x_, k), 4));
+    params_.clusters_per_robot = 2;
+    params_.period = 15;
+    params_.seed = 11;
+  }
+  DescriptorMatrix x_;
+  std::shared_ptr<const CentroidTable> initial_;
+  ReclusterParams params_;
+};
+
+TEST_F(SimReclusterTeam, EveryDescriptorEndsAtItsOwnerUnderTheStaticPlannersLastTable) {
+  const ReclusterRouting routing(MakePlan(x_, 4, initial_, params_));
+  const Team team(x_, routing, QuietAgent(10));
+  // On the ideal network with instant service every sample frame is stored by its boundary, so the
+  // leader clusters exactly the static planner's sample: the same tables.
+  const StaticReclusterPlan plan = PlanStaticRecluster(x_, initial_, params_);
+  ASSERT_EQ(plan.epochs(), 3);
+  std::vector<int> seen(240, 0);
+  for (const auto& a : team.agents) {
+    EXPECT_EQ(a->recluster_epoch(), 3);
+    ASSERT_NE(a->recluster_table(), nullptr);
+    EXPECT_EQ(a->recluster_table()->centroids(), plan.tables[3]->centroids());
+    for (int c = 0; c < plan.tables[3]->num_centroids(); ++c) {
+      EXPECT_EQ(a->recluster_table()->OwnerOf(c), plan.tables[3]->OwnerOf(c));
+    }
+    for (std::size_t i = 0; i < a->index().size(); ++i) {
+      const FrameId f = a->index().entries()[i].frame;
+      ++seen[static_cast<std::size_t>(f.value)];
+      EXPECT_EQ(plan.FinalOwner(static_cast<std::size_t>(f.value)), a->id()) << "frame " << f.value;
+      EXPECT_EQ(a->recluster_table()->RouteOf(a->index().Descriptor(i)), a->id());
+    }
+    EXPECT_EQ(a->load().stored, static_cast<std::int64_t>(a->index().size()));
+  }
+  for (int f = 0; f < 240; ++f) EXPECT_EQ(seen[static_cast<std::size_t>(f)], 1) << "frame " << f;
+  // Per epoch: 3 sample uploads (robots 1-3) and 3 table copies; 3 epochs.
+  const auto kinds = team.ByKind();
+  EXPECT_EQ(kinds.at("sample").messages, 9);
+  EXPECT_EQ(kinds.at("table").messages, 9);
+  // The samples hold every 4th step before the boundary: 4 robots x (4, 8, 12) = 96 descriptors
+  // of 16 floats, minus the leader's own (not sent): bytes = 9 x 28 + (96 - leader's) x 70.
+  const ReclusterTraffic stat = CountReclusterTraffic(plan, 16);
+  EXPECT_EQ(kinds.at("sample").bytes, stat.sample_bytes);
+  EXPECT_EQ(kinds.at("table").bytes, stat.table_bytes);
+}
+
+TEST_F(SimReclusterTeam, LeaderStopsWaitingForADroppedRobotAndGivesItNoClusters) {
+  params_.seed = 5;
+  const ReclusterRouting routing(MakePlan(x_, 4, initial_, params_));
+  Dataset data;
+  data.descriptors = x_;
+  data.fps = 10.0;
+  data.trajectory.positions = Positions::Zero(240, 3);
+  data.trajectory.headings = Positions::Zero(240, 3);
+  SimRunParams p;
+  p.robots = 4;
+  p.network.model = LinkModelKind::kIdeal;
+  p.agent = QuietAgent(10);
+  p.record_messages = true;
+  p.dropouts.push_back({RobotId(2), SimTime::Seconds(2.0)});
+  const SimRunLog log = RunSimulation(data, routing, p);
+  // Samples: 3 at 1.5 s; robots 1 and 3 only at 3.0 and 4.5 s: 7. The leader waits its 0.5 s
+  // timeout at the last two, so those tables go out at 3.5 and 5.0 s; their copies to robot 2 drop.
+  int samples = 0, tables = 0, tables_dropped = 0, late_queries_to_2 = 0;
+  std::set<std::int64_t> table_times;
+  for (const MessageRow& m : log.messages) {
+    if (m.channel == "DVPR_SAMPLE_0") ++samples;
+    if (m.channel == channels::kTable) {
+      ++tables;
+      tables_dropped += m.dropped ? 1 : 0;
+      table_times.insert(m.sent_ns);
+    }
+    // Once robots hold the 3.5 s table (which gives robot 2 nothing), no query goes to robot 2.
+    if (m.type == "query_t" && m.dst == 2 && m.sent_ns > SimTime::Seconds(3.5).ns()) ++late_queries_to_2;
+  }
+  EXPECT_EQ(samples, 7);
+  EXPECT_EQ(tables, 9);
+  EXPECT_EQ(tables_dropped, 2);
+  EXPECT_EQ(table_times, (std::set<std::int64_t>{SimTime::Seconds(1.5).ns(), SimTime::Seconds(3.5).ns(),
+                                                 SimTime::Seconds(5.0).ns()}));
+  EXPECT_EQ(late_queries_to_2, 0);
+}
+
+}  // namespace
+}  // namespace dvpr

@@ -1,0 +1,188 @@
+// The simulation run on small hand-checkable cases: message counts and sizes on
+// the ideal network, agreement with a brute-force causal reference, service
+// queueing, dropout and determinism.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <memory>
+
+#include "agents/decentralized_routing.h"
+#include "agents/kmeans.h"
+#include "experiments/protocols/sim/simulation.h"
+#include "experiments/data/split.h"
+#include "sim/random.h"
+
+namespace dvpr {
+namespace {
+
+// A straight-line trajectory that passes the same places twice (a loop), with
+// random unit descriptors: enough to exercise routing and matching.
+Dataset MakeDataset(int frames, int dim, std::uint64_t seed) {
+  Dataset d;
+  d.name = "test";
+  d.fps = 10.0;
+  d.trajectory.positions.resize(frames, 3);
+  d.trajectory.headings.resize(frames, 3);
+  d.descriptors.resize(frames, dim);
+  RandomStream rng(seed, ComponentId("test-dataset"));
+  for (int i = 0; i < frames; ++i) {
+    const double s = (i % (frames / 2)) * 1.0;  // second half revisits the first
+    d.trajectory.positions.row(i) << s, 0.0, 0.0;
+    d.trajectory.headings.row(i) << 1.0, 0.0, 0.0;
+    for (int c = 0; c < dim; ++c) d.descriptors(i, c) = static_cast<float>(rng.Normal());
+    d.descriptors.row(i).normalize();
+  }
+  return d;
+}
+
+std::shared_ptr<const CentroidTable> TrainTable(const Dataset& d, int robots) {
+  KMeansParams p;
+  p.k = robots;
+  p.seed = 7;
+  return std::make_shared<CentroidTable>(CentroidTable::RoundRobin(KMeans(d.descriptors, p), robots));
+}
+
+SimRunParams IdealParams(int robots) {
+  SimRunParams p;
+  p.robots = robots;
+  p.network.model = LinkModelKind::kIdeal;
+  p.agent.suppression_frames = 10;
+  p.agent.service_fixed = SimTime::Zero();
+  p.agent.service_per_comparison = SimTime::Zero();
+  p.agent.verify_max_distance = 0.0f;  // random descriptors: no verification traffic
+  p.record_messages = true;
+  return p;
+}
+
+std::map<std::string, std::int64_t> CountByType(const SimRunLog& log) {
+  std::map<std::string, std::int64_t> counts;
+  for (const auto& m : log.messages) ++counts[m.type];
+  return counts;
+}
+
+class SimulationTest : public ::testing::Test {
+ protected:
+  static constexpr int kRobots = 4;
+  Dataset data_ = MakeDataset(240, 16, 3);
+  std::shared_ptr<const CentroidTable> table_ = TrainTable(data_, kRobots);
+};
+
+TEST_F(SimulationTest, DecentralizedSendsOneQueryAndOneReplyPerRemoteFrame) {
+  const DecentralizedRouting routing(table_);
+  const SimRunLog log = RunSimulation(data_, routing, IdealParams(kRobots));
+  const SequenceSplit split = SplitSequence(static_cast<int>(data_.size()), kRobots);
+  std::int64_t remote = 0;
+  for (int f = 0; f < data_.size(); ++f) {
+    remote += table_->RouteOf(data_.descriptors.row(f).data()) != split.OwnerOf(FrameId(f)) ? 1 : 0;
+  }
+  ASSERT_GT(remote, 0);
+  ASSERT_LT(remote, data_.size());
+  const auto counts = CountByType(log);
+  EXPECT_EQ(counts.at("query_t"), remote);
+  EXPECT_EQ(counts.at("match_t"), remote);
+  EXPECT_EQ(counts.size(), 2u);
+  EXPECT_EQ(log.queries.size(), static_cast<std::size_t>(data_.size()));
+  for (const auto& m : log.messages) {
+    // query_t with 16 floats: 8 fingerprint + 8 + 2 + 4 + 2 + 64 = 88; match_t: 35 (see test_messages).
+    EXPECT_EQ(m.payload_bytes, m.type == "query_t" ? 88 : 35);
+    EXPECT_FALSE(m.dropped);
+    EXPECT_EQ(m.delivered_ns, m.sent_ns);  // ideal network: no delay
+  }
+}
+
+TEST_F(SimulationTest, BroadcastSendsToEveryOtherRobot) {
+  const BroadcastRouting routing(kRobots);
+  const SimRunLog log = RunSimulation(data_, routing, IdealParams(kRobots));
+  const auto counts = CountByType(log);
+  EXPECT_EQ(counts.at("query_t"), data_.size() * (kRobots - 1));
+  EXPECT_EQ(counts.at("match_t"), data_.size() * (kRobots - 1));
+  for (const auto& l : log.loads) {
+    EXPECT_EQ(l.searches, data_.size());  // every robot searches every query
+    EXPECT_EQ(l.stored, data_.size() / kRobots);  // and keeps only its own frames
+  }
+}
+
+// Brute force: the best frame among those the owner of i's cluster stored
+// earlier, in double precision.
+struct Reference {
+  int frame = -1;
+  double distance = std::numeric_limits<double>::infinity();
+};
+
+TEST_F(SimulationTest, DecentralizedMatchesEqualTheCausalStaticReference) {
+  const DecentralizedRouting routing(table_);
+  const SimRunParams params = IdealParams(kRobots);
+  const SimRunLog log = RunSimulation(data_, routing, params);
+  std::vector<RobotId> owner(static_cast<std::size_t>(data_.size()));
+  for (int f = 0; f < data_.size(); ++f) owner[static_cast<std::size_t>(f)] = table_->RouteOf(data_.descriptors.row(f).data());
+  int compared = 0;
+  for (const QueryRecord& q : log.queries) {
+    const int i = q.frame.value;
+    const SimTime t = log.capture_time[static_cast<std::size_t>(i)];
+    Reference ref;
+    for (int j = 0; j < data_.size(); ++j) {
+      if (owner[j] != owner[i] || std::abs(i - j) <= params.agent.suppression_frames) continue;
+      if (!(log.capture_time[static_cast<std::size_t>(j)] < t)) continue;
+      const double d = (data_.descriptors.row(i).cast<double>() - data_.descriptors.row(j).cast<double>()).squaredNorm();
+      if (d < ref.distance) ref = {j, d};
+    }
+    if (!q.match_frame) {
+      EXPECT_EQ(ref.frame, -1) << "frame " << i;
+      continue;
+    }
+    const SimTime t_match = log.capture_time[static_cast<std::size_t>(q.match_frame->value)];
+    if (t_match < t) {
+      EXPECT_EQ(q.match_frame->value, ref.frame) << "frame " << i;
+      EXPECT_NEAR(q.distance, ref.distance, 1e-5);
+      ++compared;
+    } else {
+      // A frame taken at the same instant by another robot may have reached
+      // the store first: it can only be better than the reference.
+      EXPECT_EQ(t_match, t);
+      EXPECT_LE(q.distance, ref.distance + 1e-5);
+    }
+  }
+  EXPECT_GT(compared, data_.size() / 2);
+}
+
+TEST_F(SimulationTest, SameSeedSameLogAndBusyRobotsQueue) {
+  const BroadcastRouting routing(kRobots);
+  SimRunParams p = IdealParams(kRobots);
+  p.agent.service_fixed = SimTime::Millis(30);  // 3 robots' queries per 100 ms frame: 90 ms of work
+  const SimRunLog a = RunSimulation(data_, routing, p);
+  const SimRunLog b = RunSimulation(data_, routing, p);
+  ASSERT_EQ(a.queries.size(), b.queries.size());
+  for (std::size_t i = 0; i < a.queries.size(); ++i) {
+    EXPECT_EQ(a.queries[i].latency, b.queries[i].latency);
+    EXPECT_EQ(a.queries[i].match_frame, b.queries[i].match_frame);
+  }
+  // Four searches per frame period (own + 3 remote) of 30 ms each: 120 ms of
+  // work every 100 ms, so the queue grows and latency exceeds one service time.
+  const LatencyStats lat = ComputeLatency(a.queries);
+  EXPECT_GT(lat.mean_ms, 30.0);
+  for (const auto& l : a.loads) EXPECT_GT(l.max_queue, 1);
+}
+
+TEST_F(SimulationTest, DroppedRobotLosesItsMessagesAndOthersFinish) {
+  const BroadcastRouting routing(kRobots);
+  SimRunParams p = IdealParams(kRobots);
+  p.dropouts.push_back({RobotId(2), SimTime::Seconds(3.0)});
+  const SimRunLog log = RunSimulation(data_, routing, p);
+  // Robot 2 took frames at 0.0 .. 2.9 s: 30 of its 60.
+  std::int64_t robot2 = 0, incomplete = 0;
+  for (const auto& q : log.queries) {
+    robot2 += q.robot == RobotId(2) ? 1 : 0;
+    incomplete += q.latency ? 0 : 1;
+  }
+  EXPECT_EQ(robot2, 30);
+  // The other three robots' queries from t = 3 s on miss robot 2's reply: 30 frames each.
+  EXPECT_EQ(incomplete, 3 * 30);
+  std::int64_t dropped = 0;
+  for (const auto& m : log.messages) dropped += m.dropped ? 1 : 0;
+  EXPECT_EQ(dropped, 3 * 30);
+}
+
+}  // namespace
+}  // namespace dvpr

@@ -1,0 +1,116 @@
+// Result files: exact CSV formatting, atomic writes, summary means, runs.csv read back.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "experiments/results/result_writers.h"
+#include "tests/test_support.h"
+
+namespace dvpr {
+namespace {
+
+using dvpr::testing_support::Slurp;
+
+namespace fs = std::filesystem;
+
+RunResult SimRow(int run, double rel) {
+  RunResult r;
+  r.key = RunKey{.protocol = "sim", .strategy = "decentralized", .robots = 4, .run = run,
+                 .network = NetworkLabel{.variant = 1, .model = "point_to_point",
+                                         .bandwidth_bps = 1e6, .latency_ms = 5, .loss = "none"}};
+  r.seed = 99;
+  r.auc = 0.5;
+  r.auc_reference = 0.625;
+  r.relative_auc = rel;
+  r.worst_balance_ratio = 2.0 / 3.0;
+  r.queries = 100;
+  r.messages = 200;
+  r.payload_bytes = 51700;
+  r.wire_bytes = 54700;
+  r.bytes_per_query = 547;
+  r.mean_latency_ms = 9.376;
+  r.p99_latency_ms = 12.5;
+  r.dropped_messages = 0;
+  return r;
+}
+
+TEST(ResultWriters, RunsCsvColumnsAndFormatting) {
+  EXPECT_EQ(std::string(kRunsHeader).rfind(
+                "protocol,strategy,robots,run,seed,auc,auc_reference,relative_auc,"
+                "worst_balance_ratio,queries,messages,payload_bytes,wire_bytes,bytes_per_query,"
+                "mean_latency_ms,p99_latency_ms,dropped_messages,", 0), 0u);
+  EXPECT_EQ(CsvRow(SimRow(0, 0.8)),
+            "sim,decentralized,4,0,99,0.500000,0.625000,0.800000,0.666667,100,200,51700,54700,"
+            "547.000000,9.376000,12.500000,0,1,point_to_point,1000000,5.000000,none");
+  RunResult paper;
+  paper.key.protocol = "paper";
+  paper.key.strategy = "decentralized";
+  paper.key.robots = 2;
+  paper.key.run = 1;
+  EXPECT_EQ(CsvRow(paper), "paper,decentralized,2,1,0,,,,,0,0,0,0,,,,0,,,,,");
+}
+
+TEST(ResultWriters, QueryRowEmptyFieldsWhenNoMatch) {
+  QueryRow q;
+  q.key.protocol = "sim";
+  q.key.strategy = "broadcast";
+  q.key.robots = 3;
+  q.robot = 2;
+  q.frame = 17;
+  q.sent_ns = 1700000000;
+  q.relevant = true;
+  EXPECT_EQ(CsvRow(q), "sim,broadcast,3,0,2,17,1700000000,,,,,1,0,,,,,");
+}
+
+TEST(ResultWriters, AtomicWriteLeavesNoTemporary) {
+  const fs::path dir = fs::path(DVPR_TEST_TMP) / "writers";
+  fs::remove_all(dir);
+  CreateOutputDir(dir);
+  WriteRunsCsv(dir / "runs.csv", {SimRow(0, 0.8), SimRow(1, 0.6)});
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  EXPECT_EQ(Slurp(dir / "runs.csv"), std::string(kRunsHeader) + "\n" + CsvRow(SimRow(0, 0.8)) +
+                                         "\n" + CsvRow(SimRow(1, 0.6)) + "\n");
+  {
+    AtomicFile f(dir / "half.csv");
+    f.stream() << "never committed";
+  }
+  EXPECT_FALSE(fs::exists(dir / "half.csv"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  const auto rows = ReadRunsCsv(dir / "runs.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(CsvRow(rows[1]), CsvRow(SimRow(1, 0.6)));
+}
+
+TEST(ResultWriters, UncreatableFolderNamesThePath) {
+  const fs::path file = fs::path(DVPR_TEST_TMP) / "a_file";
+  std::ofstream(file) << "x";
+  try {
+    CreateOutputDir(file / "sub");
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find((file / "sub").string()), std::string::npos);
+  }
+}
+
+TEST(ResultWriters, SummaryMeansPerGroup) {
+  RunResult other = SimRow(0, 1.0);
+  other.key.strategy = "broadcast";
+  const std::string json = SummaryJson({SimRow(0, 0.8), SimRow(1, 0.6), other});
+  EXPECT_NE(json.find("\"strategy\": \"decentralized\", \"robots\": 4, \"network_variant\": 1"),
+            std::string::npos) << json;
+  EXPECT_NE(json.find("\"runs\": 2"), std::string::npos);
+  EXPECT_NE(json.find("\"relative_auc\": 0.700000"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"relative_auc\": 1.000000"), std::string::npos);
+}
+
+TEST(ResultWriters, FormatDoubleIsLocaleFree) {
+  EXPECT_EQ(FormatDouble(1234567.25), "1234567.250000");
+  EXPECT_EQ(FormatDouble(-0.0), "0.000000");
+  EXPECT_EQ(FormatDouble(kNotApplicable), "");
+  EXPECT_EQ(FormatDouble(2.5, 0), "2");  // round half to even, as to_chars does
+}
+
+}  // namespace
+}  // namespace dvpr
