@@ -3,14 +3,18 @@
 // (diverse training, as in the paper). A numpy/scikit-learn implementation takes about 180 s.
 //   build/algo-rel/bench/bench_paper_sweep --benchmark_filter=PaperSweep/2
 //       --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
-// Counters: the stages in CPU-seconds summed over threads (kmeans_cpu_s, distances_cpu_s, ...).
+// The sweep goes through RunSweep, the driver `dvpr run` uses (the executor with the built-in
+// paper protocol), on inputs made here instead of loaded from a config's files.
 #include <filesystem>
+#include <vector>
 
 #include <benchmark/benchmark.h>
 
+#include "agents/kmeans.h"
+#include "experiments/config/config.h"
 #include "experiments/data/loaders.h"
-#include "experiments/protocols/paper/static_protocol.h"
 #include "experiments/data/synthetic.h"
+#include "experiments/sweep/run_sweep.h"
 
 namespace dvpr {
 namespace {
@@ -35,27 +39,31 @@ const SweepData& Data() {
   return data;
 }
 
+// The paper protocol's decentralized strategy, robots 2..20, 10 runs, seed 1, r = 5 m, window 250.
+const ExperimentConfig& SweepConfig() {
+  static const ExperimentConfig config = ParseConfig(
+      "robots: {from: 2, to: 20}\nruns: 10\nseed: 1\nprotocols: [paper]\nstrategies: [decentralized]\n"
+      "evaluation: {gt_radius_m: 5, suppression_frames: 250}\noutputs: {figures: false}\n",
+      std::filesystem::current_path(), {}, "bench_paper_sweep");
+  return config;
+}
+
 void BM_PaperSweep(benchmark::State& state) {
-  const SweepData& data = Data();
-  PaperProtocolParams params;
-  for (int n = 2; n <= 20; ++n) params.robots.push_back(n);
-  params.runs = 10;
-  params.seed = 1;
-  params.threads = static_cast<int>(state.range(0));
-  PaperProtocolResult result;
+  SharedInputs inputs;  // no out_dir: the centroids are not written
+  inputs.config = &SweepConfig();
+  inputs.deployment = Data().deployment;
+  inputs.training = Data().training;
+  const ExecutorOptions options{.threads = static_cast<int>(state.range(0)), .progress = false};
+  std::vector<RunOutput> outputs;
   for (auto _ : state) {
-    result = RunPaperProtocol(data.deployment, data.training, params);
-    benchmark::DoNotOptimize(result.runs.data());
+    outputs = RunSweepInMemory(inputs, options);
+    benchmark::DoNotOptimize(outputs.data());
   }
-  double fallbacks = 0;
-  for (const auto& r : result.runs) fallbacks += static_cast<double>(r.fallback_scans);
-  state.counters["runs"] = static_cast<double>(result.runs.size());
-  state.counters["ground_truth_cpu_s"] = result.timings.ground_truth_s;
-  state.counters["distances_cpu_s"] = result.timings.distances_s;
-  state.counters["kmeans_cpu_s"] = result.timings.kmeans_s;
-  state.counters["metrics_cpu_s"] = result.timings.metrics_s;
-  state.counters["fallback_scans"] = fallbacks;
-  state.counters["central_auc"] = result.centralized.auc;
+  double relative_auc = 0;
+  for (const auto& out : outputs) relative_auc += out.runs.at(0).relative_auc;
+  state.counters["runs"] = static_cast<double>(outputs.size());
+  state.counters["central_auc"] = outputs.at(0).runs.at(0).auc_reference;
+  state.counters["mean_relative_auc"] = relative_auc / static_cast<double>(outputs.size());
 }
 BENCHMARK(BM_PaperSweep)->Arg(2)->Arg(1)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 

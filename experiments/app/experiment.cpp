@@ -11,7 +11,7 @@
 #include "experiments/figures/figures.h"
 #include "experiments/protocols/inputs.h"
 #include "experiments/results/result_writers.h"
-#include "experiments/sweep/sweep.h"
+#include "experiments/sweep/run_sweep.h"
 
 namespace dvpr {
 
@@ -72,23 +72,15 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
   SharedInputs inputs = LoadSharedInputs(config, origin);
   CreateOutputDir(out_dir);
   inputs.out_dir = out_dir;
-  const std::vector<NetworkVariant> networks = ExpandNetworks(config.network);
-  const std::vector<RunSpec> specs = ExpandSweep(config, networks);
-  std::map<std::string, RunFunction> run_functions;
-  for (const auto& p : config.sweep.protocols) run_functions[p] = (*protocols.Find(p))(inputs);
-
   WriteFileAtomic(out_dir / "config.yaml", EmitConfig(config));
   RowFiles files(out_dir, config.outputs);
   std::vector<RunResult> rows;
   std::vector<PrCurve> curves;
-  ExecuteRuns(
-      specs, run_functions,
-      [&](const RunSpec&, RunOutput&& out) {
-        files.Write(out);
-        rows.insert(rows.end(), out.runs.begin(), out.runs.end());
-        for (auto& c : out.curves) curves.push_back(std::move(c));
-      },
-      options);
+  RunSweep(inputs, protocols, options, [&](const RunSpec&, RunOutput&& out) {
+    files.Write(out);
+    rows.insert(rows.end(), out.runs.begin(), out.runs.end());
+    for (auto& c : out.curves) curves.push_back(std::move(c));
+  });
   files.Commit();
   WriteFileAtomic(out_dir / "summary.json", SummaryJson(rows));
   if (config.outputs.figures) {

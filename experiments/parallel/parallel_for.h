@@ -1,7 +1,9 @@
 #pragma once
-// Runs fn(i) for i in [0, count) on `threads` std::threads (0: hardware concurrency). Work is
-// handed out one index at a time, so results written to slot i are the same for any thread
-// count. The first exception thrown by fn is rethrown after all threads have joined.
+// The one thread pool of dvpr: ParallelFor runs fn(i) for i in [0, count) on `threads`
+// std::threads (0: hardware concurrency), the calling thread being one of them. Work is handed
+// out one index at a time, so results written to slot i are the same for any thread count. The
+// first exception thrown by fn stops the hand-out and is rethrown after all threads have joined.
+// ParallelForInOrder (parallel_for_in_order.h) adds an in-order consumer on top of it.
 #include <algorithm>
 #include <atomic>
 #include <cstdint>

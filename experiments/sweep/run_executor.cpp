@@ -2,16 +2,13 @@
 
 #include <unistd.h>
 
-#include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <condition_variable>
+#include <cstdint>
 #include <cstdio>
-#include <exception>
-#include <mutex>
-#include <optional>
 #include <stdexcept>
-#include <thread>
+#include <utility>
+
+#include "experiments/parallel/parallel_for_in_order.h"
 
 namespace dvpr {
 
@@ -66,35 +63,14 @@ class Progress {
   std::chrono::steady_clock::time_point start_;
 };
 
-// The slots where workers put finished outputs, and the signal for the consuming thread.
-struct Slots {
-  std::mutex mutex;
-  std::condition_variable ready;
-  std::vector<std::optional<RunOutput>> outputs;
-  std::exception_ptr error;
-  std::atomic<bool> stop{false};
-};
-
-void Work(const std::vector<RunSpec>& specs, const std::map<std::string, RunFunction>& fns,
-          std::atomic<std::size_t>& next, Slots& slots) {
-  while (!slots.stop) {
-    const std::size_t i = next++;
-    if (i >= specs.size()) return;
-    try {
-      const auto fn = fns.find(specs[i].protocol);
-      if (fn == fns.end()) throw std::logic_error("no run function for " + specs[i].protocol);
-      RunOutput out = fn->second(specs[i]);
-      std::lock_guard lock(slots.mutex);
-      slots.outputs[i] = std::move(out);
-    } catch (const std::exception& e) {
-      std::lock_guard lock(slots.mutex);
-      if (!slots.error) {
-        slots.error = std::make_exception_ptr(
-            std::runtime_error("run " + Describe(specs[i]) + ": " + e.what()));
-      }
-      slots.stop = true;
-    }
-    slots.ready.notify_all();
+// Runs one spec; an error names the run.
+RunOutput RunOne(const RunSpec& spec, const std::map<std::string, RunFunction>& fns) {
+  const auto fn = fns.find(spec.protocol);
+  if (fn == fns.end()) throw std::logic_error("no run function for " + spec.protocol);
+  try {
+    return fn->second(spec);
+  } catch (const std::exception& e) {
+    throw std::runtime_error("run " + Describe(spec) + ": " + e.what());
   }
 }
 
@@ -104,38 +80,14 @@ void ExecuteRuns(const std::vector<RunSpec>& specs,
                  const std::map<std::string, RunFunction>& run_functions,
                  const std::function<void(const RunSpec&, RunOutput&&)>& consume,
                  const ExecutorOptions& options) {
-  Slots slots;
-  slots.outputs.resize(specs.size());
-  std::atomic<std::size_t> next{0};
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t workers = std::min<std::size_t>(
-      options.threads > 0 ? static_cast<std::size_t>(options.threads) : cores, specs.size());
-  std::vector<std::jthread> threads;
-  for (std::size_t t = 0; t < workers; ++t) {
-    threads.emplace_back([&] { Work(specs, run_functions, next, slots); });
-  }
   Progress progress(specs.size(), options.progress);
-  for (std::size_t i = 0; i < specs.size(); ++i) {
-    RunOutput out;
-    {
-      std::unique_lock lock(slots.mutex);
-      slots.ready.wait(lock, [&] { return slots.outputs[i].has_value() || slots.error; });
-      if (slots.error) break;
-      out = std::move(*slots.outputs[i]);
-      slots.outputs[i].reset();
-    }
-    try {
-      consume(specs[i], std::move(out));
-    } catch (...) {
-      std::lock_guard lock(slots.mutex);
-      slots.error = std::current_exception();
-      slots.stop = true;
-      break;
-    }
-    progress.Done(i + 1);
-  }
-  threads.clear();  // joins
-  if (slots.error) std::rethrow_exception(slots.error);
+  ParallelForInOrder(
+      static_cast<std::int64_t>(specs.size()), options.threads,
+      [&](std::int64_t i) { return RunOne(specs[static_cast<std::size_t>(i)], run_functions); },
+      [&](std::int64_t i, RunOutput&& out) {
+        consume(specs[static_cast<std::size_t>(i)], std::move(out));
+        progress.Done(static_cast<std::size_t>(i) + 1);
+      });
 }
 
 }  // namespace dvpr

@@ -39,9 +39,10 @@ struct ExecutorOptions {
   bool progress = true;     // runs done/total, elapsed, estimate on stderr
 };
 
-// Calls run_functions.at(spec.protocol)(spec) for every spec, on worker threads, and consume()
-// on the calling thread in spec order as soon as each output and all before it are done (so
-// memory holds only the outputs waiting for a slower earlier run). The first exception (from a
+// Calls run_functions.at(spec.protocol)(spec) for every spec on the ParallelFor pool
+// (experiments/parallel/parallel_for_in_order.h), and consume() in spec order as soon as each
+// output and all before it are done (so memory holds only the outputs waiting for a slower
+// earlier run); consume is never called on two threads at once. The first exception (from a
 // run, with the run named, or from consume) stops new runs and is rethrown after the workers
 // have joined.
 void ExecuteRuns(const std::vector<RunSpec>& specs,

@@ -1,9 +1,10 @@
 // Sweep expansion: cross-product counts, order and seeds.
-#include <set>
+#include <cstdint>
+#include <map>
+#include <utility>
 
 #include <gtest/gtest.h>
 
-#include "sim/random_bits.h"
 #include "experiments/config/config.h"
 #include "experiments/sweep/sweep.h"
 
@@ -42,21 +43,41 @@ TEST(Sweep, IdealNetworkIsOneVariant) {
   EXPECT_EQ(networks[3].index, 3);
 }
 
+// RunSeed(seed, robots, run) = MixSeed(MixSeed(seed, robots), run), worked out independently of
+// the C++ by tests/tools/run_seeds.py (a Python SplitMix64): `run_seeds.py 42 2 3 7 --runs 4` and
+// `run_seeds.py 43 3 --runs 3`.
+const std::map<std::pair<int, int>, std::uint64_t> kSeeds42 = {
+    {{2, 0}, 7565664945503846093ULL},  {{2, 1}, 17629773509443312625ULL},
+    {{2, 2}, 15895690633813842488ULL}, {{2, 3}, 12014855358635969890ULL},
+    {{3, 0}, 1581913778274440802ULL},  {{3, 1}, 6644840181122403294ULL},
+    {{3, 2}, 3620815527072446484ULL},  {{3, 3}, 10331844246122223827ULL},
+    {{7, 0}, 9051001750061520609ULL},  {{7, 1}, 8950214677219389925ULL},
+    {{7, 2}, 17037602249466143853ULL}, {{7, 3}, 2263089242217735002ULL}};
+
 TEST(Sweep, SeedsFromConfigSeedRobotsAndRun) {
   const ExperimentConfig c = Config("seed: 42\nrobots: [2, 3]\nruns: 4\nprotocols: [paper, sim]\n");
   const auto networks = ExpandNetworks(c.network);
   const auto specs = ExpandSweep(c, networks);
-  std::set<std::uint64_t> distinct;
+  ASSERT_EQ(specs.size(), 2u * 2u * 4u);
   for (const auto& s : specs) {
-    EXPECT_EQ(s.seed, MixSeed(MixSeed(42, static_cast<std::uint64_t>(s.robots)),
-                              static_cast<std::uint64_t>(s.run)));
-    distinct.insert(s.seed);
+    // The same (robots, run) has the same seed in paper and sim.
+    EXPECT_EQ(s.seed, kSeeds42.at({s.robots, s.run})) << s.protocol << " n=" << s.robots << " run " << s.run;
   }
-  EXPECT_EQ(distinct.size(), 2u * 4u);  // same (robots, run) -> same seed in paper and sim
-  // Adding robot counts changes no existing seed.
-  const ExperimentConfig more = Config("seed: 42\nrobots: [2, 3, 7]\nruns: 4\n");
-  EXPECT_EQ(RunSeed(42, 3, 2), RunSeed(more.seed, 3, 2));
-  EXPECT_NE(RunSeed(42, 3, 2), RunSeed(43, 3, 2));
+}
+
+TEST(Sweep, AddingRobotCountsChangesNoOtherSeedAndTheConfigSeedChangesAll) {
+  const ExperimentConfig more = Config("seed: 42\nrobots: [2, 3, 7]\nruns: 4\nprotocols: [paper]\n");
+  const auto networks = ExpandNetworks(more.network);
+  const auto specs = ExpandSweep(more, networks);
+  ASSERT_EQ(specs.size(), 3u * 4u);
+  for (const auto& s : specs) EXPECT_EQ(s.seed, kSeeds42.at({s.robots, s.run})) << "n=" << s.robots << " run " << s.run;
+  const ExperimentConfig other = Config("seed: 43\nrobots: [3]\nruns: 3\nprotocols: [paper]\n");
+  const auto other_networks = ExpandNetworks(other.network);
+  const auto other_specs = ExpandSweep(other, other_networks);
+  ASSERT_EQ(other_specs.size(), 3u);
+  EXPECT_EQ(other_specs[0].seed, 7761149020981011001ULL);
+  EXPECT_EQ(other_specs[1].seed, 10141735264401666570ULL);
+  EXPECT_EQ(other_specs[2].seed, 13757119887038879975ULL);  // seed 42 gave 3620815527072446484
 }
 
 }  // namespace

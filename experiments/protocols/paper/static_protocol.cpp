@@ -6,7 +6,6 @@
 #include <string>
 
 #include "experiments/data/npy.h"
-#include "experiments/parallel/parallel_for.h"
 
 namespace dvpr {
 
@@ -16,30 +15,13 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void Accumulate(PaperTimings& total, const PaperTimings& t) {
-  total.ground_truth_s += t.ground_truth_s;
-  total.distances_s += t.distances_s;
-  total.kmeans_s += t.kmeans_s;
-  total.metrics_s += t.metrics_s;
-  total.io_s += t.io_s;
-}
-
 }  // namespace
 
 void PaperProtocolParams::Validate() const {
   evaluation.Validate();
-  if (robots.empty()) throw std::invalid_argument("PaperProtocolParams.robots is empty");
-  for (int n : robots) {
-    if (n < 1) throw std::invalid_argument("PaperProtocolParams.robots: " + std::to_string(n) + " < 1");
-  }
-  if (runs < 1) throw std::invalid_argument("PaperProtocolParams.runs must be >= 1");
   if (clusters_per_robot < 1) {
     throw std::invalid_argument("PaperProtocolParams.clusters_per_robot must be >= 1");
   }
-  if (candidate_list_size < 1) {
-    throw std::invalid_argument("PaperProtocolParams.candidate_list_size must be >= 1");
-  }
-  if (threads < 0) throw std::invalid_argument("PaperProtocolParams.threads must be >= 0");
   KMeansParams probe = kmeans;
   probe.k = 1;  // set per run
   probe.Validate();
@@ -152,39 +134,10 @@ PaperRunResult RunPaperRun(const PaperEvaluator& evaluator, const DescriptorMatr
   result.curve.run = run;
   if (!params.centroids_out_dir.empty()) {
     start = std::chrono::steady_clock::now();
-    result.centroids_file = params.centroids_out_dir / ("centroids_n" + std::to_string(robots) +
-                                                        "_r" + std::to_string(run) + ".npy");
-    WriteNpy(result.centroids_file, centroids);
+    WriteNpy(params.centroids_out_dir / ("centroids_n" + std::to_string(robots) + "_r" + std::to_string(run) + ".npy"),
+             centroids);
     result.timings.io_s = SecondsSince(start);
   }
-  result.centroids = std::move(centroids);
-  return result;
-}
-
-PaperProtocolResult RunPaperProtocol(const Dataset& deployment, const DescriptorMatrix& training,
-                                     const PaperProtocolParams& params) {
-  params.Validate();
-  if (params.centroids_pattern.empty() && training.cols() != deployment.dim()) {
-    throw std::invalid_argument("RunPaperProtocol: training descriptors have " +
-                                std::to_string(training.cols()) + " dimensions, deployment " +
-                                std::to_string(deployment.dim()));
-  }
-  if (!params.centroids_out_dir.empty()) std::filesystem::create_directories(params.centroids_out_dir);
-  const PaperEvaluator evaluator(deployment, params.evaluation, params.candidate_list_size,
-                                 params.threads);
-  PaperProtocolResult result;
-  result.centralized = evaluator.centralized();
-  result.timings = evaluator.timings();
-  const auto per_n = static_cast<std::int64_t>(params.runs);
-  result.runs.resize(params.robots.size() * static_cast<std::size_t>(params.runs));
-  const auto tasks = static_cast<std::int64_t>(result.runs.size());
-  ParallelFor(tasks, params.threads, [&](std::int64_t task) {
-    const std::int64_t t = tasks - 1 - task;  // largest n first: shorter tail on the last core
-    const int robots = params.robots[static_cast<std::size_t>(t / per_n)];
-    result.runs[static_cast<std::size_t>(t)] =
-        RunPaperRun(evaluator, training, params, robots, static_cast<int>(t % per_n));
-  });
-  for (const auto& run : result.runs) Accumulate(result.timings, run.timings);
   return result;
 }
 

@@ -10,8 +10,9 @@
 // its own key: adding robot counts or runs, or changing the thread count, changes nothing else.
 //
 // Speed: descriptor distances are computed once for all runs (WindowedNeighbours), so a run
-// costs its k-means, one routing (N x k) and a few list look-ups per query. Runs go in parallel
-// on std::threads; results do not depend on the number of threads.
+// costs its k-means, one routing (N x k) and a few list look-ups per query. The sweep over n and
+// runs is driven by experiments/sweep/run_sweep.h (RunSweep, as for every protocol), which runs
+// RunPaperRun for each (n, run) in parallel; results do not depend on the number of threads.
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
@@ -29,22 +30,18 @@
 
 namespace dvpr {
 
-// The run centroids' parameters (seed, clusters per robot, k-means, centroid files) come from
-// RunCentroidParams; centroid c is owned by robot c mod n.
+// One run's parameters. The run centroids' (seed, clusters per robot, k-means, centroid files)
+// come from RunCentroidParams; centroid c is owned by robot c mod n.
 struct PaperProtocolParams : RunCentroidParams {
   GroundTruthParams evaluation;         // r = 5 m, window 250
-  std::vector<int> robots;              // robot counts n (>= 1 each), e.g. 2..20
-  int runs = 10;                        // runs per n, numbered from 0
   // Non-empty: each run's centroids are written here as centroids_n{robots}_r{run}.npy.
   std::filesystem::path centroids_out_dir;
-  bool keep_curves = false;             // keep each run's PR curve (figures)
-  int threads = 0;                      // 0: all cores
-  int candidate_list_size = 64;         // WindowedNeighbours list length: speed only
+  bool keep_curves = false;             // keep the run's PR curve (figures)
   void Validate() const;                // throws std::invalid_argument naming the field
 };
 
 // Wall-clock seconds per stage (diagnostics, not deterministic). For a run: its own stages; for
-// a protocol: precompute once plus the runs' stages summed (CPU-seconds over threads).
+// the evaluator: its precompute.
 struct PaperTimings {
   double ground_truth_s = 0;   // g(i), R
   double distances_s = 0;      // D once + centralized matches, or routing + restricted matches
@@ -64,14 +61,6 @@ struct PaperRunResult {
   std::int64_t ranked_queries = 0;      // queries with a candidate in their pool
   std::int64_t fallback_scans = 0;      // queries the neighbour lists could not answer
   PrCurve curve;                        // filled when keep_curves
-  CentroidMatrix centroids;
-  std::filesystem::path centroids_file; // where they were written, if anywhere
-  PaperTimings timings;
-};
-
-struct PaperProtocolResult {
-  PrResult centralized;                 // its curve always kept
-  std::vector<PaperRunResult> runs;     // in order of params.robots, then run
   PaperTimings timings;
 };
 
@@ -114,13 +103,9 @@ class PaperEvaluator {
   PaperTimings timings_;
 };
 
-// One (robots, run) of the sweep: centroids (k-means on `training` or loaded), routing, metrics,
-// centroids written if asked.
+// One (robots, run) of the sweep: centroids (k-means on `training` or loaded; `training` may be
+// empty when params.centroids_pattern is set), routing, metrics, centroids written if asked.
 PaperRunResult RunPaperRun(const PaperEvaluator& evaluator, const DescriptorMatrix& training,
                            const PaperProtocolParams& params, int robots, int run);
-
-// The whole sweep. `training` may be empty when params.centroids_pattern is set.
-PaperProtocolResult RunPaperProtocol(const Dataset& deployment, const DescriptorMatrix& training,
-                                     const PaperProtocolParams& params);
 
 }  // namespace dvpr

@@ -2,6 +2,7 @@
 // hand-worked 1-D toy (which robot searches and stores each frame before and after the new
 // table, message counts and bytes), a random team checked against the static planner (same
 // tables, every descriptor at its owner under the final table), determinism and dropout.
+#include <limits>
 #include <map>
 #include <memory>
 #include <set>
@@ -68,7 +69,7 @@ struct Team {
     sim.Run();
   }
   struct Traffic {
-    std::int64_t messages = 0, bytes = 0;
+    std::int64_t messages = 0, bytes = 0, wire_bytes = 0;
   };
   // By channel family (DVPR_SAMPLE, DVPR_MIGRATE, DVPR_TABLE) or type (query_t, match_t).
   std::map<std::string, Traffic> ByKind() const {
@@ -81,6 +82,7 @@ struct Team {
       if (channel == channels::kTable) kind = "table";
       ++out[kind].messages;
       out[kind].bytes += r.payload_bytes;
+      out[kind].wire_bytes += r.wire_bytes;
     }
     return out;
   }
@@ -100,6 +102,30 @@ std::set<int> StoredFrames(const RobotAgent& a) {
   std::set<int> frames;
   for (const IndexEntry& e : a.index().entries()) frames.insert(e.frame.value);
   return frames;
+}
+
+// The robot that holds descriptor x under `table`: the owner of its nearest centroid, by brute
+// force in double precision (ties: the lowest centroid).
+int NearestOwner(const CentroidTable& table, const Eigen::Ref<const Eigen::RowVectorXf>& x) {
+  int best = 0;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (int c = 0; c < table.num_centroids(); ++c) {
+    const double d = (table.centroids().row(c).cast<double>() - x.cast<double>()).squaredNorm();
+    if (d < best_d) {
+      best = c;
+      best_d = d;
+    }
+  }
+  return table.OwnerOf(best).value;
+}
+
+// Wire bytes of one message by DESIGN.md section 4, for messages below LCM's 64 kB fragmenting:
+// one LCM datagram (8-byte header, channel, NUL, payload), UDP 8, IPv4 fragments of at most 1480
+// data bytes (MTU 1500) with 20 header bytes each, 2 bytes of framing per IP packet.
+std::int64_t WireBytes(std::int64_t payload, const std::string& channel) {
+  const std::int64_t ip_data = 8 + static_cast<std::int64_t>(channel.size()) + 1 + payload + 8;
+  const std::int64_t packets = (ip_data + 1479) / 1480;
+  return ip_data + packets * (20 + 2);
 }
 
 // Two robots of eight frames (0.1 s apart), values near 0 or near 100:
@@ -222,11 +248,33 @@ TEST_F(SimReclusterTeam, EveryDescriptorEndsAtItsOwnerUnderTheStaticPlannersLast
   const auto kinds = team.ByKind();
   EXPECT_EQ(kinds.at("sample").messages, 9);
   EXPECT_EQ(kinds.at("table").messages, 9);
-  // The samples hold every 4th step before the boundary: 4 robots x (4, 8, 12) = 96 descriptors
-  // of 16 floats, minus the leader's own (not sent): bytes = 9 x 28 + (96 - leader's) x 70.
-  const ReclusterTraffic stat = CountReclusterTraffic(plan, 16);
-  EXPECT_EQ(kinds.at("sample").bytes, stat.sample_bytes);
-  EXPECT_EQ(kinds.at("table").bytes, stat.table_bytes);
+  // A table of k = min(2 clusters x 4 robots, sample rows) = 8 centroids of 16 floats (LCM
+  // centroid_table_t: 26 + k x (4 x 16 + 2) = 554 bytes), one copy to each of the 3 others.
+  EXPECT_EQ(kinds.at("table").bytes, 9 * 554);
+  EXPECT_EQ(kinds.at("table").wire_bytes, 9 * WireBytes(554, "DVPR_TABLE"));
+  // A sample batch (LCM descriptor_batch_t) is 28 + m x (6 + 4 x 16) = 28 + 70 m bytes for m
+  // descriptors. At the boundary of epoch e (step 15e) a robot holds the sample frames that
+  // are its under table e - 1 (routed there, or migrated there at the previous boundary); the
+  // sample is every 4th step before the boundary: 4 robots x (4, 8, 12) = 96 frames, and the
+  // leader (robot 0) does not send its own.
+  int sample_frames = 0;
+  std::int64_t sample_bytes = 0, sample_wire = 0;
+  for (int e = 1; e <= 3; ++e) {
+    int held[4] = {0, 0, 0, 0};
+    for (int r = 0; r < 4; ++r) {
+      for (int step = 0; step < 15 * e; step += 4) {
+        ++sample_frames;
+        ++held[NearestOwner(*plan.tables[static_cast<std::size_t>(e - 1)], x_.row(60 * r + step))];
+      }
+    }
+    for (int r = 1; r < 4; ++r) {
+      sample_bytes += 28 + 70 * held[r];
+      sample_wire += WireBytes(28 + 70 * held[r], "DVPR_SAMPLE_0");
+    }
+  }
+  ASSERT_EQ(sample_frames, 96);
+  EXPECT_EQ(kinds.at("sample").bytes, sample_bytes);
+  EXPECT_EQ(kinds.at("sample").wire_bytes, sample_wire);
 }
 
 TEST_F(SimReclusterTeam, LeaderStopsWaitingForADroppedRobotAndGivesItNoClusters) {

@@ -7,12 +7,14 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <utility>
 
 #include "agents/decentralized_routing.h"
 #include "agents/kmeans.h"
 #include "experiments/protocols/sim/simulation.h"
 #include "experiments/data/split.h"
 #include "sim/random.h"
+#include "sim/random_bits.h"
 
 namespace dvpr {
 namespace {
@@ -69,27 +71,48 @@ class SimulationTest : public ::testing::Test {
   std::shared_ptr<const CentroidTable> table_ = TrainTable(data_, kRobots);
 };
 
-TEST_F(SimulationTest, DecentralizedSendsOneQueryAndOneReplyPerRemoteFrame) {
-  const DecentralizedRouting routing(table_);
-  const SimRunLog log = RunSimulation(data_, routing, IdealParams(kRobots));
-  const SequenceSplit split = SplitSequence(static_cast<int>(data_.size()), kRobots);
-  std::int64_t remote = 0;
-  for (int f = 0; f < data_.size(); ++f) {
-    remote += table_->RouteOf(data_.descriptors.row(f).data()) != split.OwnerOf(FrameId(f)) ? 1 : 0;
+// Frames routed by construction: frame f's descriptor is the unit vector e_(f mod 4) plus noise
+// below 0.1 per coordinate, and centroid c is e_c, owned by robot c (round robin). Then
+// |x - e_c|^2 = |x|^2 + 1 - 2 x_c is smallest for c = f mod 4 (x_c > 0.9 there, < 0.1 elsewhere),
+// so frame f goes to robot f mod 4 whatever the distance code does.
+Dataset HandRoutedDataset(int frames, int dim) {
+  Dataset d = MakeDataset(frames, dim, 5);  // its trajectory; the descriptors are replaced
+  Xoshiro256 rng(11);
+  for (int f = 0; f < frames; ++f) {
+    for (int c = 0; c < dim; ++c) d.descriptors(f, c) = static_cast<float>(0.1 * (2 * rng.Uniform() - 1));
+    d.descriptors(f, f % 4) += 1.0f;
   }
-  ASSERT_GT(remote, 0);
-  ASSERT_LT(remote, data_.size());
+  return d;
+}
+
+std::shared_ptr<const CentroidTable> AxisTable(int robots, int dim) {
+  CentroidMatrix c = CentroidMatrix::Zero(robots, dim);
+  for (int r = 0; r < robots; ++r) c(r, r) = 1.0f;
+  return std::make_shared<CentroidTable>(CentroidTable::RoundRobin(c, robots));
+}
+
+TEST(SimulationHandRouted, DecentralizedSendsOneQueryAndOneReplyPerRemoteFrame) {
+  const Dataset data = HandRoutedDataset(240, 16);
+  const DecentralizedRouting routing(AxisTable(4, 16));
+  const SimRunLog log = RunSimulation(data, routing, IdealParams(4));
+  // Robot r takes frames 60r .. 60r + 59 and sends frame f to robot f mod 4: in each block of
+  // 60, the 15 frames with f mod 4 = r stay home, 45 go out, one to each robot per 4 frames
+  // (15 to each of the 3 others). 4 x 45 = 180 queries, each answered by one match_t.
   const auto counts = CountByType(log);
-  EXPECT_EQ(counts.at("query_t"), remote);
-  EXPECT_EQ(counts.at("match_t"), remote);
+  EXPECT_EQ(counts.at("query_t"), 180);
+  EXPECT_EQ(counts.at("match_t"), 180);
   EXPECT_EQ(counts.size(), 2u);
-  EXPECT_EQ(log.queries.size(), static_cast<std::size_t>(data_.size()));
+  EXPECT_EQ(log.queries.size(), 240u);
+  std::map<std::pair<int, int>, int> queries;  // (src, dst) -> query_t messages
   for (const auto& m : log.messages) {
     // query_t with 16 floats: 8 fingerprint + 8 + 2 + 4 + 2 + 64 = 88; match_t: 35 (see test_messages).
     EXPECT_EQ(m.payload_bytes, m.type == "query_t" ? 88 : 35);
     EXPECT_FALSE(m.dropped);
     EXPECT_EQ(m.delivered_ns, m.sent_ns);  // ideal network: no delay
+    if (m.type == "query_t") ++queries[{m.src, m.dst}];
   }
+  ASSERT_EQ(queries.size(), 12u);  // every ordered pair of 4 robots
+  for (const auto& [pair, n] : queries) EXPECT_EQ(n, 15) << pair.first << " -> " << pair.second;
 }
 
 TEST_F(SimulationTest, BroadcastSendsToEveryOtherRobot) {
