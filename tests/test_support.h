@@ -1,14 +1,12 @@
 #pragma once
-// Small helpers shared by the test files: hand-made inputs and reading whole output files.
-#include <filesystem>
-#include <fstream>
+// Small helpers shared by the test files: hand-made inputs, and reading whole output files
+// (test_files.h).
 #include <initializer_list>
-#include <iterator>
-#include <string>
 #include <vector>
 
 #include "agents/descriptors.h"
 #include "agents/ids.h"
+#include "tests/test_files.h"
 
 namespace dvpr::testing_support {
 
@@ -24,12 +22,6 @@ inline std::vector<RobotId> Robots(std::initializer_list<int> ids) {
   std::vector<RobotId> out;
   for (int id : ids) out.push_back(RobotId(id));
   return out;
-}
-
-// The whole file, byte for byte ("" if it cannot be opened).
-inline std::string Slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 }  // namespace dvpr::testing_support
