@@ -218,21 +218,21 @@ StrategySpec TeamStrategy(const AgentProcessOptions& o, const ExperimentConfig& 
 Team LoadTeam(const AgentProcessOptions& o) {
   Team t;
   t.config = LoadConfig(o.config, o.overrides);
+  t.strategy = TeamStrategy(o, t.config);  // before the data: a typo fails at once
+  if (t.strategy.reclusters()) {
+    throw std::invalid_argument("--strategy: '" + t.strategy.name +
+                                "' re-clusters during the run, which dvpr agent does not implement; run it in the "
+                                "simulation (dvpr run)");
+  }
   t.inputs = LoadSharedInputs(t.config, o.config.string());
   t.inputs.config = &t.config;
   t.robots = o.robots.value_or(t.config.sweep.robots.front());
-  t.strategy = TeamStrategy(o, t.config);
   const auto frames = t.inputs.deployment.size();
   if (t.robots < 2 || t.robots > frames || t.robots > 32767) {
     throw std::invalid_argument("--robots: " + std::to_string(t.robots) + " robots for " + std::to_string(frames) +
                                 " frames (at least 2, at most one per frame)");
   }
   if (o.robot >= t.robots) throw std::invalid_argument("--robot " + std::to_string(o.robot) + " is not in a team of " + std::to_string(t.robots));
-  if (t.strategy.reclusters()) {
-    throw std::invalid_argument("--strategy: '" + t.strategy.name +
-                                "' re-clusters during the run, which dvpr agent does not implement; run it in the "
-                                "simulation (dvpr run)");
-  }
   // Built by every process from the same inputs, so the whole team routes alike.
   t.routing = BuildRunRouting(t.strategy, StrategyInputsOf(t.inputs), t.robots, o.run);
   t.key = TeamKey(t.config, t.inputs.deployment, t.routing.table.get(), t.strategy.name, t.robots, o.run);
