@@ -76,7 +76,7 @@ bool ReadTable(const Fields& f, Spec& s, Spec::Table table) {
   return true;
 }
 
-const std::array kRoutings = {
+constexpr std::array kRoutings = {
     Family{"multi_probe_", "multi_probe_M",
            [](const Fields& f, Spec& s) {
              if (f.size() != 1) return false;
@@ -102,7 +102,7 @@ const std::array kRoutings = {
 };
 
 // balanced_sample_ before balanced_: the first prefix that matches decides.
-const std::array kTables = {
+constexpr std::array kTables = {
     Family{"lpt_", "lpt_cC[_train]",
            [](const Fields& f, Spec& s) {
              if (f.size() > 2 || (f.size() == 2 && f[1] != "train")) return false;
@@ -123,7 +123,7 @@ const std::array kTables = {
 
 // Re-clustering starts from lpt_cC_train's table (no deployment knowledge) and combines with no
 // routing: the agents route by their current table.
-const Family kRecluster{"recluster_", "recluster_cC_pP", [](const Fields& f, Spec& s) {
+constexpr Family kRecluster{"recluster_", "recluster_cC_pP", [](const Fields& f, Spec& s) {
                           if (f.size() != 2) return false;
                           s.table = Spec::Table::kLpt;
                           s.loads_from_training = true;
