@@ -124,13 +124,13 @@ constexpr std::array kTables = {
 // Re-clustering starts from lpt_cC_train's table (no deployment knowledge) and combines with no
 // routing: the agents route by their current table.
 constexpr Family kRecluster{"recluster_", "recluster_cC_pP", [](const Fields& f, Spec& s) {
-                          if (f.size() != 2) return false;
-                          s.table = Spec::Table::kLpt;
-                          s.loads_from_training = true;
-                          s.clusters_per_robot = Whole(f[0], 'c', "C");
-                          s.recluster_period = Whole(f[1], 'p', "P");
-                          return true;
-                        }};
+  if (f.size() != 2) return false;
+  s.table = Spec::Table::kLpt;
+  s.loads_from_training = true;
+  s.clusters_per_robot = Whole(f[0], 'c', "C");
+  s.recluster_period = Whole(f[1], 'p', "P");
+  return true;
+}};
 
 template <typename Families>
 std::string Forms(const Families& families) {
