@@ -26,6 +26,7 @@ struct LoadBalanceParams {
   // < 0: LPT; >= 0: bounded loads with capacity (1 + epsilon) x the average expected load.
   double epsilon = -1.0;
   void Validate() const;  // throws std::invalid_argument naming the field
+  bool operator==(const LoadBalanceParams&) const = default;
 };
 
 // Per centroid: how many rows of `sample` have it as nearest centroid (ties to the lowest

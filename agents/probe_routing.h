@@ -34,6 +34,7 @@ struct MultiProbeParams {
   int probes = 2;          // at most this many centroids probed
   double epsilon = -1.0;   // < 0: always `probes` centroids; >= 0: only those within (1 + epsilon)
   void Validate() const;
+  bool operator==(const MultiProbeParams&) const = default;
 };
 
 class MultiProbeRouting final : public RoutingStrategy {
@@ -51,6 +52,7 @@ struct ReplicationParams {
   double epsilon = 0.1;    // replicate to owners of centroids within (1 + epsilon) of the nearest
   int max_replicas = 3;    // at most this many centroids (the nearest included)
   void Validate() const;
+  bool operator==(const ReplicationParams&) const = default;
 };
 
 class BoundaryReplicationRouting final : public RoutingStrategy {

@@ -11,7 +11,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "experiments/config/config_reader.h"
-#include "experiments/strategies/strategy_catalogue.h"
+#include "experiments/strategies/strategy_spec.h"
 
 namespace dvpr {
 
@@ -19,16 +19,6 @@ using config_detail::Field;
 using config_detail::Origin;
 
 namespace {
-
-std::vector<std::string>& StrategyRegistry() {
-  static std::vector<std::string> names = [] {
-    std::vector<std::string> v{"decentralized", "broadcast"};
-    const std::vector<std::string> beyond = BeyondPaperStrategyNames();  // issue 8's catalogue
-    v.insert(v.end(), beyond.begin(), beyond.end());
-    return v;
-  }();
-  return names;
-}
 
 template <typename Enum>
 Enum ReadEnum(const Field& f, const std::vector<std::string>& names) {
@@ -192,14 +182,30 @@ std::vector<std::string> ReadNames(const Field& f, const std::vector<std::string
   return names;
 }
 
+// Every name parsed into its spec now, so a typo fails before any run.
+std::vector<StrategySpec> ReadStrategies(const Field& f) {
+  std::vector<StrategySpec> specs;
+  for (const Field& item : f.Items()) {
+    StrategySpec spec;
+    try {
+      spec = ParseStrategy(item.String());
+    } catch (const std::invalid_argument& e) {
+      item.Fail(e.what());
+    }
+    for (const StrategySpec& s : specs) {
+      if (s.name == spec.name) item.Fail("listed twice");
+    }
+    specs.push_back(std::move(spec));
+  }
+  return specs;
+}
+
 SweepConfig ReadSweep(const Field& root) {
   SweepConfig s;
   if (auto c = root.Child("robots"); c.present()) s.robots = ReadRobots(c);
   if (auto c = root.Child("runs"); c.present()) s.runs = static_cast<int>(c.Int(1, 100000));
   if (auto c = root.Child("protocols"); c.present()) s.protocols = ReadNames(c, KnownProtocols());
-  if (auto c = root.Child("strategies"); c.present()) {
-    s.strategies = ReadNames(c, KnownStrategies());
-  }
+  if (auto c = root.Child("strategies"); c.present()) s.strategies = ReadStrategies(c);
   return s;
 }
 
@@ -304,11 +310,6 @@ void ApplyOverride(YAML::Node& root, const ConfigOverride& o, const std::string&
 const std::vector<std::string>& KnownProtocols() {
   static const std::vector<std::string> names{"paper", "sim"};
   return names;
-}
-const std::vector<std::string>& KnownStrategies() { return StrategyRegistry(); }
-void RegisterStrategyName(const std::string& name) {
-  auto& names = StrategyRegistry();
-  if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
 }
 
 ConfigOverride ParseOverride(const std::string& arg) {

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "experiments/data/synthetic.h"
+#include "experiments/strategies/strategy_spec.h"
 #include "net_models/units.h"
 #include "sim/sim_time.h"
 
@@ -86,7 +87,8 @@ struct SweepConfig {
   std::vector<int> robots{2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20};
   int runs = 10;
   std::vector<std::string> protocols{"paper", "sim"};
-  std::vector<std::string> strategies{"decentralized", "broadcast"};
+  // Parsed when the config is loaded: an unknown or malformed name is a ConfigError.
+  std::vector<StrategySpec> strategies{ParseStrategy("decentralized"), ParseStrategy("broadcast")};
   bool operator==(const SweepConfig&) const = default;
 };
 
@@ -187,11 +189,8 @@ struct ExperimentConfig {
   bool operator==(const ExperimentConfig&) const = default;
 };
 
-// Protocol and strategy names the config accepts. Strategies are an open list: a module that adds
-// a routing strategy calls RegisterStrategyName before configs are loaded.
+// Protocol names the config accepts (strategy names: ParseStrategy).
 const std::vector<std::string>& KnownProtocols();
-const std::vector<std::string>& KnownStrategies();
-void RegisterStrategyName(const std::string& name);
 
 // One `--set key.path=value` override; value is parsed as YAML (scalar, [list] or {map}).
 struct ConfigOverride {

@@ -85,7 +85,7 @@ void EmitSweep(YAML::Emitter& out, const SweepConfig& s) {
   out << YAML::Key << "protocols" << YAML::Value;
   EmitList(out, s.protocols, [](const std::string& x) { return x; });
   out << YAML::Key << "strategies" << YAML::Value;
-  EmitList(out, s.strategies, [](const std::string& x) { return x; });
+  EmitList(out, s.strategies, [](const StrategySpec& x) { return x.name; });
 }
 
 void EmitNetwork(YAML::Emitter& out, const NetworkConfig& n) {

@@ -17,6 +17,7 @@
 #include "experiments/config/config.h"
 #include "experiments/data/dataset.h"
 #include "experiments/results/results.h"
+#include "experiments/strategies/strategy_spec.h"
 
 namespace dvpr {
 
@@ -31,7 +32,7 @@ struct NetworkVariant {
 struct RunSpec {
   std::size_t index = 0;               // position in the sweep
   std::string protocol;                // paper | sim
-  std::vector<std::string> strategies; // as in the config
+  std::vector<StrategySpec> strategies; // as in the config
   int robots = 0;
   int run = 0;
   std::uint64_t seed = 0;

@@ -44,4 +44,12 @@ CentroidMatrix RunCentroids(const DescriptorMatrix& training, const RunCentroidP
   return KMeans(training, kmeans);
 }
 
+const CentroidMatrix& RunCentroidCache::Get(const DescriptorMatrix& training, const RunCentroidParams& params,
+                                            int robots, int run) {
+  const auto key = std::make_tuple(robots, run, params.clusters_per_robot);
+  auto it = computed_.find(key);
+  if (it == computed_.end()) it = computed_.emplace(key, RunCentroids(training, params, robots, run)).first;
+  return it->second;
+}
+
 }  // namespace dvpr

@@ -9,7 +9,9 @@
 // changing the thread count or the protocol, changes nothing else.
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
+#include <tuple>
 
 #include "agents/descriptors.h"
 #include "agents/kmeans.h"
@@ -35,5 +37,18 @@ std::filesystem::path ExpandCentroidPattern(const std::string& pattern, int robo
 // centroids were read from a file.
 CentroidMatrix RunCentroids(const DescriptorMatrix& training, const RunCentroidParams& params, int robots, int run,
                             std::uint64_t* seed_used = nullptr);
+
+// RunCentroids computed once per (robots, run, clusters per robot): the strategies of one run
+// that cluster the training set alike (decentralized, multi_probe_2, ...; lpt_c10 and
+// bounded_c10_0.25) share one k-means. RunCentroids is deterministic, so sharing changes no
+// result, only time. For one RunCentroidParams (seed, pattern, k-means settings); not
+// thread-safe: a run keeps its own.
+class RunCentroidCache {
+ public:
+  const CentroidMatrix& Get(const DescriptorMatrix& training, const RunCentroidParams& params, int robots, int run);
+
+ private:
+  std::map<std::tuple<int, int, int>, CentroidMatrix> computed_;
+};
 
 }  // namespace dvpr

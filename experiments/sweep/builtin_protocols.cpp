@@ -9,7 +9,8 @@
 #include "experiments/protocols/paper/static_protocol.h"
 #include "experiments/protocols/paper/static_recluster.h"
 #include "experiments/protocols/paper/static_strategies.h"
-#include "experiments/strategies/strategy_catalogue.h"
+#include "experiments/protocols/strategy_inputs.h"
+#include "experiments/strategies/run_routing.h"
 
 namespace dvpr {
 
@@ -51,21 +52,22 @@ RunResult PaperBroadcastRow(const RunSpec& spec, const PaperEvaluator& evaluator
   return row;
 }
 
-// A catalogued strategy (experiments/strategies/strategy_catalogue.h) in the static protocol: its table
-// for this run, then EvaluateRouting.
+// A strategy in the static protocol: its table and routing for this run, then the paper's own
+// evaluation of its table (decentralized; writes the run's centroids), of its re-clustering plan,
+// or of any routing.
 PaperRunResult PaperStrategyRun(const StrategySpec& spec, const RunSpec& run, const PaperEvaluator& evaluator,
-                                const DescriptorMatrix& training, const PaperProtocolParams& params) {
-  PaperProtocolParams table_params = params;
-  table_params.centroids_out_dir.clear();  // the paper run writes its own centroids
-  const auto table = BuildStrategyTable(spec, training, evaluator.deployment().descriptors, table_params,
-                                        run.robots, run.run);
-  PaperRunResult r =
-      spec.recluster_period > 0
-          ? EvaluateRecluster(evaluator,
-                              PlanStaticRecluster(evaluator.deployment().descriptors, table,
-                                                  ReclusterParamsOf(spec, params.seed, run.robots, run.run)),
-                              spec.name, params.keep_curves)
-          : EvaluateRouting(evaluator, *MakeSpecRouting(spec, table), spec.name, params.keep_curves);
+                                const StrategyInputs& inputs, const PaperProtocolParams& params) {
+  const RunRouting routing = BuildRunRouting(spec, inputs, run.robots, run.run);
+  const DescriptorMatrix& deployment = evaluator.deployment().descriptors;
+  PaperRunResult r;
+  if (spec.paper_method()) {
+    r = EvaluatePaperRun(evaluator, *routing.table, params, run.run);
+  } else if (routing.recluster) {
+    r = EvaluateRecluster(evaluator, PlanStaticRecluster(deployment, routing.table, *routing.recluster), spec.name,
+                          params.keep_curves);
+  } else {
+    r = EvaluateRouting(evaluator, *routing.routing, spec.name, params.keep_curves);
+  }
   r.row.key = run.Key(spec.name);
   r.row.seed = params.centroids_pattern.empty() ? RunSeed(params.seed, run.robots, run.run) : 0;
   for (auto& load : r.per_robot) load.key = r.row.key;
@@ -78,23 +80,21 @@ RunFunction MakePaperRun(const SharedInputs& in) {
   if (!params.centroids_out_dir.empty()) std::filesystem::create_directories(params.centroids_out_dir);
   auto evaluator = std::make_shared<const PaperEvaluator>(in.deployment, params.evaluation);
   const int pr_robots = PrRobots(*in.config);
-  const DescriptorMatrix* training = &in.training;
+  const StrategyInputs strategy_inputs = StrategyInputsOf(in);
   const std::int64_t frames = in.deployment.size();  // every frame is one query
-  return [params, evaluator, pr_robots, training, frames](const RunSpec& spec) {
+  return [params, evaluator, pr_robots, strategy_inputs, frames](const RunSpec& spec) {
     RunOutput out;
     PaperProtocolParams run_params = params;
     run_params.keep_curves = spec.robots == pr_robots && spec.run == 0;
-    for (const std::string& strategy : spec.strategies) {
-      if (strategy == "broadcast") {
+    RunCentroidCache centroids;  // the run's strategies on the paper's table cluster once
+    StrategyInputs run_inputs = strategy_inputs;
+    run_inputs.cache = &centroids;
+    for (const StrategySpec& strategy : spec.strategies) {
+      if (strategy.broadcast()) {
         out.runs.push_back(PaperBroadcastRow(spec, *evaluator, frames));
         continue;
       }
-      const StrategySpec* beyond = FindStrategySpec(strategy);
-      if (strategy != "decentralized" && !beyond) continue;  // a strategy the static protocol has no form of
-      PaperRunResult r = beyond ? PaperStrategyRun(*beyond, spec, *evaluator, *training, run_params)
-                                : RunPaperRun(*evaluator, *training, run_params, spec.robots, spec.run);
-      r.row.key = spec.Key(strategy);
-      for (auto& load : r.per_robot) load.key = r.row.key;
+      PaperRunResult r = PaperStrategyRun(strategy, spec, *evaluator, run_inputs, run_params);
       out.runs.push_back(r.row);
       std::move(r.per_robot.begin(), r.per_robot.end(), std::back_inserter(out.per_robot));
       if (run_params.keep_curves) {

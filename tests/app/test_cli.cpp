@@ -90,6 +90,12 @@ TEST_F(CliTest, BandwidthWithoutUnit) {
                     "bad.yaml: network.bandwidth: expected a data rate with a unit");
 }
 
+TEST_F(CliTest, MalformedStrategyName) {
+  ExpectConfigError(RunConfig("strategies: [decentralized, broadcast, multi_probe_x]\n"),
+                    "bad.yaml: strategies[2]: 'multi_probe_x' is not a strategy: M must be a whole number >= 1, "
+                    "got 'x'");
+}
+
 TEST_F(CliTest, DimLargerThanDescriptors) {
   std::ofstream(dir_ / "d.csv") << "1,2,3\n4,5,6\n7,8,9\n";
   std::ofstream poses(dir_ / "p.txt");
@@ -130,6 +136,15 @@ TEST_F(CliTest, AgentRefusesAStrategyItCannotRunInsteadOfRunningAnother) {
                         " --set training.synthetic.samples=2000 --out '" + (dir_ / "agent.log").string() + "'");
   EXPECT_NE(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("--strategy: 'recluster_c4_p50' re-clusters during the run"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "agent.log"));
+}
+
+TEST_F(CliTest, AgentRefusesAMalformedStrategyName) {
+  const std::string config = std::string(DVPR_SOURCE_DIR) + "/experiments/configs/paper_kitti00.yaml";
+  const Result r = Dvpr("agent --config '" + config + "' --robot 0 --robots 2 --strategy lpt_c04 --out '" +
+                        (dir_ / "agent.log").string() + "'");
+  EXPECT_NE(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("--strategy: 'lpt_c04' is not a strategy: C must be written c4"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "agent.log"));
 }
 

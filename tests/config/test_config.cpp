@@ -116,6 +116,40 @@ TEST_F(ConfigTest, UnitsRequired) {
   EXPECT_EQ(Parse("network: {mtu: 576}\n").network.mtu.at(0), Bytes(576));
 }
 
+TEST_F(ConfigTest, StrategiesAreParsedWhenTheConfigIsLoaded) {
+  const ExperimentConfig c = Parse("strategies: [broadcast, lpt_c4+multi_probe_2, recluster_c2_p50]\n");
+  ASSERT_EQ(c.sweep.strategies.size(), 3u);
+  EXPECT_TRUE(c.sweep.strategies[0].broadcast());
+  EXPECT_EQ(c.sweep.strategies[1].name, "lpt_c4+multi_probe_2");
+  EXPECT_EQ(c.sweep.strategies[1].table, StrategySpec::Table::kLpt);
+  EXPECT_EQ(c.sweep.strategies[1].clusters_per_robot, 4);
+  EXPECT_EQ(c.sweep.strategies[1].probe.probes, 2);
+  EXPECT_EQ(c.sweep.strategies[2].recluster_period, 50);
+  // The emitted config names them as written and reads back to the same specs.
+  const std::string yaml = EmitConfig(c);
+  const std::string line = "strategies: [broadcast, lpt_c4+multi_probe_2, recluster_c2_p50]\n";
+  EXPECT_NE(yaml.find(line), std::string::npos) << yaml;
+  EXPECT_EQ(Parse(line).sweep.strategies, c.sweep.strategies);
+  // Overrides go through the same parser.
+  EXPECT_EQ(Parse("", {ParseOverride("strategies=[sample_c2]")}).sweep.strategies.at(0).table,
+            StrategySpec::Table::kSampleKMeans);
+}
+
+TEST_F(ConfigTest, ABadStrategyNameIsAnErrorAtItsKeyPath) {
+  EXPECT_EQ(ErrorOf("strategies: [decentralized, broadcast, multi_probe_x]\n"),
+            "test.yaml: strategies[2]: 'multi_probe_x' is not a strategy: M must be a whole number >= 1, got 'x'");
+  EXPECT_EQ(ErrorOf("strategies: [decentralized, recluster_c0_p50]\n"),
+            "test.yaml: strategies[1]: 'recluster_c0_p50' is not a strategy: C must be a whole number >= 1, got 'c0'");
+  EXPECT_NE(ErrorOf("strategies: [lpt_c7, multiprobe_2]\n").find("strategies[1]: 'multiprobe_2' is not a strategy: unknown name"),
+            std::string::npos);
+  EXPECT_EQ(ErrorOf("strategies: [broadcast, broadcast]\n"), "test.yaml: strategies[1]: listed twice");
+  EXPECT_NE(ErrorOf("strategies: {a: 1}\n").find("strategies: expected a value or a list of values, got a map"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("", {ParseOverride("strategies=[decentralized, adaptive_probe_0.10]")})
+                .find("strategies[1]: 'adaptive_probe_0.10' is not a strategy: E must be written 0.1"),
+            std::string::npos);
+}
+
 TEST_F(ConfigTest, ErrorsAreOneLine) {
   for (const char* bad : {"network: {bandwith: 1Mbps}\n", "runs: 0\n", "robots: [1]\n",
                           "network: {bandwidth: 10}\n", "dataset: {source: files}\n"}) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "experiments/config/config.h"
+#include "experiments/strategies/run_centroids.h"
 #include "experiments/sweep/sweep.h"
 
 namespace dvpr {
@@ -30,7 +31,9 @@ TEST(Sweep, CrossProductCounts) {
   EXPECT_EQ(specs.front().network, nullptr);
   EXPECT_EQ(specs.back().protocol, "sim");
   EXPECT_EQ(specs.back().network->settings.latency, SimTime::Millis(9));
-  EXPECT_EQ(specs.back().strategies, (std::vector<std::string>{"decentralized", "broadcast"}));
+  ASSERT_EQ(specs.back().strategies.size(), 2u);
+  EXPECT_EQ(specs.back().strategies[0].name, "decentralized");
+  EXPECT_EQ(specs.back().strategies[1].name, "broadcast");
 }
 
 TEST(Sweep, IdealNetworkIsOneVariant) {

@@ -16,7 +16,8 @@
 #include "experiments/config/option_reader.h"
 #include "experiments/protocols/sim/sim_protocol.h"
 #include "experiments/data/split.h"
-#include "experiments/strategies/strategy_catalogue.h"
+#include "experiments/protocols/strategy_inputs.h"
+#include "experiments/strategies/run_routing.h"
 #include "net_models/wire_format.h"
 
 namespace dvpr {
@@ -67,13 +68,17 @@ std::int64_t WallUtime() {
 
 // Everything the agents of one team must agree on, hashed: if one process has
 // other data, centroids or parameters, it routes differently and must not join.
-std::int64_t TeamKey(const ExperimentConfig& c, const Dataset& data, const CentroidMatrix& centroids,
+// Broadcast has no table: its robots need no centroids in common.
+std::int64_t TeamKey(const ExperimentConfig& c, const Dataset& data, const CentroidTable* table,
                      const std::string& strategy, int robots, int run) {
   Fnv1a h;
   h.AddValue(robots);
   h.AddValue(run);
   h.Add(strategy.data(), strategy.size());
-  h.Add(centroids.data(), static_cast<std::size_t>(centroids.size()) * sizeof(float));
+  if (table != nullptr) {
+    const CentroidMatrix& centroids = table->centroids();
+    h.Add(centroids.data(), static_cast<std::size_t>(centroids.size()) * sizeof(float));
+  }
   h.Add(data.descriptors.data(), static_cast<std::size_t>(data.descriptors.size()) * sizeof(float));
   h.AddValue(data.fps);
   h.AddValue(c.evaluation.suppression_frames);
@@ -195,42 +200,42 @@ struct Team {
   ExperimentConfig config;
   SharedInputs inputs;
   int robots = 0;
-  std::string strategy;
-  std::shared_ptr<const CentroidTable> table;
-  const StrategySpec* own_table = nullptr;  // a catalogued strategy with its own table
+  StrategySpec strategy;
+  RunRouting routing;
   std::int64_t key = 0;
 };
+
+// --strategy, or the config's first strategy.
+StrategySpec TeamStrategy(const AgentProcessOptions& o, const ExperimentConfig& config) {
+  if (o.strategy.empty()) return config.sweep.strategies.front();
+  try {
+    return ParseStrategy(o.strategy);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("--strategy: ") + e.what());
+  }
+}
 
 Team LoadTeam(const AgentProcessOptions& o) {
   Team t;
   t.config = LoadConfig(o.config, o.overrides);
+  t.strategy = TeamStrategy(o, t.config);  // before the data: a typo fails at once
+  if (t.strategy.reclusters()) {
+    throw std::invalid_argument("--strategy: '" + t.strategy.name +
+                                "' re-clusters during the run, which dvpr agent does not implement; run it in the "
+                                "simulation (dvpr run)");
+  }
   t.inputs = LoadSharedInputs(t.config, o.config.string());
   t.inputs.config = &t.config;
   t.robots = o.robots.value_or(t.config.sweep.robots.front());
-  t.strategy = o.strategy.empty() ? t.config.sweep.strategies.front() : o.strategy;
   const auto frames = t.inputs.deployment.size();
   if (t.robots < 2 || t.robots > frames || t.robots > 32767) {
     throw std::invalid_argument("--robots: " + std::to_string(t.robots) + " robots for " + std::to_string(frames) +
                                 " frames (at least 2, at most one per frame)");
   }
   if (o.robot >= t.robots) throw std::invalid_argument("--robot " + std::to_string(o.robot) + " is not in a team of " + std::to_string(t.robots));
-  // The paper's table, or the strategy's own (issue 8's load-balanced tables), built by every
-  // process from the same inputs, so the whole team routes alike.
-  const StrategySpec* spec = FindStrategySpec(t.strategy);
-  if (spec && spec->recluster_period > 0) {
-    throw std::invalid_argument("--strategy: '" + t.strategy +
-                                "' re-clusters during the run, which dvpr agent does not implement; run it in the "
-                                "simulation (dvpr run)");
-  }
-  if (spec && spec->table != StrategySpec::Table::kPaper) {
-    t.own_table = spec;
-    t.table = BuildStrategyTable(*spec, t.inputs.training, t.inputs.deployment.descriptors, CentroidParams(t.config),
-                                 t.robots, o.run);
-  } else {
-    t.table = std::make_shared<const CentroidTable>(CentroidTable::RoundRobin(
-        RunCentroids(t.inputs.training, CentroidParams(t.config), t.robots, o.run), t.robots));
-  }
-  t.key = TeamKey(t.config, t.inputs.deployment, t.table->centroids(), t.strategy, t.robots, o.run);
+  // Built by every process from the same inputs, so the whole team routes alike.
+  t.routing = BuildRunRouting(t.strategy, StrategyInputsOf(t.inputs), t.robots, o.run);
+  t.key = TeamKey(t.config, t.inputs.deployment, t.routing.table.get(), t.strategy.name, t.robots, o.run);
   return t;
 }
 
@@ -250,7 +255,7 @@ AgentLog MakeLog(const AgentProcessOptions& o, const Team& t, const RobotAgent& 
   l.robot = o.robot;
   l.robots = t.robots;
   l.run = o.run;
-  l.strategy = t.strategy;
+  l.strategy = t.strategy.name;
   l.speedup = o.speedup;
   l.start_utime = start_utime;
   l.end_ns = transport.Now().ns();
@@ -286,7 +291,6 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   o.Validate();
   const Team t = LoadTeam(o);
   const Dataset& data = t.inputs.deployment;
-  const auto routing = t.own_table ? MakeSpecRouting(*t.own_table, t.table) : MakeStrategy(t.strategy, t.table, t.robots);
   const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), t.robots);
   const FrameRange range = split.ranges.at(static_cast<std::size_t>(o.robot));
 
@@ -299,7 +303,7 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   transport.SetReceiveFilter([&](const std::string& c, std::span<const std::uint8_t> b) { return traffic.OnReceive(c, b); });
   TeamSync sync(RobotId(o.robot), t.robots, t.key);
   Subscription status = transport.Subscribe<agent_status_t>(channels::kStatus, [&](const agent_status_t& s) { sync.OnStatus(s); });
-  RobotAgent agent(RobotId(o.robot), ToAgentParams(t.config), transport, *routing,
+  RobotAgent agent(RobotId(o.robot), ToAgentParams(t.config), transport, *t.routing.routing,
                    FrameStream{&data.descriptors, range.begin, range.size(), data.fps},
                    PoseOracle(data.trajectory.positions, t.config.evaluation.gt_radius_m));
 
@@ -345,7 +349,7 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
 
   const AgentLog log = MakeLog(o, t, agent, transport, sync, traffic, *start, end_reason);
   const std::filesystem::path path =
-      o.out.empty() ? std::filesystem::path("agent_" + t.strategy + "_n" + std::to_string(t.robots) + "_r" +
+      o.out.empty() ? std::filesystem::path("agent_" + t.strategy.name + "_n" + std::to_string(t.robots) + "_r" +
                                             std::to_string(o.run) + "_robot" + std::to_string(o.robot) + ".log")
                     : o.out;
   WriteAgentLog(path, log);

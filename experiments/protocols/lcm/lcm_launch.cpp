@@ -200,7 +200,7 @@ GatheredRun GatherTeam(const ExperimentConfig& config, const SharedInputs& input
   network.label.model = "lcm";
   RunSpec spec;
   spec.protocol = "lcm";
-  spec.strategies = {strategy};
+  spec.strategies = {ParseStrategy(strategy)};
   spec.robots = robots;
   spec.run = run;
   spec.seed = RunSeed(config.seed, robots, run);
@@ -223,12 +223,13 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
   const auto dir = o.out.empty() ? std::filesystem::path("results") / (config.name + "_lcm") : o.out;
   CreateOutputDir(dir / "agents");
   // Broadcast first: its AUC is every strategy's reference.
-  std::vector<std::string> strategies = config.sweep.strategies;
-  std::stable_partition(strategies.begin(), strategies.end(), [](const std::string& s) { return s == "broadcast"; });
+  std::vector<StrategySpec> strategies = config.sweep.strategies;
+  std::stable_partition(strategies.begin(), strategies.end(), [](const StrategySpec& s) { return s.broadcast(); });
 
   struct Team { std::string strategy; std::vector<Child> children; };
   std::vector<Team> teams;
-  for (const std::string& strategy : strategies) {
+  for (const StrategySpec& spec : strategies) {
+    const std::string& strategy = spec.name;
     Team team{strategy, {}};
     for (int r = 0; r < o.robots; ++r) {
       const auto stem = dir / "agents" / (strategy + "_robot" + std::to_string(r));

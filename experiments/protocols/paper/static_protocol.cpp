@@ -6,6 +6,7 @@
 #include <string>
 
 #include "experiments/data/npy.h"
+#include "experiments/strategies/run_routing.h"
 
 namespace dvpr {
 
@@ -119,25 +120,36 @@ void PaperEvaluator::FillResult(const std::string& strategy, PrResult pr, const 
   if (keep_curve) result.curve = PrCurve{strategy, robots, 0, std::move(pr.recall), std::move(pr.precision)};
 }
 
-PaperRunResult RunPaperRun(const PaperEvaluator& evaluator, const DescriptorMatrix& training,
-                           const PaperProtocolParams& params, int robots, int run) {
-  auto start = std::chrono::steady_clock::now();
-  std::uint64_t seed = 0;
-  CentroidMatrix centroids = RunCentroids(training, params, robots, run, &seed);
-  const double kmeans_s = SecondsSince(start);
-  PaperRunResult result = evaluator.Evaluate(CentroidTable::RoundRobin(centroids, robots),
-                                             params.keep_curves);
-  result.timings.kmeans_s = kmeans_s;
+PaperRunResult EvaluatePaperRun(const PaperEvaluator& evaluator, const CentroidTable& table,
+                                const PaperProtocolParams& params, int run) {
+  PaperRunResult result = evaluator.Evaluate(table, params.keep_curves);
+  const int robots = table.num_robots();
   result.row.key.run = run;
-  result.row.seed = seed;
+  result.row.seed = params.centroids_pattern.empty() ? RunSeed(params.seed, robots, run) : 0;
   for (auto& r : result.per_robot) r.key.run = run;
   result.curve.run = run;
+  result.centroids = table.centroids();
   if (!params.centroids_out_dir.empty()) {
-    start = std::chrono::steady_clock::now();
+    const auto start = std::chrono::steady_clock::now();
     WriteNpy(params.centroids_out_dir / ("centroids_n" + std::to_string(robots) + "_r" + std::to_string(run) + ".npy"),
-             centroids);
+             result.centroids);
     result.timings.io_s = SecondsSince(start);
   }
+  return result;
+}
+
+PaperRunResult RunPaperRun(const PaperEvaluator& evaluator, const DescriptorMatrix& training,
+                           const PaperProtocolParams& params, int robots, int run) {
+  const auto start = std::chrono::steady_clock::now();
+  StrategyInputs inputs;
+  inputs.training = &training;
+  inputs.deployment = &evaluator.deployment().descriptors;
+  inputs.fps = evaluator.deployment().fps;
+  inputs.centroids = static_cast<const RunCentroidParams&>(params);
+  const RunRouting paper = BuildRunRouting(ParseStrategy("decentralized"), inputs, robots, run);
+  const double kmeans_s = SecondsSince(start);
+  PaperRunResult result = EvaluatePaperRun(evaluator, *paper.table, params, run);
+  result.timings.kmeans_s = kmeans_s;
   return result;
 }
 

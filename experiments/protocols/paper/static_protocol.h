@@ -103,8 +103,15 @@ class PaperEvaluator {
   PaperTimings timings_;
 };
 
-// One (robots, run) of the sweep: centroids (k-means on `training` or loaded; `training` may be
-// empty when params.centroids_pattern is set), routing, metrics, centroids written if asked.
+// The paper's method in run `run` on `table`, the run's paper table (BuildRunRouting of
+// `decentralized`, experiments/strategies/run_routing.h): metrics, the row's run and seed (the
+// k-means seed RunSeed(params.seed, n, run); 0 when centroids were given), centroids written
+// if asked.
+PaperRunResult EvaluatePaperRun(const PaperEvaluator& evaluator, const CentroidTable& table,
+                                const PaperProtocolParams& params, int run);
+
+// One (robots, run) of the sweep: the paper table (k-means on `training` or loaded), then
+// EvaluatePaperRun.
 PaperRunResult RunPaperRun(const PaperEvaluator& evaluator, const DescriptorMatrix& training,
                            const PaperProtocolParams& params, int robots, int run);
 

@@ -11,16 +11,6 @@
 
 namespace dvpr {
 
-ReclusterParams ReclusterParamsOf(const StrategySpec& spec, std::uint64_t config_seed, int robots, int run) {
-  if (spec.recluster_period < 1) throw std::invalid_argument("strategies: '" + spec.name + "' does not re-cluster");
-  ReclusterParams p;
-  p.clusters_per_robot = spec.clusters_per_robot;
-  p.period = spec.recluster_period;
-  p.seed = RunSeed(config_seed, robots, run);
-  p.Validate();
-  return p;
-}
-
 bool StaticReclusterPlan::Candidates(std::int64_t i, std::int64_t j) const {
   const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
   const auto& r = route[static_cast<std::size_t>(std::max(epoch[ui], epoch[uj]))];

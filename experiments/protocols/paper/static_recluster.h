@@ -28,13 +28,8 @@
 #include "agents/centroid_table.h"
 #include "agents/recluster.h"
 #include "experiments/protocols/paper/static_protocol.h"
-#include "experiments/strategies/strategy_catalogue.h"
 
 namespace dvpr {
-
-// The parameters of a recluster_cC_pP strategy in run (robots, run): C, P, the sample stride and
-// k-means seeded from RunSeed(config seed, robots, run) (both protocols use the same).
-ReclusterParams ReclusterParamsOf(const StrategySpec& spec, std::uint64_t config_seed, int robots, int run);
 
 struct StaticReclusterPlan {
   ReclusterParams params;

@@ -4,12 +4,10 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "agents/decentralized_routing.h"
-#include "agents/recluster_agent.h"
+#include "experiments/evaluation/metrics.h"
 #include "experiments/protocols/sim/simulation.h"
-#include "experiments/data/split.h"
-#include "experiments/protocols/paper/static_recluster.h"
-#include "experiments/strategies/strategy_catalogue.h"
+#include "experiments/protocols/strategy_inputs.h"
+#include "experiments/strategies/run_routing.h"
 
 namespace dvpr {
 
@@ -58,25 +56,6 @@ SimRunParams ToSimParams(const ExperimentConfig& c, const RunSpec& spec) {
 std::string LogName(const RunSpec& spec, const std::string& strategy) {
   return "sim_" + strategy + "_n" + std::to_string(spec.robots) + "_r" + std::to_string(spec.run) + "_v" +
          std::to_string(spec.network->index) + ".lcmlog";
-}
-
-// Adaptive re-clustering (agents/recluster_agent.h): the team's plan for this run. The leader
-// waits half a period for the samples.
-std::unique_ptr<RoutingStrategy> MakeReclusterRouting(const StrategySpec& s, std::shared_ptr<const CentroidTable> initial,
-                                                      const Dataset& data, std::uint64_t config_seed,
-                                                      const RunSpec& spec) {
-  ReclusterPlan plan;
-  plan.params = ReclusterParamsOf(s, config_seed, spec.robots, spec.run);
-  plan.initial = std::move(initial);
-  const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), spec.robots);
-  int longest = 0;
-  for (const FrameRange& r : split.ranges) {
-    plan.stream_first.push_back(r.begin);
-    longest = std::max(longest, r.size());
-  }
-  plan.epochs = ReclusterEpochs(longest, plan.params);
-  plan.sample_timeout = SimTime::Seconds(0.5 * plan.params.period / data.fps);
-  return std::make_unique<ReclusterRouting>(std::move(plan));
 }
 
 }  // namespace
@@ -160,14 +139,6 @@ AgentParams ToAgentParams(const ExperimentConfig& c) {
   return p;
 }
 
-RunCentroidParams CentroidParams(const ExperimentConfig& c) {
-  RunCentroidParams p;
-  p.seed = c.seed;
-  p.clusters_per_robot = c.training.clusters_per_robot;
-  p.centroids_pattern = c.training.centroids.value_or("");
-  return p;
-}
-
 NetworkModelParams ToNetworkModelParams(const NetworkSettings& settings) {
   NetworkModelParams p;
   p.model = ToKind(settings.model);
@@ -188,62 +159,40 @@ NetworkModelParams ToNetworkModelParams(const NetworkSettings& settings) {
   return p;
 }
 
-std::unique_ptr<RoutingStrategy> MakeStrategy(const std::string& name, std::shared_ptr<const CentroidTable> table,
-                                              int robots) {
-  if (name == "broadcast") return std::make_unique<BroadcastRouting>(robots);
-  if (name == "decentralized") return std::make_unique<DecentralizedRouting>(std::move(table));
-  // Catalogued routings over the paper's table (issue 8); load-balanced tables are built per run.
-  if (const StrategySpec* s = FindStrategySpec(name); s && s->table == StrategySpec::Table::kPaper) {
-    return MakeSpecRouting(*s, std::move(table));
-  }
-  throw std::invalid_argument("strategies: '" + name + "' has no simulation form");
-}
-
 RunFunction MakeSimRun(const SharedInputs& in) {
   const ExperimentConfig* config = in.config;
   const Dataset* data = &in.deployment;
-  const DescriptorMatrix* training = &in.training;
   std::filesystem::path log_dir;
   if (config->outputs.lcm_log) {
     log_dir = in.out_dir / "lcm";
     std::filesystem::create_directories(log_dir);
   }
-  const RunCentroidParams centroid_params = CentroidParams(*config);
-  return [config, data, training, log_dir, centroid_params](const RunSpec& spec) {
-    auto table = std::make_shared<const CentroidTable>(
-        CentroidTable::RoundRobin(RunCentroids(*training, centroid_params, spec.robots, spec.run), spec.robots));
+  const StrategyInputs strategy_inputs = StrategyInputsOf(in);
+  return [config, data, log_dir, strategy_inputs](const RunSpec& spec) {
     SimRunParams params = ToSimParams(*config, spec);
-    const auto run_one = [&](const std::string& strategy) {
-      params.lcm_log = log_dir.empty() ? std::filesystem::path() : log_dir / LogName(spec, strategy);
-      const StrategySpec* own_table = FindStrategySpec(strategy);
-      if (own_table && own_table->table == StrategySpec::Table::kPaper) own_table = nullptr;
-      std::unique_ptr<RoutingStrategy> routing;
-      if (own_table) {
-        auto own = BuildStrategyTable(*own_table, *training, data->descriptors, centroid_params, spec.robots, spec.run);
-        routing = own_table->recluster_period > 0
-                      ? MakeReclusterRouting(*own_table, std::move(own), *data, centroid_params.seed, spec)
-                      : MakeSpecRouting(*own_table, std::move(own));
-      } else {
-        routing = MakeStrategy(strategy, table, spec.robots);
-      }
-      SimRunLog log = RunSimulation(*data, *routing, params);
+    RunCentroidCache centroids;  // the run's strategies on the paper's table cluster once
+    StrategyInputs run_inputs = strategy_inputs;
+    run_inputs.cache = &centroids;
+    const auto run_one = [&](const StrategySpec& strategy) {
+      params.lcm_log = log_dir.empty() ? std::filesystem::path() : log_dir / LogName(spec, strategy.name);
+      const RunRouting routing = BuildRunRouting(strategy, run_inputs, spec.robots, spec.run);
+      SimRunLog log = RunSimulation(*data, *routing.routing, params);
       SimRunSummary summary = SummarizeSimRun(log, data->trajectory.positions, config->evaluation.gt_radius_m,
                                               config->evaluation.suppression_frames);
       return std::make_pair(std::move(log), std::move(summary));
     };
     // Broadcast first: it is the reference of every strategy's relative AUC.
     RunOutput out;
-    const auto& wanted = spec.strategies;
-    auto [broadcast_log, broadcast] = run_one("broadcast");
-    for (const std::string& strategy : wanted) {
-      if (strategy == "broadcast") {
-        out.runs.push_back(MakeRow(spec, strategy, broadcast, broadcast.auc));
-        AppendRows(spec, strategy, broadcast_log, broadcast, *config, out);
+    auto [broadcast_log, broadcast] = run_one(ParseStrategy("broadcast"));
+    for (const StrategySpec& strategy : spec.strategies) {
+      if (strategy.broadcast()) {
+        out.runs.push_back(MakeRow(spec, strategy.name, broadcast, broadcast.auc));
+        AppendRows(spec, strategy.name, broadcast_log, broadcast, *config, out);
         continue;
       }
       auto [log, summary] = run_one(strategy);
-      out.runs.push_back(MakeRow(spec, strategy, summary, broadcast.auc));
-      AppendRows(spec, strategy, log, summary, *config, out);
+      out.runs.push_back(MakeRow(spec, strategy.name, summary, broadcast.auc));
+      AppendRows(spec, strategy.name, log, summary, *config, out);
     }
     return out;
   };

@@ -20,6 +20,7 @@
 #include "experiments/protocols/sim/sim_protocol.h"
 #include "experiments/data/split.h"
 #include "experiments/protocols/paper/static_protocol.h"
+#include "experiments/strategies/run_centroids.h"
 #include "lcm_test_support.h"
 
 namespace dvpr {
@@ -169,8 +170,12 @@ TEST_F(LcmTeamTest, LaunchedTeamMatchesTheIdealSimulation) {
   const ExperimentConfig config = Config();
   const SharedInputs inputs = LoadSharedInputs(config, ConfigPath());
   const Dataset& data = inputs.deployment;
-  const CentroidTable table = CentroidTable::RoundRobin(
-      RunCentroids(inputs.training, CentroidParams(config), kRobots, 0), kRobots);
+  // The paper's table of run 0: k-means as every protocol runs it (experiments/strategies/).
+  RunCentroidParams centroids;
+  centroids.seed = config.seed;
+  centroids.clusters_per_robot = config.training.clusters_per_robot;
+  centroids.centroids_pattern = config.training.centroids.value_or("");
+  const CentroidTable table = CentroidTable::RoundRobin(RunCentroids(inputs.training, centroids, kRobots, 0), kRobots);
   const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), kRobots);
   std::map<std::string, std::map<int, Row>> sim_rows, lcm_rows;
   for (const Row& r : ReadCsv(dir_ / "sim" / "queries.csv")) sim_rows[r.at("strategy")][std::stoi(r.at("frame"))] = r;

@@ -1,6 +1,6 @@
 // Adaptive re-clustering in the static protocol (experiments/protocols/paper/static_recluster.h): the max(e_i, e_j)
 // candidates rule, balance, where frames end up and the re-clustering bytes, on a six-frame
-// sequence with hand-made tables; the planner's own k-means tables on a 1-D toy; the names.
+// sequence with hand-made tables; the planner's own k-means tables on a 1-D toy.
 #include <algorithm>
 #include <memory>
 #include <string>
@@ -8,10 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "agents/decentralized_routing.h"
-#include "experiments/config/config.h"
 #include "experiments/protocols/paper/static_recluster.h"
 #include "experiments/protocols/paper/static_strategies.h"
-#include "experiments/strategies/strategy_catalogue.h"
 
 namespace dvpr {
 namespace {
@@ -161,33 +159,6 @@ TEST(StaticReclusterPlanner, ClustersTheSampleSeenBeforeTheBoundary) {
   EXPECT_EQ(t.migration_messages, 2);
   EXPECT_EQ(t.migration_bytes, 136);
   EXPECT_EQ(t.migrated, 8);
-}
-
-TEST(StaticReclusterNames, CatalogueAndConfig) {
-  const StrategySpec* s = FindStrategySpec("recluster_c4_p50");
-  ASSERT_NE(s, nullptr);
-  EXPECT_EQ(s->clusters_per_robot, 4);
-  EXPECT_EQ(s->recluster_period, 50);
-  EXPECT_EQ(s->table, StrategySpec::Table::kLpt);  // starts from lpt_c4_train's table
-  EXPECT_TRUE(s->loads_from_training);
-  ASSERT_NE(FindStrategySpec("recluster_c4_p100"), nullptr);
-  ASSERT_NE(FindStrategySpec("recluster_c2_p50"), nullptr);
-  const ReclusterParams p = ReclusterParamsOf(*s, 1, 10, 0);
-  EXPECT_EQ(p.period, 50);
-  EXPECT_EQ(p.clusters_per_robot, 4);
-  EXPECT_EQ(p.sample_stride, kReclusterSampleStride);
-  EXPECT_EQ(p.seed, RunSeed(1, 10, 0));
-  const auto& known = KnownStrategies();
-  EXPECT_NE(std::find(known.begin(), known.end(), "recluster_c2_p50"), known.end());
-  // A name outside the catalogue is a config error naming the key.
-  try {
-    ParseConfig("name: x\nstrategies: [decentralized, recluster_c0_p50]\n", DVPR_SOURCE_DIR, {}, "t.yaml");
-    FAIL() << "recluster_c0_p50 accepted";
-  } catch (const ConfigError& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find("strategies"), std::string::npos) << what;
-    EXPECT_NE(what.find("recluster_c0_p50"), std::string::npos) << what;
-  }
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// The static protocol for any routing strategy (experiments/protocols/paper/static_strategies.h) and the
-// strategy catalogue, on a six-frame sequence whose matches are worked out by hand.
+// The static protocol for any routing strategy (experiments/protocols/paper/static_strategies.h),
+// on a six-frame sequence whose matches are worked out by hand.
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -9,9 +9,7 @@
 
 #include "agents/decentralized_routing.h"
 #include "agents/probe_routing.h"
-#include "experiments/config/config.h"
 #include "experiments/protocols/paper/static_strategies.h"
-#include "experiments/strategies/strategy_catalogue.h"
 #include "experiments/evaluation/windowed_neighbours.h"
 
 namespace dvpr {
@@ -104,101 +102,6 @@ TEST(WindowedNeighboursWhere, EqualsBruteForceForAnyListSize) {
       }
     }
   }
-}
-
-TEST(StrategyCatalogue, NamesAreKnownToConfigsAndCarryTheirParameters) {
-  const StrategySpec* s = FindStrategySpec("lpt_c10+adaptive_probe_0.1");
-  ASSERT_NE(s, nullptr);
-  EXPECT_EQ(s->table, StrategySpec::Table::kLpt);
-  EXPECT_EQ(s->clusters_per_robot, 10);
-  EXPECT_EQ(s->routing, StrategySpec::Routing::kProbe);
-  EXPECT_EQ(s->probe.epsilon, 0.1);
-  const StrategySpec* b = FindStrategySpec("bounded_c10_0.25");
-  ASSERT_NE(b, nullptr);
-  EXPECT_EQ(b->balance.epsilon, 0.25);
-  EXPECT_EQ(FindStrategySpec("lpt_c7"), nullptr);
-  const auto& known = KnownStrategies();
-  for (const std::string& name : BeyondPaperStrategyNames()) {
-    EXPECT_NE(std::find(known.begin(), known.end(), name), known.end()) << name;
-  }
-}
-
-TEST(StrategyCatalogue, SampleTablesClusterWhereTheDeploymentIs) {
-  // Deployment: 20 frames at 0, then 20 at 100; the sample (frames 0 and 20) is {0, 100}, so
-  // k-means (k = min(2 x 2, 2 sample rows)) puts one centroid on each and LPT gives one per robot,
-  // whatever the training set says.
-  DescriptorMatrix deployment(40, 1);
-  for (int i = 0; i < 40; ++i) deployment(i, 0) = i < 20 ? 0.0f : 100.0f;
-  const DescriptorMatrix training = DescriptorMatrix::Constant(10, 1, 50.0f);
-  const StrategySpec* spec = FindStrategySpec("sample_c2");
-  ASSERT_NE(spec, nullptr);
-  const auto table = BuildStrategyTable(*spec, training, deployment, PaperProtocolParams{}, 2, 0);
-  EXPECT_EQ(table->num_centroids(), 2);
-  const float a = 1, b = 99;
-  EXPECT_NE(table->RouteOf(&a), table->RouteOf(&b));
-}
-
-// The lopsided set of tests/agents/test_balanced_kmeans.cpp: plain k-means (k = 2) puts the
-// outlier 100 alone (centroids 4.8 and 100), balanced k-means splits 3 + 3 (centroids 1 and
-// 40.33). A query at 30 is nearest 4.8 in the first table (25.2 < 70) but 40.33 in the second
-// (10.33 < 29): it then goes to the robot that owns 100's cluster, not 1's.
-DescriptorMatrix Lopsided() {
-  DescriptorMatrix x(6, 1);
-  x << 0, 1, 2, 10, 11, 100;
-  return x;
-}
-
-TEST(StrategyCatalogue, BalancedTablesSplitTheTrainingSetIntoEqualClusters) {
-  const StrategySpec* spec = FindStrategySpec("balanced_c1");
-  ASSERT_NE(spec, nullptr);
-  EXPECT_EQ(spec->table, StrategySpec::Table::kBalanced);
-  const DescriptorMatrix training = Lopsided();
-  const DescriptorMatrix deployment = DescriptorMatrix::Constant(10, 1, 50.0f);
-  const auto balanced = BuildStrategyTable(*spec, training, deployment, PaperProtocolParams{}, 2, 0);
-  ASSERT_EQ(balanced->num_centroids(), 2);
-  const float one = 1, thirty = 30, hundred = 100;
-  EXPECT_NE(balanced->RouteOf(&thirty), balanced->RouteOf(&one));
-  EXPECT_EQ(balanced->RouteOf(&thirty), balanced->RouteOf(&hundred));
-  // The paper's table on the same training set sends 30 with 1.
-  const auto paper = BuildStrategyTable(*FindStrategySpec("replicate_0.1"), training, deployment, PaperProtocolParams{}, 2, 0);
-  EXPECT_EQ(paper->RouteOf(&thirty), paper->RouteOf(&one));
-  EXPECT_NE(paper->RouteOf(&thirty), paper->RouteOf(&hundred));
-}
-
-TEST(StrategyCatalogue, BalancedSampleTablesSplitTheDeploymentSample) {
-  // 101 deployment frames whose every 20th frame is the lopsided set; the training set is
-  // irrelevant. balanced_sample_c1 clusters the sample into 3 + 3 as above; sample_c2 is not
-  // comparable (k = 4), so the paper-like contrast is plain k-means on the same sample.
-  DescriptorMatrix deployment = DescriptorMatrix::Constant(101, 1, 50.0f);
-  const DescriptorMatrix lopsided = Lopsided();
-  for (int i = 0; i < 6; ++i) deployment(i * 20, 0) = lopsided(i, 0);
-  const DescriptorMatrix training = DescriptorMatrix::Constant(10, 1, -7.0f);
-  const StrategySpec* spec = FindStrategySpec("balanced_sample_c1+replicate_0.5_r5");
-  ASSERT_NE(spec, nullptr);
-  EXPECT_EQ(spec->table, StrategySpec::Table::kBalancedSample);
-  EXPECT_EQ(spec->routing, StrategySpec::Routing::kReplicate);
-  const auto table = BuildStrategyTable(*spec, training, deployment, PaperProtocolParams{}, 2, 0);
-  ASSERT_EQ(table->num_centroids(), 2);
-  const float one = 1, thirty = 30, hundred = 100;
-  EXPECT_NE(table->RouteOf(&thirty), table->RouteOf(&one));
-  EXPECT_EQ(table->RouteOf(&thirty), table->RouteOf(&hundred));
-  // Replication within 1.5 x the nearest distance: 30 is 10.33 from 40.33 and 29 from 1
-  // (29 > 15.5): stored at one robot; 20 is 19 from 1 and 20.33 from 40.33 (<= 28.5): at both.
-  const auto routing = MakeSpecRouting(*spec, table);
-  EXPECT_EQ(routing->Route(RobotId(0), &thirty).store_at.size(), 1U);
-  const float twenty = 20;
-  EXPECT_EQ(routing->Route(RobotId(0), &twenty).store_at.size(), 2U);
-  EXPECT_EQ(routing->Route(RobotId(0), &twenty).search_at.size(), 1U);
-}
-
-TEST(StrategyCatalogue, DeploymentSampleTakesEveryTwentiethFrame) {
-  DescriptorMatrix x(41, 1);
-  for (int i = 0; i < 41; ++i) x(i, 0) = static_cast<float>(i);
-  const DescriptorMatrix s = DeploymentSample(x);
-  ASSERT_EQ(s.rows(), 3);
-  EXPECT_EQ(s(0, 0), 0.0f);
-  EXPECT_EQ(s(1, 0), 20.0f);
-  EXPECT_EQ(s(2, 0), 40.0f);
 }
 
 }  // namespace

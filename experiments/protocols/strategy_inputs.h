@@ -1,0 +1,14 @@
+#pragma once
+// What BuildRunRouting (experiments/strategies/run_routing.h) builds every run's table from,
+// taken from the inputs and config a protocol is given, so the paper, sim and lcm protocols
+// build a strategy from the same data and settings.
+#include "experiments/protocols/run.h"
+#include "experiments/strategies/run_routing.h"
+
+namespace dvpr {
+
+// Points into `inputs` (which must outlive the result); inputs.config must be set. Centroids:
+// the config's seed, training.clusters_per_robot and training.centroids files; no cache.
+StrategyInputs StrategyInputsOf(const SharedInputs& inputs);
+
+}  // namespace dvpr

@@ -1,0 +1,127 @@
+#include "experiments/strategies/run_routing.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+#include "agents/balanced_kmeans.h"
+#include "agents/decentralized_routing.h"
+#include "agents/kmeans.h"
+#include "agents/load_balanced_table.h"
+#include "agents/probe_routing.h"
+#include "agents/recluster_agent.h"
+#include "experiments/data/split.h"
+#include "experiments/strategies/deployment_sample.h"
+
+namespace dvpr {
+
+namespace {
+
+using Table = StrategySpec::Table;
+
+int ClustersPerRobot(const StrategySpec& spec, const StrategyInputs& in) {
+  return spec.clusters_per_robot > 0 ? spec.clusters_per_robot : in.centroids.clusters_per_robot;
+}
+
+// The run's k-means on the training set (or its centroid file), through the run's cache if any.
+CentroidMatrix TrainingCentroids(const StrategySpec& spec, const StrategyInputs& in, int robots, int run) {
+  RunCentroidParams params = in.centroids;
+  params.clusters_per_robot = ClustersPerRobot(spec, in);
+  if (in.cache != nullptr) return in.cache->Get(*in.training, params, robots, run);
+  return RunCentroids(*in.training, params, robots, run);
+}
+
+// k-means settings of a table's own clustering, seeded as the run's k-means.
+KMeansParams OwnKMeans(const StrategyInputs& in, int k, int robots, int run) {
+  KMeansParams kmeans = in.centroids.kmeans;
+  kmeans.k = k;
+  kmeans.seed = RunSeed(in.centroids.seed, robots, run);
+  return kmeans;
+}
+
+// sample_ and balanced_sample_: the clusters follow where the deployment actually is, so no
+// cluster holds half the team's frames; the sample (shared at start) also gives the loads.
+CentroidTable SampleTable(const StrategySpec& spec, const StrategyInputs& in, int robots, int run) {
+  const DescriptorMatrix sample = DeploymentSample(*in.deployment);
+  const KMeansParams kmeans =
+      OwnKMeans(in, std::min<int>(robots * ClustersPerRobot(spec, in), static_cast<int>(sample.rows())), robots, run);
+  CentroidMatrix centroids =
+      spec.table == Table::kBalancedSample ? BalancedKMeans(sample, kmeans) : KMeans(sample, kmeans);
+  return LoadBalancedTable(std::move(centroids), sample, robots, spec.balance);
+}
+
+CentroidTable BuildTable(const StrategySpec& spec, const StrategyInputs& in, int robots, int run) {
+  switch (spec.table) {
+    case Table::kPaper: return CentroidTable::RoundRobin(TrainingCentroids(spec, in, robots, run), robots);
+    case Table::kSampleKMeans:
+    case Table::kBalancedSample: return SampleTable(spec, in, robots, run);
+    case Table::kBalanced:
+      // Equal-size clusters of the training set: equal loads as far as the deployment looks like it.
+      return CentroidTable::RoundRobin(
+          BalancedKMeans(*in.training, OwnKMeans(in, robots * ClustersPerRobot(spec, in), robots, run)), robots);
+    case Table::kLpt:
+    case Table::kBounded: {
+      const DescriptorMatrix loads = spec.loads_from_training ? *in.training : DeploymentSample(*in.deployment);
+      return LoadBalancedTable(TrainingCentroids(spec, in, robots, run), loads, robots, spec.balance);
+    }
+  }
+  throw std::logic_error("BuildRunRouting: unknown table kind");
+}
+
+// recluster_cC_pP in run (robots, run); both protocols plan with these.
+ReclusterParams ReclusterParamsOf(const StrategySpec& spec, const StrategyInputs& in, int robots, int run) {
+  ReclusterParams p;
+  p.clusters_per_robot = ClustersPerRobot(spec, in);
+  p.period = spec.recluster_period;
+  p.seed = RunSeed(in.centroids.seed, robots, run);
+  p.Validate();
+  return p;
+}
+
+// What the re-clustering team agrees on before the run (agents/recluster_agent.h). The leader
+// waits half a period for the samples.
+ReclusterPlan ReclusterPlanOf(const ReclusterParams& params, std::shared_ptr<const CentroidTable> initial,
+                              const StrategyInputs& in, int robots) {
+  ReclusterPlan plan;
+  plan.params = params;
+  plan.initial = std::move(initial);
+  const SequenceSplit split = SplitSequence(static_cast<int>(in.deployment->rows()), robots);
+  int longest = 0;
+  for (const FrameRange& r : split.ranges) {
+    plan.stream_first.push_back(r.begin);
+    longest = std::max(longest, r.size());
+  }
+  plan.epochs = ReclusterEpochs(longest, plan.params);
+  plan.sample_timeout = SimTime::Seconds(0.5 * plan.params.period / in.fps);
+  return plan;
+}
+
+}  // namespace
+
+RunRouting BuildRunRouting(const StrategySpec& spec, const StrategyInputs& in, int robots, int run) {
+  if (in.training == nullptr || in.deployment == nullptr) {
+    throw std::invalid_argument("BuildRunRouting: StrategyInputs needs the training and deployment descriptors");
+  }
+  RunRouting r;
+  if (spec.broadcast()) {  // no table: every robot searches, each keeps its own frames
+    r.routing = std::make_unique<BroadcastRouting>(robots);
+    return r;
+  }
+  r.table = std::make_shared<const CentroidTable>(BuildTable(spec, in, robots, run));
+  if (spec.reclusters()) {
+    r.recluster = ReclusterParamsOf(spec, in, robots, run);
+    r.routing = std::make_unique<ReclusterRouting>(ReclusterPlanOf(*r.recluster, r.table, in, robots));
+    return r;
+  }
+  switch (spec.routing) {
+    case StrategySpec::Routing::kNearest: r.routing = std::make_unique<DecentralizedRouting>(r.table); break;
+    case StrategySpec::Routing::kProbe: r.routing = std::make_unique<MultiProbeRouting>(r.table, spec.probe); break;
+    case StrategySpec::Routing::kReplicate:
+      r.routing = std::make_unique<BoundaryReplicationRouting>(r.table, spec.replicate);
+      break;
+    case StrategySpec::Routing::kBroadcast: break;  // above
+  }
+  return r;
+}
+
+}  // namespace dvpr

@@ -1,0 +1,43 @@
+#pragma once
+// The one place a strategy becomes objects: BuildRunRouting turns a StrategySpec
+// (strategy_spec.h) into the centroid table and the routing of one run (robots, run). The paper
+// protocol, the simulation and `dvpr agent` all call it, so a name means the same in each.
+//
+// Tables (docs/strategies.md): the paper's is k-means on the training set (RunCentroids, k = n x
+// the config's clusters per robot) with centroid c owned by robot c mod n; lpt_ and bounded_
+// cluster the same way with their own C and pack the clusters on expected loads (from the
+// deployment sample, or the training set for _train); sample_ and balanced_sample_ cluster the
+// deployment sample (seeded RunSeed as the run's k-means); balanced_ runs balanced k-means on the
+// training set, round robin.
+#include <memory>
+#include <optional>
+
+#include "agents/centroid_table.h"
+#include "agents/recluster.h"
+#include "agents/routing.h"
+#include "experiments/strategies/run_centroids.h"
+#include "experiments/strategies/strategy_spec.h"
+
+namespace dvpr {
+
+// What the tables of every run are built from: the inputs the runs of a config share.
+struct StrategyInputs {
+  const DescriptorMatrix* training = nullptr;    // k-means' input (empty when centroid files are given)
+  const DescriptorMatrix* deployment = nullptr;  // sample tables' input; re-clustering splits its frames
+  double fps = 10.0;                             // frames per second: the re-clustering leader's timeout
+  RunCentroidParams centroids;                   // config seed, clusters per robot, centroid files
+  RunCentroidCache* cache = nullptr;             // optional, one per run: k-means shared by its strategies
+};
+
+struct RunRouting {
+  std::shared_ptr<const CentroidTable> table;  // null for broadcast; the start table when re-clustering
+  std::unique_ptr<RoutingStrategy> routing;
+  // Set when the strategy re-clusters: C, P, the sample stride, seed RunSeed(config seed, robots,
+  // run). The static protocol plans the epochs from these and the start table.
+  std::optional<ReclusterParams> recluster;
+};
+
+// Throws std::invalid_argument when an input it needs is missing or the centroid files do not fit.
+RunRouting BuildRunRouting(const StrategySpec& spec, const StrategyInputs& inputs, int robots, int run);
+
+}  // namespace dvpr
