@@ -7,6 +7,6 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 BUILD=build/asan
 JOBS=$(nproc)
-cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDVPR_SANITIZE=ON -DDVPR_BUILD_BENCH=OFF >/dev/null
+cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDVPR_SANITIZE=ON -DDVPR_WERROR=ON -DDVPR_BUILD_BENCH=OFF >/dev/null
 cmake --build "$BUILD" -j "$JOBS"
 ctest --test-dir "$BUILD" --output-on-failure -j "$JOBS" --timeout 600

@@ -1,27 +1,18 @@
 #pragma once
-// Small helpers shared by the test files: hand-made inputs, and reading whole output files
-// (test_files.h).
-#include <initializer_list>
-#include <vector>
-
-#include "agents/descriptors.h"
-#include "agents/ids.h"
-#include "tests/test_files.h"
+// Small helpers shared by the test files of every module: reading whole output files. Nothing
+// here includes a project header, so a test of any layer can use it (descriptor_support.h has
+// the helpers that need agents/).
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 
 namespace dvpr::testing_support {
 
-// A d = 1 descriptor matrix with one row per value.
-inline DescriptorMatrix Column(std::initializer_list<float> values) {
-  DescriptorMatrix m(static_cast<Eigen::Index>(values.size()), 1);
-  Eigen::Index i = 0;
-  for (float v : values) m(i++, 0) = v;
-  return m;
-}
-
-inline std::vector<RobotId> Robots(std::initializer_list<int> ids) {
-  std::vector<RobotId> out;
-  for (int id : ids) out.push_back(RobotId(id));
-  return out;
+// The whole file, byte for byte ("" if it cannot be opened).
+inline std::string Slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 }  // namespace dvpr::testing_support

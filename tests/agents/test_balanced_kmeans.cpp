@@ -10,7 +10,7 @@
 #include "agents/balanced_kmeans.h"
 #include "agents/kmeans.h"
 #include "sim/random_bits.h"
-#include "tests/test_support.h"
+#include "tests/descriptor_support.h"
 
 namespace dvpr {
 namespace {

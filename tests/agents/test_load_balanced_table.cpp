@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "agents/load_balanced_table.h"
-#include "tests/test_support.h"
+#include "tests/descriptor_support.h"
 
 namespace dvpr {
 namespace {

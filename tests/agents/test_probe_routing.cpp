@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "agents/probe_routing.h"
-#include "tests/test_support.h"
+#include "tests/descriptor_support.h"
 
 namespace dvpr {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "agents/descriptor_index.h"
 #include "agents/recluster.h"
-#include "tests/test_support.h"
+#include "tests/descriptor_support.h"
 
 namespace dvpr {
 namespace {

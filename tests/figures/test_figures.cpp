@@ -9,6 +9,7 @@
 
 #include "experiments/figures/figures.h"
 #include "experiments/results/result_writers.h"
+#include "tests/descriptor_support.h"
 #include "tests/test_support.h"
 
 namespace dvpr {

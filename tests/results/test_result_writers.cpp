@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "experiments/results/result_writers.h"
-#include "tests/test_files.h"
+#include "tests/test_support.h"
 
 namespace dvpr {
 namespace {

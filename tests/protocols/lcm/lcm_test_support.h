@@ -35,7 +35,14 @@ inline std::string IsolateNetwork() {
   return "";
 }
 
-inline std::string Url(int port) { return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0"; }
+// recv_buf_size: every agent receives every datagram of the group (LCM's udpm filters channels
+// after receipt), 25 kB verification requests among them. With the kernel's default 208 KiB
+// socket buffer, an agent process starved for a moment on a loaded machine overflowed it and the
+// kernel dropped datagrams (seen as dropped_messages > 0 and a verification that never ended).
+// 4 MiB is what LCM's documentation advises for udpm (the kernel caps it at net.core.rmem_max).
+inline std::string Url(int port) {
+  return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0&recv_buf_size=4194304";
+}
 
 // The small team every test runs: KITTI 00's first 300 frames, a short
 // suppression window so matches exist, a small training set for a quick
@@ -75,8 +82,9 @@ inline pid_t Spawn(const std::vector<std::string>& argv, const fs::path& log) {
   return pid;
 }
 
+// grace_s: wall seconds a robot waits after the team's last frame (dvpr agent --grace).
 inline std::vector<std::string> AgentArgv(int robot, int robots, const std::string& strategy, int port,
-                                          double speedup, const fs::path& log) {
+                                          double speedup, const fs::path& log, double grace_s = 2.0) {
   std::vector<std::string> a{Dvpr(), "agent", "--config", ConfigPath()};
   for (const auto& s : SmallConfigSets()) {
     a.push_back("--set");
@@ -85,7 +93,8 @@ inline std::vector<std::string> AgentArgv(int robot, int robots, const std::stri
   for (const std::string& s : {std::string("--robot"), std::to_string(robot), std::string("--robots"),
                                std::to_string(robots), std::string("--strategy"), strategy, std::string("--lcm"),
                                Url(port), std::string("--speedup"), std::to_string(speedup),
-                               std::string("--out"), log.string()}) {
+                               std::string("--out"), log.string(), std::string("--grace"),
+                               std::to_string(grace_s)}) {
     a.push_back(s);
   }
   return a;
