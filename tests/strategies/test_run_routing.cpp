@@ -11,7 +11,7 @@
 #include "experiments/data/npy.h"
 #include "experiments/strategies/deployment_sample.h"
 #include "experiments/strategies/run_routing.h"
-#include "tests/test_support.h"
+#include "tests/descriptor_support.h"
 
 namespace dvpr {
 namespace {
