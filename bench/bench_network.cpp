@@ -10,6 +10,7 @@
 
 #include "agents/channels.h"
 #include "agents/sim_transport.h"
+#include "experiments/protocols/sim/message_rows.h"
 #include "net_models/network.h"
 #include "net_models/point_to_point_link.h"
 #include "sim/random.h"
@@ -95,7 +96,10 @@ void BM_Kitti100BroadcastNetwork(benchmark::State& state) {
   for (auto _ : state) {
     Simulator sim;
     Network net(sim, robots, PointToPoint(robots));
-    net.EnableRecords(records);
+    // With records: the messages.csv rows a simulation keeps, through the network's hooks.
+    MessageRowRecorder rows;
+    ObserverSubscription subscription;
+    if (records) subscription = net.Subscribe(rows);
     const ChannelId query = net.InternChannel(channels::kQueryAll);
     std::vector<ChannelId> match;
     for (int r = 0; r < robots; ++r) match.push_back(net.InternChannel(channels::Match(RobotId(r))));

@@ -14,15 +14,13 @@ std::string_view ToString(DropReason reason) {
   return "unknown";
 }
 
-void LinkModel::Transmit(const LinkTransmission& t, std::span<LinkDelivery> out) {
+LinkModel::MediumUse LinkModel::Transmit(const LinkTransmission& t, std::span<LinkDelivery> out) {
   if (out.size() != t.dsts.size()) {
     throw std::logic_error("LinkModel::Transmit: one outcome slot per destination expected");
   }
   if (t.frames.empty()) throw std::logic_error("LinkModel::Transmit: a message has at least one frame");
   for (LinkDelivery& d : out) d = LinkDelivery{t.now, DropReason::kNone};
-  const MediumUse use = DoTransmit(t, out);
-  transmissions_ += use.transmissions;
-  transmitted_bytes_ += use.bytes;
+  return DoTransmit(t, out);
 }
 
 }  // namespace dvpr

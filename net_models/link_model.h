@@ -6,8 +6,9 @@
 // scheduling an event per packet, which keeps the message path fast.
 //
 // LinkModel::Transmit is the public, non-virtual entry point (NVI): it checks
-// the request, resets the outcomes and keeps the link-layer counters; each
-// model implements only DoTransmit.
+// the request, resets the outcomes and reports what the message put on the
+// media; each model implements only DoTransmit. A model keeps no totals: the
+// Network counts, per sender, what Transmit reports (one byte counter).
 #include <cstdint>
 #include <span>
 #include <string_view>
@@ -43,33 +44,27 @@ struct LinkDelivery {
 
 class LinkModel {
  public:
-  virtual ~LinkModel() = default;
-
-  // Fills out[i] with the outcome for t.dsts[i] (out.size() == t.dsts.size()).
-  void Transmit(const LinkTransmission& t, std::span<LinkDelivery> out);
-
-  // "ideal", "point_to_point", "shared_medium", "bernoulli(point_to_point)", ...
-  std::string_view Name() const { return DoName(); }
-
-  // Transmissions put on a medium (a point-to-point copy per destination, one
-  // per message on a shared medium) and the frame bytes they carried.
-  std::uint64_t Transmissions() const { return transmissions_; }
-  Bytes TransmittedBytes() const { return transmitted_bytes_; }
-
- protected:
-  // What one DoTransmit call put on the media.
+  // What one message put on the media: transmissions counts every copy handed
+  // to a medium (a point-to-point copy per destination, one per message on a
+  // shared medium), even one the sender's queue refused; bytes counts the
+  // frames that went on the air (a frame lost on the channel did).
   struct MediumUse {
     std::uint64_t transmissions = 0;
     Bytes bytes;
   };
 
+  virtual ~LinkModel() = default;
+
+  // Fills out[i] with the outcome for t.dsts[i] (out.size() == t.dsts.size()).
+  MediumUse Transmit(const LinkTransmission& t, std::span<LinkDelivery> out);
+
+  // "ideal", "point_to_point", "shared_medium", "bernoulli(point_to_point)", ...
+  std::string_view Name() const { return DoName(); }
+
  private:
   // out[i] arrives preset to {t.now, kNone}.
   virtual MediumUse DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) = 0;
   virtual std::string_view DoName() const = 0;
-
-  std::uint64_t transmissions_ = 0;
-  Bytes transmitted_bytes_;
 };
 
 }  // namespace dvpr

@@ -43,9 +43,7 @@ std::uint64_t LossyLink::FramesLost() const {
 }
 
 LinkModel::MediumUse LossyLink::DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) {
-  const std::uint64_t transmissions_before = inner_->Transmissions();
-  const Bytes bytes_before = inner_->TransmittedBytes();
-  inner_->Transmit(t, out);
+  const MediumUse use = inner_->Transmit(t, out);
   for (std::size_t i = 0; i < out.size(); ++i) {
     Pair& pair = pairs_[Index(t.src, t.dsts[i])];
     if (out[i].drop != DropReason::kNone || !pair.loss) continue;
@@ -55,7 +53,7 @@ LinkModel::MediumUse LossyLink::DoTransmit(const LinkTransmission& t, std::span<
     for (std::size_t f = 0; f < t.frames.size(); ++f) lost = pair.loss->IsLost(pair.rng) || lost;
     if (lost) out[i].drop = DropReason::kLoss;
   }
-  return MediumUse{inner_->Transmissions() - transmissions_before, inner_->TransmittedBytes() - bytes_before};
+  return use;  // a lost frame was on the air all the same
 }
 
 }  // namespace dvpr

@@ -1,18 +1,30 @@
 #include "net_models/network.h"
 
 #include <algorithm>
-#include <limits>
 #include <stdexcept>
+#include <utility>
 
-#include "net_models/lcm_event_log.h"
 #include "sim/simulator.h"
 
 namespace dvpr {
-namespace {
 
-constexpr std::uint32_t kNoRecord = std::numeric_limits<std::uint32_t>::max();
+ObserverSubscription::ObserverSubscription(ObserverSubscription&& other) noexcept
+    : network_(std::exchange(other.network_, nullptr)), observer_(std::exchange(other.observer_, nullptr)) {}
 
-}  // namespace
+ObserverSubscription& ObserverSubscription::operator=(ObserverSubscription&& other) noexcept {
+  if (this != &other) {
+    Reset();
+    network_ = std::exchange(other.network_, nullptr);
+    observer_ = std::exchange(other.observer_, nullptr);
+  }
+  return *this;
+}
+
+void ObserverSubscription::Reset() {
+  if (network_ != nullptr) network_->Unsubscribe(observer_);
+  network_ = nullptr;
+  observer_ = nullptr;
+}
 
 Network::Network(Simulator& sim, int nodes, std::unique_ptr<LinkModel> link, WireParams wire)
     : sim_(sim), nodes_(nodes), link_(std::move(link)), wire_(wire) {
@@ -81,6 +93,16 @@ bool Network::IsOnline(NodeId node, SimTime at) const {
   return at < offline_from_[i] || at >= offline_until_[i];
 }
 
+ObserverSubscription Network::Subscribe(NetworkObserver& observer) {
+  observers_.push_back(&observer);
+  return ObserverSubscription(this, &observer);
+}
+
+void Network::Unsubscribe(NetworkObserver* observer) {
+  const auto it = std::find(observers_.begin(), observers_.end(), observer);
+  if (it != observers_.end()) observers_.erase(it);
+}
+
 std::size_t Network::Send(NodeId src, ChannelId channel, MessageTypeId type, std::vector<std::uint8_t> payload) {
   CheckNode(src, "Send");
   dsts_.clear();
@@ -108,59 +130,73 @@ void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::v
   const SimTime now = sim_.Now();
   NodeCounters& sender = senders_[static_cast<std::size_t>(src.value)];
   ++sender.published;
+  const std::uint64_t message = messages_++;
   if (dsts_.empty()) return;
 
   frames_.clear();
   const auto payload_bytes = static_cast<std::int64_t>(payload.size());
   const WireFootprint fp = AppendLinkFrames(
       Bytes(payload_bytes), static_cast<std::int64_t>(ChannelName(channel).size()), wire_, frames_);
-  outcomes_.resize(dsts_.size());
-  if (IsOnline(src, now)) {
-    const std::uint64_t transmissions = link_->Transmissions();
-    const Bytes medium_bytes = link_->TransmittedBytes();
-    link_->Transmit(LinkTransmission{src, dsts_, now, frames_}, outcomes_);
-    sender.transmissions += link_->Transmissions() - transmissions;
-    sender.medium_bytes += (link_->TransmittedBytes() - medium_bytes).value();
-  } else {
-    std::fill(outcomes_.begin(), outcomes_.end(), LinkDelivery{now, DropReason::kOffline});
-  }
+  TransmitFrom(src, now, sender);
 
   const std::uint32_t slot = AllocatePayload(std::move(payload));
   Payload& p = payloads_[slot];
+  p.message = message;
   p.src = src;
   p.channel = channel;
+  p.type = type;
   p.sent = now;
   p.wire_bytes = fp.wire_bytes.value();
   for (std::size_t i = 0; i < dsts_.size(); ++i) {
     const NodeId dst = dsts_[i];
+    const std::uint64_t copy = copies_++;
     LinkCounters& c = pairs_[PairIndex(src, dst)];
     ++c.messages;
     c.payload_bytes += payload_bytes;
     c.wire_bytes += p.wire_bytes;
-    const std::uint32_t record = record_ ? AddRecord(p, dst, type, outcomes_[i]) : kNoRecord;
+    if (!observers_.empty()) NotifySent(p, dst, copy, outcomes_[i].drop);
     if (outcomes_[i].drop != DropReason::kNone) {
       ++c.dropped;
       continue;
     }
     ++p.refs;
-    sim_.ScheduleAt(outcomes_[i].arrival, [this, slot, dst, record] { Deliver(slot, dst, record); });
+    sim_.ScheduleAt(outcomes_[i].arrival, [this, slot, dst, copy] { Deliver(slot, dst, copy); });
   }
   if (p.refs == 0) ReleasePayload(slot);
 }
 
-std::uint32_t Network::AddRecord(const Payload& p, NodeId dst, MessageTypeId type, const LinkDelivery& outcome) {
-  if (records_.size() >= kNoRecord) throw std::length_error("Network: too many message records");
-  MessageRecord r;
-  r.sent = p.sent;
-  r.src = p.src;
-  r.dst = dst;
-  r.channel = p.channel;
-  r.type = type;
-  r.payload_bytes = static_cast<std::int64_t>(p.bytes.size());
-  r.wire_bytes = p.wire_bytes;
-  r.drop = outcome.drop;
-  records_.push_back(r);
-  return static_cast<std::uint32_t>(records_.size() - 1);
+// Fills outcomes_ for dsts_ and frames_; the sender counts what its message
+// put on the medium (nothing when it is offline).
+void Network::TransmitFrom(NodeId src, SimTime now, NodeCounters& sender) {
+  outcomes_.resize(dsts_.size());
+  if (!IsOnline(src, now)) {
+    std::fill(outcomes_.begin(), outcomes_.end(), LinkDelivery{now, DropReason::kOffline});
+    return;
+  }
+  const LinkModel::MediumUse use = link_->Transmit(LinkTransmission{src, dsts_, now, frames_}, outcomes_);
+  sender.transmissions += use.transmissions;
+  sender.medium_bytes += use.bytes.value();
+}
+
+MessageCopy Network::CopyOf(const Payload& p, NodeId dst, std::uint64_t copy) const {
+  return MessageCopy{.message = p.message,
+                     .copy = copy,
+                     .sent = p.sent,
+                     .src = p.src,
+                     .dst = dst,
+                     .channel = p.channel,
+                     .channel_name = ChannelName(p.channel),
+                     .type = p.type,
+                     .type_name = TypeName(p.type),
+                     .payload = p.bytes,
+                     .wire_bytes = p.wire_bytes};
+}
+
+void Network::NotifySent(const Payload& p, NodeId dst, std::uint64_t copy, DropReason drop) {
+  const MessageCopy m = CopyOf(p, dst, copy);
+  for (NetworkObserver* o : observers_) o->OnSent(m);
+  if (drop == DropReason::kNone) return;
+  for (NetworkObserver* o : observers_) o->OnDropped(m, p.sent, drop);
 }
 
 std::uint32_t Network::AllocatePayload(std::vector<std::uint8_t>&& bytes) {
@@ -175,7 +211,6 @@ std::uint32_t Network::AllocatePayload(std::vector<std::uint8_t>&& bytes) {
   Payload& p = payloads_[slot];
   p.bytes = std::move(bytes);
   p.refs = 0;
-  p.logged = false;
   return slot;
 }
 
@@ -186,23 +221,25 @@ void Network::ReleasePayload(std::uint32_t slot) {
   free_payloads_.push_back(slot);
 }
 
-void Network::Deliver(std::uint32_t slot, NodeId dst, std::uint32_t record) {
+void Network::Deliver(std::uint32_t slot, NodeId dst, std::uint64_t copy) {
   const SimTime now = sim_.Now();
   Payload& p = payloads_[slot];
-  if (!IsOnline(dst, now)) {
-    ++pairs_[PairIndex(p.src, dst)].dropped;
-    if (record != kNoRecord) records_[record].drop = DropReason::kOffline;
+  LinkCounters& c = pairs_[PairIndex(p.src, dst)];
+  const bool online = IsOnline(dst, now);
+  ++(online ? c.delivered : c.dropped);
+  if (!observers_.empty()) {
+    const MessageCopy m = CopyOf(p, dst, copy);
+    for (NetworkObserver* o : observers_) {
+      if (online) {
+        o->OnDelivered(m, now);
+      } else {
+        o->OnDropped(m, now, DropReason::kOffline);
+      }
+    }
+  }
+  if (!online) {
     ReleasePayload(slot);
     return;
-  }
-  ++pairs_[PairIndex(p.src, dst)].delivered;
-  if (record != kNoRecord) {
-    records_[record].arrived = true;
-    records_[record].delivered = now;
-  }
-  if (event_log_ != nullptr && !p.logged) {
-    p.logged = true;
-    event_log_->Write(now, ChannelName(p.channel), p.bytes);
   }
   // OnReceive may send (and grow payloads_), so copy what it needs first; the
   // byte buffer itself does not move while this delivery holds a reference.

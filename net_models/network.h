@@ -1,7 +1,10 @@
 #pragma once
 // The simulated network: takes an encoded LCM message from a node, finds its
 // destinations, asks the LinkModel when each copy arrives, schedules each
-// delivery (or records the drop) on the Simulator, and counts everything.
+// delivery (or the drop) on the Simulator, and counts everything. What
+// happens to each copy is reported to the subscribed observers
+// (network_observer.h), which record whatever they need; the network writes
+// nothing itself.
 //
 // Routing follows LCM's publish/subscribe semantics: a message published on a
 // channel goes to every node that has joined that channel, except the sender.
@@ -12,7 +15,7 @@
 // interned to small ids once; the payload is moved in and shared by all its
 // destinations (one buffer, reference-counted in a slab, no copy per
 // destination); delivery events capture only (network, slot, destination,
-// record), so they fit the Simulator's inline callback storage.
+// copy number), so they fit the Simulator's inline callback storage.
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -23,6 +26,7 @@
 #include <vector>
 
 #include "net_models/link_model.h"
+#include "net_models/network_observer.h"
 #include "net_models/node_id.h"
 #include "net_models/units.h"
 #include "net_models/wire_format.h"
@@ -31,10 +35,7 @@
 namespace dvpr {
 
 class Simulator;
-class LcmEventLogWriter;
-
-enum class ChannelId : std::uint32_t {};
-enum class MessageTypeId : std::uint32_t {};
+class Network;
 
 // What a node receives.
 struct ReceivedMessage {
@@ -72,20 +73,21 @@ struct NodeCounters {
   std::int64_t medium_bytes = 0;     // frame bytes of those transmissions
 };
 
-// One row per message and destination (kept when records are enabled).
-struct MessageRecord {
-  SimTime sent;
-  SimTime delivered;  // meaningful when state == kDelivered
-  NodeId src;
-  NodeId dst;
-  ChannelId channel{};
-  MessageTypeId type{};
-  std::int64_t payload_bytes = 0;
-  std::int64_t wire_bytes = 0;
-  DropReason drop = DropReason::kNone;
-  bool arrived = false;  // false and drop == kNone: still in flight when the run ended
+// Keeps an observer subscribed to a network until destroyed or Reset (RAII,
+// as agents' transport Subscription). Move-only; must not outlive the network.
+class [[nodiscard]] ObserverSubscription {
+ public:
+  ObserverSubscription() = default;
+  ObserverSubscription(ObserverSubscription&& other) noexcept;
+  ObserverSubscription& operator=(ObserverSubscription&& other) noexcept;
+  ~ObserverSubscription() { Reset(); }
+  void Reset();
 
-  bool dropped() const { return drop != DropReason::kNone; }
+ private:
+  friend class Network;
+  ObserverSubscription(Network* network, NetworkObserver* observer) : network_(network), observer_(observer) {}
+  Network* network_ = nullptr;
+  NetworkObserver* observer_ = nullptr;
 };
 
 class Network {
@@ -129,14 +131,15 @@ class Network {
   const LinkCounters& Counters(NodeId src, NodeId dst) const { return pairs_[PairIndex(src, dst)]; }
   LinkCounters Totals() const;
   const NodeCounters& Sender(NodeId src) const { return senders_[static_cast<std::size_t>(src.value)]; }
-  // Message records (one per message and destination), off by default.
-  void EnableRecords(bool on) { record_ = on; }
-  const std::vector<MessageRecord>& Records() const { return records_; }
-  // Every delivered message is written to `log` once, at its first delivery
-  // (null stops logging). The writer must outlive the network or be reset.
-  void SetEventLog(LcmEventLogWriter* log) { event_log_ = log; }
+
+  // --- observing ----------------------------------------------------------
+  // From now on `observer` hears every copy sent, delivered and dropped, after
+  // the observers subscribed before it, until the subscription ends.
+  ObserverSubscription Subscribe(NetworkObserver& observer);
 
  private:
+  friend class ObserverSubscription;
+
   struct Channel {
     std::string name;
     std::vector<NodeId> members;  // sorted
@@ -144,11 +147,12 @@ class Network {
   struct Payload {
     std::vector<std::uint8_t> bytes;
     std::uint32_t refs = 0;
+    std::uint64_t message = 0;
     NodeId src;
     ChannelId channel{};
+    MessageTypeId type{};
     SimTime sent;
     std::int64_t wire_bytes = 0;
-    bool logged = false;
   };
   struct StringHash {
     using is_transparent = void;
@@ -162,10 +166,13 @@ class Network {
   }
   void CheckNode(NodeId node, const char* what) const;
   void Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::vector<std::uint8_t>&& payload);
+  void TransmitFrom(NodeId src, SimTime now, NodeCounters& sender);
   std::uint32_t AllocatePayload(std::vector<std::uint8_t>&& bytes);
   void ReleasePayload(std::uint32_t slot);
-  std::uint32_t AddRecord(const Payload& p, NodeId dst, MessageTypeId type, const LinkDelivery& outcome);
-  void Deliver(std::uint32_t slot, NodeId dst, std::uint32_t record);
+  void Deliver(std::uint32_t slot, NodeId dst, std::uint64_t copy);
+  MessageCopy CopyOf(const Payload& p, NodeId dst, std::uint64_t copy) const;
+  void NotifySent(const Payload& p, NodeId dst, std::uint64_t copy, DropReason drop);
+  void Unsubscribe(NetworkObserver* observer);
 
   Simulator& sim_;
   int nodes_;
@@ -186,9 +193,9 @@ class Network {
 
   std::vector<LinkCounters> pairs_;
   std::vector<NodeCounters> senders_;
-  bool record_ = false;
-  std::vector<MessageRecord> records_;
-  LcmEventLogWriter* event_log_ = nullptr;
+  std::uint64_t messages_ = 0;  // Send/SendTo calls so far: the next MessageCopy::message
+  std::uint64_t copies_ = 0;    // copies sent so far: the next MessageCopy::copy
+  std::vector<NetworkObserver*> observers_;
 
   // Scratch buffers reused by every Send (no allocation once warm).
   std::vector<NodeId> dsts_;

@@ -1,15 +1,12 @@
 #include "agents/sim_transport.h"
 
 #include <gtest/gtest.h>
-#include <lcm/eventlog.h>
 
-#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "agents/channels.h"
-#include "net_models/lcm_event_log.h"
 #include "net_models/point_to_point_link.h"
 #include "sim/simulator.h"
 
@@ -120,52 +117,6 @@ TEST_F(SimTransportTest, WrongTypeOnAChannelIsCountedAsMalformed) {
   sim.Run();
   EXPECT_EQ(received, 0);
   EXPECT_EQ(robots[1]->MalformedCount(), 1u);
-}
-
-// Writes an LCM log of a small simulation, reads it back with lcm/eventlog.h
-// and decodes every event into its type.
-TEST_F(SimTransportTest, EventLogReadsBackAndDecodes) {
-  const std::filesystem::path path = std::filesystem::path(DVPR_TEST_TMP) / "sim_transport_events.lcmlog";
-  std::filesystem::create_directories(path.parent_path());
-  {
-    LcmEventLogWriter writer(path);
-    net.SetEventLog(&writer);
-    auto responders = Responders();
-    auto sub = robots[0]->Subscribe<match_t>(channels::Match(RobotId(0)), [](const match_t&) {});
-    robots[0]->Publish(channels::kQueryAll, Query(0, 17));
-    sim.Run();
-    net.SetEventLog(nullptr);
-    EXPECT_EQ(writer.EventsWritten(), 3);  // the broadcast query once, two matches
-  }
-  lcm_eventlog_t* log = lcm_eventlog_create(path.c_str(), "r");
-  ASSERT_NE(log, nullptr);
-  std::vector<std::pair<std::string, std::int64_t>> seen;
-  int queries = 0, matches = 0;
-  while (lcm_eventlog_event_t* e = lcm_eventlog_read_next_event(log)) {
-    const std::string channel(e->channel, static_cast<std::size_t>(e->channellen));
-    const std::span<const std::uint8_t> data(static_cast<const std::uint8_t*>(e->data),
-                                             static_cast<std::size_t>(e->datalen));
-    seen.emplace_back(channel, e->timestamp);
-    if (channel == channels::kQueryAll) {
-      const auto q = Decode<query_t>(data);
-      ASSERT_TRUE(q.has_value());
-      EXPECT_EQ(q->frame, 17);
-      ++queries;
-    } else {
-      const auto m = Decode<match_t>(data);
-      ASSERT_TRUE(m.has_value()) << channel;
-      EXPECT_EQ(m->query_frame, 17);
-      ++matches;
-    }
-    lcm_eventlog_free_event(e);
-  }
-  lcm_eventlog_destroy(log);
-  EXPECT_EQ(queries, 1);
-  EXPECT_EQ(matches, 2);
-  ASSERT_EQ(seen.size(), 3u);
-  EXPECT_EQ(seen[0], std::make_pair(std::string("DVPR_QUERY_ALL"), kQueryArrival.us()));
-  EXPECT_EQ(seen[1], std::make_pair(std::string("DVPR_MATCH_0"), kMatchArrival.us()));
-  EXPECT_EQ(ReadLcmEventLog(path).size(), 3u);
 }
 
 }  // namespace

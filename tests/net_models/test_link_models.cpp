@@ -19,11 +19,14 @@ constexpr SimTime kLatency = SimTime::Millis(5);
 class LinkModelTest : public ::testing::Test {
  protected:
   std::vector<Bytes> frame547{Bytes(547)};
+  LinkModel::MediumUse used;  // summed over the Sends of a test
 
   std::vector<LinkDelivery> Send(LinkModel& link, int src, std::vector<NodeId> dsts, SimTime now,
                                  const std::vector<Bytes>& frames) {
     std::vector<LinkDelivery> out(dsts.size());
-    link.Transmit(LinkTransmission{NodeId(src), dsts, now, frames}, out);
+    const LinkModel::MediumUse use = link.Transmit(LinkTransmission{NodeId(src), dsts, now, frames}, out);
+    used.transmissions += use.transmissions;
+    used.bytes += use.bytes;
     return out;
   }
   static PointToPointParams Mbit1(int queue = 100) {
@@ -65,8 +68,8 @@ TEST_F(LinkModelTest, PointToPointFullDropTailQueueDrops) {
   EXPECT_EQ(late[0].drop, DropReason::kNone);
   EXPECT_EQ(late[0].arrival, kTx547 * 4 + kLatency);  // behind frames 1-3
   EXPECT_EQ(Send(link, 0, {NodeId(1)}, kTx547, frame547)[0].drop, DropReason::kQueueFull);
-  EXPECT_EQ(link.Transmissions(), 7u);              // every attempt is counted ...
-  EXPECT_EQ(link.TransmittedBytes(), Bytes(547 * 4));  // ... but only accepted frames use the wire
+  EXPECT_EQ(used.transmissions, 7u);       // every attempt is counted ...
+  EXPECT_EQ(used.bytes, Bytes(547 * 4));  // ... but only accepted frames use the wire
 }
 
 TEST_F(LinkModelTest, PointToPointMultiFrameMessageArrivesWithItsLastFrame) {
@@ -99,8 +102,8 @@ TEST_F(LinkModelTest, PointToPointBroadcastIsACopyPerLink) {
   PointToPointLink link(Mbit1(), 4);
   const auto out = Send(link, 0, {NodeId(1), NodeId(2), NodeId(3)}, SimTime::Zero(), frame547);
   for (const auto& d : out) EXPECT_EQ(d.arrival, SimTime::Micros(9376));  // separate links, in parallel
-  EXPECT_EQ(link.Transmissions(), 3u);
-  EXPECT_EQ(link.TransmittedBytes(), Bytes(3 * 547));
+  EXPECT_EQ(used.transmissions, 3u);
+  EXPECT_EQ(used.bytes, Bytes(3 * 547));
 }
 
 TEST_F(LinkModelTest, SharedMediumSerializesTwoSenders) {
@@ -115,8 +118,8 @@ TEST_F(LinkModelTest, SharedMediumBroadcastIsOneTransmission) {
   SharedMediumLink link(SharedMediumParams{DataRate::Mbps(1), kLatency, 100}, 4);
   const auto out = Send(link, 0, {NodeId(1), NodeId(2), NodeId(3)}, SimTime::Zero(), frame547);
   for (const auto& d : out) EXPECT_EQ(d.arrival, SimTime::Micros(9376));
-  EXPECT_EQ(link.Transmissions(), 1u);
-  EXPECT_EQ(link.TransmittedBytes(), Bytes(547));
+  EXPECT_EQ(used.transmissions, 1u);
+  EXPECT_EQ(used.bytes, Bytes(547));
   // The channel was busy for one frame time only: the next sender starts at 4.376 ms.
   EXPECT_EQ(Send(link, 3, {NodeId(0)}, SimTime::Zero(), frame547)[0].arrival, SimTime::Micros(13752));
 }
@@ -136,6 +139,8 @@ TEST_F(LinkModelTest, IdealDeliversAtOnce) {
     EXPECT_EQ(d.arrival, SimTime::Millis(3));
     EXPECT_EQ(d.drop, DropReason::kNone);
   }
+  EXPECT_EQ(used.transmissions, 2u);  // a copy per destination, as point-to-point
+  EXPECT_EQ(used.bytes, Bytes(2 * 547));
 }
 
 // Every bad value raises std::invalid_argument whose message holds `needle`.

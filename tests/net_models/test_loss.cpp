@@ -8,6 +8,7 @@
 #include "net_models/link_factory.h"
 #include "net_models/lossy_link.h"
 #include "net_models/network.h"
+#include "net_models/point_to_point_link.h"
 #include "sim/simulator.h"
 
 namespace dvpr {
@@ -75,6 +76,24 @@ TEST(GilbertElliottLoss, LongRunLossAndBurstLengthMatchTheChain) {
   }
   EXPECT_NEAR(static_cast<double>(lost) / kN, 0.2, 4 * 0.0024);
   EXPECT_NEAR(static_cast<double>(lost) / bursts, 5.0, 4 * 0.05);
+}
+
+// A lost frame was on the air all the same: the sender paid for it. Two
+// 547-byte frames at 1 Mbit/s, both lost (p = 1).
+TEST(LossyLink, ReportsTheInnerLinksMediumUseForLostFrames) {
+  LossParams all;
+  all.model = LossModelKind::kBernoulli;
+  all.bernoulli.p = 1.0;
+  LossyLink link(std::make_unique<PointToPointLink>(
+                     PointToPointParams{DataRate::Mbps(1), SimTime::Millis(5), 100, {}}, 2),
+                 2, all, {}, 1);
+  const NodeId dst[] = {NodeId(1)};
+  const Bytes frames[] = {Bytes(547), Bytes(547)};
+  LinkDelivery out[1];
+  const LinkModel::MediumUse use = link.Transmit(LinkTransmission{NodeId(0), dst, SimTime::Zero(), frames}, out);
+  EXPECT_EQ(out[0].drop, DropReason::kLoss);
+  EXPECT_EQ(use.transmissions, 1u);
+  EXPECT_EQ(use.bytes, Bytes(2 * 547));
 }
 
 TEST(LossyLink, PairOverrideReplacesTheDefault) {

@@ -2,12 +2,11 @@
 
 #include <gtest/gtest.h>
 
-#include <sstream>
+#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "net_models/ideal_link.h"
-#include "net_models/message_csv.h"
 #include "net_models/point_to_point_link.h"
 #include "sim/simulator.h"
 
@@ -34,6 +33,29 @@ class Recorder : public NetworkEndpoint {
   std::vector<Arrival>& log_;
 };
 
+// What the hooks reported, one line per call: "sent 0>2 #3 msg 1 at 0ns",
+// "delivered 0>2 #3 at 9376000ns", "dropped 0>3 #4 at 0ns: offline".
+class HookLog : public NetworkObserver {
+ public:
+  void OnSent(const MessageCopy& c) override {
+    lines.push_back("sent " + Copy(c) + " msg " + std::to_string(c.message) + " at " + std::to_string(c.sent.ns()) +
+                    "ns " + std::string(c.channel_name) + " " + std::string(c.type_name) + " " +
+                    std::to_string(c.payload.size()) + "B wire " + std::to_string(c.wire_bytes) + "B");
+  }
+  void OnDelivered(const MessageCopy& c, SimTime at) override {
+    lines.push_back("delivered " + Copy(c) + " at " + std::to_string(at.ns()) + "ns");
+  }
+  void OnDropped(const MessageCopy& c, SimTime at, DropReason reason) override {
+    lines.push_back("dropped " + Copy(c) + " at " + std::to_string(at.ns()) + "ns: " + std::string(ToString(reason)));
+  }
+  std::vector<std::string> lines;
+
+ private:
+  static std::string Copy(const MessageCopy& c) {
+    return std::to_string(c.src.value) + ">" + std::to_string(c.dst.value) + " #" + std::to_string(c.copy);
+  }
+};
+
 // Four nodes on 1 Mbit/s, 5 ms point-to-point links; everyone joins "ALL",
 // only node 2 joins "Q_2". Channel "ALL" is 3 characters long, so a payload of
 // 517 - (8 + 3 + 1) = 505 bytes makes a 517-byte UDP payload: a 547-byte frame.
@@ -45,6 +67,8 @@ class NetworkTest : public ::testing::Test {
                                PointToPointParams{DataRate::Mbps(1), SimTime::Millis(5), 100, {}}, kNodes)};
   std::vector<Arrival> arrivals;
   std::vector<Recorder> recorders;
+  HookLog hooks;
+  ObserverSubscription hooks_subscription = net.Subscribe(hooks);
   ChannelId all = net.InternChannel("ALL");
   ChannelId q2 = net.InternChannel("Q_2");
   MessageTypeId type = net.InternType("dvpr.test_t");
@@ -57,7 +81,6 @@ class NetworkTest : public ::testing::Test {
       net.Join(NodeId(i), all);
     }
     net.Join(NodeId(2), q2);
-    net.EnableRecords(true);
   }
   static std::vector<std::uint8_t> Payload(std::size_t n, std::uint8_t fill = 7) {
     return std::vector<std::uint8_t>(n, fill);
@@ -111,7 +134,8 @@ TEST_F(NetworkTest, FullQueueDropsAreCounted) {
   Network small(sim, 2, std::make_unique<PointToPointLink>(
                             PointToPointParams{DataRate::Mbps(1), SimTime::Millis(5), 1, {}}, 2));
   const ChannelId c = small.InternChannel("ALL");
-  small.EnableRecords(true);
+  HookLog small_hooks;
+  const ObserverSubscription subscription = small.Subscribe(small_hooks);
   const NodeId to1[] = {NodeId(1)};
   for (int i = 0; i < 4; ++i) small.SendTo(NodeId(0), to1, c, type, Payload(505));
   sim.Run();
@@ -119,7 +143,9 @@ TEST_F(NetworkTest, FullQueueDropsAreCounted) {
   EXPECT_EQ(k.messages, 4u);
   EXPECT_EQ(k.delivered, 2u);  // one on the wire, one waiting
   EXPECT_EQ(k.dropped, 2u);
-  EXPECT_EQ(small.Records()[3].drop, DropReason::kQueueFull);
+  ASSERT_EQ(small_hooks.lines.size(), 8u);  // 4 sent, 2 dropped at once, 2 delivered
+  EXPECT_EQ(small_hooks.lines[3], "dropped 0>1 #2 at 0ns: queue_full");
+  EXPECT_EQ(small_hooks.lines[5], "dropped 0>1 #3 at 0ns: queue_full");
 }
 
 TEST_F(NetworkTest, OfflineRobotLosesWhatArrivesAndWhatItSends) {
@@ -128,7 +154,7 @@ TEST_F(NetworkTest, OfflineRobotLosesWhatArrivesAndWhatItSends) {
   sim.Run();
   EXPECT_EQ(arrivals.size(), 2u);
   EXPECT_EQ(net.Counters(NodeId(0), NodeId(2)).dropped, 1u);
-  EXPECT_EQ(net.Records()[1].drop, DropReason::kOffline);
+  EXPECT_EQ(std::count(hooks.lines.begin(), hooks.lines.end(), "dropped 0>2 #1 at 9376000ns: offline"), 1);
   net.Send(NodeId(2), all, type, Payload(505));  // the offline robot sends: nothing leaves
   sim.Run();
   EXPECT_EQ(arrivals.size(), 2u);
@@ -141,18 +167,48 @@ TEST_F(NetworkTest, LeaveStopsDelivery) {
   EXPECT_EQ(net.Send(NodeId(0), all, type, Payload(10)), 2u);
 }
 
-TEST_F(NetworkTest, MessagesCsvHasOneRowPerMessageAndDestination) {
+// One copy per destination; the 547-byte frames arrive after 9.376 ms, where
+// node 3 is offline: its copy is dropped then.
+TEST_F(NetworkTest, HooksReportEveryCopySentThenDeliveredOrDropped) {
   net.SetOffline(NodeId(3), SimTime::Zero());
   net.Send(NodeId(0), all, type, Payload(505));
   sim.Run();
-  std::ostringstream csv;
-  WriteMessagesCsvHeader(csv);
-  AppendMessagesCsv(csv, net, RunLabels{"sim", "broadcast", "4", "0"});
-  EXPECT_EQ(csv.str(),
-            "protocol,strategy,robots,run,sent_ns,delivered_ns,src,dst,channel,type,payload_bytes,wire_bytes,dropped\n"
-            "sim,broadcast,4,0,0,9376000,0,1,ALL,dvpr.test_t,505,547,0\n"
-            "sim,broadcast,4,0,0,9376000,0,2,ALL,dvpr.test_t,505,547,0\n"
-            "sim,broadcast,4,0,0,,0,3,ALL,dvpr.test_t,505,547,1\n");
+  EXPECT_EQ(hooks.lines, (std::vector<std::string>{
+                             "sent 0>1 #0 msg 0 at 0ns ALL dvpr.test_t 505B wire 547B",
+                             "sent 0>2 #1 msg 0 at 0ns ALL dvpr.test_t 505B wire 547B",
+                             "sent 0>3 #2 msg 0 at 0ns ALL dvpr.test_t 505B wire 547B",
+                             "delivered 0>1 #0 at 9376000ns",
+                             "delivered 0>2 #1 at 9376000ns",
+                             "dropped 0>3 #2 at 9376000ns: offline",
+                         }));
+}
+
+// An offline sender's copies are dropped at once, right after their send;
+// message and copy numbers run on across sends. A 10-byte payload on "Q_2" is
+// an 8 + 3 + 1 + 10 = 22-byte LCM datagram, + 28 = 50-byte IP packet, a
+// 52-byte frame.
+TEST_F(NetworkTest, HooksNumberMessagesAndCopiesAcrossSends) {
+  net.SetOffline(NodeId(1), SimTime::Zero());
+  net.Send(NodeId(0), q2, type, Payload(505));
+  net.Send(NodeId(1), q2, type, Payload(10));
+  sim.Run();
+  EXPECT_EQ(hooks.lines, (std::vector<std::string>{
+                             "sent 0>2 #0 msg 0 at 0ns Q_2 dvpr.test_t 505B wire 547B",
+                             "sent 1>2 #1 msg 1 at 0ns Q_2 dvpr.test_t 10B wire 52B",
+                             "dropped 1>2 #1 at 0ns: offline",
+                             "delivered 0>2 #0 at 9376000ns",
+                         }));
+}
+
+TEST_F(NetworkTest, EndedSubscriptionHearsNothingMore) {
+  HookLog late;
+  {
+    const ObserverSubscription subscription = net.Subscribe(late);
+    net.Send(NodeId(0), q2, type, Payload(505));
+  }
+  sim.Run();  // the delivery happens after the subscription ended
+  EXPECT_EQ(late.lines.size(), 1u);
+  EXPECT_EQ(hooks.lines.size(), 2u);
 }
 
 TEST(NetworkIdeal, DeliversAtTheSendTimeInSendOrder) {

@@ -7,9 +7,11 @@
 
 #include "agents/sim_transport.h"
 #include "experiments/protocols/sim/agent_records.h"
+#include "experiments/protocols/sim/event_log_recorder.h"
+#include "experiments/protocols/sim/message_rows.h"
 #include "experiments/evaluation/metrics.h"
 #include "experiments/data/split.h"
-#include "net_models/lcm_event_log.h"
+#include "experiments/results/lcm_event_log.h"
 #include "sim/simulator.h"
 
 namespace dvpr {
@@ -33,24 +35,22 @@ void SimRunParams::Validate(const Dataset& data) const {
 
 namespace {
 
-std::vector<MessageRow> CollectMessages(const Network& network) {
-  std::vector<MessageRow> rows;
-  rows.reserve(network.Records().size());
-  for (const MessageRecord& r : network.Records()) {
-    MessageRow row;
-    row.sent_ns = r.sent.ns();
-    if (r.arrived && !r.dropped()) row.delivered_ns = r.delivered.ns();
-    row.src = r.src.value;
-    row.dst = r.dst.value;
-    row.channel = std::string(network.ChannelName(r.channel));
-    row.type = std::string(network.TypeName(r.type));
-    row.payload_bytes = r.payload_bytes;
-    row.wire_bytes = r.wire_bytes;
-    row.dropped = r.dropped();
-    rows.push_back(std::move(row));
+// What a run records of its network, as params ask: messages.csv rows, an LCM event log.
+struct NetworkRecorders {
+  NetworkRecorders(Network& network, const SimRunParams& params) {
+    if (params.record_messages) rows_subscription = network.Subscribe(rows);
+    if (!params.lcm_log.empty()) {
+      event_log_file = std::make_unique<LcmEventLogWriter>(params.lcm_log);
+      event_log = std::make_unique<EventLogRecorder>(*event_log_file);
+      event_log_subscription = network.Subscribe(*event_log);
+    }
   }
-  return rows;
-}
+  MessageRowRecorder rows;
+  ObserverSubscription rows_subscription;
+  std::unique_ptr<LcmEventLogWriter> event_log_file;
+  std::unique_ptr<EventLogRecorder> event_log;
+  ObserverSubscription event_log_subscription;
+};
 
 }  // namespace
 
@@ -63,12 +63,7 @@ SimRunLog RunSimulation(const Dataset& data, const RoutingStrategy& strategy, co
   const int n = params.robots;
   Simulator sim;
   Network network(sim, n, MakeLinkModel(params.network, n, params.seed), params.network.wire);
-  network.EnableRecords(params.record_messages);
-  std::unique_ptr<LcmEventLogWriter> event_log;
-  if (!params.lcm_log.empty()) {
-    event_log = std::make_unique<LcmEventLogWriter>(params.lcm_log);
-    network.SetEventLog(event_log.get());
-  }
+  NetworkRecorders recorders(network, params);
 
   const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), n);
   const GeometricVerifier verifier = PoseOracle(data.trajectory.positions, params.gt_radius_m);
@@ -108,8 +103,8 @@ SimRunLog RunSimulation(const Dataset& data, const RoutingStrategy& strategy, co
   for (int s = 0; s < n; ++s)
     for (int d = 0; d < n; ++d) log.links.push_back(s == d ? LinkCounters{} : network.Counters(NodeId(s), NodeId(d)));
   for (int s = 0; s < n; ++s) log.senders.push_back(network.Sender(NodeId(s)));
-  if (params.record_messages) log.messages = CollectMessages(network);
-  if (event_log) event_log->Close();
+  log.messages = recorders.rows.TakeRows();
+  if (recorders.event_log_file) recorders.event_log_file->Close();
   return log;
 }
 

@@ -14,6 +14,7 @@
 #include "agents/recluster_agent.h"
 #include "agents/robot_agent.h"
 #include "agents/sim_transport.h"
+#include "experiments/protocols/sim/message_rows.h"
 #include "experiments/protocols/sim/simulation.h"
 #include "experiments/data/split.h"
 #include "experiments/protocols/paper/static_recluster.h"
@@ -55,7 +56,7 @@ struct Team {
     NetworkModelParams net;
     net.model = LinkModelKind::kIdeal;
     network = std::make_unique<Network>(sim, n, MakeLinkModel(net, n, 1), net.wire);
-    network->EnableRecords(true);
+    messages_subscription = network->Subscribe(messages);
     const SequenceSplit split = SplitSequence(static_cast<int>(x.rows()), n);
     for (int r = 0; r < n; ++r) {
       const FrameRange range = split.ranges[static_cast<std::size_t>(r)];
@@ -73,9 +74,9 @@ struct Team {
   // By channel family (DVPR_SAMPLE, DVPR_MIGRATE, DVPR_TABLE) or type (query_t, match_t).
   std::map<std::string, Traffic> ByKind() const {
     std::map<std::string, Traffic> out;
-    for (const MessageRecord& r : network->Records()) {
-      std::string channel(network->ChannelName(r.channel));
-      std::string kind = std::string(network->TypeName(r.type));
+    for (const MessageRow& r : messages.rows()) {
+      const std::string& channel = r.channel;
+      std::string kind = r.type;
       if (channel.rfind("DVPR_SAMPLE", 0) == 0) kind = "sample";
       if (channel.rfind("DVPR_MIGRATE", 0) == 0) kind = "migrate";
       if (channel == channels::kTable) kind = "table";
@@ -86,6 +87,8 @@ struct Team {
   }
   Simulator sim;
   std::unique_ptr<Network> network;
+  MessageRowRecorder messages;
+  ObserverSubscription messages_subscription;
   std::vector<std::unique_ptr<SimTransport>> transports;
   std::vector<std::unique_ptr<RobotAgent>> agents;
 };
@@ -159,11 +162,11 @@ TEST_F(SimReclusterToy, SameInputsSameMessages) {
   const ReclusterRouting routing(MakePlan(x_, 2, Table1D(0, 1, 100, 0), params_));
   const Team a(x_, routing, QuietAgent(20));
   const Team b(x_, routing, QuietAgent(20));
-  ASSERT_EQ(a.network->Records().size(), b.network->Records().size());
-  for (std::size_t i = 0; i < a.network->Records().size(); ++i) {
-    const MessageRecord& r = a.network->Records()[i];
-    const MessageRecord& s = b.network->Records()[i];
-    EXPECT_EQ(r.sent, s.sent);
+  ASSERT_EQ(a.messages.rows().size(), b.messages.rows().size());
+  for (std::size_t i = 0; i < a.messages.rows().size(); ++i) {
+    const MessageRow& r = a.messages.rows()[i];
+    const MessageRow& s = b.messages.rows()[i];
+    EXPECT_EQ(r.sent_ns, s.sent_ns);
     EXPECT_EQ(r.src, s.src);
     EXPECT_EQ(r.dst, s.dst);
     EXPECT_EQ(r.payload_bytes, s.payload_bytes);

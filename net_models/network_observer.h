@@ -1,0 +1,53 @@
+#pragma once
+// What the Network reports while it works, for whoever wants to record it
+// (ns-3's traced callbacks on a net device, SimGrid's signals): messages.csv
+// rows, an LCM event log, a test's expectations. The Network itself writes
+// nothing; it only calls the observers subscribed to it (Network::Subscribe).
+//
+// Every copy of a message (one per destination) is reported sent once, at its
+// send time, then delivered or dropped once - or neither, if the run ends
+// while it is in flight. A copy the link refuses or loses, or that an offline
+// sender never puts on the medium, is reported dropped right after its send;
+// one that reaches an offline receiver, at its arrival time.
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "net_models/link_model.h"
+#include "net_models/node_id.h"
+#include "sim/sim_time.h"
+
+namespace dvpr {
+
+// Channel and message type names, interned by the Network.
+enum class ChannelId : std::uint32_t {};
+enum class MessageTypeId : std::uint32_t {};
+
+// One copy of a message, as every hook sees it. The views are valid during
+// the call only.
+struct MessageCopy {
+  std::uint64_t message = 0;  // the network's Send/SendTo calls, numbered from 0
+  std::uint64_t copy = 0;     // copies of all messages, numbered from 0 in send order
+  SimTime sent;
+  NodeId src;
+  NodeId dst;
+  ChannelId channel{};
+  std::string_view channel_name;
+  MessageTypeId type{};
+  std::string_view type_name;
+  std::span<const std::uint8_t> payload;  // the encoded message, as sent
+  std::int64_t wire_bytes = 0;            // what one copy costs on the wire (wire_format.h)
+};
+
+// Override what you need. Hooks run inside the simulation: they must not
+// send, nor subscribe or unsubscribe observers.
+class NetworkObserver {
+ public:
+  virtual ~NetworkObserver() = default;
+  virtual void OnSent(const MessageCopy& /*copy*/) {}
+  // At the arrival time, before the receiver's NetworkEndpoint gets it.
+  virtual void OnDelivered(const MessageCopy& /*copy*/, SimTime /*at*/) {}
+  virtual void OnDropped(const MessageCopy& /*copy*/, SimTime /*at*/, DropReason /*reason*/) {}
+};
+
+}  // namespace dvpr
