@@ -63,7 +63,6 @@ class LcmTransport final : public Transport {
   // The same with a wall-clock deadline (status loops, barriers).
   bool RunUntilWall(WallClock::time_point deadline);
   void Stop() { stopped_ = true; }
-  void ClearStop() { stopped_ = false; }
 
   // Publishes bytes as they are, typed or not (tools, fault-injection tests).
   void PublishRaw(const std::string& channel, std::span<const std::uint8_t> bytes) {
