@@ -48,10 +48,23 @@ void Network::CheckNode(NodeId node, const char* what) const {
   }
 }
 
+// Ids come from this network's Intern calls; another network's ids would name nothing here.
+void Network::CheckNames(ChannelId channel, MessageTypeId type) const {
+  if (static_cast<std::size_t>(channel) >= channel_names_.size()) {
+    throw std::out_of_range("Network: channel id " + std::to_string(static_cast<std::uint32_t>(channel)) +
+                            " was not interned by this network");
+  }
+  if (static_cast<std::size_t>(type) >= type_names_.size()) {
+    throw std::out_of_range("Network: message type id " + std::to_string(static_cast<std::uint32_t>(type)) +
+                            " was not interned by this network");
+  }
+}
+
 ChannelId Network::InternChannel(std::string_view name) {
   if (auto it = channel_ids_.find(name); it != channel_ids_.end()) return ChannelId{it->second};
   const auto id = static_cast<std::uint32_t>(channels_.size());
   channels_.push_back(Channel{std::string(name), {}});
+  channel_names_.push_back(channels_.back().name);
   channel_ids_.emplace(std::string(name), id);
   return ChannelId{id};
 }
@@ -60,6 +73,7 @@ MessageTypeId Network::InternType(std::string_view name) {
   if (auto it = type_ids_.find(name); it != type_ids_.end()) return MessageTypeId{it->second};
   const auto id = static_cast<std::uint32_t>(types_.size());
   types_.emplace_back(name);
+  type_names_.push_back(types_.back());
   type_ids_.emplace(std::string(name), id);
   return MessageTypeId{id};
 }
@@ -127,6 +141,7 @@ void Network::SendTo(NodeId src, std::span<const NodeId> dsts, ChannelId channel
 // Asks the link model about every destination in dsts_ at once (a shared
 // medium needs them together), then schedules the deliveries.
 void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::vector<std::uint8_t>&& payload) {
+  CheckNames(channel, type);
   const SimTime now = sim_.Now();
   NodeCounters& sender = senders_[static_cast<std::size_t>(src.value)];
   ++sender.published;

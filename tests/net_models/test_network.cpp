@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -134,10 +135,11 @@ TEST_F(NetworkTest, FullQueueDropsAreCounted) {
   Network small(sim, 2, std::make_unique<PointToPointLink>(
                             PointToPointParams{DataRate::Mbps(1), SimTime::Millis(5), 1, {}}, 2));
   const ChannelId c = small.InternChannel("ALL");
+  const MessageTypeId t = small.InternType("dvpr.test_t");
   HookLog small_hooks;
   const ObserverSubscription subscription = small.Subscribe(small_hooks);
   const NodeId to1[] = {NodeId(1)};
-  for (int i = 0; i < 4; ++i) small.SendTo(NodeId(0), to1, c, type, Payload(505));
+  for (int i = 0; i < 4; ++i) small.SendTo(NodeId(0), to1, c, t, Payload(505));
   sim.Run();
   const LinkCounters& k = small.Counters(NodeId(0), NodeId(1));
   EXPECT_EQ(k.messages, 4u);
@@ -160,6 +162,15 @@ TEST_F(NetworkTest, OfflineRobotLosesWhatArrivesAndWhatItSends) {
   EXPECT_EQ(arrivals.size(), 2u);
   EXPECT_EQ(net.Counters(NodeId(2), NodeId(0)).dropped, 1u);
   EXPECT_EQ(net.Sender(NodeId(2)).transmissions, 0u);
+}
+
+// The fixture's network interned 2 channels and 1 type; ids past those name nothing.
+TEST_F(NetworkTest, IdsNotInternedByThisNetworkAreRejected) {
+  const NodeId to1[] = {NodeId(1)};
+  EXPECT_THROW(net.SendTo(NodeId(0), to1, ChannelId{2}, type, Payload(1)), std::out_of_range);
+  EXPECT_THROW(net.SendTo(NodeId(0), to1, all, MessageTypeId{1}, Payload(1)), std::out_of_range);
+  EXPECT_THROW(net.Send(NodeId(0), all, MessageTypeId{1}, Payload(1)), std::out_of_range);
+  EXPECT_EQ(net.Sender(NodeId(0)).published, 0u);  // nothing was sent
 }
 
 TEST_F(NetworkTest, LeaveStopsDelivery) {

@@ -1,32 +1,54 @@
 #include "experiments/protocols/sim/message_rows.h"
 
-#include <string>
-
 namespace dvpr {
 
 void MessageRowRecorder::OnSent(const MessageCopy& copy) {
-  if (rows_.empty()) first_copy_ = copy.copy;
-  MessageRow& row = rows_.emplace_back();
-  row.sent_ns = copy.sent.ns();
-  row.src = copy.src.value;
-  row.dst = copy.dst.value;
-  row.channel = std::string(copy.channel_name);
-  row.type = std::string(copy.type_name);
-  row.payload_bytes = static_cast<std::int64_t>(copy.payload.size());
-  row.wire_bytes = copy.wire_bytes;
+  if (records_.empty()) first_copy_ = copy.copy;
+  Remember(channel_names_, static_cast<std::uint32_t>(copy.channel), copy.channel_name);
+  Remember(type_names_, static_cast<std::uint32_t>(copy.type), copy.type_name);
+  records_.push_back(Record{.sent_ns = copy.sent.ns(),
+                            .payload_bytes = static_cast<std::int64_t>(copy.payload.size()),
+                            .wire_bytes = copy.wire_bytes,
+                            .src = copy.src,
+                            .dst = copy.dst,
+                            .channel = copy.channel,
+                            .type = copy.type});
 }
 
 void MessageRowRecorder::OnDelivered(const MessageCopy& copy, SimTime at) {
-  if (MessageRow* row = RowOf(copy)) row->delivered_ns = at.ns();
+  if (Record* r = RecordOf(copy)) r->delivered_ns = at.ns();
 }
 
 void MessageRowRecorder::OnDropped(const MessageCopy& copy, SimTime, DropReason) {
-  if (MessageRow* row = RowOf(copy)) row->dropped = true;
+  if (Record* r = RecordOf(copy)) r->dropped = true;
 }
 
-MessageRow* MessageRowRecorder::RowOf(const MessageCopy& copy) {
-  if (copy.copy < first_copy_ || copy.copy - first_copy_ >= rows_.size()) return nullptr;
-  return &rows_[static_cast<std::size_t>(copy.copy - first_copy_)];
+MessageRowRecorder::Record* MessageRowRecorder::RecordOf(const MessageCopy& copy) {
+  if (copy.copy < first_copy_ || copy.copy - first_copy_ >= records_.size()) return nullptr;
+  return &records_[static_cast<std::size_t>(copy.copy - first_copy_)];
+}
+
+void MessageRowRecorder::Learn(std::vector<std::string>& names, std::uint32_t id, std::string_view name) {
+  if (id >= names.size()) names.resize(id + 1);
+  names[id] = std::string(name);
+}
+
+std::vector<MessageRow> MessageRowRecorder::Rows() const {
+  std::vector<MessageRow> rows;
+  rows.reserve(records_.size());
+  for (const Record& r : records_) {
+    MessageRow& row = rows.emplace_back();
+    row.sent_ns = r.sent_ns;
+    if (r.delivered_ns >= 0) row.delivered_ns = r.delivered_ns;
+    row.src = r.src.value;
+    row.dst = r.dst.value;
+    row.channel = channel_names_[static_cast<std::size_t>(r.channel)];
+    row.type = type_names_[static_cast<std::size_t>(r.type)];
+    row.payload_bytes = r.payload_bytes;
+    row.wire_bytes = r.wire_bytes;
+    row.dropped = r.dropped;
+  }
+  return rows;
 }
 
 }  // namespace dvpr

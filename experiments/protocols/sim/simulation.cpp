@@ -103,7 +103,7 @@ SimRunLog RunSimulation(const Dataset& data, const RoutingStrategy& strategy, co
   for (int s = 0; s < n; ++s)
     for (int d = 0; d < n; ++d) log.links.push_back(s == d ? LinkCounters{} : network.Counters(NodeId(s), NodeId(d)));
   for (int s = 0; s < n; ++s) log.senders.push_back(network.Sender(NodeId(s)));
-  log.messages = recorders.rows.TakeRows();
+  log.messages = recorders.rows.Rows();
   if (recorders.event_log_file) recorders.event_log_file->Close();
   return log;
 }

@@ -42,7 +42,7 @@ TEST(MessageRowRecorder, OneRowPerMessageAndDestinationAsMessagesCsvWritesIt) {
   net.Send(NodeId(0), all, net.InternType("dvpr.test_t"), std::vector<std::uint8_t>(505, 7));
   sim.Run();
   std::vector<std::string> lines;
-  for (MessageRow row : recorder.TakeRows()) {
+  for (MessageRow row : recorder.Rows()) {
     row.key = RunKey{.protocol = "sim", .strategy = "broadcast", .robots = 4, .run = 0, .network = {}};
     lines.push_back(CsvRow(row));
   }
@@ -66,12 +66,34 @@ TEST(MessageRowRecorder, CopiesSentBeforeTheSubscriptionAreNotRows) {
   const ObserverSubscription subscription = net.Subscribe(recorder);
   net.Send(NodeId(0), c, type, std::vector<std::uint8_t>(505));
   sim.Run(SimTime::Millis(10));  // the first arrives at 9.376 ms, the second at 13.752 ms
-  ASSERT_EQ(recorder.rows().size(), 1u);
-  EXPECT_EQ(recorder.rows()[0].sent_ns, 0);
-  EXPECT_FALSE(recorder.rows()[0].delivered_ns.has_value());
-  EXPECT_FALSE(recorder.rows()[0].dropped);
+  const std::vector<MessageRow> in_flight = recorder.Rows();
+  ASSERT_EQ(in_flight.size(), 1u);
+  EXPECT_EQ(in_flight[0].sent_ns, 0);
+  EXPECT_FALSE(in_flight[0].delivered_ns.has_value());
+  EXPECT_FALSE(in_flight[0].dropped);
   sim.Run();
-  EXPECT_EQ(recorder.rows()[0].delivered_ns, SimTime::Micros(13752).ns());
+  EXPECT_EQ(recorder.Rows().at(0).delivered_ns, SimTime::Micros(13752).ns());
+}
+
+// Channel and type names are kept by the network's ids, which need not
+// appear in order: here channel 1 and type 1 are sent first.
+TEST(MessageRowRecorder, NamesComeBackWhateverOrderTheIdsAppearIn) {
+  Simulator sim;
+  Network net(sim, 2, Mbit1Links(2));
+  const ChannelId a = net.InternChannel("A");
+  const ChannelId b = net.InternChannel("B");
+  const MessageTypeId s = net.InternType("s_t");
+  const MessageTypeId t = net.InternType("t_t");
+  MessageRowRecorder recorder;
+  const ObserverSubscription subscription = net.Subscribe(recorder);
+  const NodeId to1[] = {NodeId(1)};
+  net.SendTo(NodeId(0), to1, b, t, std::vector<std::uint8_t>(1));
+  net.SendTo(NodeId(0), to1, a, s, std::vector<std::uint8_t>(1));
+  sim.Run();
+  const std::vector<MessageRow> rows = recorder.Rows();
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].channel + " " + rows[0].type, "B t_t");
+  EXPECT_EQ(rows[1].channel + " " + rows[1].type, "A s_t");
 }
 
 // Three robots on 1 Mbit/s, 5 ms links (as tests/agents/test_sim_transport.cpp):

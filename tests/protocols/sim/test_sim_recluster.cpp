@@ -75,7 +75,7 @@ struct Team {
   // By channel family (DVPR_SAMPLE, DVPR_MIGRATE, DVPR_TABLE) or type (query_t, match_t).
   std::map<std::string, Traffic> ByKind() const {
     std::map<std::string, Traffic> out;
-    for (const MessageRow& r : messages.rows()) {
+    for (const MessageRow& r : messages.Rows()) {
       const std::string& channel = r.channel;
       std::string kind = r.type;
       if (channel.rfind("DVPR_SAMPLE", 0) == 0) kind = "sample";
@@ -188,10 +188,12 @@ TEST_F(SimReclusterToy, SameInputsSameMessages) {
   const ReclusterRouting routing(MakePlan(x_, 2, Table1D(0, 1, 100, 0), params_));
   const Team a(x_, routing, QuietAgent(20));
   const Team b(x_, routing, QuietAgent(20));
-  ASSERT_EQ(a.messages.rows().size(), b.messages.rows().size());
-  for (std::size_t i = 0; i < a.messages.rows().size(); ++i) {
-    const MessageRow& r = a.messages.rows()[i];
-    const MessageRow& s = b.messages.rows()[i];
+  const std::vector<MessageRow> ra = a.messages.Rows();
+  const std::vector<MessageRow> rb = b.messages.Rows();
+  ASSERT_EQ(ra.size(), rb.size());
+  for (std::size_t i = 0; i < ra.size(); ++i) {
+    const MessageRow& r = ra[i];
+    const MessageRow& s = rb[i];
     EXPECT_EQ(r.sent_ns, s.sent_ns);
     EXPECT_EQ(r.src, s.src);
     EXPECT_EQ(r.dst, s.dst);
