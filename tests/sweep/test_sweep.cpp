@@ -5,6 +5,7 @@
 
 #include "sim/random_bits.h"
 #include "experiments/config/config.h"
+#include "experiments/strategies/run_centroids.h"
 #include "experiments/sweep/sweep.h"
 
 namespace dvpr {
