@@ -40,7 +40,8 @@ class PaperSweepTest : public ::testing::Test {
   static constexpr int kRobots[4] = {2, 3, 5, 8};
 
   void SetUp() override {
-    dir_ = fs::path(DVPR_TEST_TMP) / "paper_sweep";
+    // One folder per test: ctest runs the tests of this binary in parallel processes.
+    dir_ = fs::path(DVPR_TEST_TMP) / "paper_sweep" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     data_ = testing_support::KittiEveryTenth(kDim, dir_ / "poses.txt");
