@@ -77,9 +77,9 @@ std::int64_t TeamKey(const ExperimentConfig& c, const Dataset& data, const Centr
   h.Add(data.descriptors.data(), static_cast<std::size_t>(data.descriptors.size()) * sizeof(float));
   h.AddValue(data.fps);
   h.AddValue(c.evaluation.suppression_frames);
-  h.AddValue(c.service.fixed.ns());
-  h.AddValue(c.service.per_comparison.ns());
-  h.AddValue(c.verification.max_distance);
+  h.AddValue(c.agent.service.fixed.ns());
+  h.AddValue(c.agent.service.per_comparison.ns());
+  h.AddValue(c.agent.verification.max_distance);
   return h.value();
 }
 
@@ -224,11 +224,11 @@ Team LoadTeam(const AgentProcessOptions& o) {
   }
   if (spec && spec->table != StrategySpec::Table::kPaper) {
     t.own_table = spec;
-    t.table = BuildStrategyTable(*spec, t.inputs.training, t.inputs.deployment.descriptors, CentroidParams(t.config),
-                                 t.robots, o.run);
+    t.table = BuildStrategyTable(*spec, t.inputs.training, t.inputs.deployment.descriptors,
+                                 t.config.training.run_centroids, t.robots, o.run);
   } else {
     t.table = std::make_shared<const CentroidTable>(CentroidTable::RoundRobin(
-        RunCentroids(t.inputs.training, CentroidParams(t.config), t.robots, o.run), t.robots));
+        RunCentroids(t.inputs.training, t.config.training.run_centroids, t.robots, o.run), t.robots));
   }
   t.key = TeamKey(t.config, t.inputs.deployment, t.table->centroids(), t.strategy, t.robots, o.run);
   return t;
@@ -299,9 +299,9 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   transport.SetReceiveFilter([&](const std::string& c, std::span<const std::uint8_t> b) { return traffic.OnReceive(c, b); });
   TeamSync sync(RobotId(o.robot), t.robots, t.key);
   Subscription status = transport.Subscribe<agent_status_t>(channels::kStatus, [&](const agent_status_t& s) { sync.OnStatus(s); });
-  RobotAgent agent(RobotId(o.robot), ToAgentParams(t.config), transport, *routing,
+  RobotAgent agent(RobotId(o.robot), t.config.agent, transport, *routing,
                    FrameStream{&data.descriptors, range.begin, range.size(), data.fps},
-                   PoseOracle(data.trajectory.positions, t.config.evaluation.gt_radius_m));
+                   PoseOracle(data.trajectory.positions, t.config.evaluation.radius_m));
 
   const std::int64_t ready_utime = WallUtime();
   auto announce = [&](std::int8_t state) {

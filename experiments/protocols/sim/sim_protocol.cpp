@@ -10,43 +10,21 @@
 #include "experiments/data/split.h"
 #include "experiments/protocols/paper/static_recluster.h"
 #include "experiments/strategies/strategy_catalogue.h"
+#include "net_models/param_checks.h"
 
 namespace dvpr {
 
 namespace {
 
-LossParams ToLossParams(const LossConfig& c) {
-  LossParams p;
-  switch (c.model) {
-    case LossModel::kNone: p.model = LossModelKind::kNone; break;
-    case LossModel::kBernoulli:
-      p.model = LossModelKind::kBernoulli;
-      p.bernoulli.p = c.p;
-      break;
-    case LossModel::kGilbertElliott:
-      p.model = LossModelKind::kGilbertElliott;
-      p.gilbert_elliott = {c.p_good_to_bad, c.p_bad_to_good, c.loss_good, c.loss_bad};
-      break;
-  }
-  return p;
-}
-
-LinkModelKind ToKind(NetworkModel m) {
-  switch (m) {
-    case NetworkModel::kIdeal: return LinkModelKind::kIdeal;
-    case NetworkModel::kPointToPoint: return LinkModelKind::kPointToPoint;
-    case NetworkModel::kSharedMedium: return LinkModelKind::kSharedMedium;
-  }
-  throw std::logic_error("unknown network model");
-}
-
 SimRunParams ToSimParams(const ExperimentConfig& c, const RunSpec& spec) {
   SimRunParams p;
   p.robots = spec.robots;
   p.seed = spec.seed;
-  p.agent = ToAgentParams(c);
-  p.network = ToNetworkModelParams(spec.network->settings);
-  p.gt_radius_m = c.evaluation.gt_radius_m;
+  p.agent = c.agent;
+  p.network = spec.network->params;
+  // Whether the links lie in this team is known only now; the error names the config key.
+  ValidateNested("network.", [&] { p.network.Validate(spec.robots); });
+  p.gt_radius_m = c.evaluation.radius_m;
   // A dropout applies to the teams that have that robot.
   for (const Dropout& d : c.dropout) {
     if (d.robot < spec.robots) p.dropouts.push_back({RobotId(d.robot), d.at});
@@ -149,45 +127,6 @@ RunResult MakeRow(const RunSpec& spec, const std::string& strategy, const SimRun
   return row;
 }
 
-AgentParams ToAgentParams(const ExperimentConfig& c) {
-  AgentParams p;
-  p.suppression_frames = c.evaluation.suppression_frames;
-  p.service_fixed = c.service.fixed;
-  p.service_per_comparison = c.service.per_comparison;
-  p.verify_service = c.service.fixed;
-  p.verify_max_distance = static_cast<float>(c.verification.max_distance);
-  p.verify_request_bytes = static_cast<int>(c.verification.request_bytes.value());
-  return p;
-}
-
-RunCentroidParams CentroidParams(const ExperimentConfig& c) {
-  RunCentroidParams p;
-  p.seed = c.seed;
-  p.clusters_per_robot = c.training.clusters_per_robot;
-  p.centroids_pattern = c.training.centroids.value_or("");
-  return p;
-}
-
-NetworkModelParams ToNetworkModelParams(const NetworkSettings& settings) {
-  NetworkModelParams p;
-  p.model = ToKind(settings.model);
-  p.bandwidth = settings.bandwidth;
-  p.latency = settings.latency;
-  p.queue_packets = settings.queue_packets;
-  p.wire.mtu = settings.mtu;
-  p.loss = ToLossParams(settings.loss);
-  for (const LinkOverride& o : settings.links) {
-    LinkOverrideParams lp;
-    lp.src = NodeId(o.src);
-    lp.dst = NodeId(o.dst);
-    lp.bandwidth = o.bandwidth;
-    lp.latency = o.latency;
-    if (o.loss) lp.loss = ToLossParams(*o.loss);
-    p.links.push_back(lp);
-  }
-  return p;
-}
-
 std::unique_ptr<RoutingStrategy> MakeStrategy(const std::string& name, std::shared_ptr<const CentroidTable> table,
                                               int robots) {
   if (name == "broadcast") return std::make_unique<BroadcastRouting>(robots);
@@ -208,7 +147,7 @@ RunFunction MakeSimRun(const SharedInputs& in) {
     log_dir = in.out_dir / "lcm";
     std::filesystem::create_directories(log_dir);
   }
-  const RunCentroidParams centroid_params = CentroidParams(*config);
+  const RunCentroidParams centroid_params = config->training.run_centroids;
   return [config, data, training, log_dir, centroid_params](const RunSpec& spec) {
     auto table = std::make_shared<const CentroidTable>(
         CentroidTable::RoundRobin(RunCentroids(*training, centroid_params, spec.robots, spec.run), spec.robots));
@@ -227,7 +166,7 @@ RunFunction MakeSimRun(const SharedInputs& in) {
         routing = MakeStrategy(strategy, table, spec.robots);
       }
       SimRunLog log = RunSimulation(*data, *routing, params);
-      SimRunSummary summary = SummarizeSimRun(log, data->trajectory.positions, config->evaluation.gt_radius_m,
+      SimRunSummary summary = SummarizeSimRun(log, data->trajectory.positions, config->evaluation.radius_m,
                                               config->evaluation.suppression_frames);
       return std::make_pair(std::move(log), std::move(summary));
     };

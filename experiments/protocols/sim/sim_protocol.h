@@ -12,12 +12,8 @@
 #include "experiments/protocols/run.h"
 #include "experiments/protocols/sim/simulation.h"
 #include "experiments/strategies/run_centroids.h"
-#include "net_models/link_factory.h"
 
 namespace dvpr {
-
-// The typed `network:` settings of one sweep variant as the link factory's parameters.
-NetworkModelParams ToNetworkModelParams(const NetworkSettings& settings);
 
 // The routing strategy `name` for a team of `robots` over `table`.
 // Throws std::invalid_argument for a name it does not know.
@@ -28,10 +24,6 @@ RunFunction MakeSimRun(const SharedInputs& inputs);
 
 // Shared with the real-agent protocol (experiments/protocols/lcm/lcm_launch.h), which turns
 // its gathered logs into the same rows.
-AgentParams ToAgentParams(const ExperimentConfig& config);
-// The centroid settings of the config (seed, clusters per robot, given files)
-// for RunCentroids.
-RunCentroidParams CentroidParams(const ExperimentConfig& config);
 // runs.csv row of one strategy; reference_auc: broadcast's AUC of the same run (NaN: none).
 RunResult MakeRow(const RunSpec& spec, const std::string& strategy, const SimRunSummary& s, double reference_auc);
 // per_robot, links and (when outputs.queries) queries rows of one strategy's run.

@@ -170,7 +170,7 @@ TEST_F(LcmTeamTest, LaunchedTeamMatchesTheIdealSimulation) {
   const SharedInputs inputs = LoadSharedInputs(config, ConfigPath());
   const Dataset& data = inputs.deployment;
   const CentroidTable table = CentroidTable::RoundRobin(
-      RunCentroids(inputs.training, CentroidParams(config), kRobots, 0), kRobots);
+      RunCentroids(inputs.training, config.training.run_centroids, kRobots, 0), kRobots);
   const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), kRobots);
   std::map<std::string, std::map<int, Row>> sim_rows, lcm_rows;
   for (const Row& r : ReadCsv(dir_ / "sim" / "queries.csv")) sim_rows[r.at("strategy")][std::stoi(r.at("frame"))] = r;
