@@ -128,11 +128,10 @@ PaperRunResult EvaluatePaperRun(const PaperEvaluator& evaluator, const CentroidT
   result.row.seed = params.centroids_pattern.empty() ? RunSeed(params.seed, robots, run) : 0;
   for (auto& r : result.per_robot) r.key.run = run;
   result.curve.run = run;
-  result.centroids = table.centroids();
   if (!params.centroids_out_dir.empty()) {
     const auto start = std::chrono::steady_clock::now();
     WriteNpy(params.centroids_out_dir / ("centroids_n" + std::to_string(robots) + "_r" + std::to_string(run) + ".npy"),
-             result.centroids);
+             table.centroids());
     result.timings.io_s = SecondsSince(start);
   }
   return result;
