@@ -24,6 +24,7 @@ struct KMeansParams {
   int restarts = 1;           // independent seedings; the lowest inertia wins (sklearn n_init)
   std::uint64_t seed = 0;
   void Validate() const;      // throws std::invalid_argument naming the field
+  bool operator==(const KMeansParams&) const = default;
 };
 
 struct KMeansResult {

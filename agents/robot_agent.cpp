@@ -11,16 +11,6 @@
 
 namespace dvpr {
 
-void AgentParams::Validate() const {
-  auto fail = [](const std::string& what) { throw std::invalid_argument("agent parameters: " + what); };
-  if (suppression_frames < 0) fail("suppression_frames must be >= 0, got " + std::to_string(suppression_frames));
-  if (service_fixed < SimTime::Zero()) fail("service.fixed must be >= 0");
-  if (service_per_comparison < SimTime::Zero()) fail("service.per_comparison must be >= 0");
-  if (verify_service < SimTime::Zero()) fail("verification service time must be >= 0");
-  if (!(verify_max_distance >= 0.0f)) fail("verification.max_distance must be >= 0");
-  if (verify_request_bytes < 0) fail("verification.request_bytes must be >= 0, got " + std::to_string(verify_request_bytes));
-}
-
 SimTime FrameStream::TimeOf(int k) const {
   return SimTime::Nanos(std::llround(static_cast<double>(k) * 1e9 / fps));
 }
@@ -151,7 +141,7 @@ void RobotAgent::StartNextTask() {
 // delivered when the service time has elapsed.
 void RobotAgent::ServeSearch(Task task) {
   IndexSearchResult result = index_.Search(task.descriptor.data(), task.frame, params_.suppression_frames);
-  const SimTime duration = params_.service_fixed + params_.service_per_comparison * result.comparisons;
+  const SimTime duration = params_.service.fixed + params_.service.per_comparison * result.comparisons;
   ++load_.searches;
   if (task.querier != id_) ++load_.remote_queries;
   load_.comparisons += result.comparisons;
@@ -181,8 +171,8 @@ void RobotAgent::ServeSearch(Task task) {
 
 void RobotAgent::ServeVerify(Task task) {
   ++load_.verifications;
-  load_.busy += params_.verify_service;
-  transport_.ScheduleAfter(params_.verify_service, [this, task = std::move(task)] {
+  load_.busy += params_.service.fixed;
+  transport_.ScheduleAfter(params_.service.fixed, [this, task = std::move(task)] {
     if (!online_) return;
     const VerifyVerdict verdict = verifier_(task.frame, task.match_frame);
     if (task.querier == id_) {
@@ -259,7 +249,7 @@ void RobotAgent::RecordReply(FrameId frame, const std::optional<IndexMatch>& mat
 
 void RobotAgent::MaybeVerify(int k) {
   QueryOutcome& o = outcomes_[static_cast<std::size_t>(k)];
-  if (!o.best || o.best->distance > params_.verify_max_distance) return;
+  if (!o.best || o.best->distance > static_cast<float>(params_.verification.max_distance)) return;
   o.verify_requested = true;
   if (o.best->robot == id_) {
     Task task;
@@ -277,8 +267,8 @@ void RobotAgent::MaybeVerify(int k) {
   r.query_frame = o.frame.value;
   r.match_robot = static_cast<std::int16_t>(o.best->robot.value);
   r.match_frame = o.best->frame.value;
-  r.payload_size = params_.verify_request_bytes;
-  r.payload.assign(static_cast<std::size_t>(params_.verify_request_bytes), 0);
+  r.payload_size = static_cast<std::int32_t>(params_.verification.request_bytes.value());
+  r.payload.assign(static_cast<std::size_t>(r.payload_size), 0);
   transport_.Publish(channels::VerifyRequest(o.best->robot), r);
 }
 

@@ -14,6 +14,7 @@
 #include <optional>
 #include <vector>
 
+#include "agents/agent_params.h"
 #include "agents/descriptor_index.h"
 #include "agents/descriptors.h"
 #include "agents/ids.h"
@@ -22,16 +23,6 @@
 #include "sim/sim_time.h"
 
 namespace dvpr {
-
-struct AgentParams {
-  int suppression_frames = 250;               // never match a frame this close in the sequence
-  SimTime service_fixed = SimTime::Micros(50);  // per served search
-  SimTime service_per_comparison = SimTime::Nanos(20);
-  SimTime verify_service = SimTime::Micros(50);  // serving one verification request
-  float verify_max_distance = 0.6f;           // verify a match at most this far (squared L2)
-  int verify_request_bytes = 25000;           // keypoints + local descriptors stand-in
-  void Validate() const;
-};
 
 // The frames a robot takes: rows [first, first + count) of the full sequence.
 struct FrameStream {

@@ -33,7 +33,7 @@ const SweepData& Data() {
     d.deployment.trajectory = LoadKittiPoses(repo / "data/kitti/00_poses.txt");
     const SyntheticParams params;  // d = 128
     d.deployment.descriptors = SyntheticDeployment(d.deployment.trajectory, params, 1);
-    d.training = SyntheticTrainingDiverse(20000, params, 2);
+    d.training = SyntheticTrainingDiverse(params, SyntheticTrainingParams{.samples = 20000}, 2);
     return d;
   }();
   return data;

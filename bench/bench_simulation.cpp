@@ -48,8 +48,9 @@ std::shared_ptr<const CentroidTable> Table(int robots, int iterations) {
   p.k = robots;
   p.seed = 3;
   p.max_iterations = iterations;
-  return std::make_shared<CentroidTable>(
-      CentroidTable::RoundRobin(KMeans(SyntheticTrainingDiverse(20000, SyntheticParams{}, 2), p), robots));
+  const DescriptorMatrix training =
+      SyntheticTrainingDiverse(SyntheticParams{}, SyntheticTrainingParams{.samples = 20000}, 2);
+  return std::make_shared<CentroidTable>(CentroidTable::RoundRobin(KMeans(training, p), robots));
 }
 
 SimRunParams PointToPoint(int robots) {

@@ -1,10 +1,10 @@
 #include "net_models/bernoulli_loss.h"
 
-#include "net_models/loss_params.h"
+#include "net_models/param_checks.h"
 
 namespace dvpr {
 
-void BernoulliLossParams::Validate() const { CheckProbability("network.loss.p", p); }
+void BernoulliLossParams::Validate() const { CheckProbability("p", p); }
 
 BernoulliLoss::BernoulliLoss(const BernoulliLossParams& params) : p_(params.p) { params.Validate(); }
 

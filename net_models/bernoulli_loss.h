@@ -6,8 +6,9 @@ namespace dvpr {
 
 struct BernoulliLossParams {
   double p = 0.0;
-  // Throws std::invalid_argument naming network.loss.p and its value unless 0 <= p <= 1.
+  // Throws std::invalid_argument "p: ..." unless 0 <= p <= 1.
   void Validate() const;
+  bool operator==(const BernoulliLossParams&) const = default;
 };
 
 class BernoulliLoss final : public FrameLoss {

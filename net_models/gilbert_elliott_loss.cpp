@@ -1,14 +1,14 @@
 #include "net_models/gilbert_elliott_loss.h"
 
-#include "net_models/loss_params.h"
+#include "net_models/param_checks.h"
 
 namespace dvpr {
 
 void GilbertElliottParams::Validate() const {
-  CheckProbability("network.loss.p_good_to_bad", p_good_to_bad);
-  CheckProbability("network.loss.p_bad_to_good", p_bad_to_good);
-  CheckProbability("network.loss.loss_good", loss_good);
-  CheckProbability("network.loss.loss_bad", loss_bad);
+  CheckProbability("p_good_to_bad", p_good_to_bad);
+  CheckProbability("p_bad_to_good", p_bad_to_good);
+  CheckProbability("loss_good", loss_good);
+  CheckProbability("loss_bad", loss_bad);
 }
 
 GilbertElliottLoss::GilbertElliottLoss(const GilbertElliottParams& params) : params_(params) {

@@ -14,9 +14,10 @@ struct GilbertElliottParams {
   double p_bad_to_good = 0.1;
   double loss_good = 0.0;
   double loss_bad = 1.0;
-  // Throws std::invalid_argument naming network.loss.<field> and its value
-  // unless every probability lies in [0, 1].
+  // Throws std::invalid_argument "<field>: ..." unless every probability
+  // lies in [0, 1].
   void Validate() const;
+  bool operator==(const GilbertElliottParams&) const = default;
 };
 
 class GilbertElliottLoss final : public FrameLoss {

@@ -1,10 +1,13 @@
 #include "net_models/link_factory.h"
 
+#include <array>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "net_models/ideal_link.h"
 #include "net_models/lossy_link.h"
+#include "net_models/param_checks.h"
 #include "net_models/point_to_point_link.h"
 #include "net_models/shared_medium_link.h"
 
@@ -23,47 +26,54 @@ SharedMediumParams ToSharedMedium(const NetworkModelParams& p) {
   return SharedMediumParams{p.bandwidth, p.latency, p.queue_packets};
 }
 
-std::string PairName(const LinkOverrideParams& o) {
-  return std::to_string(o.src.value) + "->" + std::to_string(o.dst.value);
+constexpr std::array<std::pair<LinkModelKind, std::string_view>, 3> kNames{{
+    {LinkModelKind::kIdeal, "ideal"},
+    {LinkModelKind::kPointToPoint, "point_to_point"},
+    {LinkModelKind::kSharedMedium, "shared_medium"},
+}};
+
+void ValidateLink(const LinkOverrideParams& o, std::size_t i, LinkModelKind model, int nodes) {
+  const std::string field = "links[" + std::to_string(i) + "]";
+  const std::string pair = std::to_string(o.src.value) + "->" + std::to_string(o.dst.value);
+  if (o.src.value < 0 || o.src.value >= nodes || o.dst.value < 0 || o.dst.value >= nodes || o.src == o.dst) {
+    InvalidParam(field, pair + " is not a link between two of the " + std::to_string(nodes) + " robots");
+  }
+  if (model != LinkModelKind::kPointToPoint && (o.bandwidth || o.latency)) {
+    InvalidParam(field, "bandwidth/latency overrides need model point_to_point, not " + std::string(ToString(model)));
+  }
+  if (o.bandwidth) CheckPositiveRate(field + ".bandwidth", *o.bandwidth);
+  if (o.latency) CheckNonNegativeDuration(field + ".latency", *o.latency);
+  if (o.loss) ValidateNested(field + ".loss.", [&] { o.loss->Validate(); });
 }
 
 }  // namespace
 
 LinkModelKind ParseLinkModelKind(std::string_view name) {
-  if (name == "ideal") return LinkModelKind::kIdeal;
-  if (name == "point_to_point") return LinkModelKind::kPointToPoint;
-  if (name == "shared_medium") return LinkModelKind::kSharedMedium;
-  throw std::invalid_argument("network.model = \"" + std::string(name) +
-                              "\": unknown network model; expected ideal, point_to_point or shared_medium");
+  std::string expected;
+  for (const auto& [kind, spelling] : kNames) {
+    if (spelling == name) return kind;
+    expected += (expected.empty() ? "" : ", ") + std::string(spelling);
+  }
+  throw std::invalid_argument("unknown value '" + std::string(name) + "' (expected one of: " + expected + ")");
 }
 
 std::string_view ToString(LinkModelKind kind) {
-  switch (kind) {
-    case LinkModelKind::kIdeal: return "ideal";
-    case LinkModelKind::kPointToPoint: return "point_to_point";
-    case LinkModelKind::kSharedMedium: return "shared_medium";
+  for (const auto& [k, spelling] : kNames) {
+    if (k == kind) return spelling;
   }
   return "unknown";
 }
 
+// The model parameters are checked even for "ideal", so a typo is caught before a sweep
+// switches models.
 void NetworkModelParams::Validate(int nodes) const {
-  if (nodes <= 0) throw std::invalid_argument("robots = " + std::to_string(nodes) + ": need at least one robot");
-  wire.Validate();
-  loss.Validate();
-  // The model parameters are checked even for "ideal", so a typo is caught
-  // before a sweep switches models.
-  ToPointToPoint(*this).Validate(nodes);
-  for (const auto& o : links) {
-    if (model != LinkModelKind::kPointToPoint && (o.bandwidth || o.latency)) {
-      throw std::invalid_argument("network.links " + PairName(o) + ": bandwidth/latency overrides need "
-                                  "network.model = point_to_point, not " + std::string(ToString(model)));
-    }
-    if (o.src.value < 0 || o.src.value >= nodes || o.dst.value < 0 || o.dst.value >= nodes || o.src == o.dst) {
-      throw std::invalid_argument("network.links " + PairName(o) + ": not a link between two of the " +
-                                  std::to_string(nodes) + " robots");
-    }
-    if (o.loss) o.loss->Validate();
-  }
+  if (nodes <= 0) InvalidParam("nodes", "a network needs at least one node, got " + std::to_string(nodes));
+  CheckPositiveRate("bandwidth", bandwidth);
+  CheckNonNegativeDuration("latency", latency);
+  CheckNonNegativeCount("queue_packets", queue_packets);
+  wire.Validate();  // its fields (mtu, link_framing) sit at the top of a network section
+  ValidateNested("loss.", [&] { loss.Validate(); });
+  for (std::size_t i = 0; i < links.size(); ++i) ValidateLink(links[i], i, model, nodes);
 }
 
 std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int nodes, std::uint64_t run_seed) {

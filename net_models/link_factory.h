@@ -15,8 +15,8 @@ namespace dvpr {
 
 enum class LinkModelKind { kIdeal, kPointToPoint, kSharedMedium };
 
-// "ideal" | "point_to_point" | "shared_medium"; anything else throws
-// std::invalid_argument naming network.model and the value.
+// The one spelling of each kind: "ideal" | "point_to_point" | "shared_medium". Parse throws
+// std::invalid_argument "unknown value '<name>' (expected one of: ...)" for anything else.
 LinkModelKind ParseLinkModelKind(std::string_view name);
 std::string_view ToString(LinkModelKind kind);
 
@@ -28,6 +28,7 @@ struct LinkOverrideParams {
   std::optional<DataRate> bandwidth;
   std::optional<SimTime> latency;
   std::optional<LossParams> loss;
+  bool operator==(const LinkOverrideParams&) const = default;
 };
 
 struct NetworkModelParams {
@@ -39,11 +40,14 @@ struct NetworkModelParams {
   LossParams loss;  // for every pair unless overridden
   std::vector<LinkOverrideParams> links;
 
-  // Throws std::invalid_argument naming the key and the value: non-positive
-  // bandwidth, negative latency or queue, MTU too small, a probability outside
-  // [0, 1], an override naming a node outside [0, nodes) or its own link, or a
-  // bandwidth/latency override on a model other than point_to_point.
+  // Throws std::invalid_argument "<field>: ..." naming the value, with the
+  // fields spelled as in a config's network section ("bandwidth", "mtu",
+  // "loss.p", "links[0].latency"): non-positive bandwidth, negative latency or
+  // queue, MTU too small, a probability outside [0, 1], an override naming a
+  // node outside [0, nodes) or its own link, or a bandwidth/latency override
+  // on a model other than point_to_point.
   void Validate(int nodes) const;
+  bool operator==(const NetworkModelParams&) const = default;
 };
 
 // The link model for `nodes` nodes, wrapped in a LossyLink when any pair has

@@ -1,24 +1,33 @@
 #include "net_models/loss_params.h"
 
-#include <sstream>
+#include <array>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace dvpr {
+namespace {
+
+constexpr std::array<std::pair<LossModelKind, std::string_view>, 3> kNames{{
+    {LossModelKind::kNone, "none"},
+    {LossModelKind::kBernoulli, "bernoulli"},
+    {LossModelKind::kGilbertElliott, "gilbert_elliott"},
+}};
+
+}  // namespace
 
 LossModelKind ParseLossModelKind(std::string_view name) {
-  if (name == "none") return LossModelKind::kNone;
-  if (name == "bernoulli") return LossModelKind::kBernoulli;
-  if (name == "gilbert_elliott") return LossModelKind::kGilbertElliott;
-  throw std::invalid_argument("network.loss.model = \"" + std::string(name) +
-                              "\": unknown loss model; expected none, bernoulli or gilbert_elliott");
+  std::string expected;
+  for (const auto& [kind, spelling] : kNames) {
+    if (spelling == name) return kind;
+    expected += (expected.empty() ? "" : ", ") + std::string(spelling);
+  }
+  throw std::invalid_argument("unknown value '" + std::string(name) + "' (expected one of: " + expected + ")");
 }
 
 std::string_view ToString(LossModelKind kind) {
-  switch (kind) {
-    case LossModelKind::kNone: return "none";
-    case LossModelKind::kBernoulli: return "bernoulli";
-    case LossModelKind::kGilbertElliott: return "gilbert_elliott";
+  for (const auto& [k, spelling] : kNames) {
+    if (k == kind) return spelling;
   }
   return "unknown";
 }
@@ -35,14 +44,6 @@ std::unique_ptr<FrameLoss> MakeFrameLoss(const LossParams& params) {
     case LossModelKind::kGilbertElliott: return std::make_unique<GilbertElliottLoss>(params.gilbert_elliott);
   }
   return nullptr;
-}
-
-void CheckProbability(std::string_view key, double p) {
-  if (!(p >= 0.0 && p <= 1.0)) {
-    std::ostringstream msg;
-    msg << key << " = " << p << ": a probability must lie in [0, 1]";
-    throw std::invalid_argument(msg.str());
-  }
 }
 
 }  // namespace dvpr

@@ -10,23 +10,23 @@ namespace dvpr {
 
 enum class LossModelKind { kNone, kBernoulli, kGilbertElliott };
 
-// "none" | "bernoulli" | "gilbert_elliott"; anything else throws
-// std::invalid_argument naming network.loss.model and the value.
+// The one spelling of each kind: "none" | "bernoulli" | "gilbert_elliott". Parse throws
+// std::invalid_argument "unknown value '<name>' (expected one of: ...)" for anything else.
 LossModelKind ParseLossModelKind(std::string_view name);
 std::string_view ToString(LossModelKind kind);
 
+// The fields are flat in the config (`loss: {model: bernoulli, p: 0.01}`): each model's own
+// struct holds the keys of that model.
 struct LossParams {
   LossModelKind model = LossModelKind::kNone;
   BernoulliLossParams bernoulli;
   GilbertElliottParams gilbert_elliott;
-  void Validate() const;  // validates the chosen model's parameters
+  // Validates the chosen model's parameters; the error names the field ("p: ...").
+  void Validate() const;
+  bool operator==(const LossParams&) const = default;
 };
 
 // A fresh loss process for one pair; null for kNone.
 std::unique_ptr<FrameLoss> MakeFrameLoss(const LossParams& params);
-
-// Throws std::invalid_argument "<key> = <p>: a probability must lie in [0, 1]"
-// unless 0 <= p <= 1 (NaN fails).
-void CheckProbability(std::string_view key, double p);
 
 }  // namespace dvpr

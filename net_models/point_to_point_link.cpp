@@ -3,42 +3,29 @@
 #include <stdexcept>
 #include <string>
 
+#include "net_models/param_checks.h"
+
 namespace dvpr {
-namespace {
-
-[[noreturn]] void Invalid(const std::string& key, const std::string& value, const std::string& why) {
-  throw std::invalid_argument(key + " = " + value + ": " + why);
-}
-
-void CheckRate(const std::string& key, DataRate rate) {
-  if (rate.bps() <= 0) Invalid(key, std::to_string(rate.bps()) + "bps", "a data rate must be positive");
-}
-
-void CheckLatency(const std::string& key, SimTime latency) {
-  if (latency < SimTime::Zero()) Invalid(key, std::to_string(latency.ns()) + "ns", "a latency must not be negative");
-}
-
-}  // namespace
 
 void PointToPointParams::Validate(int nodes) const {
-  CheckRate("network.bandwidth", rate);
-  CheckLatency("network.latency", latency);
-  if (queue_packets < 0) Invalid("network.queue_packets", std::to_string(queue_packets), "must not be negative");
+  CheckPositiveRate("rate", rate);
+  CheckNonNegativeDuration("latency", latency);
+  CheckNonNegativeCount("queue_packets", queue_packets);
   for (std::size_t i = 0; i < overrides.size(); ++i) {
     const PairOverride& o = overrides[i];
-    const std::string key = "network.links[" + std::to_string(i) + "]";
+    const std::string field = "overrides[" + std::to_string(i) + "]";
     const std::string pair = std::to_string(o.src.value) + "->" + std::to_string(o.dst.value);
     if (o.src.value < 0 || o.src.value >= nodes || o.dst.value < 0 || o.dst.value >= nodes) {
-      Invalid(key, pair, "nodes must lie in [0, " + std::to_string(nodes) + ")");
+      InvalidParam(field, "nodes must lie in [0, " + std::to_string(nodes) + "), got " + pair);
     }
-    if (o.src == o.dst) Invalid(key, pair, "a node has no link to itself");
-    if (o.rate) CheckRate(key + ".bandwidth", *o.rate);
-    if (o.latency) CheckLatency(key + ".latency", *o.latency);
+    if (o.src == o.dst) InvalidParam(field, "a node has no link to itself, got " + pair);
+    if (o.rate) CheckPositiveRate(field + ".rate", *o.rate);
+    if (o.latency) CheckNonNegativeDuration(field + ".latency", *o.latency);
   }
 }
 
 PointToPointLink::PointToPointLink(const PointToPointParams& params, int nodes) : nodes_(nodes) {
-  if (nodes <= 0) Invalid("robots", std::to_string(nodes), "a network needs at least one node");
+  if (nodes <= 0) InvalidParam("nodes", "a network needs at least one node, got " + std::to_string(nodes));
   params.Validate(nodes);
   links_.assign(static_cast<std::size_t>(nodes) * static_cast<std::size_t>(nodes),
                 Link{params.rate, params.latency, SimTime::Zero(), FifoTransmitter(params.queue_packets)});

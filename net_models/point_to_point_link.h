@@ -25,7 +25,7 @@ struct PointToPointParams {
   int queue_packets = 100;
   std::vector<PairOverride> overrides;  // directed: list both directions for a symmetric link
 
-  // Throws std::invalid_argument naming the key and value: rate <= 0,
+  // Throws std::invalid_argument "<field>: ..." naming the value: rate <= 0,
   // latency < 0, queue_packets < 0, an override outside [0, nodes) or on a
   // node's link to itself.
   void Validate(int nodes) const;

@@ -3,27 +3,18 @@
 #include <stdexcept>
 #include <string>
 
+#include "net_models/param_checks.h"
+
 namespace dvpr {
 
 void SharedMediumParams::Validate() const {
-  if (rate.bps() <= 0) {
-    throw std::invalid_argument("network.bandwidth = " + std::to_string(rate.bps()) +
-                                "bps: a data rate must be positive");
-  }
-  if (latency < SimTime::Zero()) {
-    throw std::invalid_argument("network.latency = " + std::to_string(latency.ns()) +
-                                "ns: a latency must not be negative");
-  }
-  if (queue_packets < 0) {
-    throw std::invalid_argument("network.queue_packets = " + std::to_string(queue_packets) +
-                                ": must not be negative");
-  }
+  CheckPositiveRate("rate", rate);
+  CheckNonNegativeDuration("latency", latency);
+  CheckNonNegativeCount("queue_packets", queue_packets);
 }
 
 SharedMediumLink::SharedMediumLink(const SharedMediumParams& params, int nodes) : params_(params) {
-  if (nodes <= 0) {
-    throw std::invalid_argument("robots = " + std::to_string(nodes) + ": a network needs at least one node");
-  }
+  if (nodes <= 0) InvalidParam("nodes", "a network needs at least one node, got " + std::to_string(nodes));
   params_.Validate();
   senders_.assign(static_cast<std::size_t>(nodes), FifoTransmitter(params.queue_packets));
 }

@@ -16,7 +16,7 @@ struct SharedMediumParams {
   DataRate rate = DataRate::Mbps(10);
   SimTime latency = SimTime::Millis(2);  // propagation and processing, the same for all pairs
   int queue_packets = 100;               // per sending node
-  // Throws std::invalid_argument naming the key and value.
+  // Throws std::invalid_argument "<field>: ..." naming the value.
   void Validate() const;
 };
 

@@ -156,4 +156,13 @@ std::string ToString(Bytes bytes) {
   return std::to_string(bytes.value()) + "B";
 }
 
+std::string FormatDuration(SimTime t) {
+  const std::int64_t ns = t.ns();
+  for (const UnitEntry& u : {UnitEntry{"h", 3'600'000'000'000}, UnitEntry{"min", 60'000'000'000},
+                             UnitEntry{"s", 1'000'000'000}, UnitEntry{"ms", 1'000'000}, UnitEntry{"us", 1'000}}) {
+    if (ns != 0 && ns % u.factor == 0) return std::to_string(ns / u.factor) + std::string(u.name);
+  }
+  return std::to_string(ns) + "ns";
+}
+
 }  // namespace dvpr

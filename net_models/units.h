@@ -73,6 +73,8 @@ Bytes ParseBytes(std::string_view text);
 // ("10Mbps", "1500B", "64KiB"); they parse back to the same value.
 std::string ToString(DataRate rate);
 std::string ToString(Bytes bytes);
+// A duration the same way, for ParseDuration: "2ms", "50us", "20ns", "12s", "2min".
+std::string FormatDuration(SimTime t);
 
 inline std::ostream& operator<<(std::ostream& os, Bytes b) { return os << ToString(b); }
 inline std::ostream& operator<<(std::ostream& os, DataRate r) { return os << ToString(r); }

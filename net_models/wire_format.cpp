@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "net_models/param_checks.h"
+
 namespace dvpr {
 namespace {
 
@@ -51,13 +53,10 @@ WireFootprint Compute(Bytes payload, std::int64_t channel_length, const WirePara
 
 void WireParams::Validate() const {
   if (mtu.value() < wire::kIpv4Header + 8) {
-    throw std::invalid_argument("network.mtu = " + std::to_string(mtu.value()) +
-                                "B is too small: an IPv4 packet needs 20 header bytes plus at least 8 data bytes");
+    InvalidParam("mtu", "too small: an IPv4 packet needs 20 header bytes plus at least 8 data bytes, got " +
+                            std::to_string(mtu.value()) + "B");
   }
-  if (link_framing.value() < 0) {
-    throw std::invalid_argument("network.link_framing = " + std::to_string(link_framing.value()) +
-                                "B must not be negative");
-  }
+  CheckNonNegativeCount("link_framing", link_framing.value());
 }
 
 WireFootprint ComputeWireFootprint(Bytes payload, std::int64_t channel_length, const WireParams& params) {

@@ -28,9 +28,10 @@ namespace dvpr {
 struct WireParams {
   Bytes mtu{1500};          // IP MTU of the link: largest IP packet, headers included
   Bytes link_framing{2};    // per-packet link-layer overhead (PPP: 2)
-  // Throws std::invalid_argument naming the field and value (mtu must leave
-  // room for the IP header and 8 data bytes, i.e. >= 28; framing >= 0).
+  // Throws std::invalid_argument "<field>: ..." (mtu must leave room for the
+  // IP header and 8 data bytes, i.e. >= 28; framing >= 0).
   void Validate() const;
+  bool operator==(const WireParams&) const = default;
 };
 
 namespace wire {

@@ -3,6 +3,7 @@
 #include "experiments/config/config.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <fstream>
 #include <set>
@@ -20,65 +21,54 @@ using config_detail::Origin;
 
 namespace {
 
-template <typename Enum>
-Enum ReadEnum(const Field& f, const std::vector<std::string>& names) {
-  return static_cast<Enum>(f.Choice(names));
+template <typename Enum, std::size_t N>
+Enum ReadEnum(const Field& f, const std::array<std::string_view, N>& names) {
+  return static_cast<Enum>(f.Choice(std::vector<std::string>(names.begin(), names.end())));
 }
 
-const std::vector<std::string> kDatasetSources{"synthetic", "files"};
-const std::vector<std::string> kTrainingSources{"synthetic_diverse", "synthetic_deployment_like",
-                                                "files", "deployment"};
+// The one spelling of each source, indexed by the enum's value (ToString and the reader).
+constexpr std::array<std::string_view, 2> kDatasetSources{"synthetic", "files"};
+constexpr std::array<std::string_view, 4> kTrainingSources{"synthetic_diverse", "synthetic_deployment_like",
+                                                           "files", "deployment"};
 
-// The synthetic knobs are all plain numbers: a table keeps the reader short.
-struct DoubleKnob { const char* key; double* value; bool positive; };
-
-SyntheticDeploymentKnobs ReadDeploymentKnobs(const Field& f) {
-  SyntheticDeploymentKnobs k;
-  if (!f.present()) return k;
-  const DoubleKnob knobs[] = {
-      {"length_scale_min_m", &k.length_scale_min_m, true},
-      {"length_scale_max_m", &k.length_scale_max_m, true},
-      {"heading_scale", &k.heading_scale, true},
-      {"heading_fraction", &k.heading_fraction, false},
-      {"variance_decay", &k.variance_decay, false},
-      {"noise", &k.noise, false},
-      {"appearance_change", &k.appearance_change, false},
-      {"appearance_time_scale_frames", &k.appearance_time_scale_frames, true},
-      {"environment_offset", &k.environment_offset, false}};
-  f.ExpectMap({"place_features", "length_scale_min_m", "length_scale_max_m", "heading_scale",
-               "heading_fraction", "variance_decay", "noise", "appearance_change", "appearance_time_scale_frames",
-               "environment_offset"});
-  if (auto c = f.Child("place_features"); c.present()) {
-    k.place_features = static_cast<int>(c.Int(1, 1 << 20));
-  }
-  for (const DoubleKnob& knob : knobs) {
-    const Field c = f.Child(knob.key);
-    if (!c.present()) continue;
-    *knob.value = c.Double();
-    if (knob.positive ? *knob.value <= 0 : *knob.value < 0) {
-      c.Fail(knob.positive ? "must be positive" : "must not be negative");
+// dataset.synthetic: the appearance model's fields under their own names; dim is dataset.dim.
+SyntheticParams ReadSyntheticModel(const Field& f, int dim) {
+  SyntheticParams p;
+  p.dim = dim;
+  if (f.present()) {
+    f.ExpectMap({"place_features", "length_scale_min_m", "length_scale_max_m", "heading_scale",
+                 "heading_fraction", "variance_decay", "noise", "appearance_change",
+                 "appearance_time_scale_frames", "environment_offset"});
+    if (auto c = f.Child("place_features"); c.present()) {
+      p.place_features = static_cast<int>(c.Int(1, 1 << 20));
+    }
+    const std::pair<const char*, double*> numbers[] = {
+        {"length_scale_min_m", &p.length_scale_min_m}, {"length_scale_max_m", &p.length_scale_max_m},
+        {"heading_scale", &p.heading_scale}, {"heading_fraction", &p.heading_fraction},
+        {"variance_decay", &p.variance_decay}, {"noise", &p.noise},
+        {"appearance_change", &p.appearance_change},
+        {"appearance_time_scale_frames", &p.appearance_time_scale_frames},
+        {"environment_offset", &p.environment_offset}};
+    for (const auto& [key, value] : numbers) {
+      if (auto c = f.Child(key); c.present()) *value = c.Double();
     }
   }
-  if (k.heading_fraction > 1) f.Child("heading_fraction").Fail("must lie in [0, 1]");
-  if (k.length_scale_max_m < k.length_scale_min_m) {
-    f.Child("length_scale_max_m").Fail("must be at least length_scale_min_m");
-  }
-  return k;
+  f.Validate(p);
+  return p;
 }
 
-SyntheticTrainingKnobs ReadTrainingKnobs(const Field& f) {
-  SyntheticTrainingKnobs k;
-  if (!f.present()) return k;
+// training.synthetic: the training sets' fields under their own names.
+SyntheticTrainingParams ReadSyntheticTraining(const Field& f) {
+  SyntheticTrainingParams t;
+  if (!f.present()) return t;
   f.ExpectMap({"samples", "environments", "training_area_m"});
-  if (auto c = f.Child("samples"); c.present()) k.samples = static_cast<int>(c.Int(1, 10000000));
+  if (auto c = f.Child("samples"); c.present()) t.samples = static_cast<int>(c.Int(1, 10000000));
   if (auto c = f.Child("environments"); c.present()) {
-    k.environments = static_cast<int>(c.Int(1, 100000));
+    t.environments = static_cast<int>(c.Int(1, 100000));
   }
-  if (auto c = f.Child("training_area_m"); c.present()) {
-    k.training_area_m = c.Double();
-    if (k.training_area_m <= 0) c.Fail("must be positive");
-  }
-  return k;
+  if (auto c = f.Child("training_area_m"); c.present()) t.training_area_m = c.Double();
+  f.Validate(t);
+  return t;
 }
 
 DatasetConfig ReadDataset(const Field& f) {
@@ -105,7 +95,7 @@ DatasetConfig ReadDataset(const Field& f) {
       d.frames = static_cast<int>(c.Int(1, 1 << 30));
     }
   }
-  d.synthetic = ReadDeploymentKnobs(f.Child("synthetic"));
+  d.synthetic = ReadSyntheticModel(f.Child("synthetic"), d.dim);
   return d;
 }
 
@@ -116,12 +106,12 @@ std::string ResolveCentroids(const Field& f, const SweepConfig& sweep) {
     const std::filesystem::path candidate =
         std::filesystem::path(pattern).is_absolute() ? std::filesystem::path(pattern) : dir / pattern;
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(CentroidPath(candidate.string(), sweep.robots[0], 0), ec)) {
+    if (!std::filesystem::is_regular_file(ExpandCentroidPattern(candidate.string(), sweep.robots[0], 0), ec)) {
       continue;
     }
     for (int n : sweep.robots) {
       for (int r = 0; r < sweep.runs; ++r) {
-        const auto file = CentroidPath(candidate.string(), n, r);
+        const auto file = ExpandCentroidPattern(candidate.string(), n, r);
         if (!std::filesystem::is_regular_file(file, ec)) {
           f.Fail("file not found: '" + file.string() + "' (robots " + std::to_string(n) +
                  ", run " + std::to_string(r) + ")");
@@ -130,12 +120,13 @@ std::string ResolveCentroids(const Field& f, const SweepConfig& sweep) {
     }
     return std::filesystem::absolute(candidate).lexically_normal().string();
   }
-  f.Fail("file not found: '" + CentroidPath(pattern, sweep.robots[0], 0).string() +
+  f.Fail("file not found: '" + ExpandCentroidPattern(pattern, sweep.robots[0], 0).string() +
          "' (the pattern for robots " + std::to_string(sweep.robots[0]) + ", run 0)");
 }
 
-TrainingConfig ReadTraining(const Field& f, const SweepConfig& sweep) {
+TrainingConfig ReadTraining(const Field& f, const SweepConfig& sweep, std::uint64_t seed) {
   TrainingConfig t;
+  t.run_centroids.seed = seed;
   if (!f.present()) return t;
   f.ExpectMap({"source", "descriptors", "centroids", "clusters_per_robot", "synthetic"});
   if (auto c = f.Child("source"); c.present()) {
@@ -146,11 +137,13 @@ TrainingConfig ReadTraining(const Field& f, const SweepConfig& sweep) {
   if (t.source == TrainingSource::kFiles && !t.descriptors) {
     desc.Fail("required when training.source is files (an .npy, .bin or .csv file)");
   }
-  if (auto c = f.Child("centroids"); c.present()) t.centroids = ResolveCentroids(c, sweep);
-  if (auto c = f.Child("clusters_per_robot"); c.present()) {
-    t.clusters_per_robot = static_cast<int>(c.Int(1, 1000));
+  if (auto c = f.Child("centroids"); c.present()) {
+    t.run_centroids.centroids_pattern = ResolveCentroids(c, sweep);
   }
-  t.synthetic = ReadTrainingKnobs(f.Child("synthetic"));
+  if (auto c = f.Child("clusters_per_robot"); c.present()) {
+    t.run_centroids.clusters_per_robot = static_cast<int>(c.Int(1, 1000));
+  }
+  t.synthetic = ReadSyntheticTraining(f.Child("synthetic"));
   return t;
 }
 
@@ -209,17 +202,19 @@ SweepConfig ReadSweep(const Field& root) {
   return s;
 }
 
-EvaluationConfig ReadEvaluation(const Field& f) {
-  EvaluationConfig e;
+GroundTruthParams ReadEvaluation(const Field& f) {
+  GroundTruthParams e;
   if (!f.present()) return e;
   f.ExpectMap({"gt_radius_m", "suppression_frames"});
   if (auto c = f.Child("gt_radius_m"); c.present()) {
-    e.gt_radius_m = c.Double();
-    if (e.gt_radius_m <= 0) c.Fail("must be positive");
+    e.radius_m = c.Double();
+    // Checked here: the key is not the field's name (radius_m) that Validate() would report.
+    if (e.radius_m <= 0) c.Fail("must be positive");
   }
   if (auto c = f.Child("suppression_frames"); c.present()) {
     e.suppression_frames = static_cast<int>(c.Int(0, 1 << 30));
   }
+  f.Validate(e);
   return e;
 }
 
@@ -228,8 +223,8 @@ EvaluationConfig ReadEvaluation(const Field& f) {
 // Declared in config_sections.cpp (network, verification, service, dropout, outputs).
 namespace config_detail {
 NetworkConfig ReadNetwork(const Field& f);
-VerificationConfig ReadVerification(const Field& f);
-ServiceConfig ReadService(const Field& f);
+VerificationParams ReadVerification(const Field& f);
+ServiceParams ReadService(const Field& f);
 std::vector<Dropout> ReadDropout(const Field& f, const SweepConfig& sweep);
 OutputsConfig ReadOutputs(const Field& f, const SweepConfig& sweep);
 }  // namespace config_detail
@@ -257,11 +252,12 @@ ExperimentConfig ReadExperiment(const Field& root, const std::string& default_na
                                             : Field(root.origin(), YAML::Node(YAML::NodeType::Map),
                                                     "dataset"));
   c.sweep = ReadSweep(root);
-  c.training = ReadTraining(root.Child("training"), c.sweep);
+  c.training = ReadTraining(root.Child("training"), c.sweep, c.seed);
   c.evaluation = ReadEvaluation(root.Child("evaluation"));
   c.network = config_detail::ReadNetwork(root.Child("network"));
-  c.verification = config_detail::ReadVerification(root.Child("verification"));
-  c.service = config_detail::ReadService(root.Child("service"));
+  c.agent.suppression_frames = c.evaluation.suppression_frames;
+  c.agent.verification = config_detail::ReadVerification(root.Child("verification"));
+  c.agent.service = config_detail::ReadService(root.Child("service"));
   c.dropout = config_detail::ReadDropout(root.Child("dropout"), c.sweep);
   c.outputs = config_detail::ReadOutputs(root.Child("outputs"), c.sweep);
   return c;
@@ -349,14 +345,7 @@ ExperimentConfig LoadConfig(const std::filesystem::path& file,
   return ParseConfig(text.str(), base, overrides, file.string());
 }
 
-std::filesystem::path CentroidPath(const std::string& pattern, int robots, int run) {
-  std::string out = pattern;
-  for (const auto& [key, value] : {std::pair<std::string, int>{"{robots}", robots}, {"{run}", run}}) {
-    for (auto pos = out.find(key); pos != std::string::npos; pos = out.find(key, pos)) {
-      out.replace(pos, key.size(), std::to_string(value));
-    }
-  }
-  return out;
-}
+std::string_view ToString(DatasetSource s) { return kDatasetSources[static_cast<std::size_t>(s)]; }
+std::string_view ToString(TrainingSource s) { return kTrainingSources[static_cast<std::size_t>(s)]; }
 
 }  // namespace dvpr

@@ -16,14 +16,18 @@
 // is loaded (experiments/protocols/inputs.h) and name the same key paths.
 #include <cstdint>
 #include <filesystem>
-#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "agents/agent_params.h"
 #include "experiments/data/synthetic.h"
+#include "experiments/evaluation/ground_truth.h"
+#include "experiments/strategies/run_centroids.h"
 #include "experiments/strategies/strategy_spec.h"
+#include "net_models/link_factory.h"
 #include "net_models/units.h"
 #include "sim/sim_time.h"
 
@@ -35,30 +39,14 @@ class ConfigError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Knobs of the synthetic appearance model (experiments/data/synthetic.h, SyntheticParams; the YAML keys
-// are the field names, defaults are SyntheticParams' defaults). dim comes from dataset.dim.
-struct SyntheticDeploymentKnobs {  // dataset.synthetic
-  int place_features = SyntheticParams{}.place_features;
-  double length_scale_min_m = SyntheticParams{}.length_scale_min_m;
-  double length_scale_max_m = SyntheticParams{}.length_scale_max_m;
-  double heading_scale = SyntheticParams{}.heading_scale;
-  double heading_fraction = SyntheticParams{}.heading_fraction;
-  double variance_decay = SyntheticParams{}.variance_decay;
-  double noise = SyntheticParams{}.noise;
-  double appearance_change = SyntheticParams{}.appearance_change;
-  double appearance_time_scale_frames = SyntheticParams{}.appearance_time_scale_frames;
-  double environment_offset = SyntheticParams{}.environment_offset;
-  bool operator==(const SyntheticDeploymentKnobs&) const = default;
-};
-struct SyntheticTrainingKnobs {    // training.synthetic
-  int samples = 20000;             // training descriptors generated
-  int environments = SyntheticParams{}.environments;  // synthetic_diverse: environments mixed
-  double training_area_m = SyntheticParams{}.training_area_m;  // side of the square places are drawn from
-  bool operator==(const SyntheticTrainingKnobs&) const = default;
-};
-
 enum class DatasetSource { kSynthetic, kFiles };
 enum class TrainingSource { kSyntheticDiverse, kSyntheticDeploymentLike, kFiles, kDeployment };
+
+// A section of the config holds the lower layers' own parameter structs (ServiceParams,
+// LossParams, ...), read key by key and validated by their own Validate(). Where one YAML value
+// is a field of several of them, the reader writes it to each: `seed` is also
+// training.run_centroids.seed, dataset.dim also dataset.synthetic.dim, and
+// evaluation.suppression_frames also agent.suppression_frames.
 
 struct DatasetConfig {
   DatasetSource source = DatasetSource::kSynthetic;
@@ -68,18 +56,17 @@ struct DatasetConfig {
   int dim = 128;                 // the first `dim` descriptor columns are used
   double fps = 10.0;
   std::optional<int> frames;     // empty = all frames; else only the first `frames`
-  SyntheticDeploymentKnobs synthetic;
+  SyntheticParams synthetic;     // the YAML keys are the field names; dim is dataset.dim
   bool operator==(const DatasetConfig&) const = default;
 };
 
 struct TrainingConfig {
   TrainingSource source = TrainingSource::kSyntheticDiverse;
   std::optional<std::filesystem::path> descriptors;  // required when source = files
-  // Centroid files, {robots} and {run} replaced per run; when set, k-means is skipped.
-  // Held as a pattern (absolute), every expansion checked to exist at load time.
-  std::optional<std::string> centroids;
-  int clusters_per_robot = 1;
-  SyntheticTrainingKnobs synthetic;
+  // Keys centroids (the pattern, absolute; every expansion checked to exist at load time; when
+  // set, k-means is skipped) and clusters_per_robot; seed is the config's seed.
+  RunCentroidParams run_centroids;
+  SyntheticTrainingParams synthetic;
   bool operator==(const TrainingConfig&) const = default;
 };
 
@@ -92,70 +79,18 @@ struct SweepConfig {
   bool operator==(const SweepConfig&) const = default;
 };
 
-struct EvaluationConfig {
-  double gt_radius_m = 5.0;
-  int suppression_frames = 250;
-  bool operator==(const EvaluationConfig&) const = default;
-};
-
-enum class NetworkModel { kIdeal, kPointToPoint, kSharedMedium };
-enum class LossModel { kNone, kBernoulli, kGilbertElliott };
-
-struct LossConfig {
-  LossModel model = LossModel::kNone;
-  double p = 0.0;                  // bernoulli: drop probability per packet
-  double p_good_to_bad = 0.0;      // gilbert_elliott: state transition probabilities per packet
-  double p_bad_to_good = 1.0;
-  double loss_good = 0.0;          // gilbert_elliott: drop probability in each state
-  double loss_bad = 1.0;
-  bool operator==(const LossConfig&) const = default;
-};
-
-// A directed link whose parameters differ from the defaults (network.links).
-struct LinkOverride {
-  int src = 0;
-  int dst = 0;
-  std::optional<DataRate> bandwidth;
-  std::optional<SimTime> latency;
-  std::optional<LossConfig> loss;
-  bool operator==(const LinkOverride&) const = default;
-};
-
-// One network the sim protocol runs on: every parameter a single value.
-struct NetworkSettings {
-  NetworkModel model = NetworkModel::kPointToPoint;
-  DataRate bandwidth = DataRate::Mbps(10);
-  SimTime latency = SimTime::Millis(2);
-  int queue_packets = 100;
-  Bytes mtu = Bytes(1500);
-  LossConfig loss;
-  std::vector<LinkOverride> links;
-  bool operator==(const NetworkSettings&) const = default;
-};
-
 // The `network:` section. model, bandwidth, latency, queue_packets and mtu may each be a list;
-// the sweep runs their cross product (ExpandNetworks in sweep.h).
+// the sweep runs their cross product (ExpandNetworks in sweep.h), each variant a
+// NetworkModelParams with this loss and these links.
 struct NetworkConfig {
-  std::vector<NetworkModel> model{NetworkModel::kPointToPoint};
-  std::vector<DataRate> bandwidth{DataRate::Mbps(10)};
-  std::vector<SimTime> latency{SimTime::Millis(2)};
-  std::vector<int> queue_packets{100};
-  std::vector<Bytes> mtu{Bytes(1500)};
-  LossConfig loss;
-  std::vector<LinkOverride> links;
+  std::vector<LinkModelKind> model{NetworkModelParams{}.model};
+  std::vector<DataRate> bandwidth{NetworkModelParams{}.bandwidth};
+  std::vector<SimTime> latency{NetworkModelParams{}.latency};
+  std::vector<int> queue_packets{NetworkModelParams{}.queue_packets};
+  std::vector<Bytes> mtu{NetworkModelParams{}.wire.mtu};
+  LossParams loss;
+  std::vector<LinkOverrideParams> links;  // src != dst, each in a team of the sweep at run time
   bool operator==(const NetworkConfig&) const = default;
-};
-
-struct VerificationConfig {
-  Bytes request_bytes = Bytes(25000);  // geometric-verification request payload
-  double max_distance = 0.6;           // a match closer than this triggers verification
-  bool operator==(const VerificationConfig&) const = default;
-};
-
-struct ServiceConfig {
-  SimTime fixed = SimTime::Micros(50);
-  SimTime per_comparison = SimTime::Nanos(20);
-  bool operator==(const ServiceConfig&) const = default;
 };
 
 // A robot taken offline at a time (sim). Applies to teams that have that robot.
@@ -180,10 +115,9 @@ struct ExperimentConfig {
   DatasetConfig dataset;
   TrainingConfig training;
   SweepConfig sweep;               // YAML: top-level robots, runs, protocols, strategies
-  EvaluationConfig evaluation;
+  GroundTruthParams evaluation;    // YAML: evaluation.{gt_radius_m, suppression_frames}
   NetworkConfig network;
-  VerificationConfig verification;
-  ServiceConfig service;
+  AgentParams agent;               // YAML: sections service and verification
   std::vector<Dropout> dropout;
   OutputsConfig outputs;
   bool operator==(const ExperimentConfig&) const = default;
@@ -212,15 +146,9 @@ ExperimentConfig ParseConfig(const std::string& yaml_text, const std::filesystem
 // result gives an equal ExperimentConfig.
 std::string EmitConfig(const ExperimentConfig& config);
 
-// Names used in YAML and in result files.
-std::string ToString(NetworkModel model);
-std::string ToString(LossModel model);
-std::string ToString(DatasetSource source);
-std::string ToString(TrainingSource source);
-// A duration in the largest unit that keeps it whole ("2ms", "50us", "20ns").
-std::string FormatDuration(SimTime t);
-
-// The centroid file of one run: pattern with {robots} and {run} replaced.
-std::filesystem::path CentroidPath(const std::string& pattern, int robots, int run);
+// Names used in YAML and in result files (the network's and loss's enums have theirs in
+// net_models: ToString(LinkModelKind), ToString(LossModelKind)).
+std::string_view ToString(DatasetSource source);
+std::string_view ToString(TrainingSource source);
 
 }  // namespace dvpr

@@ -2,6 +2,7 @@
 // their shortest round-trip form, so the file parses back to an equal config.
 #include <charconv>
 #include <string>
+#include <string_view>
 
 #include <yaml-cpp/yaml.h>
 
@@ -25,21 +26,24 @@ void EmitList(YAML::Emitter& out, const std::vector<T>& values, Fn to_string) {
   out << YAML::EndSeq;
 }
 
-void EmitLoss(YAML::Emitter& out, const LossConfig& l) {
-  out << YAML::Flow << YAML::BeginMap << YAML::Key << "model" << YAML::Value << ToString(l.model);
-  if (l.model == LossModel::kBernoulli) out << YAML::Key << "p" << YAML::Value << Num(l.p);
-  if (l.model == LossModel::kGilbertElliott) {
-    out << YAML::Key << "p_good_to_bad" << YAML::Value << Num(l.p_good_to_bad)
-        << YAML::Key << "p_bad_to_good" << YAML::Value << Num(l.p_bad_to_good)
-        << YAML::Key << "loss_good" << YAML::Value << Num(l.loss_good)
-        << YAML::Key << "loss_bad" << YAML::Value << Num(l.loss_bad);
+std::string Name(std::string_view name) { return std::string(name); }
+
+void EmitLoss(YAML::Emitter& out, const LossParams& l) {
+  out << YAML::Flow << YAML::BeginMap << YAML::Key << "model" << YAML::Value << Name(ToString(l.model));
+  if (l.model == LossModelKind::kBernoulli) out << YAML::Key << "p" << YAML::Value << Num(l.bernoulli.p);
+  if (l.model == LossModelKind::kGilbertElliott) {
+    const GilbertElliottParams& ge = l.gilbert_elliott;
+    out << YAML::Key << "p_good_to_bad" << YAML::Value << Num(ge.p_good_to_bad)
+        << YAML::Key << "p_bad_to_good" << YAML::Value << Num(ge.p_bad_to_good)
+        << YAML::Key << "loss_good" << YAML::Value << Num(ge.loss_good)
+        << YAML::Key << "loss_bad" << YAML::Value << Num(ge.loss_bad);
   }
   out << YAML::EndMap;
 }
 
 void EmitDataset(YAML::Emitter& out, const DatasetConfig& d) {
   out << YAML::Key << "dataset" << YAML::Value << YAML::BeginMap;
-  out << YAML::Key << "source" << YAML::Value << ToString(d.source);
+  out << YAML::Key << "source" << YAML::Value << Name(ToString(d.source));
   out << YAML::Key << "poses" << YAML::Value << d.poses.string();
   if (d.descriptors) out << YAML::Key << "descriptors" << YAML::Value << d.descriptors->string();
   out << YAML::Key << "bin_width" << YAML::Value << d.bin_width;
@@ -66,10 +70,11 @@ void EmitDataset(YAML::Emitter& out, const DatasetConfig& d) {
 
 void EmitTraining(YAML::Emitter& out, const TrainingConfig& t) {
   out << YAML::Key << "training" << YAML::Value << YAML::BeginMap;
-  out << YAML::Key << "source" << YAML::Value << ToString(t.source);
+  out << YAML::Key << "source" << YAML::Value << Name(ToString(t.source));
   if (t.descriptors) out << YAML::Key << "descriptors" << YAML::Value << t.descriptors->string();
-  if (t.centroids) out << YAML::Key << "centroids" << YAML::Value << *t.centroids;
-  out << YAML::Key << "clusters_per_robot" << YAML::Value << t.clusters_per_robot;
+  const RunCentroidParams& rc = t.run_centroids;
+  if (!rc.centroids_pattern.empty()) out << YAML::Key << "centroids" << YAML::Value << rc.centroids_pattern;
+  out << YAML::Key << "clusters_per_robot" << YAML::Value << rc.clusters_per_robot;
   out << YAML::Key << "synthetic" << YAML::Value << YAML::Flow << YAML::BeginMap
       << YAML::Key << "samples" << YAML::Value << t.synthetic.samples
       << YAML::Key << "environments" << YAML::Value << t.synthetic.environments
@@ -91,7 +96,7 @@ void EmitSweep(YAML::Emitter& out, const SweepConfig& s) {
 void EmitNetwork(YAML::Emitter& out, const NetworkConfig& n) {
   out << YAML::Key << "network" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "model" << YAML::Value;
-  EmitList(out, n.model, [](NetworkModel m) { return ToString(m); });
+  EmitList(out, n.model, [](LinkModelKind m) { return Name(ToString(m)); });
   out << YAML::Key << "bandwidth" << YAML::Value;
   EmitList(out, n.bandwidth, [](DataRate r) { return ToString(r); });
   out << YAML::Key << "latency" << YAML::Value;
@@ -104,8 +109,8 @@ void EmitNetwork(YAML::Emitter& out, const NetworkConfig& n) {
   EmitLoss(out, n.loss);
   out << YAML::Key << "links" << YAML::Value << YAML::BeginSeq;
   for (const auto& l : n.links) {
-    out << YAML::Flow << YAML::BeginMap << YAML::Key << "src" << YAML::Value << l.src
-        << YAML::Key << "dst" << YAML::Value << l.dst;
+    out << YAML::Flow << YAML::BeginMap << YAML::Key << "src" << YAML::Value << l.src.value
+        << YAML::Key << "dst" << YAML::Value << l.dst.value;
     if (l.bandwidth) out << YAML::Key << "bandwidth" << YAML::Value << ToString(*l.bandwidth);
     if (l.latency) out << YAML::Key << "latency" << YAML::Value << FormatDuration(*l.latency);
     if (l.loss) {
@@ -118,13 +123,15 @@ void EmitNetwork(YAML::Emitter& out, const NetworkConfig& n) {
 }
 
 void EmitRest(YAML::Emitter& out, const ExperimentConfig& c) {
+  const VerificationParams& v = c.agent.verification;
   out << YAML::Key << "verification" << YAML::Value << YAML::Flow << YAML::BeginMap
-      << YAML::Key << "request_bytes" << YAML::Value << c.verification.request_bytes.value()
-      << YAML::Key << "max_distance" << YAML::Value << Num(c.verification.max_distance)
+      << YAML::Key << "request_bytes" << YAML::Value << v.request_bytes.value()
+      << YAML::Key << "max_distance" << YAML::Value << Num(v.max_distance)
       << YAML::EndMap;
+  const ServiceParams& s = c.agent.service;
   out << YAML::Key << "service" << YAML::Value << YAML::Flow << YAML::BeginMap
-      << YAML::Key << "fixed" << YAML::Value << FormatDuration(c.service.fixed)
-      << YAML::Key << "per_comparison" << YAML::Value << FormatDuration(c.service.per_comparison)
+      << YAML::Key << "fixed" << YAML::Value << FormatDuration(s.fixed)
+      << YAML::Key << "per_comparison" << YAML::Value << FormatDuration(s.per_comparison)
       << YAML::EndMap;
   out << YAML::Key << "dropout" << YAML::Value << YAML::BeginSeq;
   for (const auto& d : c.dropout) {
@@ -156,53 +163,13 @@ std::string EmitConfig(const ExperimentConfig& c) {
   EmitTraining(out, c.training);
   EmitSweep(out, c.sweep);
   out << YAML::Key << "evaluation" << YAML::Value << YAML::Flow << YAML::BeginMap
-      << YAML::Key << "gt_radius_m" << YAML::Value << Num(c.evaluation.gt_radius_m)
+      << YAML::Key << "gt_radius_m" << YAML::Value << Num(c.evaluation.radius_m)
       << YAML::Key << "suppression_frames" << YAML::Value << c.evaluation.suppression_frames
       << YAML::EndMap;
   EmitNetwork(out, c.network);
   EmitRest(out, c);
   out << YAML::EndMap;
   return std::string(out.c_str()) + "\n";
-}
-
-std::string ToString(NetworkModel m) {
-  switch (m) {
-    case NetworkModel::kIdeal: return "ideal";
-    case NetworkModel::kPointToPoint: return "point_to_point";
-    case NetworkModel::kSharedMedium: return "shared_medium";
-  }
-  return "?";
-}
-
-std::string ToString(LossModel m) {
-  switch (m) {
-    case LossModel::kNone: return "none";
-    case LossModel::kBernoulli: return "bernoulli";
-    case LossModel::kGilbertElliott: return "gilbert_elliott";
-  }
-  return "?";
-}
-
-std::string ToString(DatasetSource s) { return s == DatasetSource::kFiles ? "files" : "synthetic"; }
-
-std::string ToString(TrainingSource s) {
-  switch (s) {
-    case TrainingSource::kSyntheticDiverse: return "synthetic_diverse";
-    case TrainingSource::kSyntheticDeploymentLike: return "synthetic_deployment_like";
-    case TrainingSource::kFiles: return "files";
-    case TrainingSource::kDeployment: return "deployment";
-  }
-  return "?";
-}
-
-std::string FormatDuration(SimTime t) {
-  const std::int64_t ns = t.ns();
-  struct Unit { std::int64_t per; const char* name; };
-  for (const Unit u : {Unit{3600'000'000'000, "h"}, Unit{60'000'000'000, "min"},
-                       Unit{1'000'000'000, "s"}, Unit{1'000'000, "ms"}, Unit{1'000, "us"}}) {
-    if (ns != 0 && ns % u.per == 0) return std::to_string(ns / u.per) + u.name;
-  }
-  return std::to_string(ns) + "ns";
 }
 
 }  // namespace dvpr

@@ -40,6 +40,10 @@ void Field::ExpectMap(std::initializer_list<std::string_view> allowed) const {
   }
 }
 
+void Field::FailWithin(const std::string& field_and_problem) const {
+  throw ConfigError(origin_->name + ": " + (path_.empty() ? "" : path_ + ".") + field_and_problem);
+}
+
 Field Field::Child(std::string_view key) const {
   const std::string k(key);
   return Field(*origin_, node_.IsMap() ? node_[k] : YAML::Node(YAML::NodeType::Undefined),
@@ -84,12 +88,6 @@ double Field::Double() const {
     Fail("expected a number, got " + Quoted(s));
   }
   return v;
-}
-
-double Field::Probability() const {
-  const double p = Double();
-  if (p < 0.0 || p > 1.0) Fail("expected a probability in [0, 1], got " + node_.Scalar());
-  return p;
 }
 
 bool Field::Bool() const {

@@ -3,6 +3,7 @@
 // into every error, and the check for unknown keys. Not for use outside experiments/config*.cpp.
 #include <filesystem>
 #include <initializer_list>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,6 +33,28 @@ class Field {
 
   [[noreturn]] void Fail(const std::string& problem) const;
 
+  // Runs a lower layer's params.Validate(); its error "<field>: <problem>" becomes this key's
+  // error at "<path>.<field>" (the params' fields are the section's keys).
+  template <typename Params>
+  void Validate(const Params& params) const {
+    try {
+      params.Validate();
+    } catch (const std::invalid_argument& e) {
+      FailWithin(e.what());
+    }
+  }
+  // A name parsed by the lower layer that owns the enum (ParseLinkModelKind, ...); its error
+  // becomes this key's.
+  template <typename Parse>
+  auto Named(Parse parse) const -> decltype(parse(std::string_view())) {
+    const std::string& name = Scalar("a name");
+    try {
+      return parse(name);
+    } catch (const std::invalid_argument& e) {
+      Fail(e.what());
+    }
+  }
+
   // Requires a map whose keys are all in `allowed`; the error lists them.
   void ExpectMap(std::initializer_list<std::string_view> allowed) const;
   Field Child(std::string_view key) const;
@@ -42,7 +65,6 @@ class Field {
   std::string String() const;
   long long Int(long long min, long long max) const;
   double Double() const;
-  double Probability() const;
   bool Bool() const;
   DataRate Rate() const;
   SimTime Duration() const;
@@ -55,6 +77,7 @@ class Field {
 
  private:
   const std::string& Scalar(std::string_view expected) const;
+  [[noreturn]] void FailWithin(const std::string& field_and_problem) const;
 
   const Origin* origin_;
   YAML::Node node_;

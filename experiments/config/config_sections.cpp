@@ -1,6 +1,7 @@
 // The network-side sections of the config: network (with its sweepable lists), verification,
 // service, dropout, outputs.
 #include <algorithm>
+#include <cstdint>
 
 #include "experiments/config/config.h"
 #include "experiments/config/config_reader.h"
@@ -9,48 +10,52 @@ namespace dvpr::config_detail {
 
 namespace {
 
-const std::vector<std::string> kNetworkModels{"ideal", "point_to_point", "shared_medium"};
-const std::vector<std::string> kLossModels{"none", "bernoulli", "gilbert_elliott"};
-
-LossConfig ReadLoss(const Field& f) {
-  LossConfig l;
+// The loss map is flat (`{model: bernoulli, p: 0.01}`): each model's keys are its own struct's
+// fields.
+LossParams ReadLoss(const Field& f) {
+  LossParams l;
   if (!f.present()) return l;
   if (!f.node().IsMap()) f.Fail("expected a map such as {model: none} or {model: bernoulli, p: 0.01}");
   const Field model = f.Child("model");
   if (!model.present()) model.Fail("required (none, bernoulli or gilbert_elliott)");
-  l.model = static_cast<LossModel>(model.Choice(kLossModels));
+  l.model = model.Named(ParseLossModelKind);
   switch (l.model) {
-    case LossModel::kNone:
+    case LossModelKind::kNone:
       f.ExpectMap({"model"});
       break;
-    case LossModel::kBernoulli:
+    case LossModelKind::kBernoulli:
       f.ExpectMap({"model", "p"});
       if (!f.Child("p").present()) f.Child("p").Fail("required for the bernoulli loss model");
-      l.p = f.Child("p").Probability();
+      l.bernoulli.p = f.Child("p").Double();
       break;
-    case LossModel::kGilbertElliott:
+    case LossModelKind::kGilbertElliott: {
       f.ExpectMap({"model", "p_good_to_bad", "p_bad_to_good", "loss_good", "loss_bad"});
       for (const char* k : {"p_good_to_bad", "p_bad_to_good"}) {
         if (!f.Child(k).present()) f.Child(k).Fail("required for the gilbert_elliott loss model");
       }
-      l.p_good_to_bad = f.Child("p_good_to_bad").Probability();
-      l.p_bad_to_good = f.Child("p_bad_to_good").Probability();
-      if (auto c = f.Child("loss_good"); c.present()) l.loss_good = c.Probability();
-      if (auto c = f.Child("loss_bad"); c.present()) l.loss_bad = c.Probability();
+      GilbertElliottParams& ge = l.gilbert_elliott;
+      ge.p_good_to_bad = f.Child("p_good_to_bad").Double();
+      ge.p_bad_to_good = f.Child("p_bad_to_good").Double();
+      if (auto c = f.Child("loss_good"); c.present()) ge.loss_good = c.Double();
+      if (auto c = f.Child("loss_bad"); c.present()) ge.loss_bad = c.Double();
       break;
+    }
   }
+  f.Validate(l);
   return l;
 }
 
-std::vector<LinkOverride> ReadLinks(const Field& f) {
-  std::vector<LinkOverride> links;
+// Whether each link lies in the team is checked per run (NetworkModelParams::Validate), as
+// the team size is swept.
+std::vector<LinkOverrideParams> ReadLinks(const Field& f) {
+  std::vector<LinkOverrideParams> links;
   if (!f.present()) return links;
   if (!f.node().IsSequence()) f.Fail("expected a list of {src, dst, bandwidth, latency, loss}");
   for (const Field& item : f.Items()) {
     item.ExpectMap({"src", "dst", "bandwidth", "latency", "loss"});
-    LinkOverride o;
-    o.src = static_cast<int>(item.Child("src").Int(0, 100000));
-    o.dst = static_cast<int>(item.Child("dst").Int(0, 100000));
+    LinkOverrideParams o;
+    o.src = NodeId(static_cast<std::int32_t>(item.Child("src").Int(0, 100000)));
+    o.dst = NodeId(static_cast<std::int32_t>(item.Child("dst").Int(0, 100000)));
     if (o.src == o.dst) item.Child("dst").Fail("must differ from src");
     if (auto c = item.Child("bandwidth"); c.present()) o.bandwidth = c.Rate();
     if (auto c = item.Child("latency"); c.present()) o.latency = c.Duration();
@@ -78,8 +83,7 @@ NetworkConfig ReadNetwork(const Field& f) {
   if (!f.present()) return n;
   f.ExpectMap({"model", "bandwidth", "latency", "queue_packets", "mtu", "loss", "links"});
   if (auto c = f.Child("model"); c.present()) {
-    n.model = ReadList<NetworkModel>(
-        c, [](const Field& i) { return static_cast<NetworkModel>(i.Choice(kNetworkModels)); });
+    n.model = ReadList<LinkModelKind>(c, [](const Field& i) { return i.Named(ParseLinkModelKind); });
   }
   if (auto c = f.Child("bandwidth"); c.present()) {
     n.bandwidth = ReadList<DataRate>(c, [](const Field& i) { return i.Rate(); });
@@ -103,24 +107,23 @@ NetworkConfig ReadNetwork(const Field& f) {
   return n;
 }
 
-VerificationConfig ReadVerification(const Field& f) {
-  VerificationConfig v;
+VerificationParams ReadVerification(const Field& f) {
+  VerificationParams v;
   if (!f.present()) return v;
   f.ExpectMap({"request_bytes", "max_distance"});
   if (auto c = f.Child("request_bytes"); c.present()) v.request_bytes = c.Size(true);
-  if (auto c = f.Child("max_distance"); c.present()) {
-    v.max_distance = c.Double();
-    if (v.max_distance < 0) c.Fail("must not be negative");
-  }
+  if (auto c = f.Child("max_distance"); c.present()) v.max_distance = c.Double();
+  f.Validate(v);
   return v;
 }
 
-ServiceConfig ReadService(const Field& f) {
-  ServiceConfig s;
+ServiceParams ReadService(const Field& f) {
+  ServiceParams s;
   if (!f.present()) return s;
   f.ExpectMap({"fixed", "per_comparison"});
   if (auto c = f.Child("fixed"); c.present()) s.fixed = c.Duration();
   if (auto c = f.Child("per_comparison"); c.present()) s.per_comparison = c.Duration();
+  f.Validate(s);
   return s;
 }
 

@@ -173,41 +173,38 @@ std::vector<Sample> RandomSamples(int count, double origin, double area, Rng& rn
   return samples;
 }
 
-void CheckCount(int count, const char* what) {
-  if (count < 0) {
-    throw std::invalid_argument(std::string(what) + ": count must be >= 0, got " +
-                                std::to_string(count));
-  }
-}
-
 // Deployment-like training places lie this far from the deployment's, in another area.
 constexpr double kOtherAreaOrigin_m = 1e5;
+
+void Require(bool ok, const char* field, const std::string& why) {
+  if (!ok) throw std::invalid_argument(std::string(field) + ": " + why);
+}
 
 }  // namespace
 
 void SyntheticParams::Validate() const {
-  const auto require = [](bool ok, const char* field, const std::string& why) {
-    if (!ok) throw std::invalid_argument(std::string("synthetic.") + field + ": " + why);
-  };
-  require(dim > 0, "dim", "must be positive, got " + std::to_string(dim));
-  require(place_features > 0, "place_features", "must be positive");
-  require(length_scale_min_m > 0 && std::isfinite(length_scale_min_m), "length_scale_min_m",
+  Require(dim > 0, "dim", "must be positive, got " + std::to_string(dim));
+  Require(place_features > 0, "place_features", "must be positive");
+  Require(length_scale_min_m > 0 && std::isfinite(length_scale_min_m), "length_scale_min_m",
           "must be positive");
-  require(length_scale_max_m >= length_scale_min_m && std::isfinite(length_scale_max_m),
-          "length_scale_max_m", "must be finite and >= length_scale_min_m");
-  require(heading_scale > 0 && std::isfinite(heading_scale), "heading_scale", "must be positive");
-  require(heading_fraction >= 0 && heading_fraction <= 1, "heading_fraction", "must be in [0, 1]");
-  require(variance_decay >= 0 && std::isfinite(variance_decay), "variance_decay", "must be >= 0");
-  require(noise >= 0 && std::isfinite(noise), "noise", "must be >= 0");
-  require(appearance_change >= 0 && std::isfinite(appearance_change), "appearance_change",
-          "must be >= 0");
-  require(appearance_time_scale_frames > 0 && std::isfinite(appearance_time_scale_frames),
+  Require(length_scale_max_m >= length_scale_min_m && std::isfinite(length_scale_max_m),
+          "length_scale_max_m", "must be finite and at least length_scale_min_m");
+  Require(heading_scale > 0 && std::isfinite(heading_scale), "heading_scale", "must be positive");
+  Require(heading_fraction >= 0 && heading_fraction <= 1, "heading_fraction", "must lie in [0, 1]");
+  Require(variance_decay >= 0 && std::isfinite(variance_decay), "variance_decay", "must not be negative");
+  Require(noise >= 0 && std::isfinite(noise), "noise", "must not be negative");
+  Require(appearance_change >= 0 && std::isfinite(appearance_change), "appearance_change",
+          "must not be negative");
+  Require(appearance_time_scale_frames > 0 && std::isfinite(appearance_time_scale_frames),
           "appearance_time_scale_frames", "must be positive");
-  require(environment_offset >= 0 && std::isfinite(environment_offset), "environment_offset",
-          "must be >= 0");
-  require(environments >= 1, "environments", "must be at least 1");
-  require(training_area_m > 0 && std::isfinite(training_area_m), "training_area_m",
-          "must be positive");
+  Require(environment_offset >= 0 && std::isfinite(environment_offset), "environment_offset",
+          "must not be negative");
+}
+
+void SyntheticTrainingParams::Validate() const {
+  Require(samples >= 0, "samples", "must not be negative, got " + std::to_string(samples));
+  Require(environments >= 1, "environments", "must be at least 1");
+  Require(training_area_m > 0 && std::isfinite(training_area_m), "training_area_m", "must be positive");
 }
 
 DescriptorMatrix SyntheticDeployment(const Trajectory& trajectory, const SyntheticParams& params,
@@ -230,36 +227,38 @@ DescriptorMatrix SyntheticDeployment(const Trajectory& trajectory, const Synthet
   return out;
 }
 
-DescriptorMatrix SyntheticTrainingDiverse(int count, const SyntheticParams& params,
-                                          std::uint64_t seed) {
+DescriptorMatrix SyntheticTrainingDiverse(const SyntheticParams& params,
+                                          const SyntheticTrainingParams& training, std::uint64_t seed) {
   params.Validate();
-  CheckCount(count, "SyntheticTrainingDiverse");
+  training.Validate();
+  const int count = training.samples;
   DescriptorMatrix out(count, params.dim);
   Rng frames = StreamRng(seed, kDiverseFrames);
   const Renderer renderer(params);
   Eigen::Index first = 0;
-  for (int e = 0; e < params.environments; ++e) {
+  for (int e = 0; e < training.environments; ++e) {
     // Rows are grouped by environment; the first count % environments get one frame more.
-    const int share = count / params.environments + (e < count % params.environments ? 1 : 0);
+    const int share = count / training.environments + (e < count % training.environments ? 1 : 0);
     Rng env_rng = StreamRng(seed, kDiverseEnvironments + static_cast<std::uint64_t>(e));
     const Environment env = MakeEnvironment(params, env_rng);
-    renderer.Render(env, RandomSamples(share, 0.0, params.training_area_m, frames), frames, out,
+    renderer.Render(env, RandomSamples(share, 0.0, training.training_area_m, frames), frames, out,
                     first);
     first += share;
   }
   return out;
 }
 
-DescriptorMatrix SyntheticTrainingDeploymentLike(int count, const SyntheticParams& params,
+DescriptorMatrix SyntheticTrainingDeploymentLike(const SyntheticParams& params,
+                                                 const SyntheticTrainingParams& training,
                                                  std::uint64_t seed) {
   params.Validate();
-  CheckCount(count, "SyntheticTrainingDeploymentLike");
+  training.Validate();
   Rng env_rng = StreamRng(seed, kDeploymentEnvironment);
   const Environment env = MakeEnvironment(params, env_rng);
   Rng frames = StreamRng(seed, kDeploymentLikeFrames);
-  DescriptorMatrix out(count, params.dim);
+  DescriptorMatrix out(training.samples, params.dim);
   Renderer(params).Render(
-      env, RandomSamples(count, kOtherAreaOrigin_m, params.training_area_m, frames), frames, out, 0);
+      env, RandomSamples(training.samples, kOtherAreaOrigin_m, training.training_area_m, frames), frames, out, 0);
   return out;
 }
 

@@ -16,6 +16,8 @@
 
 namespace dvpr {
 
+// The appearance model (config: dataset.synthetic; dim is dataset.dim). Validate() throws
+// std::invalid_argument "<field>: <problem>" naming the field.
 struct SyntheticParams {
   int dim = 128;                         // d: descriptor length
   int place_features = 256;              // random Fourier features of the place field
@@ -28,24 +30,33 @@ struct SyntheticParams {
   double appearance_change = 0.45;       // slowly time-varying term (light, traffic), same units
   double appearance_time_scale_frames = 200.0;  // its correlation time, in frames
   double environment_offset = 0.8;       // std of an environment's mean, same units
+  void Validate() const;
+  bool operator==(const SyntheticParams&) const = default;
+};
+
+// The training sets drawn from the model (config: training.synthetic).
+struct SyntheticTrainingParams {
+  int samples = 20000;                   // training descriptors generated
   int environments = 30;                 // environments in the diverse training set
   double training_area_m = 2000.0;       // side of the square training places are drawn from
-  void Validate() const;                 // throws std::invalid_argument naming the field
+  void Validate() const;                 // as SyntheticParams::Validate
+  bool operator==(const SyntheticTrainingParams&) const = default;
 };
 
 // Descriptors along `trajectory` (frame index = time) in the deployment environment of `seed`.
 DescriptorMatrix SyntheticDeployment(const Trajectory& trajectory, const SyntheticParams& params,
                                      std::uint64_t seed);
 
-// `count` descriptors from params.environments environments, none of them the deployment's,
-// at random places, headings and times, spread evenly over the environments.
-DescriptorMatrix SyntheticTrainingDiverse(int count, const SyntheticParams& params,
-                                          std::uint64_t seed);
+// training.samples descriptors from training.environments environments, none of them the
+// deployment's, at random places, headings and times, spread evenly over the environments.
+DescriptorMatrix SyntheticTrainingDiverse(const SyntheticParams& params,
+                                          const SyntheticTrainingParams& training, std::uint64_t seed);
 
-// `count` descriptors from the deployment environment of `seed` (pass the deployment's seed) at
-// random places in another area, random headings and times: the same statistics as the
+// training.samples descriptors from the deployment environment of `seed` (pass the deployment's
+// seed) at random places in another area, random headings and times: the same statistics as the
 // deployment, other places.
-DescriptorMatrix SyntheticTrainingDeploymentLike(int count, const SyntheticParams& params,
+DescriptorMatrix SyntheticTrainingDeploymentLike(const SyntheticParams& params,
+                                                 const SyntheticTrainingParams& training,
                                                  std::uint64_t seed);
 
 }  // namespace dvpr

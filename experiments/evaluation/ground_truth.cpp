@@ -10,10 +10,10 @@ namespace dvpr {
 
 void GroundTruthParams::Validate() const {
   if (!(radius_m > 0.0) || !std::isfinite(radius_m)) {
-    throw std::invalid_argument("GroundTruthParams.radius_m must be finite and > 0");
+    throw std::invalid_argument("radius_m: must be finite and positive, got " + std::to_string(radius_m));
   }
   if (suppression_frames < 0) {
-    throw std::invalid_argument("GroundTruthParams.suppression_frames must be >= 0, got " +
+    throw std::invalid_argument("suppression_frames: must not be negative, got " +
                                 std::to_string(suppression_frames));
   }
 }

@@ -12,7 +12,8 @@ namespace dvpr {
 struct GroundTruthParams {
   double radius_m = 5.0;        // r: a match is correct within r metres
   int suppression_frames = 250; // frames with |i - j| <= this are never candidates
-  void Validate() const;        // throws std::invalid_argument naming the field
+  void Validate() const;        // throws std::invalid_argument "<field>: <problem>"
+  bool operator==(const GroundTruthParams&) const = default;
 };
 
 // g(i) = min over |i - j| > window of ||P_i - P_j||^2; +inf when no frame is outside the window.

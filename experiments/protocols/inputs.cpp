@@ -7,25 +7,6 @@
 
 namespace dvpr {
 
-SyntheticParams ToSyntheticParams(const ExperimentConfig& config) {
-  const SyntheticDeploymentKnobs& d = config.dataset.synthetic;
-  SyntheticParams p;
-  p.dim = config.dataset.dim;
-  p.place_features = d.place_features;
-  p.length_scale_min_m = d.length_scale_min_m;
-  p.length_scale_max_m = d.length_scale_max_m;
-  p.heading_scale = d.heading_scale;
-  p.heading_fraction = d.heading_fraction;
-  p.variance_decay = d.variance_decay;
-  p.noise = d.noise;
-  p.appearance_change = d.appearance_change;
-  p.appearance_time_scale_frames = d.appearance_time_scale_frames;
-  p.environment_offset = d.environment_offset;
-  p.environments = config.training.synthetic.environments;
-  p.training_area_m = config.training.synthetic.training_area_m;
-  return p;
-}
-
 namespace {
 
 // Runs `load`, turning any loader error into a ConfigError naming the config key.
@@ -56,28 +37,23 @@ Dataset LoadDeployment(const ExperimentConfig& c, const std::string& origin) {
     ds.trajectory.positions.conservativeResize(*d.frames, Eigen::NoChange);
     ds.trajectory.headings.conservativeResize(*d.frames, Eigen::NoChange);
   }
-  const SyntheticParams params = ToSyntheticParams(c);
-  ds.descriptors = WithKey(origin, "dataset.synthetic", [&] {
-    params.Validate();
-    return SyntheticDeployment(ds.trajectory, params, c.seed);
-  });
+  ds.descriptors = WithKey(origin, "dataset.synthetic",
+                           [&] { return SyntheticDeployment(ds.trajectory, d.synthetic, c.seed); });
   return ds;
 }
 
 DescriptorMatrix LoadTraining(const ExperimentConfig& c, const Dataset& deployment,
                               const std::string& origin) {
   const TrainingConfig& t = c.training;
-  if (t.centroids) return {};  // k-means is skipped
-  const SyntheticParams params = ToSyntheticParams(c);
+  if (!t.run_centroids.centroids_pattern.empty()) return {};  // k-means is skipped
+  const SyntheticParams& model = c.dataset.synthetic;
   switch (t.source) {
     case TrainingSource::kSyntheticDiverse:
-      return WithKey(origin, "training.synthetic", [&] {
-        return SyntheticTrainingDiverse(t.synthetic.samples, params, c.seed);
-      });
+      return WithKey(origin, "training.synthetic",
+                     [&] { return SyntheticTrainingDiverse(model, t.synthetic, c.seed); });
     case TrainingSource::kSyntheticDeploymentLike:
-      return WithKey(origin, "training.synthetic", [&] {
-        return SyntheticTrainingDeploymentLike(t.synthetic.samples, params, c.seed);
-      });
+      return WithKey(origin, "training.synthetic",
+                     [&] { return SyntheticTrainingDeploymentLike(model, t.synthetic, c.seed); });
     case TrainingSource::kFiles:
       return WithKey(origin, "training.descriptors", [&] {
         return LoadDescriptors(*t.descriptors, c.dataset.dim, c.dataset.bin_width);
@@ -100,8 +76,9 @@ SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string&
                       std::to_string(in.deployment.size()) + " frames (dataset.frames)");
   }
   in.training = LoadTraining(config, in.deployment, origin);
-  const auto k = static_cast<Eigen::Index>(largest) * config.training.clusters_per_robot;
-  if (!config.training.centroids && in.training.rows() < k) {
+  const RunCentroidParams& centroids = config.training.run_centroids;
+  const auto k = static_cast<Eigen::Index>(largest) * centroids.clusters_per_robot;
+  if (centroids.centroids_pattern.empty() && in.training.rows() < k) {
     throw ConfigError(origin + ": training: " + std::to_string(in.training.rows()) +
                       " training descriptors, k-means needs at least " + std::to_string(k));
   }

@@ -4,12 +4,8 @@
 // frame counts of poses and descriptors differing, NaN values) are ConfigErrors naming the key.
 #include "experiments/config/config.h"
 #include "experiments/protocols/run.h"
-#include "experiments/data/synthetic.h"
 
 namespace dvpr {
-
-// The synthetic model's parameters from dataset.synthetic, training.synthetic and dataset.dim.
-SyntheticParams ToSyntheticParams(const ExperimentConfig& config);
 
 // `origin` names the config file in error messages.
 SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string& origin);

@@ -18,13 +18,14 @@
 #include "experiments/data/dataset.h"
 #include "experiments/results/results.h"
 #include "experiments/strategies/strategy_spec.h"
+#include "net_models/link_factory.h"
 
 namespace dvpr {
 
 // One network of the sweep, with its label for result files.
 struct NetworkVariant {
   int index = 0;
-  NetworkSettings settings;
+  NetworkModelParams params;  // what the link factory builds for the run
   NetworkLabel label;
   std::string name;  // "point_to_point 10Mbps 2ms" (human-readable, for tables and legends)
 };

@@ -11,9 +11,7 @@ StrategyInputs StrategyInputsOf(const SharedInputs& inputs) {
   s.training = &inputs.training;
   s.deployment = &inputs.deployment.descriptors;
   s.fps = inputs.deployment.fps;
-  s.centroids.seed = c.seed;
-  s.centroids.clusters_per_robot = c.training.clusters_per_robot;
-  s.centroids.centroids_pattern = c.training.centroids.value_or("");
+  s.centroids = c.training.run_centroids;  // the config seed, clusters per robot, centroid files
   return s;
 }
 

@@ -26,6 +26,7 @@ struct RunCentroidParams {
   // Non-empty: skip k-means and read each run's centroids (.npy, k x d) from this path, with
   // "{robots}" and "{run}" replaced (ExpandCentroidPattern).
   std::string centroids_pattern;
+  bool operator==(const RunCentroidParams&) const = default;
 };
 
 std::uint64_t RunSeed(std::uint64_t config_seed, int robots, int run);

@@ -26,13 +26,10 @@ int PrRobots(const ExperimentConfig& c) {
 PaperProtocolParams ToPaperParams(const SharedInputs& in) {
   const ExperimentConfig& c = *in.config;
   PaperProtocolParams p;
-  p.evaluation.radius_m = c.evaluation.gt_radius_m;
-  p.evaluation.suppression_frames = c.evaluation.suppression_frames;
-  p.seed = c.seed;
-  p.clusters_per_robot = c.training.clusters_per_robot;
-  p.centroids_pattern = c.training.centroids.value_or("");
+  static_cast<RunCentroidParams&>(p) = c.training.run_centroids;
+  p.evaluation = c.evaluation;
   // Given centroids are the user's files; only trained ones are saved.
-  if (!c.training.centroids && !in.out_dir.empty()) p.centroids_out_dir = in.out_dir / "centroids";
+  if (p.centroids_pattern.empty() && !in.out_dir.empty()) p.centroids_out_dir = in.out_dir / "centroids";
   p.Validate();
   return p;
 }

@@ -6,25 +6,24 @@ namespace dvpr {
 
 namespace {
 
-NetworkVariant MakeVariant(int index, const NetworkConfig& n, NetworkModel model, DataRate rate,
+NetworkVariant MakeVariant(int index, const NetworkConfig& n, LinkModelKind model, DataRate rate,
                            SimTime latency, int queue, Bytes mtu) {
   NetworkVariant v;
   v.index = index;
-  v.settings = NetworkSettings{.model = model, .bandwidth = rate, .latency = latency,
-                               .queue_packets = queue, .mtu = mtu, .loss = n.loss,
-                               .links = n.links};
+  v.params = NetworkModelParams{.model = model, .bandwidth = rate, .latency = latency, .queue_packets = queue,
+                                .wire = WireParams{.mtu = mtu}, .loss = n.loss, .links = n.links};
   v.label.variant = index;
   v.label.model = ToString(model);
   v.label.loss = ToString(n.loss.model);
   v.name = v.label.model;
-  if (model != NetworkModel::kIdeal) {
+  if (model != LinkModelKind::kIdeal) {
     v.label.bandwidth_bps = static_cast<double>(rate.bps());
     v.label.latency_ms = latency.ToMillis();
     v.name += " " + ToString(rate) + " " + FormatDuration(latency);
     if (n.queue_packets.size() > 1) v.name += " q" + std::to_string(queue);
     if (n.mtu.size() > 1) v.name += " mtu" + std::to_string(mtu.value());
   }
-  if (n.loss.model != LossModel::kNone) v.name += " loss:" + v.label.loss;
+  if (n.loss.model != LossModelKind::kNone) v.name += " loss:" + v.label.loss;
   return v;
 }
 
@@ -32,8 +31,8 @@ NetworkVariant MakeVariant(int index, const NetworkConfig& n, NetworkModel model
 
 std::vector<NetworkVariant> ExpandNetworks(const NetworkConfig& n) {
   std::vector<NetworkVariant> out;
-  for (NetworkModel model : n.model) {
-    if (model == NetworkModel::kIdeal) {
+  for (LinkModelKind model : n.model) {
+    if (model == LinkModelKind::kIdeal) {
       out.push_back(MakeVariant(static_cast<int>(out.size()), n, model, n.bandwidth.front(),
                                 n.latency.front(), n.queue_packets.front(), n.mtu.front()));
       continue;

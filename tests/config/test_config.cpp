@@ -58,8 +58,8 @@ outputs: {figures: true, queries: false, messages: false, lcm_log: false}
 )");
   EXPECT_EQ(c.sweep.robots.front(), 2);
   EXPECT_EQ(c.sweep.robots.back(), 20);
-  EXPECT_EQ(c.verification.request_bytes, Bytes(25000));
-  EXPECT_EQ(c.service.per_comparison, SimTime::Nanos(20));
+  EXPECT_EQ(c.agent.verification.request_bytes, Bytes(25000));
+  EXPECT_EQ(c.agent.service.per_comparison, SimTime::Nanos(20));
   EXPECT_FALSE(c.dataset.frames.has_value());
 }
 
@@ -112,7 +112,7 @@ TEST_F(ConfigTest, UnitsRequired) {
   EXPECT_NE(ErrorOf("network: {bandwidth: [1Mbps, 10]}\n").find("network.bandwidth[1]:"),
             std::string::npos);
   // Plain integers are bytes only where DESIGN shows one.
-  EXPECT_EQ(Parse("verification: {request_bytes: 25kB}\n").verification.request_bytes, Bytes(25000));
+  EXPECT_EQ(Parse("verification: {request_bytes: 25kB}\n").agent.verification.request_bytes, Bytes(25000));
   EXPECT_EQ(Parse("network: {mtu: 576}\n").network.mtu.at(0), Bytes(576));
 }
 
@@ -150,6 +150,49 @@ TEST_F(ConfigTest, ABadStrategyNameIsAnErrorAtItsKeyPath) {
             std::string::npos);
 }
 
+// The sections hold the lower layers' params; their Validate() names the field, the reader the
+// key path before it, the same path as for a value the reader itself rejects.
+TEST_F(ConfigTest, ParamsErrorsCarryTheKeyPath) {
+  const auto starts_with = [](const std::string& error, const std::string& prefix) {
+    EXPECT_EQ(error.rfind(prefix, 0), 0u) << error;
+  };
+  starts_with(ErrorOf("network: {loss: {model: bernoulli, p: 1.5}}\n"),
+              "test.yaml: network.loss.p: a probability must lie in [0, 1], got 1.5");
+  starts_with(ErrorOf("network: {links: [{src: 0, dst: 1, loss: {model: gilbert_elliott, "
+                      "p_good_to_bad: 2, p_bad_to_good: 0.5}}]}\n"),
+              "test.yaml: network.links[0].loss.p_good_to_bad: a probability must lie in [0, 1], got 2");
+  starts_with(ErrorOf("network: {model: [ideal, token_ring]}\n"),
+              "test.yaml: network.model[1]: unknown value 'token_ring' (expected one of: ideal, "
+              "point_to_point, shared_medium)");
+  starts_with(ErrorOf("network: {loss: {model: sometimes}}\n"),
+              "test.yaml: network.loss.model: unknown value 'sometimes' (expected one of: none, bernoulli, "
+              "gilbert_elliott)");
+  starts_with(ErrorOf("dataset: {synthetic: {heading_fraction: 1.5}}\n"),
+              "test.yaml: dataset.synthetic.heading_fraction: must lie in [0, 1]");
+  starts_with(ErrorOf("dataset: {synthetic: {length_scale_max_m: 1}}\n"),
+              "test.yaml: dataset.synthetic.length_scale_max_m: must be finite and at least length_scale_min_m");
+  starts_with(ErrorOf("training: {synthetic: {training_area_m: 0}}\n"),
+              "test.yaml: training.synthetic.training_area_m: must be positive");
+  starts_with(ErrorOf("verification: {max_distance: -1}\n"),
+              "test.yaml: verification.max_distance: must not be negative, got -1");
+  starts_with(ErrorOf("evaluation: {gt_radius_m: 0}\n"), "test.yaml: evaluation.gt_radius_m: must be positive");
+}
+
+// One YAML value that several params structs hold is in each of them.
+TEST_F(ConfigTest, SharedValuesReachEveryParamsStruct) {
+  const ExperimentConfig c =
+      Parse("seed: 9\ndataset: {dim: 16}\nevaluation: {suppression_frames: 40}\n"
+            "training: {clusters_per_robot: 3}\nservice: {fixed: 1ms}\n");
+  EXPECT_EQ(c.training.run_centroids.seed, 9u);
+  EXPECT_EQ(c.training.run_centroids.clusters_per_robot, 3);
+  EXPECT_TRUE(c.training.run_centroids.centroids_pattern.empty());
+  EXPECT_EQ(c.dataset.synthetic.dim, 16);
+  EXPECT_EQ(c.agent.suppression_frames, 40);
+  EXPECT_EQ(c.evaluation.suppression_frames, 40);
+  EXPECT_EQ(c.agent.service.fixed, SimTime::Millis(1));
+  EXPECT_EQ(c.agent.service.per_comparison, SimTime::Nanos(20));  // ServiceParams' default
+}
+
 TEST_F(ConfigTest, ErrorsAreOneLine) {
   for (const char* bad : {"network: {bandwith: 1Mbps}\n", "runs: 0\n", "robots: [1]\n",
                           "network: {bandwidth: 10}\n", "dataset: {source: files}\n"}) {
@@ -167,8 +210,8 @@ TEST_F(ConfigTest, SetOverridesApplyBeforeValidation) {
   EXPECT_EQ(c.sweep.runs, 2);
   EXPECT_EQ(c.network.bandwidth, (std::vector<DataRate>{DataRate::Mbps(1), DataRate::Mbps(5)}));
   EXPECT_EQ(c.sweep.robots, (std::vector<int>{3, 4}));
-  EXPECT_EQ(c.network.loss.model, LossModel::kBernoulli);
-  EXPECT_DOUBLE_EQ(c.network.loss.p, 0.25);
+  EXPECT_EQ(c.network.loss.model, LossModelKind::kBernoulli);
+  EXPECT_DOUBLE_EQ(c.network.loss.bernoulli.p, 0.25);
   EXPECT_NE(ErrorOf("runs: 2\n", {ParseOverride("runs=0")}).find("runs: must be at least 1"),
             std::string::npos);
   EXPECT_NE(ErrorOf("", {ParseOverride("network.bandwith=1Mbps")})

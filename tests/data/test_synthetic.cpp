@@ -17,7 +17,13 @@ class SyntheticTest : public ::testing::Test {
   SyntheticTest() {
     params_.dim = 32;
     params_.place_features = 64;
-    params_.environments = 4;
+    training_.environments = 4;
+  }
+  // The training sets' parameters with `n` samples.
+  SyntheticTrainingParams Samples(int n) const {
+    SyntheticTrainingParams t = training_;
+    t.samples = n;
+    return t;
   }
   // `n` frames along a straight road in x, `step` metres apart, all facing `angle` (radians,
   // in the x-z plane).
@@ -37,18 +43,21 @@ class SyntheticTest : public ::testing::Test {
     return static_cast<double>((a - b).rowwise().squaredNorm().mean());
   }
   SyntheticParams params_;
+  SyntheticTrainingParams training_;
 };
 
 TEST_F(SyntheticTest, SameSeedSameBytesOtherSeedDiffers) {
   const Trajectory road = Road(50, 1.0);
   EXPECT_TRUE(SameBytes(SyntheticDeployment(road, params_, 7), SyntheticDeployment(road, params_, 7)));
   EXPECT_FALSE(SameBytes(SyntheticDeployment(road, params_, 7), SyntheticDeployment(road, params_, 8)));
-  EXPECT_TRUE(SameBytes(SyntheticTrainingDiverse(90, params_, 7), SyntheticTrainingDiverse(90, params_, 7)));
-  EXPECT_FALSE(SameBytes(SyntheticTrainingDiverse(90, params_, 7), SyntheticTrainingDiverse(90, params_, 8)));
-  EXPECT_TRUE(SameBytes(SyntheticTrainingDeploymentLike(90, params_, 7),
-                        SyntheticTrainingDeploymentLike(90, params_, 7)));
-  EXPECT_FALSE(SameBytes(SyntheticTrainingDeploymentLike(90, params_, 7),
-                         SyntheticTrainingDeploymentLike(90, params_, 8)));
+  EXPECT_TRUE(SameBytes(SyntheticTrainingDiverse(params_, Samples(90), 7),
+                        SyntheticTrainingDiverse(params_, Samples(90), 7)));
+  EXPECT_FALSE(SameBytes(SyntheticTrainingDiverse(params_, Samples(90), 7),
+                         SyntheticTrainingDiverse(params_, Samples(90), 8)));
+  EXPECT_TRUE(SameBytes(SyntheticTrainingDeploymentLike(params_, Samples(90), 7),
+                        SyntheticTrainingDeploymentLike(params_, Samples(90), 7)));
+  EXPECT_FALSE(SameBytes(SyntheticTrainingDeploymentLike(params_, Samples(90), 7),
+                         SyntheticTrainingDeploymentLike(params_, Samples(90), 8)));
 }
 
 TEST_F(SyntheticTest, PinnedValuesOfTheDefaultModel) {
@@ -62,8 +71,8 @@ TEST_F(SyntheticTest, PinnedValuesOfTheDefaultModel) {
 
 TEST_F(SyntheticTest, RowsAreUnitLengthWithTheRequestedShape) {
   const DescriptorMatrix sets[] = {SyntheticDeployment(Road(40, 1.0), params_, 1),
-                                   SyntheticTrainingDiverse(41, params_, 1),
-                                   SyntheticTrainingDeploymentLike(42, params_, 1)};
+                                   SyntheticTrainingDiverse(params_, Samples(41), 1),
+                                   SyntheticTrainingDeploymentLike(params_, Samples(42), 1)};
   EXPECT_EQ(sets[0].rows(), 40);
   EXPECT_EQ(sets[1].rows(), 41);
   EXPECT_EQ(sets[2].rows(), 42);
@@ -71,8 +80,8 @@ TEST_F(SyntheticTest, RowsAreUnitLengthWithTheRequestedShape) {
     EXPECT_EQ(m.cols(), 32);
     for (Eigen::Index i = 0; i < m.rows(); ++i) ASSERT_NEAR(m.row(i).norm(), 1.0f, 1e-5f);
   }
-  EXPECT_EQ(SyntheticTrainingDiverse(0, params_, 1).rows(), 0);
-  EXPECT_THROW(SyntheticTrainingDiverse(-1, params_, 1), std::invalid_argument);
+  EXPECT_EQ(SyntheticTrainingDiverse(params_, Samples(0), 1).rows(), 0);
+  EXPECT_THROW(SyntheticTrainingDiverse(params_, Samples(-1), 1), std::invalid_argument);
 }
 
 TEST_F(SyntheticTest, NearbyPlacesLookAlikeFarPlacesDoNot) {
@@ -94,7 +103,7 @@ TEST_F(SyntheticTest, OppositeHeadingsLookDifferent) {
 }
 
 TEST_F(SyntheticTest, FirstDimensionsCarryMostVariance) {
-  const DescriptorMatrix m = SyntheticTrainingDeploymentLike(400, params_, 5);
+  const DescriptorMatrix m = SyntheticTrainingDeploymentLike(params_, Samples(400), 5);
   const Eigen::RowVectorXf mean = m.colwise().mean();
   const Eigen::RowVectorXf var = (m.rowwise() - mean).array().square().colwise().mean();
   EXPECT_GT(var.head(4).sum(), var.tail(16).sum());
@@ -104,40 +113,51 @@ TEST_F(SyntheticTest, DeploymentLikeTrainingSharesTheDeploymentEnvironment) {
   // The deployment's mean descriptor is near the deployment-like set's and far from the diverse
   // set's: what makes diverse-trained routing unbalanced (DESIGN.md §8).
   const Eigen::RowVectorXf deploy = SyntheticDeployment(Road(300, 2.0), params_, 6).colwise().mean();
-  const Eigen::RowVectorXf like = SyntheticTrainingDeploymentLike(300, params_, 6).colwise().mean();
-  const Eigen::RowVectorXf diverse = SyntheticTrainingDiverse(300, params_, 6).colwise().mean();
+  const Eigen::RowVectorXf like = SyntheticTrainingDeploymentLike(params_, Samples(300), 6).colwise().mean();
+  const Eigen::RowVectorXf diverse = SyntheticTrainingDiverse(params_, Samples(300), 6).colwise().mean();
   EXPECT_LT(2.0f * (deploy - like).norm(), (deploy - diverse).norm());
 }
 
+// The message starts with the field, so the config reader only prefixes its key path.
+template <typename Params>
+void ExpectField(const Params& p, const std::string& field) {
+  try {
+    p.Validate();
+    ADD_FAILURE() << field << " accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(field + ": ", 0), 0u) << e.what();
+  }
+}
+
 TEST_F(SyntheticTest, ValidateNamesTheField) {
-  const auto expect_field = [](SyntheticParams p, const std::string& field) {
-    try {
-      p.Validate();
-      ADD_FAILURE() << field << " accepted";
-    } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("synthetic." + field), std::string::npos) << e.what();
-    }
-  };
   EXPECT_NO_THROW(SyntheticParams{}.Validate());
   SyntheticParams p;
   p.dim = 0;
-  expect_field(p, "dim");
+  ExpectField(p, "dim");
   p = {};
   p.length_scale_max_m = 1.0;  // below the minimum
-  expect_field(p, "length_scale_max_m");
+  ExpectField(p, "length_scale_max_m");
   p = {};
   p.heading_fraction = 1.5;
-  expect_field(p, "heading_fraction");
+  ExpectField(p, "heading_fraction");
   p = {};
   p.noise = -0.1;
-  expect_field(p, "noise");
-  p = {};
-  p.environments = 0;
-  expect_field(p, "environments");
+  ExpectField(p, "noise");
   p = {};
   p.appearance_time_scale_frames = 0.0;
-  expect_field(p, "appearance_time_scale_frames");
+  ExpectField(p, "appearance_time_scale_frames");
   EXPECT_THROW(SyntheticDeployment(Road(2, 1.0), p, 1), std::invalid_argument);
+  EXPECT_NO_THROW(SyntheticTrainingParams{}.Validate());
+  SyntheticTrainingParams t;
+  t.environments = 0;
+  ExpectField(t, "environments");
+  t = {};
+  t.samples = -1;
+  ExpectField(t, "samples");
+  t = {};
+  t.training_area_m = 0.0;
+  ExpectField(t, "training_area_m");
+  EXPECT_THROW(SyntheticTrainingDiverse(SyntheticParams{}, t, 1), std::invalid_argument);
 }
 
 }  // namespace

@@ -153,42 +153,42 @@ void ExpectInvalid(const std::function<void()>& f, const std::string& needle) {
   }
 }
 
-TEST(LinkParams, BadValuesNameTheKeyAndTheValue) {
+TEST(LinkParams, BadValuesNameTheFieldAndTheValue) {
   NetworkModelParams p;
   p.bandwidth = DataRate::BitsPerSecond(0);
-  ExpectInvalid([&] { p.Validate(3); }, "network.bandwidth = 0bps");
+  ExpectInvalid([&] { p.Validate(3); }, "bandwidth: a data rate must be positive, got 0bps");
   p.bandwidth = DataRate::BitsPerSecond(-5);
-  ExpectInvalid([&] { p.Validate(3); }, "network.bandwidth = -5bps");
+  ExpectInvalid([&] { p.Validate(3); }, "bandwidth: a data rate must be positive, got -5bps");
   p = NetworkModelParams{};
   p.latency = SimTime::Nanos(-1);
-  ExpectInvalid([&] { p.Validate(3); }, "network.latency = -1ns");
+  ExpectInvalid([&] { p.Validate(3); }, "latency: must not be negative, got -1ns");
   p = NetworkModelParams{};
   p.wire.mtu = Bytes(0);
-  ExpectInvalid([&] { p.Validate(3); }, "network.mtu = 0");
+  ExpectInvalid([&] { p.Validate(3); }, "mtu: too small: an IPv4 packet needs 20 header bytes plus at least 8 data bytes, got 0B");
   p = NetworkModelParams{};
   p.loss.model = LossModelKind::kBernoulli;
   p.loss.bernoulli.p = 1.5;
-  ExpectInvalid([&] { p.Validate(3); }, "network.loss.p = 1.5");
+  ExpectInvalid([&] { p.Validate(3); }, "loss.p: a probability must lie in [0, 1], got 1.5");
   p.loss.bernoulli.p = -0.1;
-  ExpectInvalid([&] { p.Validate(3); }, "network.loss.p = -0.1");
+  ExpectInvalid([&] { p.Validate(3); }, "loss.p: a probability must lie in [0, 1], got -0.1");
   p = NetworkModelParams{};
   p.loss.model = LossModelKind::kGilbertElliott;
   p.loss.gilbert_elliott.p_bad_to_good = 2;
-  ExpectInvalid([&] { p.Validate(3); }, "network.loss.p_bad_to_good = 2");
+  ExpectInvalid([&] { p.Validate(3); }, "loss.p_bad_to_good: a probability must lie in [0, 1], got 2");
   p = NetworkModelParams{};
   p.queue_packets = -1;
-  ExpectInvalid([&] { p.Validate(3); }, "network.queue_packets = -1");
+  ExpectInvalid([&] { p.Validate(3); }, "queue_packets: must not be negative, got -1");
   p = NetworkModelParams{};
   p.links.push_back({NodeId(0), NodeId(5), DataRate::Mbps(1), std::nullopt, std::nullopt});
-  ExpectInvalid([&] { p.Validate(3); }, "0->5");
+  ExpectInvalid([&] { p.Validate(3); }, "links[0]: 0->5 is not a link between two of the 3 robots");
   p = NetworkModelParams{};
   p.model = LinkModelKind::kSharedMedium;
   p.links.push_back({NodeId(0), NodeId(1), DataRate::Mbps(1), std::nullopt, std::nullopt});
-  ExpectInvalid([&] { p.Validate(3); }, "point_to_point");
-  ExpectInvalid([] { ParseLinkModelKind("token_ring"); }, "network.model = \"token_ring\"");
-  ExpectInvalid([] { ParseLossModelKind("sometimes"); }, "network.loss.model = \"sometimes\"");
-  ExpectInvalid([] { PointToPointLink(PointToPointParams{DataRate(), kLatency, 1, {}}, 2); }, "network.bandwidth");
-  ExpectInvalid([] { SharedMediumLink(SharedMediumParams{DataRate(), kLatency, 1}, 2); }, "network.bandwidth");
+  ExpectInvalid([&] { p.Validate(3); }, "links[0]: bandwidth/latency overrides need model point_to_point");
+  ExpectInvalid([] { ParseLinkModelKind("token_ring"); }, "unknown value 'token_ring' (expected one of: ideal, point_to_point, shared_medium)");
+  ExpectInvalid([] { ParseLossModelKind("sometimes"); }, "unknown value 'sometimes' (expected one of: none, bernoulli, gilbert_elliott)");
+  ExpectInvalid([] { PointToPointLink(PointToPointParams{DataRate(), kLatency, 1, {}}, 2); }, "rate: a data rate must be positive");
+  ExpectInvalid([] { SharedMediumLink(SharedMediumParams{DataRate(), kLatency, 1}, 2); }, "rate: a data rate must be positive");
 }
 
 TEST(LinkFactory, BuildsTheNamedModelWithLossWhenAsked) {
@@ -200,6 +200,21 @@ TEST(LinkFactory, BuildsTheNamedModelWithLossWhenAsked) {
   p.loss.model = ParseLossModelKind("bernoulli");
   p.loss.bernoulli.p = 0.1;
   EXPECT_EQ(MakeLinkModel(p, 3, 1)->Name(), "bernoulli(ideal)");
+}
+
+TEST(LinkFactory, KindNamesAreTheOnesParsed) {
+  EXPECT_EQ(ToString(LinkModelKind::kIdeal), "ideal");
+  EXPECT_EQ(ToString(LinkModelKind::kPointToPoint), "point_to_point");
+  EXPECT_EQ(ToString(LinkModelKind::kSharedMedium), "shared_medium");
+  EXPECT_EQ(ToString(LossModelKind::kNone), "none");
+  EXPECT_EQ(ToString(LossModelKind::kBernoulli), "bernoulli");
+  EXPECT_EQ(ToString(LossModelKind::kGilbertElliott), "gilbert_elliott");
+  for (LinkModelKind k : {LinkModelKind::kIdeal, LinkModelKind::kPointToPoint, LinkModelKind::kSharedMedium}) {
+    EXPECT_EQ(ParseLinkModelKind(ToString(k)), k);
+  }
+  for (LossModelKind k : {LossModelKind::kNone, LossModelKind::kBernoulli, LossModelKind::kGilbertElliott}) {
+    EXPECT_EQ(ParseLossModelKind(ToString(k)), k);
+  }
 }
 
 }  // namespace

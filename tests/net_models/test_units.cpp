@@ -76,5 +76,16 @@ TEST(Units, ToStringParsesBack) {
   }
 }
 
+TEST(Units, FormatDurationUsesTheLargestWholeUnit) {
+  EXPECT_EQ(FormatDuration(SimTime::Millis(2)), "2ms");
+  EXPECT_EQ(FormatDuration(SimTime::Micros(250)), "250us");
+  EXPECT_EQ(FormatDuration(SimTime::Nanos(1'500)), "1500ns");  // 1.5us is not whole
+  EXPECT_EQ(FormatDuration(SimTime::Seconds(120)), "2min");
+  EXPECT_EQ(FormatDuration(SimTime::Zero()), "0ns");
+  for (const char* s : {"12s", "7ns", "1h", "50us"}) {
+    EXPECT_EQ(FormatDuration(ParseDuration(s)), s);
+  }
+}
+
 }  // namespace
 }  // namespace dvpr

@@ -30,7 +30,7 @@ TEST(Sweep, CrossProductCounts) {
   EXPECT_EQ(specs.front().protocol, "paper");
   EXPECT_EQ(specs.front().network, nullptr);
   EXPECT_EQ(specs.back().protocol, "sim");
-  EXPECT_EQ(specs.back().network->settings.latency, SimTime::Millis(9));
+  EXPECT_EQ(specs.back().network->params.latency, SimTime::Millis(9));
   ASSERT_EQ(specs.back().strategies.size(), 2u);
   EXPECT_EQ(specs.back().strategies[0].name, "decentralized");
   EXPECT_EQ(specs.back().strategies[1].name, "broadcast");

@@ -82,9 +82,9 @@ std::int64_t TeamKey(const ExperimentConfig& c, const Dataset& data, const Centr
   h.Add(data.descriptors.data(), static_cast<std::size_t>(data.descriptors.size()) * sizeof(float));
   h.AddValue(data.fps);
   h.AddValue(c.evaluation.suppression_frames);
-  h.AddValue(c.service.fixed.ns());
-  h.AddValue(c.service.per_comparison.ns());
-  h.AddValue(c.verification.max_distance);
+  h.AddValue(c.agent.service.fixed.ns());
+  h.AddValue(c.agent.service.per_comparison.ns());
+  h.AddValue(c.agent.verification.max_distance);
   return h.value();
 }
 
@@ -303,9 +303,9 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   transport.SetReceiveFilter([&](const std::string& c, std::span<const std::uint8_t> b) { return traffic.OnReceive(c, b); });
   TeamSync sync(RobotId(o.robot), t.robots, t.key);
   Subscription status = transport.Subscribe<agent_status_t>(channels::kStatus, [&](const agent_status_t& s) { sync.OnStatus(s); });
-  RobotAgent agent(RobotId(o.robot), ToAgentParams(t.config), transport, *t.routing.routing,
+  RobotAgent agent(RobotId(o.robot), t.config.agent, transport, *t.routing.routing,
                    FrameStream{&data.descriptors, range.begin, range.size(), data.fps},
-                   PoseOracle(data.trajectory.positions, t.config.evaluation.gt_radius_m));
+                   PoseOracle(data.trajectory.positions, t.config.evaluation.radius_m));
 
   const std::int64_t ready_utime = WallUtime();
   auto announce = [&](std::int8_t state) {

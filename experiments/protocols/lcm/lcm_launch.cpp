@@ -194,7 +194,7 @@ GatheredRun GatherTeam(const ExperimentConfig& config, const SharedInputs& input
   }
   const Dataset& data = inputs.deployment;
   const SimRunLog log = ToRunLog(data, robots, logs);
-  const SimRunSummary summary = SummarizeSimRun(log, data.trajectory.positions, config.evaluation.gt_radius_m,
+  const SimRunSummary summary = SummarizeSimRun(log, data.trajectory.positions, config.evaluation.radius_m,
                                                 config.evaluation.suppression_frames);
   NetworkVariant network;
   network.label.model = "lcm";

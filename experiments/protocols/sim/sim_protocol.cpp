@@ -8,43 +8,21 @@
 #include "experiments/protocols/sim/simulation.h"
 #include "experiments/protocols/strategy_inputs.h"
 #include "experiments/strategies/run_routing.h"
+#include "net_models/param_checks.h"
 
 namespace dvpr {
 
 namespace {
 
-LossParams ToLossParams(const LossConfig& c) {
-  LossParams p;
-  switch (c.model) {
-    case LossModel::kNone: p.model = LossModelKind::kNone; break;
-    case LossModel::kBernoulli:
-      p.model = LossModelKind::kBernoulli;
-      p.bernoulli.p = c.p;
-      break;
-    case LossModel::kGilbertElliott:
-      p.model = LossModelKind::kGilbertElliott;
-      p.gilbert_elliott = {c.p_good_to_bad, c.p_bad_to_good, c.loss_good, c.loss_bad};
-      break;
-  }
-  return p;
-}
-
-LinkModelKind ToKind(NetworkModel m) {
-  switch (m) {
-    case NetworkModel::kIdeal: return LinkModelKind::kIdeal;
-    case NetworkModel::kPointToPoint: return LinkModelKind::kPointToPoint;
-    case NetworkModel::kSharedMedium: return LinkModelKind::kSharedMedium;
-  }
-  throw std::logic_error("unknown network model");
-}
-
 SimRunParams ToSimParams(const ExperimentConfig& c, const RunSpec& spec) {
   SimRunParams p;
   p.robots = spec.robots;
   p.seed = spec.seed;
-  p.agent = ToAgentParams(c);
-  p.network = ToNetworkModelParams(spec.network->settings);
-  p.gt_radius_m = c.evaluation.gt_radius_m;
+  p.agent = c.agent;
+  p.network = spec.network->params;
+  // Whether the links lie in this team is known only now; the error names the config key.
+  ValidateNested("network.", [&] { p.network.Validate(spec.robots); });
+  p.gt_radius_m = c.evaluation.radius_m;
   // A dropout applies to the teams that have that robot.
   for (const Dropout& d : c.dropout) {
     if (d.robot < spec.robots) p.dropouts.push_back({RobotId(d.robot), d.at});
@@ -128,37 +106,6 @@ RunResult MakeRow(const RunSpec& spec, const std::string& strategy, const SimRun
   return row;
 }
 
-AgentParams ToAgentParams(const ExperimentConfig& c) {
-  AgentParams p;
-  p.suppression_frames = c.evaluation.suppression_frames;
-  p.service_fixed = c.service.fixed;
-  p.service_per_comparison = c.service.per_comparison;
-  p.verify_service = c.service.fixed;
-  p.verify_max_distance = static_cast<float>(c.verification.max_distance);
-  p.verify_request_bytes = static_cast<int>(c.verification.request_bytes.value());
-  return p;
-}
-
-NetworkModelParams ToNetworkModelParams(const NetworkSettings& settings) {
-  NetworkModelParams p;
-  p.model = ToKind(settings.model);
-  p.bandwidth = settings.bandwidth;
-  p.latency = settings.latency;
-  p.queue_packets = settings.queue_packets;
-  p.wire.mtu = settings.mtu;
-  p.loss = ToLossParams(settings.loss);
-  for (const LinkOverride& o : settings.links) {
-    LinkOverrideParams lp;
-    lp.src = NodeId(o.src);
-    lp.dst = NodeId(o.dst);
-    lp.bandwidth = o.bandwidth;
-    lp.latency = o.latency;
-    if (o.loss) lp.loss = ToLossParams(*o.loss);
-    p.links.push_back(lp);
-  }
-  return p;
-}
-
 RunFunction MakeSimRun(const SharedInputs& in) {
   const ExperimentConfig* config = in.config;
   const Dataset* data = &in.deployment;
@@ -177,7 +124,7 @@ RunFunction MakeSimRun(const SharedInputs& in) {
       params.lcm_log = log_dir.empty() ? std::filesystem::path() : log_dir / LogName(spec, strategy.name);
       const RunRouting routing = BuildRunRouting(strategy, run_inputs, spec.robots, spec.run);
       SimRunLog log = RunSimulation(*data, *routing.routing, params);
-      SimRunSummary summary = SummarizeSimRun(log, data->trajectory.positions, config->evaluation.gt_radius_m,
+      SimRunSummary summary = SummarizeSimRun(log, data->trajectory.positions, config->evaluation.radius_m,
                                               config->evaluation.suppression_frames);
       return std::make_pair(std::move(log), std::move(summary));
     };

@@ -8,18 +8,13 @@
 #include "experiments/config/config.h"
 #include "experiments/protocols/run.h"
 #include "experiments/protocols/sim/simulation.h"
-#include "net_models/link_factory.h"
 
 namespace dvpr {
-
-// The typed `network:` settings of one sweep variant as the link factory's parameters.
-NetworkModelParams ToNetworkModelParams(const NetworkSettings& settings);
 
 RunFunction MakeSimRun(const SharedInputs& inputs);
 
 // Shared with the real-agent protocol (experiments/protocols/lcm/lcm_launch.h), which turns
 // its gathered logs into the same rows.
-AgentParams ToAgentParams(const ExperimentConfig& config);
 // runs.csv row of one strategy; reference_auc: broadcast's AUC of the same run (NaN: none).
 RunResult MakeRow(const RunSpec& spec, const std::string& strategy, const SimRunSummary& s, double reference_auc);
 // per_robot, links and (when outputs.queries) queries rows of one strategy's run.

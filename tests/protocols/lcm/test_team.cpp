@@ -174,11 +174,8 @@ TEST_F(LcmTeamTest, LaunchedTeamMatchesTheIdealSimulation) {
   const SharedInputs inputs = LoadSharedInputs(config, ConfigPath());
   const Dataset& data = inputs.deployment;
   // The paper's table of run 0: k-means as every protocol runs it (experiments/strategies/).
-  RunCentroidParams centroids;
-  centroids.seed = config.seed;
-  centroids.clusters_per_robot = config.training.clusters_per_robot;
-  centroids.centroids_pattern = config.training.centroids.value_or("");
-  const CentroidTable table = CentroidTable::RoundRobin(RunCentroids(inputs.training, centroids, kRobots, 0), kRobots);
+  const CentroidTable table = CentroidTable::RoundRobin(
+      RunCentroids(inputs.training, config.training.run_centroids, kRobots, 0), kRobots);
   const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), kRobots);
   std::map<std::string, std::map<int, Row>> sim_rows, lcm_rows;
   for (const Row& r : ReadCsv(dir_ / "sim" / "queries.csv")) sim_rows[r.at("strategy")][std::stoi(r.at("frame"))] = r;

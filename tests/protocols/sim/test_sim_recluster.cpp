@@ -28,9 +28,9 @@ namespace {
 AgentParams QuietAgent(int window) {
   AgentParams p;
   p.suppression_frames = window;
-  p.service_fixed = SimTime::Zero();
-  p.service_per_comparison = SimTime::Zero();
-  p.verify_max_distance = 0.0f;
+  p.service.fixed = SimTime::Zero();
+  p.service.per_comparison = SimTime::Zero();
+  p.verification.max_distance = 0.0;
   return p;
 }
 

@@ -51,9 +51,9 @@ SimRunParams IdealParams(int robots) {
   p.robots = robots;
   p.network.model = LinkModelKind::kIdeal;
   p.agent.suppression_frames = 10;
-  p.agent.service_fixed = SimTime::Zero();
-  p.agent.service_per_comparison = SimTime::Zero();
-  p.agent.verify_max_distance = 0.0f;  // random descriptors: no verification traffic
+  p.agent.service.fixed = SimTime::Zero();
+  p.agent.service.per_comparison = SimTime::Zero();
+  p.agent.verification.max_distance = 0.0;  // random descriptors: no verification traffic
   p.record_messages = true;
   return p;
 }
@@ -173,7 +173,7 @@ TEST_F(SimulationTest, DecentralizedMatchesEqualTheCausalStaticReference) {
 TEST_F(SimulationTest, SameSeedSameLogAndBusyRobotsQueue) {
   const BroadcastRouting routing(kRobots);
   SimRunParams p = IdealParams(kRobots);
-  p.agent.service_fixed = SimTime::Millis(30);  // 3 robots' queries per 100 ms frame: 90 ms of work
+  p.agent.service.fixed = SimTime::Millis(30);  // 3 robots' queries per 100 ms frame: 90 ms of work
   const SimRunLog a = RunSimulation(data_, routing, p);
   const SimRunLog b = RunSimulation(data_, routing, p);
   ASSERT_EQ(a.queries.size(), b.queries.size());

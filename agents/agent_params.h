@@ -1,0 +1,37 @@
+#pragma once
+// What a robot's protocol is tuned by (DESIGN.md sections 1 and 3): the matching window, what
+// serving costs, geometric verification. The config holds these structs as they are (sections
+// service and verification); each Validate() throws std::invalid_argument "<field>: <problem>",
+// naming the field as the struct spells it.
+#include "net_models/units.h"
+#include "sim/sim_time.h"
+
+namespace dvpr {
+
+// Per-robot load: serving a search takes fixed + per_comparison x descriptors compared; serving
+// a verification request takes fixed.
+struct ServiceParams {
+  SimTime fixed = SimTime::Micros(50);
+  SimTime per_comparison = SimTime::Nanos(20);
+  void Validate() const;
+  bool operator==(const ServiceParams&) const = default;
+};
+
+// Step 4 of the method: a match this close is verified with the robot that saw the frame.
+struct VerificationParams {
+  Bytes request_bytes{25000};  // payload of the request: keypoints + local descriptors stand-in
+  // Verify a match at most this far (squared L2). Compared as float, as the distances are.
+  double max_distance = 0.6;
+  void Validate() const;
+  bool operator==(const VerificationParams&) const = default;
+};
+
+struct AgentParams {
+  int suppression_frames = 250;  // never match a frame this close in the sequence
+  ServiceParams service;
+  VerificationParams verification;
+  void Validate() const;  // names nested fields with their member: "service.fixed: ..."
+  bool operator==(const AgentParams&) const = default;
+};
+
+}  // namespace dvpr
