@@ -1,16 +1,18 @@
 #pragma once
 // Routing strategies: where a new frame's descriptor is searched and where it
-// is stored. The agent knows only this interface, so a new strategy plugs in
-// without touching the agent.
+// is stored. A strategy here is shared by the whole team and keeps no state of
+// its own: a deterministic function of (querying robot, descriptor). Each
+// agent routes through its own StatelessRouting over it
+// (agents/stateless_routing.h).
 //
-// A strategy must be a deterministic function of (querying robot, descriptor):
-// a responder re-evaluates it to learn whether it should store the query, so
-// that decision costs no bytes on the wire.
+// A responder re-evaluates the strategy to learn whether it should store the
+// query, so that decision costs no bytes on the wire.
 #include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "agents/agent_routing.h"
 #include "agents/ids.h"
 
 namespace dvpr {
@@ -20,13 +22,13 @@ struct RoutingDecision {
   std::vector<RobotId> store_at;   // robots that keep the descriptor for later searches
 };
 
-class RoutingStrategy {
+// How `self` puts a decision on the wire: each remote robot once (searchers first, then the
+// robots that only store, in the decision's order), on its query channel; with `broadcast`, one
+// publication on channels::kQueryAll instead.
+QueryPlan PlanOf(const RoutingDecision& decision, RobotId self, bool broadcast);
+
+class RoutingStrategy : public TeamRouting {
  public:
-  virtual ~RoutingStrategy() = default;
-
-  virtual std::string_view name() const = 0;
-  int num_robots() const { return num_robots_; }
-
   RoutingDecision Route(RobotId self, const float* descriptor) const {
     RoutingDecision decision;
     DoRoute(self, descriptor, decision);
@@ -54,12 +56,14 @@ class RoutingStrategy {
   // (one transmission on a shared medium) instead of one unicast each.
   virtual bool UsesBroadcastChannel() const { return false; }
 
+  // Every robot's component is a StatelessRouting over this strategy.
+  std::unique_ptr<AgentRouting> MakeAgentRouting() const final;
+
  protected:
-  explicit RoutingStrategy(int num_robots) : num_robots_(num_robots) {}
+  explicit RoutingStrategy(int num_robots) : TeamRouting(num_robots) {}
 
  private:
   virtual void DoRoute(RobotId self, const float* descriptor, RoutingDecision& out) const = 0;
-  int num_robots_;
 };
 
 // The baseline: every robot keeps its own frames and every query is searched

@@ -299,7 +299,7 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   transport.SetReceiveFilter([&](const std::string& c, std::span<const std::uint8_t> b) { return traffic.OnReceive(c, b); });
   TeamSync sync(RobotId(o.robot), t.robots, t.key);
   Subscription status = transport.Subscribe<agent_status_t>(channels::kStatus, [&](const agent_status_t& s) { sync.OnStatus(s); });
-  RobotAgent agent(RobotId(o.robot), ToAgentParams(t.config), transport, *routing,
+  RobotAgent agent(RobotId(o.robot), ToAgentParams(t.config), transport, routing->MakeAgentRouting(),
                    FrameStream{&data.descriptors, range.begin, range.size(), data.fps},
                    PoseOracle(data.trajectory.positions, t.config.evaluation.gt_radius_m));
 

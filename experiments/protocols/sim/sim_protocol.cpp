@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "agents/decentralized_routing.h"
-#include "agents/recluster_agent.h"
+#include "agents/recluster/recluster_routing.h"
 #include "experiments/protocols/sim/simulation.h"
 #include "experiments/data/split.h"
 #include "experiments/protocols/paper/static_recluster.h"
@@ -60,9 +60,9 @@ std::string LogName(const RunSpec& spec, const std::string& strategy) {
          std::to_string(spec.network->index) + ".lcmlog";
 }
 
-// Adaptive re-clustering (agents/recluster_agent.h): the team's plan for this run. The leader
-// waits half a period for the samples.
-std::unique_ptr<RoutingStrategy> MakeReclusterRouting(const StrategySpec& s, std::shared_ptr<const CentroidTable> initial,
+// Adaptive re-clustering (agents/recluster/recluster_routing.h): the team's plan for this run.
+// The leader waits half a period for the samples.
+std::unique_ptr<TeamRouting> MakeReclusterRouting(const StrategySpec& s, std::shared_ptr<const CentroidTable> initial,
                                                       const Dataset& data, std::uint64_t config_seed,
                                                       const RunSpec& spec) {
   ReclusterPlan plan;
@@ -217,7 +217,7 @@ RunFunction MakeSimRun(const SharedInputs& in) {
       params.lcm_log = log_dir.empty() ? std::filesystem::path() : log_dir / LogName(spec, strategy);
       const StrategySpec* own_table = FindStrategySpec(strategy);
       if (own_table && own_table->table == StrategySpec::Table::kPaper) own_table = nullptr;
-      std::unique_ptr<RoutingStrategy> routing;
+      std::unique_ptr<TeamRouting> routing;
       if (own_table) {
         auto own = BuildStrategyTable(*own_table, *training, data->descriptors, centroid_params, spec.robots, spec.run);
         routing = own_table->recluster_period > 0

@@ -54,10 +54,10 @@ std::vector<MessageRow> CollectMessages(const Network& network) {
 
 }  // namespace
 
-SimRunLog RunSimulation(const Dataset& data, const RoutingStrategy& strategy, const SimRunParams& params) {
+SimRunLog RunSimulation(const Dataset& data, const TeamRouting& routing, const SimRunParams& params) {
   params.Validate(data);
-  if (strategy.num_robots() != params.robots) {
-    throw std::invalid_argument("routing strategy built for " + std::to_string(strategy.num_robots()) +
+  if (routing.num_robots() != params.robots) {
+    throw std::invalid_argument("routing strategy built for " + std::to_string(routing.num_robots()) +
                                 " robots, run has " + std::to_string(params.robots));
   }
   const int n = params.robots;
@@ -82,7 +82,8 @@ SimRunLog RunSimulation(const Dataset& data, const RoutingStrategy& strategy, co
     FrameStream frames{&data.descriptors, range.begin, range.size(), data.fps};
     for (int k = 0; k < range.size(); ++k) log.capture_time[static_cast<std::size_t>(range.begin.value + k)] = frames.TimeOf(k);
     transports.push_back(std::make_unique<SimTransport>(network, NodeId(r)));
-    agents.push_back(std::make_unique<RobotAgent>(RobotId(r), params.agent, *transports.back(), strategy, frames, verifier));
+    agents.push_back(std::make_unique<RobotAgent>(RobotId(r), params.agent, *transports.back(),
+                                                  routing.MakeAgentRouting(), frames, verifier));
   }
   for (auto& agent : agents) agent->Start();
   for (const auto& d : params.dropouts) {
