@@ -4,8 +4,8 @@
 // with per-robot state (re-clustering, agents/recluster/) keeps that state here, a stateless
 // strategy is wrapped by StatelessRouting (agents/stateless_routing.h).
 //
-// For a received query, the component says whether the robot searches it and whether it stores
-// it (RoleOf); the agent searches when told to and hands what it must store to Store().
+// What a received query asks of its receiver comes with it (its channel, QueryRole in
+// agents/channels.h): the agent searches when told to and hands what it must store to Store().
 //
 // TeamRouting is what a run's agents are built from: one shared, immutable object per run that
 // makes each robot's component.
@@ -49,12 +49,6 @@ class AgentRouting {
   virtual void Stop() = 0;
   // Where the robot's frame with this descriptor goes.
   virtual QueryPlan Plan(const float* descriptor) const = 0;
-  // What the robot does with a query `querier` took.
-  struct Role {
-    bool search = false;
-    bool store = false;
-  };
-  virtual Role RoleOf(RobotId querier, const float* descriptor) const = 0;
   // Keeps a query the robot was told to store (its own frame or a remote one), `querier` being
   // the robot that took it.
   virtual void Store(RobotId querier, FrameId frame, const float* descriptor) = 0;

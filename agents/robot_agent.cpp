@@ -5,8 +5,6 @@
 #include <string>
 #include <utility>
 
-#include "agents/channels.h"
-
 namespace dvpr {
 
 void AgentParams::Validate() const {
@@ -42,8 +40,13 @@ RobotLoad RobotAgent::load() const {
 }
 
 void RobotAgent::Start() {
-  subscriptions_.push_back(transport_.Subscribe<query_t>(channels::Query(id_), [this](const query_t& q) { OnQuery(q); }));
-  subscriptions_.push_back(transport_.Subscribe<query_t>(channels::kQueryAll, [this](const query_t& q) { OnQuery(q); }));
+  const auto on_query = [this](QueryRole role) {
+    return [this, role](const query_t& q) { OnQuery(q, role); };
+  };
+  subscriptions_.push_back(transport_.Subscribe<query_t>(channels::Query(id_), on_query(QueryRole::kSearchAndStore)));
+  subscriptions_.push_back(transport_.Subscribe<query_t>(channels::Probe(id_), on_query(QueryRole::kSearch)));
+  subscriptions_.push_back(transport_.Subscribe<query_t>(channels::Store(id_), on_query(QueryRole::kStore)));
+  subscriptions_.push_back(transport_.Subscribe<query_t>(channels::kQueryAll, on_query(QueryRole::kSearch)));
   subscriptions_.push_back(transport_.Subscribe<match_t>(channels::Match(id_), [this](const match_t& m) { OnMatch(m); }));
   subscriptions_.push_back(transport_.Subscribe<verify_request_t>(
       channels::VerifyRequest(id_), [this](const verify_request_t& r) { OnVerifyRequest(r); }));
@@ -188,21 +191,20 @@ void RobotAgent::ServeVerify(Task task) {
   });
 }
 
-// The routing component says what to do with the query: a robot asked to
-// search serves it (and stores it afterwards when asked to); a robot that is
-// only a replica stores it and sends nothing back.
-void RobotAgent::OnQuery(const query_t& q) {
+// The channel the query came on says what to do with it: a robot asked to
+// search serves the query (and stores it afterwards when asked to); a robot
+// that is only a replica stores it and sends nothing back.
+void RobotAgent::OnQuery(const query_t& q, QueryRole role) {
   if (!online_ || q.robot == id_.value || q.dim != frames_.descriptors->cols()) return;
-  const AgentRouting::Role role = routing_->RoleOf(RobotId(q.robot), q.descriptor.data());
-  if (!role.search) {
-    if (role.store) routing_->Store(RobotId(q.robot), FrameId(q.frame), q.descriptor.data());
+  if (role == QueryRole::kStore) {
+    routing_->Store(RobotId(q.robot), FrameId(q.frame), q.descriptor.data());
     return;
   }
   Task task;
   task.querier = RobotId(q.robot);
   task.frame = FrameId(q.frame);
   task.descriptor = q.descriptor;
-  task.store = role.store;
+  task.store = role == QueryRole::kSearchAndStore;
   Enqueue(std::move(task));
 }
 

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "agents/agent_routing.h"
+#include "agents/channels.h"
 #include "agents/descriptor_index.h"
 #include "agents/descriptors.h"
 #include "agents/frame_stream.h"
@@ -105,7 +106,7 @@ class RobotAgent {
   void StartNextTask();
   void ServeSearch(Task task);
   void ServeVerify(Task task);
-  void OnQuery(const query_t& q);
+  void OnQuery(const query_t& q, QueryRole role);
   void OnMatch(const match_t& m);
   void OnVerifyRequest(const verify_request_t& r);
   void OnVerifyResult(const verify_result_t& r);

@@ -1,6 +1,7 @@
 #include "agents/routing.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "agents/channels.h"
 #include "agents/stateless_routing.h"
@@ -21,17 +22,20 @@ QueryPlan PlanOf(const RoutingDecision& decision, RobotId self, bool broadcast) 
   plan.store_here = Contains(decision.store_at, self);
   plan.searches = static_cast<int>(decision.search_at.size());
   std::vector<RobotId> remote;
-  for (const auto* robots : {&decision.search_at, &decision.store_at}) {
-    for (RobotId r : *robots) {
-      if (r != self && !Contains(remote, r)) remote.push_back(r);
+  const auto send = [&](RobotId r, QueryRole role) {
+    if (r == self || Contains(remote, r)) return;
+    remote.push_back(r);
+    if (!broadcast) {
+      plan.channels.push_back(channels::QueryTo(r, role));
+    } else if (role != QueryRole::kSearch) {
+      throw std::logic_error("a broadcast query can only ask its receivers to search");
     }
+  };
+  for (RobotId r : decision.search_at) {
+    send(r, Contains(decision.store_at, r) ? QueryRole::kSearchAndStore : QueryRole::kSearch);
   }
-  if (remote.empty()) return plan;
-  if (broadcast) {
-    plan.channels.push_back(channels::kQueryAll);
-    return plan;
-  }
-  for (RobotId r : remote) plan.channels.push_back(channels::Query(r));
+  for (RobotId r : decision.store_at) send(r, QueryRole::kStore);  // searchers were sent above
+  if (broadcast && !remote.empty()) plan.channels.push_back(channels::kQueryAll);
   return plan;
 }
 

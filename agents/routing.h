@@ -3,10 +3,8 @@
 // is stored. A strategy here is shared by the whole team and keeps no state of
 // its own: a deterministic function of (querying robot, descriptor). Each
 // agent routes through its own StatelessRouting over it
-// (agents/stateless_routing.h).
-//
-// A responder re-evaluates the strategy to learn whether it should store the
-// query, so that decision costs no bytes on the wire.
+// (agents/stateless_routing.h), which also puts the decision on the wire: the
+// channel each query goes on says what its receiver does with it.
 #include <memory>
 #include <string>
 #include <string_view>
@@ -23,8 +21,9 @@ struct RoutingDecision {
 };
 
 // How `self` puts a decision on the wire: each remote robot once (searchers first, then the
-// robots that only store, in the decision's order), on its query channel; with `broadcast`, one
-// publication on channels::kQueryAll instead.
+// robots that only store, in the decision's order), on the query channel of its role
+// (channels::QueryTo). With `broadcast`, one publication on channels::kQueryAll instead; every
+// remote robot must then be a searcher that does not store (std::logic_error otherwise).
 QueryPlan PlanOf(const RoutingDecision& decision, RobotId self, bool broadcast);
 
 class RoutingStrategy : public TeamRouting {
@@ -33,23 +32,6 @@ class RoutingStrategy : public TeamRouting {
     RoutingDecision decision;
     DoRoute(self, descriptor, decision);
     return decision;
-  }
-
-  // What `robot` does with a query from `querier`: the decision of Route() as
-  // seen by one robot. Responders call it for every query they receive, so
-  // strategies whose answer is cheaper than a whole decision override it.
-  struct Role {
-    bool search = false;
-    bool store = false;
-  };
-  virtual Role RoleOf(RobotId querier, const float* descriptor, RobotId robot) const {
-    const RoutingDecision d = Route(querier, descriptor);
-    const auto has = [robot](const std::vector<RobotId>& v) {
-      for (RobotId r : v)
-        if (r == robot) return true;
-      return false;
-    };
-    return {has(d.search_at), has(d.store_at)};
   }
 
   // True: the remote searches are one publication on the broadcast channel
@@ -73,7 +55,6 @@ class BroadcastRouting final : public RoutingStrategy {
   explicit BroadcastRouting(int num_robots) : RoutingStrategy(num_robots) {}
   std::string_view name() const override { return "broadcast"; }
   bool UsesBroadcastChannel() const override { return true; }
-  Role RoleOf(RobotId querier, const float*, RobotId robot) const override { return {true, robot == querier}; }
 
  private:
   void DoRoute(RobotId self, const float*, RoutingDecision& out) const override {

@@ -13,12 +13,6 @@ QueryPlan StatelessRouting::Plan(const float* descriptor) const {
   return PlanOf(strategy_.Route(self_, descriptor), self_, strategy_.UsesBroadcastChannel());
 }
 
-// The strategy is deterministic: the responder re-evaluates the querier's decision.
-AgentRouting::Role StatelessRouting::RoleOf(RobotId querier, const float* descriptor) const {
-  const RoutingStrategy::Role role = strategy_.RoleOf(querier, descriptor, self_);
-  return {role.search, role.store};
-}
-
 void StatelessRouting::Store(RobotId querier, FrameId frame, const float* descriptor) {
   store_->Add(querier, frame, descriptor);
 }

@@ -14,7 +14,6 @@ class StatelessRouting final : public AgentRouting {
   void Start(const AgentContext& robot) override;
   void Stop() override {}
   QueryPlan Plan(const float* descriptor) const override;
-  Role RoleOf(RobotId querier, const float* descriptor) const override;
   void Store(RobotId querier, FrameId frame, const float* descriptor) override;
 
  private:

@@ -15,8 +15,8 @@
 //   longer owns to its owner under that table (descriptor_batch_t on DVPR_MIGRATE_<dst>, one
 //   message per destination).
 // Between tables, a frame goes to the owner of its nearest centroid under the taking robot's
-// table. A robot searches every query it receives; at store time it keeps the descriptor if its
-// own table says it owns it, else forwards it (one migration message). A migration batch
+// table, on that owner's search-and-store channel. At store time a robot keeps the descriptor if
+// its own table says it owns it, else forwards it (one migration message). A migration batch
 // from a newer epoch than the receiver's is kept as is (the receiver re-routes it when the table
 // arrives), so descriptors never bounce between robots with different tables; once every table
 // has arrived every descriptor sits at its owner under the newest table.
@@ -42,8 +42,6 @@ class ReclusterAgentRouting final : public AgentRouting {
   void Start(const AgentContext& robot) override;  // throws if the table's dimension is not the store's
   void Stop() override { online_ = false; }
   QueryPlan Plan(const float* descriptor) const override;
-  // The receiver always searches; Store keeps or forwards by this robot's own table.
-  Role RoleOf(RobotId, const float*) const override { return {true, true}; }
   void Store(RobotId querier, FrameId frame, const float* descriptor) override;
 
   // The robot's current epoch and table (epoch 0: the plan's initial table).

@@ -103,20 +103,21 @@ std::optional<int> SourceOf(const std::string& channel, std::span<const std::uin
   const auto robot = [&](int r, bool none_ok) { return (r >= 0 && r < robots) || (none_ok && r == -1); };
   const auto frame = [&](int f, bool none_ok) { return (f >= 0 && f < frames) || (none_ok && f == -1); };
   auto check = [](bool ok, int src) { return ok ? src : -1; };
-  if (channel.rfind("DVPR_QUERY_", 0) == 0) {
+  const auto starts = [&channel](const char* prefix) { return channel.rfind(prefix, 0) == 0; };
+  if (starts("DVPR_QUERY_") || starts("DVPR_PROBE_") || starts("DVPR_STORE_")) {
     if (auto q = Decode<query_t>(bytes)) return check(robot(q->robot, false) && frame(q->frame, false), q->robot);
-  } else if (channel.rfind("DVPR_MATCH_", 0) == 0) {
+  } else if (starts("DVPR_MATCH_")) {
     if (auto m = Decode<match_t>(bytes)) {
       return check(robot(m->responder, false) && robot(m->query_robot, false) && frame(m->query_frame, false) &&
                        robot(m->match_robot, !m->has_match) && frame(m->match_frame, !m->has_match),
                    m->responder);
     }
-  } else if (channel.rfind("DVPR_VREQ_", 0) == 0) {
+  } else if (starts("DVPR_VREQ_")) {
     if (auto r = Decode<verify_request_t>(bytes)) {
       return check(robot(r->query_robot, false) && robot(r->match_robot, false) && frame(r->query_frame, false) &&
                        frame(r->match_frame, false), r->query_robot);
     }
-  } else if (channel.rfind("DVPR_VRES_", 0) == 0) {
+  } else if (starts("DVPR_VRES_")) {
     if (auto r = Decode<verify_result_t>(bytes)) {
       return check(robot(r->query_robot, false) && robot(r->match_robot, false) && frame(r->query_frame, false) &&
                        frame(r->match_frame, false), r->match_robot);

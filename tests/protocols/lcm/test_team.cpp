@@ -314,7 +314,7 @@ TEST_F(LcmTeamTest, GarbageOnEveryChannelIsCountedAndIgnored) {
   LcmTransport noise(Url(kPort));
   std::vector<std::string> channels{"DVPR_STATUS", "DVPR_QUERY_ALL"};
   for (int r = 0; r < kRobots; ++r) {
-    for (const char* prefix : {"DVPR_QUERY_", "DVPR_MATCH_", "DVPR_VREQ_", "DVPR_VRES_"}) {
+    for (const char* prefix : {"DVPR_QUERY_", "DVPR_PROBE_", "DVPR_STORE_", "DVPR_MATCH_", "DVPR_VREQ_", "DVPR_VRES_"}) {
       channels.push_back(prefix + std::to_string(r));
     }
   }
