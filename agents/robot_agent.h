@@ -56,7 +56,7 @@ struct RobotLoad {
   std::int64_t searches = 0;               // queries served: remote and its own local ones
   std::int64_t remote_queries = 0;         // of which arrived over the network
   std::int64_t comparisons = 0;
-  std::int64_t stored = 0;                 // descriptors in the robot's store at the end
+  std::int64_t stored = 0;                 // descriptors in the robot's store when read
   std::int64_t verifications = 0;
   SimTime busy;                            // total service time
   std::int64_t max_queue = 0;              // longest wait line seen (the task in service excluded)
