@@ -80,7 +80,8 @@ void RobotAgent::TakeFrame(int k) {
   const float* descriptor = frames_.descriptors->row(frame.value).data();
   const QueryPlan plan = routing_->Plan(descriptor);
 
-  QueryOutcome& outcome = outcomes_[static_cast<std::size_t>(k)];
+  QueryRecord& outcome = outcomes_[static_cast<std::size_t>(k)];
+  outcome.robot = id_;
   outcome.frame = frame;
   outcome.sent = transport_.Now();
   outcome.expected_replies = plan.searches;
@@ -172,9 +173,7 @@ void RobotAgent::ServeVerify(Task task) {
     if (!online_) return;
     const VerifyVerdict verdict = verifier_(task.frame, task.match_frame);
     if (task.querier == id_) {
-      QueryOutcome& o = outcomes_[static_cast<std::size_t>(LocalIndexOf(task.frame))];
-      o.verify_accepted = verdict.accepted;
-      o.verify_done = transport_.Now();
+      outcomes_[static_cast<std::size_t>(LocalIndexOf(task.frame))].verify_accepted = verdict.accepted;
     } else {
       verify_result_t v;
       v.utime = transport_.Now().us();
@@ -218,18 +217,19 @@ void RobotAgent::OnMatch(const match_t& m) {
 
 void RobotAgent::RecordReply(FrameId frame, const std::optional<IndexMatch>& match) {
   const int k = LocalIndexOf(frame);
-  QueryOutcome& o = outcomes_[static_cast<std::size_t>(k)];
+  QueryRecord& o = outcomes_[static_cast<std::size_t>(k)];
   if (o.received_replies >= o.expected_replies) return;  // a duplicate (real networks)
   ++o.received_replies;
-  o.last_reply = transport_.Now();
   // Ties keep the earlier reply, so the outcome does not depend on arrival order
   // only through equal distances.
   if (match && (!o.best || match->distance < o.best->distance)) o.best = match;
-  if (o.Complete()) MaybeVerify(k);
+  if (!o.Complete()) return;
+  o.latency = transport_.Now() - o.sent;
+  MaybeVerify(k);
 }
 
 void RobotAgent::MaybeVerify(int k) {
-  QueryOutcome& o = outcomes_[static_cast<std::size_t>(k)];
+  QueryRecord& o = outcomes_[static_cast<std::size_t>(k)];
   if (!o.best || o.best->distance > params_.verify_max_distance) return;
   o.verify_requested = true;
   if (o.best->robot == id_) {
@@ -269,9 +269,7 @@ void RobotAgent::OnVerifyResult(const verify_result_t& r) {
   if (!online_) return;
   const int k = LocalIndexOf(FrameId(r.query_frame));
   if (r.query_robot != id_.value || k < 0) return;
-  QueryOutcome& o = outcomes_[static_cast<std::size_t>(k)];
-  o.verify_accepted = r.accepted;
-  o.verify_done = transport_.Now();
+  outcomes_[static_cast<std::size_t>(k)].verify_accepted = r.accepted;
 }
 
 }  // namespace dvpr

@@ -4,7 +4,7 @@
 // and follows a good match with a geometric-verification exchange with the
 // robot that observed the matched frame (DESIGN.md sections 1 and 3).
 //
-// The agent only records what happened (QueryOutcome, RobotLoad); metrics are
+// The agent only records what happened (QueryRecord, RobotLoad); metrics are
 // computed elsewhere from those records. It talks only through Transport, so
 // the same code runs in virtual time and as a real LCM process. Where its
 // frames go and how it keeps what it stores is its routing component's
@@ -22,6 +22,7 @@
 #include "agents/descriptors.h"
 #include "agents/frame_stream.h"
 #include "agents/ids.h"
+#include "agents/query_record.h"
 #include "agents/transport.h"
 #include "sim/sim_time.h"
 
@@ -35,20 +36,6 @@ struct AgentParams {
   float verify_max_distance = 0.6f;           // verify a match at most this far (squared L2)
   int verify_request_bytes = 25000;           // keypoints + local descriptors stand-in
   void Validate() const;
-};
-
-// What the querying robot learned about one of its frames.
-struct QueryOutcome {
-  FrameId frame;
-  SimTime sent;
-  int expected_replies = 0;                // searches asked for (local one included)
-  int received_replies = 0;
-  std::optional<IndexMatch> best;          // best over the replies received
-  std::optional<SimTime> last_reply;       // arrival of the last reply received
-  bool verify_requested = false;
-  std::optional<bool> verify_accepted;
-  std::optional<SimTime> verify_done;
-  bool Complete() const { return received_replies == expected_replies; }
 };
 
 // Load a robot carried while serving (DESIGN.md section 3, per-robot load).
@@ -85,7 +72,9 @@ class RobotAgent {
   void GoOffline();
 
   RobotId id() const { return id_; }
-  const std::vector<QueryOutcome>& outcomes() const { return outcomes_; }
+  // One record per frame of the stream, in order; a frame never taken (the robot went offline
+  // first) is not Taken().
+  const std::vector<QueryRecord>& outcomes() const { return outcomes_; }
   RobotLoad load() const;
   const IncrementalIndex& index() const { return index_; }
 
@@ -121,7 +110,7 @@ class RobotAgent {
   GeometricVerifier verifier_;
   IncrementalIndex index_;
   std::unique_ptr<AgentRouting> routing_;
-  std::vector<QueryOutcome> outcomes_;
+  std::vector<QueryRecord> outcomes_;
   RobotLoad load_;
   std::deque<Task> queue_;
   bool busy_ = false;

@@ -11,7 +11,7 @@
 #include "agents/robot_agent.h"
 #include "agents/team_sync.h"
 #include "experiments/protocols/lcm/agent_log.h"
-#include "experiments/protocols/sim/agent_records.h"
+#include "experiments/protocols/sim/pose_oracle.h"
 #include "experiments/protocols/inputs.h"
 #include "experiments/config/option_reader.h"
 #include "experiments/protocols/sim/sim_protocol.h"
@@ -176,8 +176,8 @@ struct OwnProgress {
 OwnProgress Progress(const RobotAgent& agent) {
   OwnProgress p;
   bool answered = true;
-  for (const QueryOutcome& o : agent.outcomes()) {
-    if (o.expected_replies == 0) {
+  for (const QueryRecord& o : agent.outcomes()) {
+    if (!o.Taken()) {
       answered = false;
       continue;
     }
@@ -266,17 +266,11 @@ AgentLog MakeLog(const AgentProcessOptions& o, const Team& t, const RobotAgent& 
   l.load = agent.load();
   l.sent = traffic.sent;
   l.received_from = traffic.received_from;
-  for (const QueryOutcome& q : agent.outcomes()) {
-    if (q.expected_replies == 0) continue;  // never taken
-    AgentQueryLog ql;
-    ql.record = ToQueryRecord(agent.id(), q);
+  for (QueryRecord q : agent.outcomes()) {
+    if (!q.Taken()) continue;
     // Latency as the network delivered it: the wall clock, not agent time.
-    if (ql.record.latency) ql.record.latency = SimTime::Nanos(std::llround(static_cast<double>(ql.record.latency->ns()) / o.speedup));
-    ql.expected = q.expected_replies;
-    ql.received = q.received_replies;
-    ql.verify_requested = q.verify_requested;
-    ql.verify_accepted = q.verify_accepted;
-    l.queries.push_back(ql);
+    if (q.latency) q.latency = SimTime::Nanos(std::llround(static_cast<double>(q.latency->ns()) / o.speedup));
+    l.queries.push_back(q);
   }
   return l;
 }
@@ -350,7 +344,7 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
                                             std::to_string(o.run) + "_robot" + std::to_string(o.robot) + ".log")
                     : o.out;
   WriteAgentLog(path, log);
-  const auto complete = std::count_if(log.queries.begin(), log.queries.end(), [](const AgentQueryLog& q) { return q.received == q.expected; });
+  const auto complete = std::count_if(log.queries.begin(), log.queries.end(), [](const QueryRecord& q) { return q.Complete(); });
   out << "robot " << o.robot << ": " << log.queries.size() << " queries, " << complete << " with every reply, "
       << log.malformed << " malformed, " << log.foreign << " foreign, end: " << end_reason << ", log " << path.string()
       << "\n";

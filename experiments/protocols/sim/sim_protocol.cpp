@@ -110,10 +110,10 @@ void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLo
       row.robot = q.robot.value;
       row.frame = q.frame.value;
       row.sent_ns = q.sent.ns();
-      if (q.match_frame) {
-        row.match_robot = q.match_robot->value;
-        row.match_frame = q.match_frame->value;
-        row.distance = q.distance;
+      if (q.best) {
+        row.match_robot = q.best->robot.value;
+        row.match_frame = q.best->frame.value;
+        row.distance = q.best->distance;
       }
       if (q.latency) row.latency_ns = q.latency->ns();
       row.relevant = s.truth.relevant[i];

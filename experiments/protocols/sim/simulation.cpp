@@ -6,7 +6,7 @@
 #include <string>
 
 #include "agents/sim_transport.h"
-#include "experiments/protocols/sim/agent_records.h"
+#include "experiments/protocols/sim/pose_oracle.h"
 #include "experiments/evaluation/metrics.h"
 #include "experiments/data/split.h"
 #include "net_models/lcm_event_log.h"
@@ -97,11 +97,10 @@ SimRunLog RunSimulation(const Dataset& data, const TeamRouting& routing, const S
   log.end = sim.Now();
   for (const auto& agent : agents) {
     log.loads.push_back(agent->load());
-    for (const QueryOutcome& o : agent->outcomes()) {
-      if (o.expected_replies == 0) continue;  // never taken (robot went offline first)
-      const QueryRecord q = ToQueryRecord(agent->id(), o);
-      log.verify_requested += o.verify_requested ? 1 : 0;
-      log.verify_accepted += o.verify_accepted.value_or(false) ? 1 : 0;
+    for (const QueryRecord& q : agent->outcomes()) {
+      if (!q.Taken()) continue;  // the robot went offline first
+      log.verify_requested += q.verify_requested ? 1 : 0;
+      log.verify_accepted += q.verify_accepted.value_or(false) ? 1 : 0;
       log.queries.push_back(q);
     }
   }
@@ -122,8 +121,10 @@ SimRunSummary SummarizeSimRun(const SimRunLog& log, const Positions& positions, 
   for (const auto& q : log.queries) {
     MatchOutcome o;
     o.query = q.frame;
-    o.match = q.match_frame;
-    o.score = q.distance;
+    if (q.best) {
+      o.match = q.best->frame;
+      o.score = q.best->distance;
+    }
     outcomes.push_back(o);
   }
   for (bool r : s.truth.relevant) s.relevant += r ? 1 : 0;
