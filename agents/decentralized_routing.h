@@ -14,10 +14,6 @@ class DecentralizedRouting final : public RoutingStrategy {
       : RoutingStrategy(table->num_robots()), table_(std::move(table)) {}
   std::string_view name() const override { return "decentralized"; }
   const CentroidTable& table() const { return *table_; }
-  Role RoleOf(RobotId, const float* descriptor, RobotId robot) const override {
-    const bool owner = table_->RouteOf(descriptor) == robot;
-    return {owner, owner};
-  }
 
  private:
   void DoRoute(RobotId, const float* descriptor, RoutingDecision& out) const override {

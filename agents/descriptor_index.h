@@ -52,7 +52,7 @@ class IncrementalIndex {
   const float* Descriptor(std::size_t i) const { return data_.data() + i * static_cast<std::size_t>(dim_); }
 
   // Removes every entry i with remove(i) true; the others keep their order, so ties in Search
-  // still go to the entry added first. Re-clustering (agents/recluster_agent.h) moves stored
+  // still go to the entry added first. Re-clustering (agents/recluster/recluster_agent.h) moves stored
   // descriptors to their new owner with it.
   void RemoveIf(const std::function<bool(std::size_t)>& remove);
 

@@ -68,7 +68,7 @@ inline bool LengthFieldFits<verify_request_t>(std::span<const std::uint8_t> buf)
   if (!size) return false;
   return *size >= 0 && static_cast<std::size_t>(*size) <= buf.size() - (kSizeOffset + 4);
 }
-// Re-clustering messages (agents/recluster_agent.h): rows x (per-row bytes) must fit.
+// Re-clustering messages (agents/recluster/recluster_messages.h): rows x (per-row bytes) must fit.
 inline bool RowsFit(std::span<const std::uint8_t> buf, std::size_t header, std::optional<std::int64_t> rows,
                     std::optional<std::int64_t> dim, std::int64_t fixed_per_row) {
   if (!rows || !dim || *rows < 0 || *dim < 0 || buf.size() < header) return false;

@@ -1,45 +1,48 @@
 #include "agents/robot_agent.h"
 
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
-#include "agents/channels.h"
-#include "agents/recluster_agent.h"  // ReclusterState complete for the constructor
-
 namespace dvpr {
 
-SimTime FrameStream::TimeOf(int k) const {
-  return SimTime::Nanos(std::llround(static_cast<double>(k) * 1e9 / fps));
-}
-
-RobotAgent::RobotAgent(RobotId id, const AgentParams& params, Transport& transport, const RoutingStrategy& routing,
+RobotAgent::RobotAgent(RobotId id, const AgentParams& params, Transport& transport, std::unique_ptr<AgentRouting> routing,
                        FrameStream frames, GeometricVerifier verifier)
     : id_(id),
       params_(params),
       transport_(transport),
-      routing_(routing),
       frames_(frames),
       verifier_(std::move(verifier)),
-      index_(frames.descriptors != nullptr ? static_cast<int>(frames.descriptors->cols()) : 1) {
+      index_(frames.descriptors != nullptr ? static_cast<int>(frames.descriptors->cols()) : 1),
+      routing_(std::move(routing)) {
   params_.Validate();
   if (frames_.descriptors == nullptr) throw std::invalid_argument("RobotAgent: no descriptors");
   if (!(frames_.fps > 0.0)) throw std::invalid_argument("RobotAgent: fps must be positive");
+  if (routing_ == nullptr) throw std::invalid_argument("RobotAgent: no routing");
   outcomes_.resize(static_cast<std::size_t>(frames_.count));
-  InitRecluster();
+}
+
+RobotLoad RobotAgent::load() const {
+  RobotLoad load = load_;
+  load.stored = static_cast<std::int64_t>(index_.size());
+  return load;
 }
 
 void RobotAgent::Start() {
-  subscriptions_.push_back(transport_.Subscribe<query_t>(channels::Query(id_), [this](const query_t& q) { OnQuery(q); }));
-  subscriptions_.push_back(transport_.Subscribe<query_t>(channels::kQueryAll, [this](const query_t& q) { OnQuery(q); }));
+  const auto on_query = [this](QueryRole role) {
+    return [this, role](const query_t& q) { OnQuery(q, role); };
+  };
+  subscriptions_.push_back(transport_.Subscribe<query_t>(channels::Query(id_), on_query(QueryRole::kSearchAndStore)));
+  subscriptions_.push_back(transport_.Subscribe<query_t>(channels::Probe(id_), on_query(QueryRole::kSearch)));
+  subscriptions_.push_back(transport_.Subscribe<query_t>(channels::Store(id_), on_query(QueryRole::kStore)));
+  subscriptions_.push_back(transport_.Subscribe<query_t>(channels::kQueryAll, on_query(QueryRole::kSearch)));
   subscriptions_.push_back(transport_.Subscribe<match_t>(channels::Match(id_), [this](const match_t& m) { OnMatch(m); }));
   subscriptions_.push_back(transport_.Subscribe<verify_request_t>(
       channels::VerifyRequest(id_), [this](const verify_request_t& r) { OnVerifyRequest(r); }));
   subscriptions_.push_back(transport_.Subscribe<verify_result_t>(
       channels::VerifyResult(id_), [this](const verify_result_t& r) { OnVerifyResult(r); }));
-  if (recluster_) StartRecluster();
+  routing_->Start(AgentContext{id_, transport_, index_, frames_});
   if (frames_.count > 0) {
     transport_.ScheduleAfter(frames_.TimeOf(0), [this] { TakeFrame(0); });
   }
@@ -50,10 +53,7 @@ void RobotAgent::Start() {
 void RobotAgent::GoOffline() {
   online_ = false;
   queue_.clear();
-}
-
-bool RobotAgent::Contains(const std::vector<RobotId>& robots, RobotId r) const {
-  return std::find(robots.begin(), robots.end(), r) != robots.end();
+  routing_->Stop();
 }
 
 int RobotAgent::LocalIndexOf(FrameId frame) const {
@@ -68,28 +68,29 @@ void RobotAgent::TakeFrame(int k) {
   }
   const FrameId frame(frames_.first.value + k);
   const float* descriptor = frames_.descriptors->row(frame.value).data();
-  const RoutingDecision decision = recluster_ ? ReclusterRoute(descriptor) : routing_.Route(id_, descriptor);
+  const QueryPlan plan = routing_->Plan(descriptor);
 
-  QueryOutcome& outcome = outcomes_[static_cast<std::size_t>(k)];
+  QueryRecord& outcome = outcomes_[static_cast<std::size_t>(k)];
+  outcome.robot = id_;
   outcome.frame = frame;
   outcome.sent = transport_.Now();
-  outcome.expected_replies = static_cast<int>(decision.search_at.size());
+  outcome.expected_replies = plan.searches;
 
-  PublishQuery(k, decision);
-  if (Contains(decision.search_at, id_)) {
+  PublishQuery(k, plan);
+  if (plan.search_here) {
     Task task;
     task.querier = id_;
     task.frame = frame;
     task.descriptor.assign(descriptor, descriptor + frames_.descriptors->cols());
-    task.store = Contains(decision.store_at, id_);
+    task.store = plan.store_here;
     Enqueue(std::move(task));
-  } else if (Contains(decision.store_at, id_)) {
-    index_.Add(id_, frame, descriptor);
-    ++load_.stored;
+  } else if (plan.store_here) {
+    routing_->Store(id_, frame, descriptor);
   }
 }
 
-void RobotAgent::PublishQuery(int k, const RoutingDecision& decision) {
+void RobotAgent::PublishQuery(int k, const QueryPlan& plan) {
+  if (plan.channels.empty()) return;
   const FrameId frame(frames_.first.value + k);
   const auto dim = static_cast<int>(frames_.descriptors->cols());
   query_t q;
@@ -99,21 +100,7 @@ void RobotAgent::PublishQuery(int k, const RoutingDecision& decision) {
   q.dim = static_cast<std::int16_t>(dim);
   const float* d = frames_.descriptors->row(frame.value).data();
   q.descriptor.assign(d, d + dim);
-
-  // Robots that search it, then robots that only store it (boundary
-  // replication); each remote robot gets the query once.
-  std::vector<RobotId> remote;
-  for (const auto* robots : {&decision.search_at, &decision.store_at}) {
-    for (RobotId r : *robots) {
-      if (r != id_ && !Contains(remote, r)) remote.push_back(r);
-    }
-  }
-  if (remote.empty()) return;
-  if (routing_.UsesBroadcastChannel()) {
-    transport_.Publish(channels::kQueryAll, q);
-    return;
-  }
-  for (RobotId r : remote) transport_.Publish(channels::Query(r), q);
+  for (const std::string& channel : plan.channels) transport_.Publish(channel, q);
 }
 
 void RobotAgent::Enqueue(Task task) {
@@ -149,7 +136,7 @@ void RobotAgent::ServeSearch(Task task) {
 
   transport_.ScheduleAfter(duration, [this, task = std::move(task), best = result.best] {
     if (!online_) return;
-    if (task.store) StoreQuery(task.querier, task.frame, task.descriptor.data());
+    if (task.store) routing_->Store(task.querier, task.frame, task.descriptor.data());
     if (task.querier == id_) {
       RecordReply(task.frame, best);
     } else {
@@ -176,9 +163,7 @@ void RobotAgent::ServeVerify(Task task) {
     if (!online_) return;
     const VerifyVerdict verdict = verifier_(task.frame, task.match_frame);
     if (task.querier == id_) {
-      QueryOutcome& o = outcomes_[static_cast<std::size_t>(LocalIndexOf(task.frame))];
-      o.verify_accepted = verdict.accepted;
-      o.verify_done = transport_.Now();
+      outcomes_[static_cast<std::size_t>(LocalIndexOf(task.frame))].verify_accepted = verdict.accepted;
     } else {
       verify_result_t v;
       v.utime = transport_.Now().us();
@@ -195,36 +180,21 @@ void RobotAgent::ServeVerify(Task task) {
   });
 }
 
-// The routing decision is re-evaluated here (strategies are deterministic):
-// a robot asked to search serves the query; a robot that is only a replica
-// stores it and sends nothing back.
-void RobotAgent::OnQuery(const query_t& q) {
+// The channel the query came on says what to do with it: a robot asked to
+// search serves the query (and stores it afterwards when asked to); a robot
+// that is only a replica stores it and sends nothing back.
+void RobotAgent::OnQuery(const query_t& q, QueryRole role) {
   if (!online_ || q.robot == id_.value || q.dim != frames_.descriptors->cols()) return;
-  // Re-clustering: the receiver always searches; StoreQuery keeps or forwards by its own table.
-  const RoutingStrategy::Role role =
-      recluster_ ? RoutingStrategy::Role{true, true} : routing_.RoleOf(RobotId(q.robot), q.descriptor.data(), id_);
-  if (!role.search) {
-    if (role.store) {
-      index_.Add(RobotId(q.robot), FrameId(q.frame), q.descriptor.data());
-      ++load_.stored;
-    }
+  if (role == QueryRole::kStore) {
+    routing_->Store(RobotId(q.robot), FrameId(q.frame), q.descriptor.data());
     return;
   }
   Task task;
   task.querier = RobotId(q.robot);
   task.frame = FrameId(q.frame);
   task.descriptor = q.descriptor;
-  task.store = role.store;
+  task.store = role == QueryRole::kSearchAndStore;
   Enqueue(std::move(task));
-}
-
-void RobotAgent::StoreQuery(RobotId robot, FrameId frame, const float* descriptor) {
-  if (recluster_) {
-    StoreOrForward(robot, frame, descriptor);
-    return;
-  }
-  index_.Add(robot, frame, descriptor);
-  ++load_.stored;
 }
 
 void RobotAgent::OnMatch(const match_t& m) {
@@ -237,18 +207,19 @@ void RobotAgent::OnMatch(const match_t& m) {
 
 void RobotAgent::RecordReply(FrameId frame, const std::optional<IndexMatch>& match) {
   const int k = LocalIndexOf(frame);
-  QueryOutcome& o = outcomes_[static_cast<std::size_t>(k)];
+  QueryRecord& o = outcomes_[static_cast<std::size_t>(k)];
   if (o.received_replies >= o.expected_replies) return;  // a duplicate (real networks)
   ++o.received_replies;
-  o.last_reply = transport_.Now();
   // Ties keep the earlier reply, so the outcome does not depend on arrival order
   // only through equal distances.
   if (match && (!o.best || match->distance < o.best->distance)) o.best = match;
-  if (o.Complete()) MaybeVerify(k);
+  if (!o.Complete()) return;
+  o.latency = transport_.Now() - o.sent;
+  MaybeVerify(k);
 }
 
 void RobotAgent::MaybeVerify(int k) {
-  QueryOutcome& o = outcomes_[static_cast<std::size_t>(k)];
+  QueryRecord& o = outcomes_[static_cast<std::size_t>(k)];
   if (!o.best || o.best->distance > static_cast<float>(params_.verification.max_distance)) return;
   o.verify_requested = true;
   if (o.best->robot == id_) {
@@ -288,9 +259,7 @@ void RobotAgent::OnVerifyResult(const verify_result_t& r) {
   if (!online_) return;
   const int k = LocalIndexOf(FrameId(r.query_frame));
   if (r.query_robot != id_.value || k < 0) return;
-  QueryOutcome& o = outcomes_[static_cast<std::size_t>(k)];
-  o.verify_accepted = r.accepted;
-  o.verify_done = transport_.Now();
+  outcomes_[static_cast<std::size_t>(k)].verify_accepted = r.accepted;
 }
 
 }  // namespace dvpr

@@ -1,16 +1,16 @@
 #pragma once
 // Routing strategies: where a new frame's descriptor is searched and where it
-// is stored. The agent knows only this interface, so a new strategy plugs in
-// without touching the agent.
-//
-// A strategy must be a deterministic function of (querying robot, descriptor):
-// a responder re-evaluates it to learn whether it should store the query, so
-// that decision costs no bytes on the wire.
+// is stored. A strategy here is shared by the whole team and keeps no state of
+// its own: a deterministic function of (querying robot, descriptor). Each
+// agent routes through its own StatelessRouting over it
+// (agents/stateless_routing.h), which also puts the decision on the wire: the
+// channel each query goes on says what its receiver does with it.
 #include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "agents/agent_routing.h"
 #include "agents/ids.h"
 
 namespace dvpr {
@@ -20,46 +20,32 @@ struct RoutingDecision {
   std::vector<RobotId> store_at;   // robots that keep the descriptor for later searches
 };
 
-class RoutingStrategy {
+// How `self` puts a decision on the wire: each remote robot once (searchers first, then the
+// robots that only store, in the decision's order), on the query channel of its role
+// (channels::QueryTo). With `broadcast`, one publication on channels::kQueryAll instead; every
+// remote robot must then be a searcher that does not store (std::logic_error otherwise).
+QueryPlan PlanOf(const RoutingDecision& decision, RobotId self, bool broadcast);
+
+class RoutingStrategy : public TeamRouting {
  public:
-  virtual ~RoutingStrategy() = default;
-
-  virtual std::string_view name() const = 0;
-  int num_robots() const { return num_robots_; }
-
   RoutingDecision Route(RobotId self, const float* descriptor) const {
     RoutingDecision decision;
     DoRoute(self, descriptor, decision);
     return decision;
   }
 
-  // What `robot` does with a query from `querier`: the decision of Route() as
-  // seen by one robot. Responders call it for every query they receive, so
-  // strategies whose answer is cheaper than a whole decision override it.
-  struct Role {
-    bool search = false;
-    bool store = false;
-  };
-  virtual Role RoleOf(RobotId querier, const float* descriptor, RobotId robot) const {
-    const RoutingDecision d = Route(querier, descriptor);
-    const auto has = [robot](const std::vector<RobotId>& v) {
-      for (RobotId r : v)
-        if (r == robot) return true;
-      return false;
-    };
-    return {has(d.search_at), has(d.store_at)};
-  }
-
   // True: the remote searches are one publication on the broadcast channel
   // (one transmission on a shared medium) instead of one unicast each.
   virtual bool UsesBroadcastChannel() const { return false; }
 
+  // Every robot's component is a StatelessRouting over this strategy.
+  std::unique_ptr<AgentRouting> MakeAgentRouting() const final;
+
  protected:
-  explicit RoutingStrategy(int num_robots) : num_robots_(num_robots) {}
+  explicit RoutingStrategy(int num_robots) : TeamRouting(num_robots) {}
 
  private:
   virtual void DoRoute(RobotId self, const float* descriptor, RoutingDecision& out) const = 0;
-  int num_robots_;
 };
 
 // The baseline: every robot keeps its own frames and every query is searched
@@ -69,7 +55,6 @@ class BroadcastRouting final : public RoutingStrategy {
   explicit BroadcastRouting(int num_robots) : RoutingStrategy(num_robots) {}
   std::string_view name() const override { return "broadcast"; }
   bool UsesBroadcastChannel() const override { return true; }
-  Role RoleOf(RobotId querier, const float*, RobotId robot) const override { return {true, robot == querier}; }
 
  private:
   void DoRoute(RobotId self, const float*, RoutingDecision& out) const override {

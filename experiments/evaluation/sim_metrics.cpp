@@ -81,8 +81,8 @@ OnlineTruth ComputeOnlineTruth(const std::vector<QueryRecord>& queries, const Po
   for (std::size_t q = 0; q < queries.size(); ++q) {
     const Eigen::Index i = queries[q].frame.value;
     const SimTime t = capture_time[static_cast<std::size_t>(i)];
-    if (queries[q].match_frame) {
-      truth.correct[q] = SquaredDistance(positions, i, queries[q].match_frame->value) < r2;
+    if (queries[q].best) {
+      truth.correct[q] = SquaredDistance(positions, i, queries[q].best->frame.value) < r2;
     }
     truth.relevant[q] = truth.correct[q] || grid.AnyNear(i, [&](Eigen::Index j) {
       return std::abs(i - j) > window && capture_time[static_cast<std::size_t>(j)] <= t &&

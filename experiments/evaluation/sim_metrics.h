@@ -6,21 +6,11 @@
 #include <vector>
 
 #include "agents/ids.h"
+#include "agents/query_record.h"
 #include "experiments/data/dataset.h"
 #include "sim/sim_time.h"
 
 namespace dvpr {
-
-// One query as the querying robot logged it.
-struct QueryRecord {
-  RobotId robot;
-  FrameId frame;
-  SimTime sent;
-  std::optional<RobotId> match_robot;
-  std::optional<FrameId> match_frame;
-  float distance = 0.0f;               // squared L2 of the best match (when any)
-  std::optional<SimTime> latency;      // empty when some reply never arrived
-};
 
 struct LatencyStats {
   double mean_ms = 0.0;

@@ -9,7 +9,7 @@
 #include "agents/kmeans.h"
 #include "agents/load_balanced_table.h"
 #include "agents/probe_routing.h"
-#include "agents/recluster_agent.h"
+#include "agents/recluster/recluster_routing.h"
 #include "experiments/data/split.h"
 #include "experiments/strategies/deployment_sample.h"
 
@@ -78,7 +78,7 @@ ReclusterParams ReclusterParamsOf(const StrategySpec& spec, const StrategyInputs
   return p;
 }
 
-// What the re-clustering team agrees on before the run (agents/recluster_agent.h). The leader
+// What the re-clustering team agrees on before the run (agents/recluster/recluster_routing.h). The leader
 // waits half a period for the samples.
 ReclusterPlan ReclusterPlanOf(const ReclusterParams& params, std::shared_ptr<const CentroidTable> initial,
                               const StrategyInputs& in, int robots) {
@@ -103,24 +103,27 @@ RunRouting BuildRunRouting(const StrategySpec& spec, const StrategyInputs& in, i
     throw std::invalid_argument("BuildRunRouting: StrategyInputs needs the training and deployment descriptors");
   }
   RunRouting r;
+  std::unique_ptr<RoutingStrategy> stateless;
   if (spec.broadcast()) {  // no table: every robot searches, each keeps its own frames
-    r.routing = std::make_unique<BroadcastRouting>(robots);
-    return r;
+    stateless = std::make_unique<BroadcastRouting>(robots);
+  } else {
+    r.table = std::make_shared<const CentroidTable>(BuildTable(spec, in, robots, run));
+    if (spec.reclusters()) {
+      r.recluster = ReclusterParamsOf(spec, in, robots, run);
+      r.team = std::make_unique<ReclusterRouting>(ReclusterPlanOf(*r.recluster, r.table, in, robots));
+      return r;
+    }
+    switch (spec.routing) {
+      case StrategySpec::Routing::kNearest: stateless = std::make_unique<DecentralizedRouting>(r.table); break;
+      case StrategySpec::Routing::kProbe: stateless = std::make_unique<MultiProbeRouting>(r.table, spec.probe); break;
+      case StrategySpec::Routing::kReplicate:
+        stateless = std::make_unique<BoundaryReplicationRouting>(r.table, spec.replicate);
+        break;
+      case StrategySpec::Routing::kBroadcast: throw std::logic_error("BuildRunRouting: broadcast with a table");
+    }
   }
-  r.table = std::make_shared<const CentroidTable>(BuildTable(spec, in, robots, run));
-  if (spec.reclusters()) {
-    r.recluster = ReclusterParamsOf(spec, in, robots, run);
-    r.routing = std::make_unique<ReclusterRouting>(ReclusterPlanOf(*r.recluster, r.table, in, robots));
-    return r;
-  }
-  switch (spec.routing) {
-    case StrategySpec::Routing::kNearest: r.routing = std::make_unique<DecentralizedRouting>(r.table); break;
-    case StrategySpec::Routing::kProbe: r.routing = std::make_unique<MultiProbeRouting>(r.table, spec.probe); break;
-    case StrategySpec::Routing::kReplicate:
-      r.routing = std::make_unique<BoundaryReplicationRouting>(r.table, spec.replicate);
-      break;
-    case StrategySpec::Routing::kBroadcast: break;  // above
-  }
+  r.stateless = stateless.get();
+  r.team = std::move(stateless);
   return r;
 }
 

@@ -13,7 +13,8 @@
 #include <optional>
 
 #include "agents/centroid_table.h"
-#include "agents/recluster.h"
+#include "agents/agent_routing.h"
+#include "agents/recluster/recluster.h"
 #include "agents/routing.h"
 #include "experiments/strategies/run_centroids.h"
 #include "experiments/strategies/strategy_spec.h"
@@ -31,7 +32,11 @@ struct StrategyInputs {
 
 struct RunRouting {
   std::shared_ptr<const CentroidTable> table;  // null for broadcast; the start table when re-clustering
-  std::unique_ptr<RoutingStrategy> routing;
+  // What each robot's routing component is made from (TeamRouting::MakeAgentRouting).
+  std::unique_ptr<TeamRouting> team;
+  // The same object when the strategy keeps no per-robot state (Route(self, descriptor) answers
+  // for every robot); null when it re-clusters.
+  const RoutingStrategy* stateless = nullptr;
   // Set when the strategy re-clusters: C, P, the sample stride, seed RunSeed(config seed, robots,
   // run). The static protocol plans the epochs from these and the start table.
   std::optional<ReclusterParams> recluster;

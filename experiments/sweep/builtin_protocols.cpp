@@ -63,7 +63,7 @@ PaperRunResult PaperStrategyRun(const StrategySpec& spec, const RunSpec& run, co
     r = EvaluateRecluster(evaluator, PlanStaticRecluster(deployment, routing.table, *routing.recluster), spec.name,
                           params.keep_curves);
   } else {
-    r = EvaluateRouting(evaluator, *routing.routing, spec.name, params.keep_curves);
+    r = EvaluateRouting(evaluator, *routing.stateless, spec.name, params.keep_curves);
   }
   r.row.key = run.Key(spec.name);
   r.row.seed = params.centroids_pattern.empty() ? RunSeed(params.seed, run.robots, run.run) : 0;

@@ -1,6 +1,7 @@
 // Routing decisions of multi-probe (FAISS nprobe, SPANN adaptive pruning) and boundary replication
 // on centroids on a line, where every distance can be read off by hand.
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -80,11 +81,13 @@ TEST_F(ProbeRoutingTest, ReplicationStoresAtBorderOwnersAndSearchesOnlyTheNeares
   RoutingDecision d = r.Route(RobotId(2), &x);
   EXPECT_EQ(d.search_at, Robots({0}));
   EXPECT_EQ(d.store_at, Robots({0, 1}));
-  // Robot 1 keeps a store-only replica: it stores the query without searching.
-  const auto role = r.RoleOf(RobotId(2), &x, RobotId(1));
-  EXPECT_FALSE(role.search);
-  EXPECT_TRUE(role.store);
-  EXPECT_FALSE(r.RoleOf(RobotId(2), &x, RobotId(2)).store);
+  // On the wire: robot 0 is asked to search and store, robot 1 only to keep a replica; the
+  // querying robot 2 neither searches nor stores its own frame.
+  const QueryPlan from_2 = PlanOf(d, RobotId(2), r.UsesBroadcastChannel());
+  EXPECT_EQ(from_2.channels, (std::vector<std::string>{"DVPR_QUERY_0", "DVPR_STORE_1"}));
+  EXPECT_FALSE(from_2.search_here);
+  EXPECT_FALSE(from_2.store_here);
+  EXPECT_EQ(from_2.searches, 1);
   // Deep inside a cluster (1: distances 1, 9, ...) nothing is replicated.
   const float inside = 1;
   EXPECT_EQ(r.Route(RobotId(2), &inside).store_at, Robots({0}));

@@ -53,20 +53,20 @@ TEST_F(ThreeRobotsTest, DecentralizedSendsToTheNearestCentroidsOwner) {
   EXPECT_FALSE(r.recluster);
   // 12: nearest 10 (distance 2), owned by robot 1, which searches and stores it.
   const float twelve = 12;
-  const RoutingDecision d = r.routing->Route(RobotId(0), &twelve);
+  const RoutingDecision d = r.stateless->Route(RobotId(0), &twelve);
   EXPECT_EQ(d.search_at, Robots({1}));
   EXPECT_EQ(d.store_at, Robots({1}));
   // 16: nearest 20 (4 < 6): robot 2.
   const float sixteen = 16;
-  EXPECT_EQ(r.routing->Route(RobotId(0), &sixteen).search_at, Robots({2}));
+  EXPECT_EQ(r.stateless->Route(RobotId(0), &sixteen).search_at, Robots({2}));
 }
 
 TEST_F(ThreeRobotsTest, BroadcastSearchesEverywhereAndHasNoTable) {
   const RunRouting r = Build("broadcast", 3);
   EXPECT_EQ(r.table, nullptr);
-  EXPECT_EQ(r.routing->num_robots(), 3);
+  EXPECT_EQ(r.team->num_robots(), 3);
   const float twelve = 12;
-  const RoutingDecision d = r.routing->Route(RobotId(1), &twelve);
+  const RoutingDecision d = r.stateless->Route(RobotId(1), &twelve);
   EXPECT_EQ(d.search_at, Robots({0, 1, 2}));
   EXPECT_EQ(d.store_at, Robots({1}));  // the querying robot keeps its own frame
 }
@@ -75,12 +75,12 @@ TEST_F(ThreeRobotsTest, MultiProbeTwoSearchesTheTwoNearestOwnersAndStoresAtTheNe
   const RunRouting r = Build("multi_probe_2", 3);
   // 12: 10 (2), 20 (8), 0 (12): robots 1 and 2 search, robot 1 stores.
   const float twelve = 12;
-  const RoutingDecision d = r.routing->Route(RobotId(0), &twelve);
+  const RoutingDecision d = r.stateless->Route(RobotId(0), &twelve);
   EXPECT_EQ(d.search_at, Robots({1, 2}));
   EXPECT_EQ(d.store_at, Robots({1}));
   // 4: 0 (4), 10 (6), 20 (16): robots 0 and 1.
   const float four = 4;
-  EXPECT_EQ(r.routing->Route(RobotId(2), &four).search_at, Robots({0, 1}));
+  EXPECT_EQ(r.stateless->Route(RobotId(2), &four).search_at, Robots({0, 1}));
 }
 
 TEST_F(ThreeRobotsTest, ReplicateStoresAtOwnersWithinOnePlusEpsilonOfTheNearest) {
@@ -88,14 +88,14 @@ TEST_F(ThreeRobotsTest, ReplicateStoresAtOwnersWithinOnePlusEpsilonOfTheNearest)
   // 14.5: 10 at 4.5, 20 at 5.5 <= 1.5 x 4.5 = 6.75, 0 at 14.5 > 6.75: stored at robots 1 and 2,
   // searched at the nearest only.
   const float x = 14.5f;
-  const RoutingDecision d = r.routing->Route(RobotId(0), &x);
+  const RoutingDecision d = r.stateless->Route(RobotId(0), &x);
   EXPECT_EQ(d.search_at, Robots({1}));
   EXPECT_EQ(d.store_at, Robots({1, 2}));
   // 12: 10 at 2, 20 at 8 > 3: robot 1 only.
   const float twelve = 12;
-  EXPECT_EQ(r.routing->Route(RobotId(0), &twelve).store_at, Robots({1}));
+  EXPECT_EQ(r.stateless->Route(RobotId(0), &twelve).store_at, Robots({1}));
   // replicate_3_r2: every centroid is within 4 x 4.5 = 18 of 14.5, but at most 2 are taken.
-  EXPECT_EQ(Build("replicate_3_r2", 3).routing->Route(RobotId(0), &x).store_at, Robots({1, 2}));
+  EXPECT_EQ(Build("replicate_3_r2", 3).stateless->Route(RobotId(0), &x).store_at, Robots({1, 2}));
 }
 
 TEST_F(ThreeRobotsTest, StrategiesOfOneRunShareTheCachedCentroids) {
@@ -128,7 +128,7 @@ TEST_F(LptTest, LptPacksTheClustersOnTheDeploymentSamplesLoads) {
   EXPECT_EQ(r.table->RouteOf(&one), RobotId(1));
   EXPECT_EQ(r.table->RouteOf(&nineteen), RobotId(0));
   EXPECT_EQ(r.table->RouteOf(&twenty_nine), RobotId(0));
-  EXPECT_EQ(r.routing->Route(RobotId(0), &one).search_at, Robots({1}));
+  EXPECT_EQ(r.stateless->Route(RobotId(0), &one).search_at, Robots({1}));
 }
 
 TEST_F(LptTest, LptTrainTakesTheLoadsFromTheTrainingSet) {
@@ -154,7 +154,7 @@ TEST_F(LptTest, ReclusteringStartsFromItsTableAndCarriesItsParameters) {
   ASSERT_NE(r.table, nullptr);
   const float nineteen = 19;
   EXPECT_EQ(r.table->RouteOf(&nineteen), RobotId(1));  // lpt_c2_train's table, as above
-  EXPECT_EQ(r.routing->num_robots(), 2);
+  EXPECT_EQ(r.team->num_robots(), 2);
 }
 
 TEST_F(RunRoutingTest, CentroidFilesMustHaveKRows) {
@@ -224,10 +224,10 @@ TEST(BalancedTables, BalancedSampleSplitsTheDeploymentSample) {
   EXPECT_EQ(r.table->RouteOf(&thirty), r.table->RouteOf(&hundred));
   // Replication within 1.5 x the nearest distance: 30 is 10.33 from 40.33 and 29 from 1
   // (29 > 15.5): stored at one robot; 20 is 19 from 1 and 20.33 from 40.33 (<= 28.5): at both.
-  EXPECT_EQ(r.routing->Route(RobotId(0), &thirty).store_at.size(), 1U);
+  EXPECT_EQ(r.stateless->Route(RobotId(0), &thirty).store_at.size(), 1U);
   const float twenty = 20;
-  EXPECT_EQ(r.routing->Route(RobotId(0), &twenty).store_at.size(), 2U);
-  EXPECT_EQ(r.routing->Route(RobotId(0), &twenty).search_at.size(), 1U);
+  EXPECT_EQ(r.stateless->Route(RobotId(0), &twenty).store_at.size(), 2U);
+  EXPECT_EQ(r.stateless->Route(RobotId(0), &twenty).search_at.size(), 1U);
 }
 
 TEST(DeploymentSample, TakesEveryTwentiethFrame) {

@@ -67,24 +67,20 @@ class Fields {
 };
 
 void ReadQuery(Fields& f, AgentLog& log) {
-  AgentQueryLog q;
-  q.record.robot = RobotId(log.robot);
-  q.record.frame = FrameId(f.Next<int>());
-  q.record.sent = SimTime::Nanos(f.Next<std::int64_t>());
-  q.expected = f.Next<int>();
-  q.received = f.Next<int>();
+  QueryRecord q;
+  q.robot = RobotId(log.robot);
+  q.frame = FrameId(f.Next<int>());
+  q.sent = SimTime::Nanos(f.Next<std::int64_t>());
+  q.expected_replies = f.Next<int>();
+  q.received_replies = f.Next<int>();
   const auto match_robot = f.NextOptional<int>();
   const auto match_frame = f.NextOptional<int>();
   const auto distance = f.NextOptional<float>();
   if (match_robot.has_value() != match_frame.has_value() || match_frame.has_value() != distance.has_value()) {
     f.Fail("match_robot, match_frame and distance must be all given or all empty");
   }
-  if (match_robot) {
-    q.record.match_robot = RobotId(*match_robot);
-    q.record.match_frame = FrameId(*match_frame);
-    q.record.distance = *distance;
-  }
-  if (const auto latency = f.NextOptional<std::int64_t>()) q.record.latency = SimTime::Nanos(*latency);
+  if (match_robot) q.best = IndexMatch{RobotId(*match_robot), FrameId(*match_frame), *distance};
+  if (const auto latency = f.NextOptional<std::int64_t>()) q.latency = SimTime::Nanos(*latency);
   q.verify_requested = f.Next<int>() != 0;
   if (const auto accepted = f.NextOptional<int>()) q.verify_accepted = *accepted != 0;
   log.queries.push_back(q);
@@ -107,14 +103,12 @@ void WriteAgentLog(const std::filesystem::path& path, const AgentLog& l) {
     o << "sent," << r << ',' << s.messages << ',' << s.payload_bytes << ',' << s.wire_bytes << '\n';
   }
   for (std::size_t r = 0; r < l.received_from.size(); ++r) o << "recv," << r << ',' << l.received_from[r] << '\n';
-  for (const AgentQueryLog& q : l.queries) {
-    const QueryRecord& r = q.record;
-    o << "query," << r.frame.value << ',' << r.sent.ns() << ',' << q.expected << ',' << q.received << ','
-      << (r.match_robot ? std::to_string(r.match_robot->value) : "") << ','
-      << (r.match_frame ? std::to_string(r.match_frame->value) : "") << ','
-      << (r.match_frame ? FloatText(r.distance) : "") << ',' << (r.latency ? std::to_string(r.latency->ns()) : "")
-      << ',' << (q.verify_requested ? 1 : 0) << ',' << Opt<int>(q.verify_accepted ? std::optional<int>(*q.verify_accepted) : std::nullopt)
-      << '\n';
+  for (const QueryRecord& q : l.queries) {
+    o << "query," << q.frame.value << ',' << q.sent.ns() << ',' << q.expected_replies << ',' << q.received_replies
+      << ',' << (q.best ? std::to_string(q.best->robot.value) : "") << ','
+      << (q.best ? std::to_string(q.best->frame.value) : "") << ',' << (q.best ? FloatText(q.best->distance) : "")
+      << ',' << (q.latency ? std::to_string(q.latency->ns()) : "") << ',' << (q.verify_requested ? 1 : 0) << ','
+      << Opt<int>(q.verify_accepted ? std::optional<int>(*q.verify_accepted) : std::nullopt) << '\n';
   }
   WriteFileAtomic(path, o.str());
 }

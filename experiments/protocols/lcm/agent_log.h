@@ -24,8 +24,8 @@
 #include <string>
 #include <vector>
 
+#include "agents/query_record.h"
 #include "agents/robot_agent.h"
-#include "experiments/evaluation/sim_metrics.h"
 
 namespace dvpr {
 
@@ -33,14 +33,6 @@ struct AgentLinkCount {
   std::int64_t messages = 0;
   std::int64_t payload_bytes = 0;
   std::int64_t wire_bytes = 0;  // the wire-format model of DESIGN.md section 4
-};
-
-struct AgentQueryLog {
-  QueryRecord record;            // latency: wall clock
-  int expected = 0;
-  int received = 0;
-  bool verify_requested = false;
-  std::optional<bool> verify_accepted;
 };
 
 struct AgentLog {
@@ -62,7 +54,7 @@ struct AgentLog {
   RobotLoad load;
   std::vector<AgentLinkCount> sent;            // per destination robot
   std::vector<std::int64_t> received_from;     // per source robot (own echoes excluded)
-  std::vector<AgentQueryLog> queries;
+  std::vector<QueryRecord> queries;            // the frames taken; latency: wall clock
 };
 
 void WriteAgentLog(const std::filesystem::path& path, const AgentLog& log);

@@ -11,7 +11,7 @@
 #include "agents/robot_agent.h"
 #include "agents/team_sync.h"
 #include "experiments/protocols/lcm/agent_log.h"
-#include "experiments/protocols/sim/agent_records.h"
+#include "experiments/protocols/sim/pose_oracle.h"
 #include "experiments/protocols/inputs.h"
 #include "experiments/config/option_reader.h"
 #include "experiments/protocols/sim/sim_protocol.h"
@@ -108,20 +108,21 @@ std::optional<int> SourceOf(const std::string& channel, std::span<const std::uin
   const auto robot = [&](int r, bool none_ok) { return (r >= 0 && r < robots) || (none_ok && r == -1); };
   const auto frame = [&](int f, bool none_ok) { return (f >= 0 && f < frames) || (none_ok && f == -1); };
   auto check = [](bool ok, int src) { return ok ? src : -1; };
-  if (channel.rfind("DVPR_QUERY_", 0) == 0) {
+  const auto starts = [&channel](const char* prefix) { return channel.rfind(prefix, 0) == 0; };
+  if (starts("DVPR_QUERY_") || starts("DVPR_PROBE_") || starts("DVPR_STORE_")) {
     if (auto q = Decode<query_t>(bytes)) return check(robot(q->robot, false) && frame(q->frame, false), q->robot);
-  } else if (channel.rfind("DVPR_MATCH_", 0) == 0) {
+  } else if (starts("DVPR_MATCH_")) {
     if (auto m = Decode<match_t>(bytes)) {
       return check(robot(m->responder, false) && robot(m->query_robot, false) && frame(m->query_frame, false) &&
                        robot(m->match_robot, !m->has_match) && frame(m->match_frame, !m->has_match),
                    m->responder);
     }
-  } else if (channel.rfind("DVPR_VREQ_", 0) == 0) {
+  } else if (starts("DVPR_VREQ_")) {
     if (auto r = Decode<verify_request_t>(bytes)) {
       return check(robot(r->query_robot, false) && robot(r->match_robot, false) && frame(r->query_frame, false) &&
                        frame(r->match_frame, false), r->query_robot);
     }
-  } else if (channel.rfind("DVPR_VRES_", 0) == 0) {
+  } else if (starts("DVPR_VRES_")) {
     if (auto r = Decode<verify_result_t>(bytes)) {
       return check(robot(r->query_robot, false) && robot(r->match_robot, false) && frame(r->query_frame, false) &&
                        frame(r->match_frame, false), r->match_robot);
@@ -180,8 +181,8 @@ struct OwnProgress {
 OwnProgress Progress(const RobotAgent& agent) {
   OwnProgress p;
   bool answered = true;
-  for (const QueryOutcome& o : agent.outcomes()) {
-    if (o.expected_replies == 0) {
+  for (const QueryRecord& o : agent.outcomes()) {
+    if (!o.Taken()) {
       answered = false;
       continue;
     }
@@ -270,17 +271,11 @@ AgentLog MakeLog(const AgentProcessOptions& o, const Team& t, const RobotAgent& 
   l.load = agent.load();
   l.sent = traffic.sent;
   l.received_from = traffic.received_from;
-  for (const QueryOutcome& q : agent.outcomes()) {
-    if (q.expected_replies == 0) continue;  // never taken
-    AgentQueryLog ql;
-    ql.record = ToQueryRecord(agent.id(), q);
+  for (QueryRecord q : agent.outcomes()) {
+    if (!q.Taken()) continue;
     // Latency as the network delivered it: the wall clock, not agent time.
-    if (ql.record.latency) ql.record.latency = SimTime::Nanos(std::llround(static_cast<double>(ql.record.latency->ns()) / o.speedup));
-    ql.expected = q.expected_replies;
-    ql.received = q.received_replies;
-    ql.verify_requested = q.verify_requested;
-    ql.verify_accepted = q.verify_accepted;
-    l.queries.push_back(ql);
+    if (q.latency) q.latency = SimTime::Nanos(std::llround(static_cast<double>(q.latency->ns()) / o.speedup));
+    l.queries.push_back(q);
   }
   return l;
 }
@@ -303,7 +298,7 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   transport.SetReceiveFilter([&](const std::string& c, std::span<const std::uint8_t> b) { return traffic.OnReceive(c, b); });
   TeamSync sync(RobotId(o.robot), t.robots, t.key);
   Subscription status = transport.Subscribe<agent_status_t>(channels::kStatus, [&](const agent_status_t& s) { sync.OnStatus(s); });
-  RobotAgent agent(RobotId(o.robot), t.config.agent, transport, *t.routing.routing,
+  RobotAgent agent(RobotId(o.robot), t.config.agent, transport, t.routing.team->MakeAgentRouting(),
                    FrameStream{&data.descriptors, range.begin, range.size(), data.fps},
                    PoseOracle(data.trajectory.positions, t.config.evaluation.radius_m));
 
@@ -353,7 +348,7 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
                                             std::to_string(o.run) + "_robot" + std::to_string(o.robot) + ".log")
                     : o.out;
   WriteAgentLog(path, log);
-  const auto complete = std::count_if(log.queries.begin(), log.queries.end(), [](const AgentQueryLog& q) { return q.received == q.expected; });
+  const auto complete = std::count_if(log.queries.begin(), log.queries.end(), [](const QueryRecord& q) { return q.Complete(); });
   out << "robot " << o.robot << ": " << log.queries.size() << " queries, " << complete << " with every reply, "
       << log.malformed << " malformed, " << log.foreign << " foreign, end: " << end_reason << ", log " << path.string()
       << "\n";

@@ -159,8 +159,8 @@ SimRunLog ToRunLog(const Dataset& data, int robots, const std::vector<std::optio
     log.loads[s] = l.load;
     log.senders[s].medium_bytes = l.medium_wire_bytes;
     log.end = std::max(log.end, SimTime::Nanos(l.end_ns));
-    for (const AgentQueryLog& q : l.queries) {
-      log.queries.push_back(q.record);
+    for (const QueryRecord& q : l.queries) {
+      log.queries.push_back(q);
       log.verify_requested += q.verify_requested ? 1 : 0;
       log.verify_accepted += q.verify_accepted.value_or(false) ? 1 : 0;
     }
@@ -262,7 +262,7 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
       clean = clean && ok;
       std::int64_t incomplete = 0;
       if (const auto& l = logs[static_cast<std::size_t>(c.robot)]) {
-        for (const auto& q : l->queries) incomplete += q.received < q.expected ? 1 : 0;
+        for (const auto& q : l->queries) incomplete += q.Complete() ? 0 : 1;
       }
       const auto& l = logs[static_cast<std::size_t>(c.robot)];
       agents_csv << team.strategy << ',' << c.robot << ',' << Describe(c) << ',' << (l ? path.filename().string() : "")

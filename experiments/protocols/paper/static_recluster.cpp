@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-#include "agents/recluster_agent.h"
+#include "agents/recluster/recluster_messages.h"
 #include "experiments/data/split.h"
 
 namespace dvpr {

@@ -1,5 +1,5 @@
 #pragma once
-// Adaptive re-clustering (issue 8; agents/recluster.h) in the static protocol. The table of
+// Adaptive re-clustering (issue 8; agents/recluster/recluster.h) in the static protocol. The table of
 // epoch e is computed from the frames seen before its boundary: the frames at step < e x period
 // (index within the robot's stream, SplitSequence) on the sample stride. Frame i, taken at step
 // t_i, belongs to epoch e_i = t_i / period and is searched by its owner under table e_i.
@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "agents/centroid_table.h"
-#include "agents/recluster.h"
+#include "agents/recluster/recluster.h"
 #include "experiments/protocols/paper/static_protocol.h"
 
 namespace dvpr {

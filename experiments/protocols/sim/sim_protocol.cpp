@@ -67,10 +67,10 @@ void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLo
       row.robot = q.robot.value;
       row.frame = q.frame.value;
       row.sent_ns = q.sent.ns();
-      if (q.match_frame) {
-        row.match_robot = q.match_robot->value;
-        row.match_frame = q.match_frame->value;
-        row.distance = q.distance;
+      if (q.best) {
+        row.match_robot = q.best->robot.value;
+        row.match_frame = q.best->frame.value;
+        row.distance = q.best->distance;
       }
       if (q.latency) row.latency_ns = q.latency->ns();
       row.relevant = s.truth.relevant[i];
@@ -123,7 +123,7 @@ RunFunction MakeSimRun(const SharedInputs& in) {
     const auto run_one = [&](const StrategySpec& strategy) {
       params.lcm_log = log_dir.empty() ? std::filesystem::path() : log_dir / LogName(spec, strategy.name);
       const RunRouting routing = BuildRunRouting(strategy, run_inputs, spec.robots, spec.run);
-      SimRunLog log = RunSimulation(*data, *routing.routing, params);
+      SimRunLog log = RunSimulation(*data, *routing.team, params);
       SimRunSummary summary = SummarizeSimRun(log, data->trajectory.positions, config->evaluation.radius_m,
                                               config->evaluation.suppression_frames);
       return std::make_pair(std::move(log), std::move(summary));

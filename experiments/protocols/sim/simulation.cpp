@@ -6,9 +6,9 @@
 #include <string>
 
 #include "agents/sim_transport.h"
-#include "experiments/protocols/sim/agent_records.h"
 #include "experiments/protocols/sim/event_log_recorder.h"
 #include "experiments/protocols/sim/message_rows.h"
+#include "experiments/protocols/sim/pose_oracle.h"
 #include "experiments/evaluation/metrics.h"
 #include "experiments/data/split.h"
 #include "experiments/results/lcm_event_log.h"
@@ -54,10 +54,10 @@ struct NetworkRecorders {
 
 }  // namespace
 
-SimRunLog RunSimulation(const Dataset& data, const RoutingStrategy& strategy, const SimRunParams& params) {
+SimRunLog RunSimulation(const Dataset& data, const TeamRouting& routing, const SimRunParams& params) {
   params.Validate(data);
-  if (strategy.num_robots() != params.robots) {
-    throw std::invalid_argument("routing strategy built for " + std::to_string(strategy.num_robots()) +
+  if (routing.num_robots() != params.robots) {
+    throw std::invalid_argument("routing strategy built for " + std::to_string(routing.num_robots()) +
                                 " robots, run has " + std::to_string(params.robots));
   }
   const int n = params.robots;
@@ -77,7 +77,8 @@ SimRunLog RunSimulation(const Dataset& data, const RoutingStrategy& strategy, co
     FrameStream frames{&data.descriptors, range.begin, range.size(), data.fps};
     for (int k = 0; k < range.size(); ++k) log.capture_time[static_cast<std::size_t>(range.begin.value + k)] = frames.TimeOf(k);
     transports.push_back(std::make_unique<SimTransport>(network, NodeId(r)));
-    agents.push_back(std::make_unique<RobotAgent>(RobotId(r), params.agent, *transports.back(), strategy, frames, verifier));
+    agents.push_back(std::make_unique<RobotAgent>(RobotId(r), params.agent, *transports.back(),
+                                                  routing.MakeAgentRouting(), frames, verifier));
   }
   for (auto& agent : agents) agent->Start();
   for (const auto& d : params.dropouts) {
@@ -91,11 +92,10 @@ SimRunLog RunSimulation(const Dataset& data, const RoutingStrategy& strategy, co
   log.end = sim.Now();
   for (const auto& agent : agents) {
     log.loads.push_back(agent->load());
-    for (const QueryOutcome& o : agent->outcomes()) {
-      if (o.expected_replies == 0) continue;  // never taken (robot went offline first)
-      const QueryRecord q = ToQueryRecord(agent->id(), o);
-      log.verify_requested += o.verify_requested ? 1 : 0;
-      log.verify_accepted += o.verify_accepted.value_or(false) ? 1 : 0;
+    for (const QueryRecord& q : agent->outcomes()) {
+      if (!q.Taken()) continue;  // the robot went offline first
+      log.verify_requested += q.verify_requested ? 1 : 0;
+      log.verify_accepted += q.verify_accepted.value_or(false) ? 1 : 0;
       log.queries.push_back(q);
     }
   }
@@ -116,8 +116,10 @@ SimRunSummary SummarizeSimRun(const SimRunLog& log, const Positions& positions, 
   for (const auto& q : log.queries) {
     MatchOutcome o;
     o.query = q.frame;
-    o.match = q.match_frame;
-    o.score = q.distance;
+    if (q.best) {
+      o.match = q.best->frame;
+      o.score = q.best->distance;
+    }
     outcomes.push_back(o);
   }
   for (bool r : s.truth.relevant) s.relevant += r ? 1 : 0;

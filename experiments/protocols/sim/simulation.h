@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "agents/agent_routing.h"
 #include "agents/robot_agent.h"
-#include "agents/routing.h"
 #include "experiments/data/dataset.h"
 #include "experiments/results/results.h"
 #include "experiments/evaluation/sim_metrics.h"
@@ -48,7 +48,9 @@ struct SimRunLog {
   SimTime end;
 };
 
-SimRunLog RunSimulation(const Dataset& data, const RoutingStrategy& strategy, const SimRunParams& params);
+// Every robot routes through its own component made by `routing` (a stateless strategy or one
+// with per-robot state, such as re-clustering).
+SimRunLog RunSimulation(const Dataset& data, const TeamRouting& routing, const SimRunParams& params);
 
 struct SimRunSummary {
   double auc = 0.0;

@@ -323,7 +323,7 @@ TEST_F(LcmTeamTest, GarbageOnEveryChannelIsCountedAndIgnored) {
   LcmTransport noise(Url(kPort));
   std::vector<std::string> channels{"DVPR_STATUS", "DVPR_QUERY_ALL"};
   for (int r = 0; r < kRobots; ++r) {
-    for (const char* prefix : {"DVPR_QUERY_", "DVPR_MATCH_", "DVPR_VREQ_", "DVPR_VRES_"}) {
+    for (const char* prefix : {"DVPR_QUERY_", "DVPR_PROBE_", "DVPR_STORE_", "DVPR_MATCH_", "DVPR_VREQ_", "DVPR_VRES_"}) {
       channels.push_back(prefix + std::to_string(r));
     }
   }
@@ -370,7 +370,7 @@ TEST_F(LcmTeamTest, GarbageOnEveryChannelIsCountedAndIgnored) {
     const AgentLog log = ReadAgentLog(dir_ / ("r" + std::to_string(r) + ".log"));
     EXPECT_EQ(log.end_reason, "all_done") << "robot " << r;
     EXPECT_EQ(log.queries.size(), 100u);
-    for (const AgentQueryLog& q : log.queries) EXPECT_EQ(q.received, q.expected) << "robot " << r << " frame " << q.record.frame.value;
+    for (const QueryRecord& q : log.queries) EXPECT_TRUE(q.Complete()) << "robot " << r << " frame " << q.frame.value;
     EXPECT_GT(log.malformed, 0u) << "robot " << r;
     EXPECT_GT(log.foreign, 0u) << "robot " << r;
     std::cout << "robot " << r << ": " << log.malformed << " malformed, " << log.foreign << " foreign, over " << rounds

@@ -59,19 +59,17 @@ TEST(AgentLog, RoundTripsExactly) {
   l.load.busy = SimTime::Nanos(77);
   l.sent = {{1, 2, 3}, {0, 0, 0}};
   l.received_from = {4, 0};
-  AgentQueryLog q;
-  q.record.robot = RobotId(1);
-  q.record.frame = FrameId(10);
-  q.record.sent = SimTime::Millis(100);
-  q.record.match_robot = RobotId(0);
-  q.record.match_frame = FrameId(3);
-  q.record.distance = 0.1f + 1e-7f;  // needs every digit to read back the same
-  q.record.latency = SimTime::Micros(250);
-  q.expected = q.received = 1;
+  QueryRecord q;
+  q.robot = RobotId(1);
+  q.frame = FrameId(10);
+  q.sent = SimTime::Millis(100);
+  q.best = IndexMatch{RobotId(0), FrameId(3), 0.1f + 1e-7f};  // needs every digit to read back the same
+  q.latency = SimTime::Micros(250);
+  q.expected_replies = q.received_replies = 1;
   q.verify_requested = true;
   q.verify_accepted = false;
-  l.queries = {q, AgentQueryLog{}};
-  l.queries[1].record.robot = RobotId(1);
+  l.queries = {q, QueryRecord{}};
+  l.queries[1].robot = RobotId(1);
   const fs::path path = fs::path(DVPR_TEST_TMP) / "agent_log_round_trip.log";
   WriteAgentLog(path, l);
   const AgentLog r = ReadAgentLog(path);
@@ -80,11 +78,14 @@ TEST(AgentLog, RoundTripsExactly) {
   EXPECT_EQ(r.sent[0].wire_bytes, 3);
   EXPECT_EQ(r.received_from[0], 4);
   ASSERT_EQ(r.queries.size(), 2u);
-  EXPECT_EQ(r.queries[0].record.distance, q.record.distance);
-  EXPECT_EQ(r.queries[0].record.latency, q.record.latency);
+  ASSERT_TRUE(r.queries[0].best);
+  EXPECT_EQ(r.queries[0].best->robot, RobotId(0));
+  EXPECT_EQ(r.queries[0].best->frame, FrameId(3));
+  EXPECT_EQ(r.queries[0].best->distance, q.best->distance);
+  EXPECT_EQ(r.queries[0].latency, q.latency);
   EXPECT_EQ(r.queries[0].verify_accepted, std::optional<bool>(false));
-  EXPECT_FALSE(r.queries[1].record.match_frame);
-  EXPECT_FALSE(r.queries[1].record.latency);
+  EXPECT_FALSE(r.queries[1].best);
+  EXPECT_FALSE(r.queries[1].latency);
 }
 
 TEST(AgentLog, RejectsATruncatedLine) {

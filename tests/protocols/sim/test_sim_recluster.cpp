@@ -1,6 +1,6 @@
-// Adaptive re-clustering in the simulation (agents/recluster_agent.h): on the ideal network, a
-// hand-worked 1-D toy (which robot searches and stores each frame before and after the new
-// table, message counts and bytes), a random team checked against the static planner (same
+// Adaptive re-clustering in the simulation (agents/recluster/recluster_agent.h): on the ideal
+// network, a hand-worked 1-D toy (which robot searches and stores each frame before and after the
+// new table, message counts and bytes), a random team checked against the static planner (same
 // tables, every descriptor at its owner under the final table), determinism and dropout.
 #include <limits>
 #include <map>
@@ -12,7 +12,8 @@
 #include <gtest/gtest.h>
 
 #include "agents/kmeans.h"
-#include "agents/recluster_agent.h"
+#include "agents/recluster/recluster_agent.h"
+#include "agents/recluster/recluster_messages.h"
 #include "agents/robot_agent.h"
 #include "agents/sim_transport.h"
 #include "experiments/protocols/sim/message_rows.h"
@@ -50,7 +51,8 @@ ReclusterPlan MakePlan(const DescriptorMatrix& x, int robots, std::shared_ptr<co
   return plan;
 }
 
-// A team on the ideal network, agents kept for inspection (as RunSimulation, which hides them).
+// A team on the ideal network, agents and their re-clustering components kept for inspection (as
+// RunSimulation, which hides them).
 struct Team {
   Team(const DescriptorMatrix& x, const ReclusterRouting& routing, const AgentParams& agent) {
     const int n = routing.num_robots();
@@ -62,7 +64,9 @@ struct Team {
     for (int r = 0; r < n; ++r) {
       const FrameRange range = split.ranges[static_cast<std::size_t>(r)];
       transports.push_back(std::make_unique<SimTransport>(*network, NodeId(r)));
-      agents.push_back(std::make_unique<RobotAgent>(RobotId(r), agent, *transports.back(), routing,
+      auto component = std::make_unique<ReclusterAgentRouting>(routing.plan());
+      routings.push_back(component.get());
+      agents.push_back(std::make_unique<RobotAgent>(RobotId(r), agent, *transports.back(), std::move(component),
                                                     FrameStream{&x, range.begin, range.size(), 10.0},
                                                     [](FrameId, FrameId) { return VerifyVerdict{}; }));
     }
@@ -93,6 +97,7 @@ struct Team {
   ObserverSubscription messages_subscription;
   std::vector<std::unique_ptr<SimTransport>> transports;
   std::vector<std::unique_ptr<RobotAgent>> agents;
+  std::vector<const ReclusterAgentRouting*> routings;  // robot by robot, owned by the agents
 };
 
 std::shared_ptr<const CentroidTable> Table1D(float a, int owner_a, float b, int owner_b) {
@@ -173,7 +178,7 @@ TEST_F(SimReclusterToy, RoutesByTheTableOfTheMomentAndMovesWhatChangedOwner) {
   EXPECT_EQ(kinds.at("migrate").bytes, 184);
   EXPECT_EQ(kinds.size(), 5u);
   // Everything at its owner under T1: near 0 at robot 0, near 100 at robot 1.
-  for (const auto& a : team.agents) EXPECT_EQ(a->recluster_epoch(), 1);
+  for (const auto* r : team.routings) EXPECT_EQ(r->epoch(), 1);
   EXPECT_EQ(StoredFrames(*team.agents[0]), (std::set<int>{0, 1, 2, 4, 6, 8, 9, 12, 14}));
   EXPECT_EQ(StoredFrames(*team.agents[1]), (std::set<int>{3, 5, 7, 10, 11, 13, 15}));
   EXPECT_EQ(team.agents[0]->load().stored, 9);
@@ -233,18 +238,19 @@ TEST_F(SimReclusterTeam, EveryDescriptorEndsAtItsOwnerUnderTheStaticPlannersLast
   const StaticReclusterPlan plan = PlanStaticRecluster(x_, initial_, params_);
   ASSERT_EQ(plan.epochs(), 3);
   std::vector<int> seen(240, 0);
-  for (const auto& a : team.agents) {
-    EXPECT_EQ(a->recluster_epoch(), 3);
-    ASSERT_NE(a->recluster_table(), nullptr);
-    EXPECT_EQ(a->recluster_table()->centroids(), plan.tables[3]->centroids());
+  for (std::size_t r = 0; r < team.agents.size(); ++r) {
+    const RobotAgent* a = team.agents[r].get();
+    const ReclusterAgentRouting& routing = *team.routings[r];
+    EXPECT_EQ(routing.epoch(), 3);
+    EXPECT_EQ(routing.table().centroids(), plan.tables[3]->centroids());
     for (int c = 0; c < plan.tables[3]->num_centroids(); ++c) {
-      EXPECT_EQ(a->recluster_table()->OwnerOf(c), plan.tables[3]->OwnerOf(c));
+      EXPECT_EQ(routing.table().OwnerOf(c), plan.tables[3]->OwnerOf(c));
     }
     for (std::size_t i = 0; i < a->index().size(); ++i) {
       const FrameId f = a->index().entries()[i].frame;
       ++seen[static_cast<std::size_t>(f.value)];
       EXPECT_EQ(plan.FinalOwner(static_cast<std::size_t>(f.value)), a->id()) << "frame " << f.value;
-      EXPECT_EQ(a->recluster_table()->RouteOf(a->index().Descriptor(i)), a->id());
+      EXPECT_EQ(routing.table().RouteOf(a->index().Descriptor(i)), a->id());
     }
     EXPECT_EQ(a->load().stored, static_cast<std::int64_t>(a->index().size()));
   }

@@ -151,20 +151,20 @@ TEST_F(SimulationTest, DecentralizedMatchesEqualTheCausalStaticReference) {
       const double d = (data_.descriptors.row(i).cast<double>() - data_.descriptors.row(j).cast<double>()).squaredNorm();
       if (d < ref.distance) ref = {j, d};
     }
-    if (!q.match_frame) {
+    if (!q.best) {
       EXPECT_EQ(ref.frame, -1) << "frame " << i;
       continue;
     }
-    const SimTime t_match = log.capture_time[static_cast<std::size_t>(q.match_frame->value)];
+    const SimTime t_match = log.capture_time[static_cast<std::size_t>(q.best->frame.value)];
     if (t_match < t) {
-      EXPECT_EQ(q.match_frame->value, ref.frame) << "frame " << i;
-      EXPECT_NEAR(q.distance, ref.distance, 1e-5);
+      EXPECT_EQ(q.best->frame.value, ref.frame) << "frame " << i;
+      EXPECT_NEAR(q.best->distance, ref.distance, 1e-5);
       ++compared;
     } else {
       // A frame taken at the same instant by another robot may have reached
       // the store first: it can only be better than the reference.
       EXPECT_EQ(t_match, t);
-      EXPECT_LE(q.distance, ref.distance + 1e-5);
+      EXPECT_LE(q.best->distance, ref.distance + 1e-5);
     }
   }
   EXPECT_GT(compared, data_.size() / 2);
@@ -179,7 +179,10 @@ TEST_F(SimulationTest, SameSeedSameLogAndBusyRobotsQueue) {
   ASSERT_EQ(a.queries.size(), b.queries.size());
   for (std::size_t i = 0; i < a.queries.size(); ++i) {
     EXPECT_EQ(a.queries[i].latency, b.queries[i].latency);
-    EXPECT_EQ(a.queries[i].match_frame, b.queries[i].match_frame);
+    ASSERT_EQ(a.queries[i].best.has_value(), b.queries[i].best.has_value());
+    if (a.queries[i].best) {
+      EXPECT_EQ(a.queries[i].best->frame, b.queries[i].best->frame);
+    }
   }
   // Four searches per frame period (own + 3 remote) of 30 ms each: 120 ms of
   // work every 100 ms, so the queue grows and latency exceeds one service time.

@@ -1,4 +1,4 @@
-#include "experiments/protocols/sim/agent_records.h"
+#include "experiments/protocols/sim/pose_oracle.h"
 
 #include <cmath>
 
@@ -14,20 +14,6 @@ GeometricVerifier PoseOracle(const Positions& positions, double radius_m) {
     v.inliers = static_cast<int>(std::lround(100.0 * std::exp(-d / radius_m)));
     return v;
   };
-}
-
-QueryRecord ToQueryRecord(RobotId robot, const QueryOutcome& o) {
-  QueryRecord q;
-  q.robot = robot;
-  q.frame = o.frame;
-  q.sent = o.sent;
-  if (o.best) {
-    q.match_robot = o.best->robot;
-    q.match_frame = o.best->frame;
-    q.distance = o.best->distance;
-  }
-  if (o.Complete() && o.last_reply) q.latency = *o.last_reply - o.sent;
-  return q;
 }
 
 }  // namespace dvpr

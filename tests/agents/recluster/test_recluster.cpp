@@ -1,4 +1,4 @@
-// Adaptive re-clustering's shared rules (agents/recluster.h) and the index removal it moves
+// Adaptive re-clustering's shared rules (agents/recluster/recluster.h) and the index removal it moves
 // descriptors with, on 1-D cases whose clusters and owners can be read off by hand.
 #include <stdexcept>
 #include <vector>
@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "agents/descriptor_index.h"
-#include "agents/recluster.h"
+#include "agents/recluster/recluster.h"
 #include "tests/descriptor_support.h"
 
 namespace dvpr {

@@ -1,4 +1,4 @@
-#include "agents/recluster.h"
+#include "agents/recluster/recluster.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -7,8 +7,9 @@
 //
 // This file holds what both protocols share, with no LCM: which frames are sampled and how the
 // leader turns the sample into the table of an epoch. The static protocol
-// (experiments/protocols/paper/static_recluster.h) and the agents (agents/recluster_agent.h) call the same
-// ReclusterTable, so the same sample gives the same table in both.
+// (experiments/protocols/paper/static_recluster.h) and the agents
+// (agents/recluster/recluster_agent.h) call the same ReclusterTable, so the same sample gives the
+// same table in both.
 #include <cstdint>
 #include <vector>
 
