@@ -70,6 +70,7 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
                                      const ProtocolRegistry& protocols,
                                      const ExecutorOptions& options, std::ostream& summary) {
   CheckProtocolsAvailable(config, origin, protocols);
+  CheckOutputFolder(out_dir);  // before the inputs load: a refused --out fails at once
   SharedInputs inputs = LoadSharedInputs(config, origin);
   // Everything is written into folder.dir() and moved to out_dir only when all succeeded.
   ResultFolder folder(out_dir);

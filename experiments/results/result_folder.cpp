@@ -79,6 +79,8 @@ void CheckReplaceable(const fs::path& shown, const fs::path& target) {
 
 }  // namespace
 
+void CheckOutputFolder(const fs::path& target) { CheckReplaceable(target, Normalised(target)); }
+
 fs::path TemporaryFolderFor(const fs::path& target, long pid) {
   const fs::path t = Normalised(target);
   return t.parent_path() / (TemporaryPrefix(t) + std::to_string(pid));

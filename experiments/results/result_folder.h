@@ -18,12 +18,16 @@ namespace dvpr {
 // one). An empty folder is not one (but may still be written into).
 bool IsResultFolder(const std::filesystem::path& dir);
 
+// Throws std::runtime_error naming `target` when a run may not write it (see ResultFolder);
+// cheap, so `dvpr run` calls it before loading its inputs. Creates nothing.
+void CheckOutputFolder(const std::filesystem::path& target);
+
 class ResultFolder {
  public:
-  // Checks that `target` may be written, removes temporary folders of dead processes next to it
-  // and creates the temporary folder (and the target's parents). Throws std::runtime_error
-  // naming `target` when it is a file, a symbolic link, the current folder or one above it, or
-  // a non-empty folder that is not a dvpr result folder.
+  // Checks that `target` may be written (CheckOutputFolder), removes temporary folders of dead
+  // processes next to it and creates the temporary folder (and the target's parents). Throws
+  // std::runtime_error naming `target` when it is a file, a symbolic link, the current folder or
+  // one above it, or a non-empty folder that is not a dvpr result folder.
   explicit ResultFolder(const std::filesystem::path& target);
   // Removes the temporary folder; unless committed, also the target's parents it created.
   ~ResultFolder();

@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -124,6 +125,21 @@ TEST_F(ResultFolderRunTest, AFailedFirstRunLeavesNoFolder) {
   } catch (const std::runtime_error&) {
   }
   EXPECT_EQ(Names(root_), Strings{});
+}
+
+TEST_F(ResultFolderRunTest, AFolderDvprDidNotWriteIsRefusedAndLeftAsItWas) {
+  fs::create_directories(root_ / "out");
+  std::ofstream(root_ / "out" / "notes.txt") << "my notes\n";
+  const auto before = SnapshotFolder(root_);
+  try {
+    Run(true, 0.25);
+    FAIL() << "a folder with other files was replaced";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind((root_ / "out").string() +
+                                          ": exists, is not empty and is not a dvpr result folder", 0),
+              0u) << e.what();
+  }
+  EXPECT_EQ(SnapshotFolder(root_), before);
 }
 
 // SIGTERM in the middle of the sweep, in a forked child (it signals itself: no timing).
