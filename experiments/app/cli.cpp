@@ -21,7 +21,9 @@ Usage:
   dvpr run CONFIG.yaml [--out DIR] [--set key.path=value ...] [--threads N] [--quiet]
                      expand the config's sweep, run it on all cores, write DIR
                      (default results/<config name>): config.yaml, runs.csv,
-                     per_robot.csv, links.csv, summary.json, figures/*.png
+                     per_robot.csv, links.csv, summary.json, figures/*.png;
+                     DIR appears (an earlier result folder is replaced whole)
+                     only when all succeeded; other existing folders are refused
   dvpr plot DIR      redraw DIR/figures/*.png from the files in DIR
   dvpr agent --config C --robot R [--robots N] [--run K] [--strategy S] [--lcm URL]
              [--speedup X] [--out FILE] [--set key.path=value ...] [--grace SEC]
