@@ -7,6 +7,7 @@
 #include "experiments/protocols/lcm/agent_process.h"
 #include "experiments/config/config.h"
 #include "experiments/app/experiment.h"
+#include "experiments/arch/dispatch.h"
 #include "experiments/figures/figures.h"
 #include "experiments/protocols/lcm/lcm_launch.h"
 #include "experiments/sweep/run_executor.h"
@@ -133,7 +134,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     return 0;
   }
   if (cmd == "--version") {
-    out << "dvpr " << kVersion << "\n";
+    out << "dvpr " << kVersion << " (" << CompiledArch() << ")\n";  // which build runs: see dispatch.h
     return 0;
   }
   try {
