@@ -63,6 +63,8 @@ SANITIZER = re.compile(
     r"ERROR: (Address|Leak|Memory|Thread)Sanitizer|runtime error:|UndefinedBehaviorSanitizer|"
     r"terminate called|Segmentation fault|stack-overflow|Assertion .* failed")
 TEMPORARY = re.compile(r"(^\.|tmp|temp|~$|\.part$)", re.IGNORECASE)
+# A line naming the result folder `out` (the cases' --out): a run may refuse an existing folder.
+NAMES_OUT = re.compile(r"(^|[\s'\"/])out([\s'\":/]|$)")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -212,7 +214,10 @@ def classify(r, text, fired, after):
     expected_signal = c.interrupt and r.rc in (-signal.SIGINT, 128 + signal.SIGINT)
     if r.sanitizer or (r.rc < 0 and not expected_signal) or (r.rc > 2 and not expected_signal):
         r.cls = "crash"
-        r.reasons = [r.sanitizer or ("signal %d" % -r.rc if r.rc < 0 else "exit %d" % r.rc)]
+        r.reasons = ["sanitizer report (" + r.sanitizer + ")" if r.sanitizer else
+                     "signal %d" % -r.rc if r.rc < 0 else "exit %d" % r.rc]
+        if r.rc == 1:
+            r.reasons.append("exit 1, the code of a user error")
         return
     if c.success:
         classify_success(r, after)
@@ -227,26 +232,36 @@ def classify(r, text, fired, after):
     if r.rc == 0:
         r.cls, r.reasons = "silent acceptance", ["exit 0"]
         return
-    r.reasons += changed_reasons(r)
-    if r.rc != c.exit:
-        r.reasons.append("exit %d, expected %d" % (r.rc, c.exit))
-    if len(r.lines) != 1:
-        r.reasons.append("%d stderr lines" % len(r.lines))
-    missing = [w if isinstance(w, str) else "|".join(w) for w in c.expect if not contains(text, w)]
-    if missing:
-        r.reasons.append("does not name " + ", ".join(missing))
-    if any((ord(ch) < 32 and ch not in "\t") or ch in "\x7f\ufffd" for line in r.lines
-           for ch in line):
-        r.reasons.append("raw bytes in the message")
-    bad = [w for w in c.forbid if w in text]
-    if bad:
-        r.reasons.append("names " + ", ".join(bad) + " wrongly")
+    r.reasons = changed_reasons(r) + message_problems(r, text)
     if r.left or r.prior_changed:
         r.cls = "partial output"
     elif r.reasons:
         r.cls = "misleading error"
     else:
         r.cls = "clear error"
+
+
+def message_problems(r, text):
+    """What is wrong with an error's exit code and stderr (empty: one clear line)."""
+    c = r.case
+    problems = []
+    if r.rc != c.exit:
+        problems.append("exit %d, expected %d" % (r.rc, c.exit))
+    if len(r.lines) != 1:
+        problems.append("%d stderr lines" % len(r.lines))
+    missing = [w if isinstance(w, str) else "|".join(w) for w in c.expect if not contains(text, w)]
+    if missing and c.prior and c.prior != "file" and len(r.lines) == 1 and \
+            NAMES_OUT.search(r.lines[0]):
+        missing = []  # refusing to replace an earlier folder is a documented choice (issue 12)
+    if missing:
+        problems.append("does not name " + ", ".join(missing))
+    if any((ord(ch) < 32 and ch != "\t") or ch in "\x7f\ufffd" for line in r.lines
+           for ch in line):
+        problems.append("raw bytes in the message")
+    bad = [w for w in c.forbid if w in text]
+    if bad:
+        problems.append("names " + ", ".join(bad) + " wrongly")
+    return problems
 
 
 def changed_reasons(r):
@@ -275,7 +290,7 @@ def classify_success(r, after):
         return
     r.reasons = changed_reasons(r) + ["exit %d: %s" % (r.rc, r.lines[0] if r.lines else "")]
     refused = c.prior and not r.prior_changed and not r.left and len(r.lines) == 1 and \
-        r.rc == 1 and re.search(r"(^|[\s'\"/])out([\s'\":/]|$)", r.lines[0])
+        r.rc == 1 and NAMES_OUT.search(r.lines[0])
     if refused:
         r.cls, r.reasons = "ok", ["refused to replace the earlier folder"]
     else:
