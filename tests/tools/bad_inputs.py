@@ -2,7 +2,8 @@
 """A catalogue of bad inputs a new user might give `dvpr run`, and what dvpr does with each.
 
     python3 tests/tools/bad_inputs.py BUILD/dvpr SCRATCH_DIR [--report] [--markdown]
-                                      [--json FILE] [--only PATTERN] [--jobs N] [--list]
+            [--json FILE] [--before tests/tools/bad_inputs/before.json] [--only 'a*'] [--jobs N]
+    python3 tests/tools/bad_inputs.py --list          (the cases, with why for debatable ones)
 
 Each case is one bad input (a --set value, a config file, a data file, a flag, a result folder
 that already exists), grouped by category (a: quantities, b: YAML structure, c: files, d: robots,
@@ -14,7 +15,8 @@ files), whether an earlier result folder was changed, and any sanitizer report o
 Each case is classified as one of
     clear error        exit 1 (2 for usage), one stderr line naming the key/file/flag, nothing
                        left behind, an earlier result folder byte-identical;
-    crash              a signal, a sanitizer report, `terminate called`, a timeout;
+    crash              a signal, a sanitizer report, `terminate called`, an exit code above 2,
+                       a timeout (60 s);
     silent acceptance  exit 0 although the input is bad;
     partial output     an error, but a result folder or temporary files were left, or an earlier
                        result folder was changed (or, for a run that should succeed, files of an
@@ -23,8 +25,9 @@ Each case is classified as one of
                        it should not, or with the wrong exit code;
     ok                 (only the few cases that must succeed) it did, and left a whole folder.
 It prints a table per category and the failing cases, and exits 1 if any case is neither a clear
-error nor ok (--report: always 0, for a before/after table). docs/bad_inputs.md explains the
-catalogue. Python 3 standard library only.
+error nor ok (--report: always 0, for a before/after table). The cases are in
+bad_inputs/catalogue.py; docs/bad_inputs.md explains them. Run it on the sanitizer build: a
+Release build turns some overflows into plausible-looking numbers. Python 3 standard library only.
 """
 
 import argparse
@@ -288,7 +291,7 @@ def classify_success(r, after):
         r.reasons = problems
         r.cls = "partial output" if problems else "ok"
         return
-    r.reasons = changed_reasons(r) + ["exit %d: %s" % (r.rc, r.lines[0] if r.lines else "")]
+    r.reasons = changed_reasons(r) + ["refused a valid input (exit %d)" % r.rc]
     refused = c.prior and not r.prior_changed and not r.left and len(r.lines) == 1 and \
         r.rc == 1 and NAMES_OUT.search(r.lines[0])
     if refused:
@@ -400,8 +403,8 @@ def as_json(r):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("dvpr", type=Path, help="the dvpr binary")
-    ap.add_argument("scratch", type=Path, help="a scratch folder (emptied case by case)")
+    ap.add_argument("dvpr", type=Path, nargs="?", help="the dvpr binary")
+    ap.add_argument("scratch", type=Path, nargs="?", help="a scratch folder (emptied case by case)")
     ap.add_argument("--report", action="store_true", help="always exit 0 (before/after tables)")
     ap.add_argument("--markdown", action="store_true", help="tables in Markdown, every case")
     ap.add_argument("--json", type=Path, help="write every case's record to this file")
@@ -416,6 +419,8 @@ def main():
         for c in cases:
             print("%s  %s%s" % (c.id, c.what, ("\n      why: " + c.why) if c.why else ""))
         return 0
+    if args.scratch is None:
+        ap.error("needs the dvpr binary and a scratch folder")
     if not os.access(args.dvpr, os.X_OK):
         print("bad_inputs.py: %s is not an executable" % args.dvpr, file=sys.stderr)
         return 2
