@@ -67,6 +67,7 @@ SANITIZER = re.compile(
     r"terminate called|Segmentation fault|stack-overflow|Assertion .* failed")
 TEMPORARY = re.compile(r"(^\.|tmp|temp|~$|\.part$)", re.IGNORECASE)
 # A line naming the result folder `out` (the cases' --out): a run may refuse an existing folder.
+LOGS = ("stderr.txt", "stdout.txt")  # written by the harness for the interrupted case
 NAMES_OUT = re.compile(r"(^|[\s'\"/])out([\s'\":/]|$)")
 
 
@@ -123,7 +124,7 @@ def run_interrupted(argv, cwd, env, before):
         deadline = time.monotonic() + TIMEOUT_S
         while proc.poll() is None and time.monotonic() < deadline:
             now = outside_inputs(snapshot(cwd))
-            if any(k not in before and k not in ("stderr.txt", "stdout.txt") for k in now) or \
+            if any(k not in before and k not in LOGS for k in now) or \
                     any(before.get(k) != now.get(k) for k in before):
                 proc.send_signal(signal.SIGINT)
                 fired = True
@@ -157,7 +158,9 @@ def contains(text, word):
     return any(w in text for w in word) if isinstance(word, tuple) else word in text
 
 
-def run_case(case, dvpr, scratch, priors):
+def prepare_case(case, scratch, priors):
+    """The case's folder: inputs in in/, an earlier result folder at out/ if any, an empty
+    tmpdir/ for dvpr's TMPDIR (files it leaves there count as left). Returns (folder, config)."""
     case_dir = scratch / case.id
     shutil.rmtree(case_dir, ignore_errors=True)
     in_dir = case_dir / "in"
@@ -170,15 +173,19 @@ def run_case(case, dvpr, scratch, priors):
         write(case_dir / "out", "an earlier file the user keeps\n")
     elif case.prior:
         shutil.copytree(priors[case.prior], case_dir / "out", symlinks=True)
-    # dvpr's temporary files, if it makes any outside --out, land here and count as left.
     (case_dir / "tmpdir").mkdir()
+    return case_dir, config
+
+
+def run_case(case, dvpr, scratch, priors):
+    case_dir, config = prepare_case(case, scratch, priors)
     env = dict(os.environ, TMPDIR=str(case_dir / "tmpdir"))
-    watch_before = outside_inputs(snapshot(case_dir))
+    before = outside_inputs(snapshot(case_dir))
     argv = dvpr_argv(case, dvpr, config, case_dir)
     start = time.monotonic()
     fired = True
     if case.interrupt:
-        rc, err, fired = run_interrupted(argv, case_dir, env, watch_before)
+        rc, err, fired = run_interrupted(argv, case_dir, env, before)
     else:
         try:
             p = subprocess.run(argv, cwd=case_dir, env=env, capture_output=True,
@@ -190,23 +197,26 @@ def run_case(case, dvpr, scratch, priors):
     text = err.decode("utf-8", "replace")
     # Shown without the scratch path, so tables from two machines compare.
     r.lines = [line.replace(str(scratch) + "/", "") for line in text.splitlines() if line.strip()]
-    after = {k: v for k, v in outside_inputs(snapshot(case_dir)).items()
-             if k not in ("stderr.txt", "stdout.txt")}
-    before = {k: v for k, v in watch_before.items() if k not in ("stderr.txt", "stdout.txt")}
     m = SANITIZER.search(text)
     r.sanitizer = m.group(0) if m else ""
     r.named = all(contains(text, w) for w in case.expect)
-    if case.prior:  # temporaries are reported as left, not again as changes
-        r.prior_changed = sorted(k for k in set(before) | set(after)
-                                 if k.startswith("out") and before.get(k) != after.get(k)
-                                 and not (k not in before and TEMPORARY.search(Path(k).name)))
-    new = sorted(k for k in after if k not in before)
-    r.new = new
-    top = sorted({k.split("/")[0] for k in new})
-    r.left = top if not case.prior else sorted(k for k in new if not k.startswith("out/") or
-                                               TEMPORARY.search(Path(k).name))
+    after = {k: v for k, v in outside_inputs(snapshot(case_dir)).items() if k not in LOGS}
+    note_changes(r, before, after)
     classify(r, text, fired, after)
     return r
+
+
+def note_changes(r, before, after):
+    """Fills r.new, r.left and r.prior_changed from the case folder before and after the run."""
+    r.new = sorted(k for k in after if k not in before)
+    if not r.case.prior:
+        r.left = sorted({k.split("/")[0] for k in r.new})
+        return
+    r.left = sorted(k for k in r.new if not k.startswith("out/") or TEMPORARY.search(Path(k).name))
+    # Temporaries are reported as left, not again as changes.
+    r.prior_changed = sorted(k for k in set(before) | set(after)
+                             if k.startswith("out") and before.get(k) != after.get(k)
+                             and not (k not in before and TEMPORARY.search(Path(k).name)))
 
 
 def classify(r, text, fired, after):
