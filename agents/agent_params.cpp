@@ -10,15 +10,21 @@ namespace dvpr {
 
 void ServiceParams::Validate() const {
   CheckNonNegativeDuration("fixed", fixed);
+  CheckInRange("fixed", fixed, SimTime::Zero(), kMaxFixed);
   CheckNonNegativeDuration("per_comparison", per_comparison);
+  CheckInRange("per_comparison", per_comparison, SimTime::Zero(), kMaxPerComparison);
 }
 
 void VerificationParams::Validate() const {
   CheckNonNegativeCount("request_bytes", request_bytes.value());
+  CheckInRange("request_bytes", request_bytes, Bytes(0), kMaxRequestBytes);
   if (!(max_distance >= 0.0)) {
     std::ostringstream got;
     got << max_distance;
     InvalidParam("max_distance", "must not be negative, got " + got.str());
+  }
+  if (!(max_distance <= kMaxDistance)) {
+    InvalidParam("max_distance", RangeProblem("0", FormatNumber(kMaxDistance), FormatNumber(max_distance)));
   }
 }
 

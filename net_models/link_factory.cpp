@@ -41,8 +41,15 @@ void ValidateLink(const LinkOverrideParams& o, std::size_t i, LinkModelKind mode
   if (model != LinkModelKind::kPointToPoint && (o.bandwidth || o.latency)) {
     InvalidParam(field, "bandwidth/latency overrides need model point_to_point, not " + std::string(ToString(model)));
   }
-  if (o.bandwidth) CheckPositiveRate(field + ".bandwidth", *o.bandwidth);
-  if (o.latency) CheckNonNegativeDuration(field + ".latency", *o.latency);
+  if (o.bandwidth) {
+    CheckPositiveRate(field + ".bandwidth", *o.bandwidth);
+    CheckInRange(field + ".bandwidth", *o.bandwidth, NetworkModelParams::kMinBandwidth,
+                 NetworkModelParams::kMaxBandwidth);
+  }
+  if (o.latency) {
+    CheckNonNegativeDuration(field + ".latency", *o.latency);
+    CheckInRange(field + ".latency", *o.latency, SimTime::Zero(), NetworkModelParams::kMaxLatency);
+  }
   if (o.loss) ValidateNested(field + ".loss.", [&] { o.loss->Validate(); });
 }
 
@@ -69,8 +76,11 @@ std::string_view ToString(LinkModelKind kind) {
 void NetworkModelParams::Validate(int nodes) const {
   if (nodes <= 0) InvalidParam("nodes", "a network needs at least one node, got " + std::to_string(nodes));
   CheckPositiveRate("bandwidth", bandwidth);
+  CheckInRange("bandwidth", bandwidth, kMinBandwidth, kMaxBandwidth);
   CheckNonNegativeDuration("latency", latency);
+  CheckInRange("latency", latency, SimTime::Zero(), kMaxLatency);
   CheckNonNegativeCount("queue_packets", queue_packets);
+  CheckInRange("queue_packets", queue_packets, 1, kMaxQueuePackets);
   wire.Validate();  // its fields (mtu, link_framing) sit at the top of a network section
   ValidateNested("loss.", [&] { loss.Validate(); });
   for (std::size_t i = 0; i < links.size(); ++i) ValidateLink(links[i], i, model, nodes);

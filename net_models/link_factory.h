@@ -32,6 +32,14 @@ struct LinkOverrideParams {
 };
 
 struct NetworkModelParams {
+  // The valid ranges (docs/config.md), for the defaults and every link override. With them the
+  // largest message (1 GiB request, fragmented) takes about 2e16 ns to send and a latency at most
+  // 8.64e13 ns, so sums of a few of them with a frame's time stay far inside int64 nanoseconds.
+  static constexpr DataRate kMinBandwidth = DataRate::Kbps(1);
+  static constexpr DataRate kMaxBandwidth = DataRate::Gbps(1000);
+  static constexpr SimTime kMaxLatency = SimTime::Millis(24LL * 3600 * 1000);  // 24 h
+  static constexpr int kMaxQueuePackets = 1 << 30;
+
   LinkModelKind model = LinkModelKind::kPointToPoint;
   DataRate bandwidth = DataRate::Mbps(10);
   SimTime latency = SimTime::Millis(2);
@@ -42,8 +50,8 @@ struct NetworkModelParams {
 
   // Throws std::invalid_argument "<field>: ..." naming the value, with the
   // fields spelled as in a config's network section ("bandwidth", "mtu",
-  // "loss.p", "links[0].latency"): non-positive bandwidth, negative latency or
-  // queue, MTU too small, a probability outside [0, 1], an override naming a
+  // "loss.p", "links[0].latency"): a bandwidth, latency or queue outside its
+  // range above, an MTU outside WireParams', a probability outside [0, 1], an override naming a
   // node outside [0, nodes) or its own link, or a bandwidth/latency override
   // on a model other than point_to_point.
   void Validate(int nodes) const;

@@ -1,5 +1,7 @@
 #include "net_models/param_checks.h"
 
+#include <charconv>
+#include <cmath>
 #include <sstream>
 
 namespace dvpr {
@@ -25,6 +27,36 @@ void CheckNonNegativeDuration(std::string_view field, SimTime t) {
 
 void CheckNonNegativeCount(std::string_view field, std::int64_t n) {
   if (n < 0) InvalidParam(field, "must not be negative, got " + std::to_string(n));
+}
+
+std::string FormatNumber(double v) {
+  char buf[64];
+  const bool whole = std::isfinite(v) && v == std::trunc(v) && std::fabs(v) < 1e15;
+  const auto [end, ec] = whole ? std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, 0)
+                               : std::to_chars(buf, buf + sizeof buf, v);
+  return ec == std::errc() ? std::string(buf, end) : std::string("?");
+}
+
+std::string RangeProblem(std::string_view min, std::string_view max, std::string_view got) {
+  return "must be in [" + std::string(min) + ", " + std::string(max) + "], got " + std::string(got);
+}
+
+void CheckInRange(std::string_view field, SimTime t, SimTime min, SimTime max) {
+  if (t < min || t > max) InvalidParam(field, RangeProblem(FormatDuration(min), FormatDuration(max), FormatDuration(t)));
+}
+
+void CheckInRange(std::string_view field, DataRate r, DataRate min, DataRate max) {
+  if (r < min || r > max) InvalidParam(field, RangeProblem(ToString(min), ToString(max), ToString(r)));
+}
+
+void CheckInRange(std::string_view field, Bytes b, Bytes min, Bytes max) {
+  if (b < min || b > max) InvalidParam(field, RangeProblem(ToString(min), ToString(max), ToString(b)));
+}
+
+void CheckInRange(std::string_view field, std::int64_t n, std::int64_t min, std::int64_t max) {
+  if (n < min || n > max) {
+    InvalidParam(field, RangeProblem(std::to_string(min), std::to_string(max), std::to_string(n)));
+  }
 }
 
 }  // namespace dvpr

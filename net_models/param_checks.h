@@ -21,6 +21,19 @@ void CheckPositiveRate(std::string_view field, DataRate rate);
 void CheckNonNegativeDuration(std::string_view field, SimTime t);
 void CheckNonNegativeCount(std::string_view field, std::int64_t n);
 
+// A number as the range errors write it: whole numbers below 1e15 in full ("1000000"), others in
+// the shortest form that reads back to the same double ("0.1", "3.4028234663852886e+38").
+std::string FormatNumber(double v);
+// The one wording of a range error, "must be in [<min>, <max>], got <got>", for the checks below
+// and for a config reader that has the value only as the text the user wrote.
+std::string RangeProblem(std::string_view min, std::string_view max, std::string_view got);
+// min <= value <= max, else InvalidParam(field, RangeProblem(...)) with each value in its unit's
+// canonical form ("24h", "1kbps", "1GiB").
+void CheckInRange(std::string_view field, SimTime t, SimTime min, SimTime max);
+void CheckInRange(std::string_view field, DataRate r, DataRate min, DataRate max);
+void CheckInRange(std::string_view field, Bytes b, Bytes min, Bytes max);
+void CheckInRange(std::string_view field, std::int64_t n, std::int64_t min, std::int64_t max);
+
 // Runs validate(); the field named by an error it throws gets `prefix` in front.
 template <typename Fn>
 void ValidateNested(std::string_view prefix, Fn&& validate) {

@@ -20,6 +20,7 @@ struct UnitEntry {
 struct Decimal {
   Wide mantissa = 0;
   int frac_digits = 0;
+  int int_digits = 0;  // significant digits before the point (leading zeros not counted)
 };
 
 std::string_view Trim(std::string_view s) {
@@ -28,12 +29,13 @@ std::string_view Trim(std::string_view s) {
   return s;
 }
 
-// Parses "123", "1.5", ".5" at the start of s; advances s past the number.
-std::optional<Decimal> ParseDecimal(std::string_view& s) {
+// Parses "123", "1.5", ".5" at the start of s; advances s past the number. `too_long` is set when
+// the digits do not fit an exact __int128 mantissa (about 38 significant digits).
+std::optional<Decimal> ParseDecimal(std::string_view& s, bool& too_long) {
   Decimal d;
+  too_long = false;
   bool any_digit = false;
   bool in_fraction = false;
-  int digits = 0;
   std::size_t i = 0;
   for (; i < s.size(); ++i) {
     const char c = s[i];
@@ -42,10 +44,13 @@ std::optional<Decimal> ParseDecimal(std::string_view& s) {
       continue;
     }
     if (c < '0' || c > '9') break;
-    if (++digits > 30) return std::nullopt;  // beyond what __int128 holds exactly
-    d.mantissa = d.mantissa * 10 + (c - '0');
-    if (in_fraction) ++d.frac_digits;
     any_digit = true;
+    if (!in_fraction && (d.int_digits > 0 || c != '0')) ++d.int_digits;
+    if (__builtin_mul_overflow(d.mantissa, 10, &d.mantissa) ||
+        __builtin_add_overflow(d.mantissa, c - '0', &d.mantissa)) {
+      too_long = true;
+    }
+    if (in_fraction) ++d.frac_digits;
   }
   if (!any_digit) return std::nullopt;
   s.remove_prefix(i);
@@ -57,24 +62,52 @@ std::optional<Decimal> ParseDecimal(std::string_view& s) {
                               "\": expected " + std::string(expected));
 }
 
+[[noreturn]] void FailTooLarge(std::string_view what, std::string_view text, std::string_view base) {
+  throw QuantityTooLarge("invalid " + std::string(what) + " \"" + std::string(text) +
+                         "\": expected at most " +
+                         std::to_string(std::numeric_limits<std::int64_t>::max()) + std::string(base));
+}
+
+// mantissa / 10^frac_digits x factor in base units, rounded half up; nothing when an
+// intermediate or the result does not fit.
+std::optional<std::int64_t> ToBaseUnits(const Decimal& number, std::int64_t factor) {
+  Wide scale = 1;
+  for (int i = 0; i < number.frac_digits; ++i) {
+    if (__builtin_mul_overflow(scale, 10, &scale)) return std::nullopt;
+  }
+  Wide twice = 0;
+  Wide twice_scale = 0;
+  Wide rounded = 0;
+  if (__builtin_mul_overflow(number.mantissa, static_cast<Wide>(factor) * 2, &twice) ||
+      __builtin_mul_overflow(scale, 2, &twice_scale) || __builtin_add_overflow(twice, scale, &rounded)) {
+    return std::nullopt;
+  }
+  const Wide value = rounded / twice_scale;
+  if (value > std::numeric_limits<std::int64_t>::max()) return std::nullopt;
+  return static_cast<std::int64_t>(value);
+}
+
 // number [space] unit -> value in base units, rounded half up.
 template <std::size_t N>
-std::int64_t ParseQuantity(std::string_view text, std::string_view what,
-                           const std::array<UnitEntry, N>& units, std::string_view expected) {
+std::int64_t ParseQuantity(std::string_view text, std::string_view what, const std::array<UnitEntry, N>& units,
+                           std::string_view expected, std::string_view base) {
   std::string_view rest = Trim(text);
   if (!rest.empty() && rest.front() == '-') Fail(what, text, "a non-negative value; " + std::string(expected));
   if (!rest.empty() && rest.front() == '+') rest.remove_prefix(1);
-  const auto number = ParseDecimal(rest);
+  bool too_long = false;
+  const auto number = ParseDecimal(rest, too_long);
   if (!number) Fail(what, text, expected);
   if (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
   if (rest.empty()) Fail(what, text, "a unit after the number; " + std::string(expected));
   for (const UnitEntry& u : units) {
     if (u.name != rest) continue;
-    Wide scale = 1;
-    for (int i = 0; i < number->frac_digits; ++i) scale *= 10;
-    const Wide value = (number->mantissa * u.factor * 2 + scale) / (scale * 2);
-    if (value > std::numeric_limits<std::int64_t>::max()) Fail(what, text, "a smaller value");
-    return static_cast<std::int64_t>(value);
+    // 20 integer digits are at least 1e19 base units, beyond int64; a longer fraction is refused
+    // rather than rounded, as it cannot be held exactly.
+    if (number->int_digits > 19) FailTooLarge(what, text, base);
+    if (too_long) Fail(what, text, "at most 38 significant digits");
+    const auto value = ToBaseUnits(*number, u.factor);
+    if (!value) FailTooLarge(what, text, base);
+    return *value;
   }
   Fail(what, text, "a known unit; " + std::string(expected));
 }
@@ -115,24 +148,33 @@ constexpr std::array<UnitEntry, 7> kByteUnits = {{
 
 SimTime DataRate::TxTime(Bytes n) const {
   if (bps_ <= 0) throw std::domain_error("DataRate::TxTime on a non-positive rate");
+  // |n| < 2^63, so n x 8e9 < 2^96 fits; only the result may exceed int64.
   const Wide bits_ns = static_cast<Wide>(n.value()) * 8 * 1000000000;
-  return SimTime::Nanos(static_cast<std::int64_t>((bits_ns + bps_ - 1) / bps_));
+  const Wide ns = (bits_ns + bps_ - 1) / bps_;
+  if (ns > std::numeric_limits<std::int64_t>::max()) {
+    throw std::domain_error("DataRate::TxTime: " + std::to_string(n.value()) + " bytes at " +
+                            std::to_string(bps_) + "bps take longer than the largest SimTime");
+  }
+  return SimTime::Nanos(static_cast<std::int64_t>(ns));
 }
 
 DataRate ParseDataRate(std::string_view text) {
   return DataRate::BitsPerSecond(ParseQuantity(
       text, "data rate", kRateUnits,
-      "a number and a rate unit such as bps, kbps, Mbps, Gbps, Mbit/s, MBps or MiB/s (e.g. \"10Mbps\")"));
+      "a number and a rate unit such as bps, kbps, Mbps, Gbps, Mbit/s, MBps or MiB/s (e.g. \"10Mbps\")",
+      "bps"));
 }
 
 SimTime ParseDuration(std::string_view text) {
   return SimTime::Nanos(ParseQuantity(text, "duration", kDurationUnits,
-                                      "a number and a time unit: ns, us, ms, s, min or h (e.g. \"5ms\")"));
+                                      "a number and a time unit: ns, us, ms, s, min or h (e.g. \"5ms\")",
+                                      "ns"));
 }
 
 Bytes ParseBytes(std::string_view text) {
   return Bytes(ParseQuantity(text, "byte size", kByteUnits,
-                             "a number and a size unit: B, kB, MB, GB, KiB, MiB or GiB (e.g. \"64KiB\")"));
+                             "a number and a size unit: B, kB, MB, GB, KiB, MiB or GiB (e.g. \"64KiB\")",
+                             "B"));
 }
 
 std::string ToString(DataRate rate) {

@@ -8,16 +8,25 @@
 // and lists the accepted units. Numbers are parsed as exact decimals (no
 // floating point), so "1.5Gbps" is exactly 1'500'000'000 bit/s on every
 // platform; a result that is not a whole number of the base unit (bit/s, ns,
-// byte) is rounded to the nearest, halves away from zero.
+// byte) is rounded to the nearest, halves away from zero. A well-formed value too large for an
+// int64 count of the base unit throws QuantityTooLarge (an std::invalid_argument), so a caller
+// can report its own range; no input overflows the arithmetic of the parser.
 #include <compare>
 #include <cstdint>
 #include <ostream>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
 #include "sim/sim_time.h"
 
 namespace dvpr {
+
+// A number with a known unit that does not fit an int64 count of bit/s, ns or bytes.
+class QuantityTooLarge : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
 
 // A count of bytes (octets).
 class Bytes {

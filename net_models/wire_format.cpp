@@ -56,6 +56,7 @@ void WireParams::Validate() const {
     InvalidParam("mtu", "too small: an IPv4 packet needs 20 header bytes plus at least 8 data bytes, got " +
                             std::to_string(mtu.value()) + "B");
   }
+  CheckInRange("mtu", mtu, Bytes(wire::kIpv4Header + 8), kMaxMtu);
   CheckNonNegativeCount("link_framing", link_framing.value());
 }
 

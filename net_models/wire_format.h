@@ -26,10 +26,15 @@
 namespace dvpr {
 
 struct WireParams {
+  // The MTU a config may give: IPv4's minimum (RFC 791) up to its largest packet (a 16-bit
+  // total length).
+  static constexpr Bytes kMinConfigMtu{68};
+  static constexpr Bytes kMaxMtu{65535};
+
   Bytes mtu{1500};          // IP MTU of the link: largest IP packet, headers included
   Bytes link_framing{2};    // per-packet link-layer overhead (PPP: 2)
   // Throws std::invalid_argument "<field>: ..." (mtu must leave room for the
-  // IP header and 8 data bytes, i.e. >= 28; framing >= 0).
+  // IP header and 8 data bytes, i.e. >= 28, and be at most kMaxMtu; framing >= 0).
   void Validate() const;
   bool operator==(const WireParams&) const = default;
 };

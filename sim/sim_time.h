@@ -1,9 +1,15 @@
 #pragma once
 // Virtual time: a signed count of nanoseconds. Never read from the wall clock.
+//
+// The operators do not check for overflow: they run on the simulator's hot path. Values that come
+// from users are kept in ranges that cannot overflow when the config is validated (docs/config.md);
+// where user values are combined before that, the Checked* functions below say whether the result
+// is representable.
 #include <cmath>
 #include <compare>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <ostream>
 
 namespace dvpr {
@@ -38,5 +44,28 @@ class SimTime {
 };
 
 inline std::ostream& operator<<(std::ostream& os, SimTime t) { return os << t.ns() << "ns"; }
+
+// a + b, or nothing when it does not fit in int64 nanoseconds.
+constexpr std::optional<SimTime> CheckedAdd(SimTime a, SimTime b) {
+  std::int64_t ns = 0;
+  if (__builtin_add_overflow(a.ns(), b.ns(), &ns)) return std::nullopt;
+  return SimTime::Nanos(ns);
+}
+
+// t x k, or nothing when it does not fit.
+constexpr std::optional<SimTime> CheckedMul(SimTime t, std::int64_t k) {
+  std::int64_t ns = 0;
+  if (__builtin_mul_overflow(t.ns(), k, &ns)) return std::nullopt;
+  return SimTime::Nanos(ns);
+}
+
+// SimTime::Seconds(s), or nothing when s is not finite or s x 1e9 does not fit (llround of such a
+// value is unspecified).
+inline std::optional<SimTime> CheckedSeconds(double s) {
+  const double ns = std::round(s * 1e9);
+  // 2^63 is exactly representable; every double below it converts to int64 without overflow.
+  if (!(ns >= -9223372036854775808.0 && ns < 9223372036854775808.0)) return std::nullopt;
+  return SimTime::Nanos(static_cast<std::int64_t>(ns));
+}
 
 }  // namespace dvpr

@@ -12,6 +12,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "experiments/config/config_reader.h"
+#include "experiments/config/yaml_check.h"
 #include "experiments/strategies/strategy_spec.h"
 
 namespace dvpr {
@@ -25,6 +26,24 @@ template <typename Enum, std::size_t N>
 Enum ReadEnum(const Field& f, const std::array<std::string_view, N>& names) {
   return static_cast<Enum>(f.Choice(std::vector<std::string>(names.begin(), names.end())));
 }
+
+// The valid ranges together keep a query's times representable (the brief of each range is at its
+// constant). Worst cases: the last frame at (2^31 - 1) / kMinFps s; a service time of kMaxFixed +
+// kMaxPerComparison x 2^31 comparisons; a transmission of at most twice the largest request (IPv4
+// fragments at MTU 68 carry 48 data bytes in 70) at kMinBandwidth; a dropout at kMaxAt. The last
+// frame plus 16 of each of the others stays below half of int64 nanoseconds, leaving the other half
+// to queueing.
+constexpr bool WorstCaseTimesFit() {
+  const double last_frame = 2147483647.0 / DatasetConfig::kMinFps * 1e9;
+  const double service = static_cast<double>(ServiceParams::kMaxFixed.ns()) +
+                         static_cast<double>(ServiceParams::kMaxPerComparison.ns()) * 2147483648.0;
+  const double transmission = 2.0 * static_cast<double>(VerificationParams::kMaxRequestBytes.value()) * 8 * 1e9 /
+                              static_cast<double>(NetworkModelParams::kMinBandwidth.bps());
+  const double latency = static_cast<double>(NetworkModelParams::kMaxLatency.ns());
+  const double dropout = static_cast<double>(Dropout::kMaxAt.ns());
+  return last_frame + 16 * (service + transmission + latency) + dropout < 4.6e18;
+}
+static_assert(WorstCaseTimesFit(), "the config's ranges must keep a run's times inside int64 nanoseconds");
 
 // The one spelling of each source, indexed by the enum's value (ToString and the reader).
 constexpr std::array<std::string_view, 2> kDatasetSources{"synthetic", "files"};
@@ -86,10 +105,7 @@ DatasetConfig ReadDataset(const Field& f) {
   }
   if (auto c = f.Child("bin_width"); c.present()) d.bin_width = static_cast<int>(c.Int(1, 1 << 20));
   if (auto c = f.Child("dim"); c.present()) d.dim = static_cast<int>(c.Int(1, 1 << 20));
-  if (auto c = f.Child("fps"); c.present()) {
-    d.fps = c.Double();
-    if (d.fps <= 0) c.Fail("must be positive");
-  }
+  if (auto c = f.Child("fps"); c.present()) d.fps = c.Double(DatasetConfig::kMinFps, DatasetConfig::kMaxFps);
   if (auto c = f.Child("frames"); c.present()) {
     if (!(c.node().IsScalar() && c.node().Scalar() == "all")) {
       d.frames = static_cast<int>(c.Int(1, 1 << 30));
@@ -270,6 +286,7 @@ bool IsIndex(const std::string& s) {
 // Walks (and creates) the maps along `path` and sets the last key to `value`.
 void ApplyOverride(YAML::Node& root, const ConfigOverride& o, const std::string& origin) {
   YAML::Node value;
+  config_detail::CheckOverrideStructure(o.value, origin, o.path);
   try {
     value = YAML::Load(o.value);
   } catch (const YAML::Exception& e) {
@@ -323,6 +340,7 @@ ConfigOverride ParseOverride(const std::string& arg) {
 ExperimentConfig ParseConfig(const std::string& yaml_text, const std::filesystem::path& base_dir,
                              const std::vector<ConfigOverride>& overrides,
                              const std::string& origin) {
+  config_detail::CheckYamlStructure(yaml_text, origin);
   YAML::Node root;
   try {
     root = YAML::Load(yaml_text);
@@ -337,6 +355,10 @@ ExperimentConfig ParseConfig(const std::string& yaml_text, const std::filesystem
 
 ExperimentConfig LoadConfig(const std::filesystem::path& file,
                             const std::vector<ConfigOverride>& overrides) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec)) {
+    throw ConfigError(file.string() + ": is a directory, expected a YAML config file");
+  }
   std::ifstream in(file, std::ios::binary);
   if (!in) throw ConfigError(file.string() + ": cannot read the config file");
   std::ostringstream text;

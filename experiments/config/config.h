@@ -11,6 +11,10 @@
 // - relative file paths resolve against the config file's folder first, then the current
 //   directory, then the dvpr source tree (so the shipped configs can say data/kitti/...);
 //   the resolved, absolute path is what the config holds and what EmitConfig writes;
+// - every numeric key has a valid range (docs/config.md lists them; the constants live with the
+//   params structs: NetworkModelParams::kMaxLatency, ServiceParams::kMaxFixed, ...); a value
+//   outside it, or too large to parse, is "<key>: must be in [min, max], got <value>";
+// - a key given twice in one map, and a second YAML document, are errors naming their line;
 // - robots >= 2, runs >= 1, dim >= 1, probabilities in [0, 1].
 // Checks that need the data (dim larger than the descriptors, frame counts) happen when the data
 // is loaded (experiments/protocols/inputs.h) and name the same key paths.
@@ -49,6 +53,11 @@ enum class TrainingSource { kSyntheticDiverse, kSyntheticDeploymentLike, kFiles,
 // evaluation.suppression_frames also agent.suppression_frames.
 
 struct DatasetConfig {
+  // The valid range of fps (docs/config.md). A frame index is an int, so the last frame is at
+  // most (2^31 - 1) / kMinFps s = 2.1e18 ns: a run's times stay far inside int64 nanoseconds.
+  static constexpr double kMinFps = 1.0;
+  static constexpr double kMaxFps = 1e6;
+
   DatasetSource source = DatasetSource::kSynthetic;
   std::filesystem::path poses;                     // KITTI pose file (absolute after loading)
   std::optional<std::filesystem::path> descriptors;  // required when source = files
@@ -95,6 +104,8 @@ struct NetworkConfig {
 
 // A robot taken offline at a time (sim). Applies to teams that have that robot.
 struct Dropout {
+  static constexpr SimTime kMaxAt = SimTime::Millis(100000LL * 3600 * 1000);  // 100000 h
+
   int robot = 0;
   SimTime at;
   bool operator==(const Dropout&) const = default;

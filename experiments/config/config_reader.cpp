@@ -2,8 +2,11 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <system_error>
+
+#include "net_models/param_checks.h"
 
 namespace dvpr::config_detail {
 
@@ -68,15 +71,18 @@ const std::string& Field::Scalar(std::string_view expected) const {
 
 std::string Field::String() const { return Scalar("a string"); }
 
+void Field::FailRange(const std::string& min, const std::string& max) const {
+  Fail(RangeProblem(min, max, node_.Scalar()));
+}
+
 long long Field::Int(long long min, long long max) const {
   const std::string& s = Scalar("an integer");
   long long v = 0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || end != s.data() + s.size()) {
-    Fail("expected an integer, got " + Quoted(s));
-  }
-  if (v < min) Fail("must be at least " + std::to_string(min) + ", got " + s);
-  if (v > max) Fail("must be at most " + std::to_string(max) + ", got " + s);
+  const bool whole = end == s.data() + s.size() && !s.empty();
+  if (ec == std::errc::result_out_of_range && whole) FailRange(std::to_string(min), std::to_string(max));
+  if (ec != std::errc() || !whole) Fail("expected an integer, got " + Quoted(s));
+  if (v < min || v > max) FailRange(std::to_string(min), std::to_string(max));
   return v;
 }
 
@@ -90,6 +96,18 @@ double Field::Double() const {
   return v;
 }
 
+double Field::Double(double min, double max) const {
+  const std::string& s = Scalar("a number");
+  double v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  const bool whole = end == s.data() + s.size() && !s.empty();
+  // from_chars reports 1e400 and 1e-400 as out of range: both lie outside any range here.
+  if (ec == std::errc::result_out_of_range && whole) FailRange(FormatNumber(min), FormatNumber(max));
+  if (ec != std::errc() || !whole || std::isnan(v)) Fail("expected a number, got " + Quoted(s));
+  if (!(v >= min && v <= max)) FailRange(FormatNumber(min), FormatNumber(max));
+  return v;
+}
+
 bool Field::Bool() const {
   const std::string& s = Scalar("true or false");
   if (s == "true") return true;
@@ -97,37 +115,53 @@ bool Field::Bool() const {
   Fail("expected true or false, got " + Quoted(s));
 }
 
-DataRate Field::Rate() const {
+DataRate Field::Rate(DataRate min, DataRate max) const {
   const std::string& s = Scalar("a data rate with a unit, e.g. 10Mbps");
+  DataRate r;
   try {
-    const DataRate r = ParseDataRate(s);
-    if (r.bps() <= 0) Fail("expected a positive data rate, got " + Quoted(s));
-    return r;
+    r = ParseDataRate(s);
+  } catch (const QuantityTooLarge&) {
+    FailRange(ToString(min), ToString(max));
   } catch (const std::invalid_argument& e) {
     Fail(std::string("expected a data rate with a unit, e.g. 10Mbps (") + e.what() + ")");
   }
+  if (r < min || r > max) FailRange(ToString(min), ToString(max));
+  return r;
 }
 
-SimTime Field::Duration() const {
+SimTime Field::Duration(SimTime min, SimTime max) const {
   const std::string& s = Scalar("a duration with a unit, e.g. 5ms");
+  SimTime t;
   try {
-    return ParseDuration(s);
+    t = ParseDuration(s);
+  } catch (const QuantityTooLarge&) {
+    FailRange(FormatDuration(min), FormatDuration(max));
   } catch (const std::invalid_argument& e) {
     Fail(std::string("expected a duration with a unit, e.g. 5ms (") + e.what() + ")");
   }
+  if (t < min || t > max) FailRange(FormatDuration(min), FormatDuration(max));
+  return t;
 }
 
-Bytes Field::Size(bool plain_integer_is_bytes) const {
+Bytes Field::Size(Bytes min, Bytes max, bool plain_integer_is_bytes) const {
   const std::string& s = Scalar("a size with a unit, e.g. 25kB");
   if (plain_integer_is_bytes && !s.empty() &&
       s.find_first_not_of("0123456789") == std::string::npos) {
-    return Bytes(Int(0, std::int64_t{1} << 40));
+    std::int64_t n = 0;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), n);
+    if (ec != std::errc() || n < min.value() || n > max.value()) FailRange(ToString(min), ToString(max));
+    return Bytes(n);
   }
+  Bytes b;
   try {
-    return ParseBytes(s);
+    b = ParseBytes(s);
+  } catch (const QuantityTooLarge&) {
+    FailRange(ToString(min), ToString(max));
   } catch (const std::invalid_argument& e) {
     Fail(std::string("expected a size with a unit, e.g. 25kB (") + e.what() + ")");
   }
+  if (b < min || b > max) FailRange(ToString(min), ToString(max));
+  return b;
 }
 
 std::size_t Field::Choice(const std::vector<std::string>& names) const {

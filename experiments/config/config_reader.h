@@ -62,13 +62,16 @@ class Field {
   // `bandwidth: [1Mbps, 10Mbps]` both work). Fails on an empty list.
   std::vector<Field> Items() const;
 
+  // The numeric reads take the key's valid range (docs/config.md): a value outside it, or one too
+  // large to parse, fails with "must be in [min, max], got <the text as written>".
   std::string String() const;
   long long Int(long long min, long long max) const;
-  double Double() const;
+  double Double() const;  // any finite number; the params' Validate() checks it
+  double Double(double min, double max) const;
   bool Bool() const;
-  DataRate Rate() const;
-  SimTime Duration() const;
-  Bytes Size(bool plain_integer_is_bytes) const;
+  DataRate Rate(DataRate min, DataRate max) const;
+  SimTime Duration(SimTime min, SimTime max) const;
+  Bytes Size(Bytes min, Bytes max, bool plain_integer_is_bytes) const;
   // One of `names`; returns its index.
   std::size_t Choice(const std::vector<std::string>& names) const;
   // A file that must exist: absolute, or resolved against the config's folder, the current
@@ -77,6 +80,7 @@ class Field {
 
  private:
   const std::string& Scalar(std::string_view expected) const;
+  [[noreturn]] void FailRange(const std::string& min, const std::string& max) const;
   [[noreturn]] void FailWithin(const std::string& field_and_problem) const;
 
   const Origin* origin_;

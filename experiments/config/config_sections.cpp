@@ -45,6 +45,12 @@ LossParams ReadLoss(const Field& f) {
   return l;
 }
 
+DataRate ReadBandwidth(const Field& f) {
+  return f.Rate(NetworkModelParams::kMinBandwidth, NetworkModelParams::kMaxBandwidth);
+}
+
+SimTime ReadLatency(const Field& f) { return f.Duration(SimTime::Zero(), NetworkModelParams::kMaxLatency); }
+
 // Whether each link lies in the team is checked per run (NetworkModelParams::Validate), as
 // the team size is swept.
 std::vector<LinkOverrideParams> ReadLinks(const Field& f) {
@@ -57,8 +63,8 @@ std::vector<LinkOverrideParams> ReadLinks(const Field& f) {
     o.src = NodeId(static_cast<std::int32_t>(item.Child("src").Int(0, 100000)));
     o.dst = NodeId(static_cast<std::int32_t>(item.Child("dst").Int(0, 100000)));
     if (o.src == o.dst) item.Child("dst").Fail("must differ from src");
-    if (auto c = item.Child("bandwidth"); c.present()) o.bandwidth = c.Rate();
-    if (auto c = item.Child("latency"); c.present()) o.latency = c.Duration();
+    if (auto c = item.Child("bandwidth"); c.present()) o.bandwidth = ReadBandwidth(c);
+    if (auto c = item.Child("latency"); c.present()) o.latency = ReadLatency(c);
     if (auto c = item.Child("loss"); c.present()) o.loss = ReadLoss(c);
     links.push_back(o);
   }
@@ -86,20 +92,18 @@ NetworkConfig ReadNetwork(const Field& f) {
     n.model = ReadList<LinkModelKind>(c, [](const Field& i) { return i.Named(ParseLinkModelKind); });
   }
   if (auto c = f.Child("bandwidth"); c.present()) {
-    n.bandwidth = ReadList<DataRate>(c, [](const Field& i) { return i.Rate(); });
+    n.bandwidth = ReadList<DataRate>(c, ReadBandwidth);
   }
   if (auto c = f.Child("latency"); c.present()) {
-    n.latency = ReadList<SimTime>(c, [](const Field& i) { return i.Duration(); });
+    n.latency = ReadList<SimTime>(c, ReadLatency);
   }
   if (auto c = f.Child("queue_packets"); c.present()) {
     n.queue_packets =
-        ReadList<int>(c, [](const Field& i) { return static_cast<int>(i.Int(1, 1 << 30)); });
+        ReadList<int>(c, [](const Field& i) { return static_cast<int>(i.Int(1, NetworkModelParams::kMaxQueuePackets)); });
   }
   if (auto c = f.Child("mtu"); c.present()) {
     n.mtu = ReadList<Bytes>(c, [](const Field& i) {
-      const Bytes b = i.Size(/*plain_integer_is_bytes=*/true);
-      if (b.value() < 68) i.Fail("an IPv4 MTU is at least 68 bytes");
-      return b;
+      return i.Size(WireParams::kMinConfigMtu, WireParams::kMaxMtu, /*plain_integer_is_bytes=*/true);
     });
   }
   n.loss = ReadLoss(f.Child("loss"));
@@ -111,8 +115,12 @@ VerificationParams ReadVerification(const Field& f) {
   VerificationParams v;
   if (!f.present()) return v;
   f.ExpectMap({"request_bytes", "max_distance"});
-  if (auto c = f.Child("request_bytes"); c.present()) v.request_bytes = c.Size(true);
-  if (auto c = f.Child("max_distance"); c.present()) v.max_distance = c.Double();
+  if (auto c = f.Child("request_bytes"); c.present()) {
+    v.request_bytes = c.Size(Bytes(0), VerificationParams::kMaxRequestBytes, /*plain_integer_is_bytes=*/true);
+  }
+  if (auto c = f.Child("max_distance"); c.present()) {
+    v.max_distance = c.Double(0.0, VerificationParams::kMaxDistance);
+  }
   f.Validate(v);
   return v;
 }
@@ -121,8 +129,10 @@ ServiceParams ReadService(const Field& f) {
   ServiceParams s;
   if (!f.present()) return s;
   f.ExpectMap({"fixed", "per_comparison"});
-  if (auto c = f.Child("fixed"); c.present()) s.fixed = c.Duration();
-  if (auto c = f.Child("per_comparison"); c.present()) s.per_comparison = c.Duration();
+  if (auto c = f.Child("fixed"); c.present()) s.fixed = c.Duration(SimTime::Zero(), ServiceParams::kMaxFixed);
+  if (auto c = f.Child("per_comparison"); c.present()) {
+    s.per_comparison = c.Duration(SimTime::Zero(), ServiceParams::kMaxPerComparison);
+  }
   f.Validate(s);
   return s;
 }
@@ -136,7 +146,7 @@ std::vector<Dropout> ReadDropout(const Field& f, const SweepConfig& sweep) {
     item.ExpectMap({"robot", "at"});
     Dropout d;
     d.robot = static_cast<int>(item.Child("robot").Int(0, largest - 1));
-    d.at = item.Child("at").Duration();
+    d.at = item.Child("at").Duration(SimTime::Zero(), Dropout::kMaxAt);
     out.push_back(d);
   }
   return out;

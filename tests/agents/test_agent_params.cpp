@@ -38,5 +38,28 @@ TEST(AgentParams, ValidateNamesTheNestedField) {
   EXPECT_EQ(ErrorOf(p), "verification.request_bytes: must not be negative, got -1");
 }
 
+// Each range's boundary, one inside and one outside (24 h = 86'400'000'000'000 ns; 1 GiB =
+// 1'073'741'824 bytes, which the int32 payload_size of verify_request_t holds).
+TEST(AgentParams, RangesAcceptTheirBoundsAndRefuseOnePast) {
+  AgentParams p;
+  p.service.fixed = SimTime::Nanos(86'400'000'000'000);
+  p.service.per_comparison = SimTime::Millis(1);
+  p.verification.request_bytes = Bytes(1'073'741'824);
+  EXPECT_EQ(ErrorOf(p), "(no error)");
+  p.service.fixed = SimTime::Nanos(86'400'000'000'001);
+  EXPECT_EQ(ErrorOf(p), "service.fixed: must be in [0ns, 24h], got 86400000000001ns");
+  p = {};
+  p.service.per_comparison = SimTime::Nanos(1'000'001);
+  EXPECT_EQ(ErrorOf(p), "service.per_comparison: must be in [0ns, 1ms], got 1000001ns");
+  p = {};
+  p.verification.request_bytes = Bytes(1'073'741'825);
+  EXPECT_EQ(ErrorOf(p), "verification.request_bytes: must be in [0B, 1GiB], got 1073741825B");
+  p.verification.request_bytes = Bytes(4'294'992'296);  // the case: as int, 25000
+  EXPECT_EQ(ErrorOf(p), "verification.request_bytes: must be in [0B, 1GiB], got 4294992296B");
+  p = {};
+  p.verification.max_distance = 1e39;  // beyond the largest float
+  EXPECT_EQ(ErrorOf(p), "verification.max_distance: must be in [0, 3.4028234663852886e+38], got 1e+39");
+}
+
 }  // namespace
 }  // namespace dvpr

@@ -78,11 +78,11 @@ TEST_F(CliTest, MissingFile) {
 }
 
 TEST_F(CliTest, RobotsBelowTwo) {
-  ExpectConfigError(RunConfig("robots: [1, 4]\n"), "bad.yaml: robots[0]: must be at least 2");
+  ExpectConfigError(RunConfig("robots: [1, 4]\n"), "bad.yaml: robots[0]: must be in [2, 100000], got 1");
 }
 
 TEST_F(CliTest, RunsBelowOne) {
-  ExpectConfigError(RunConfig("runs: 0\n"), "bad.yaml: runs: must be at least 1, got 0");
+  ExpectConfigError(RunConfig("runs: 0\n"), "bad.yaml: runs: must be in [1, 100000], got 0");
 }
 
 TEST_F(CliTest, BandwidthWithoutUnit) {
@@ -107,7 +107,7 @@ TEST_F(CliTest, DimLargerThanDescriptors) {
 }
 
 TEST_F(CliTest, BadOverride) {
-  ExpectConfigError(RunConfig("runs: 2\n", "--set runs=0"), "runs: must be at least 1");
+  ExpectConfigError(RunConfig("runs: 2\n", "--set runs=0"), "runs: must be in [1, 100000], got 0");
 }
 
 }  // namespace

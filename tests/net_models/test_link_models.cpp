@@ -191,6 +191,37 @@ TEST(LinkParams, BadValuesNameTheFieldAndTheValue) {
   ExpectInvalid([] { SharedMediumLink(SharedMediumParams{DataRate(), kLatency, 1}, 2); }, "rate: a data rate must be positive");
 }
 
+// Each range's boundary, one inside and one outside: 24 h = 86'400'000'000'000 ns, 1 Tbit/s =
+// 1'000'000'000'000 bit/s, an IPv4 packet at most 65'535 bytes.
+TEST(LinkParams, RangesAcceptTheirBoundsAndRefuseOnePast) {
+  NetworkModelParams p;
+  p.bandwidth = DataRate::Kbps(1);
+  p.latency = SimTime::Nanos(86'400'000'000'000);
+  p.queue_packets = 1 << 30;
+  p.wire.mtu = Bytes(65'535);
+  p.links.push_back({NodeId(0), NodeId(1), DataRate::Gbps(1000), SimTime::Nanos(86'400'000'000'000), std::nullopt});
+  EXPECT_NO_THROW(p.Validate(3));
+  p.bandwidth = DataRate::BitsPerSecond(999);
+  ExpectInvalid([&] { p.Validate(3); }, "bandwidth: must be in [1kbps, 1000Gbps], got 999bps");
+  p.bandwidth = DataRate::BitsPerSecond(1'000'000'000'001);
+  ExpectInvalid([&] { p.Validate(3); }, "bandwidth: must be in [1kbps, 1000Gbps], got 1000000000001bps");
+  p.bandwidth = DataRate::Mbps(1);
+  p.latency = SimTime::Nanos(86'400'000'000'001);
+  ExpectInvalid([&] { p.Validate(3); }, "latency: must be in [0ns, 24h], got 86400000000001ns");
+  p.latency = SimTime::Zero();
+  p.queue_packets = (1 << 30) + 1;
+  ExpectInvalid([&] { p.Validate(3); }, "queue_packets: must be in [1, 1073741824], got 1073741825");
+  p.queue_packets = 1;
+  p.wire.mtu = Bytes(65'536);
+  ExpectInvalid([&] { p.Validate(3); }, "mtu: must be in [28B, 65535B], got 64KiB");
+  p.wire.mtu = Bytes(1500);
+  p.links[0].latency = SimTime::Nanos(9'223'369'200'000'000'000);  // 2562047 h: the case
+  ExpectInvalid([&] { p.Validate(3); }, "links[0].latency: must be in [0ns, 24h], got 2562047h");
+  p.links[0].latency = std::nullopt;
+  p.links[0].bandwidth = DataRate::BitsPerSecond(999);
+  ExpectInvalid([&] { p.Validate(3); }, "links[0].bandwidth: must be in [1kbps, 1000Gbps], got 999bps");
+}
+
 TEST(LinkFactory, BuildsTheNamedModelWithLossWhenAsked) {
   NetworkModelParams p;
   EXPECT_EQ(MakeLinkModel(p, 3, 1)->Name(), "point_to_point");

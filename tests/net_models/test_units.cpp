@@ -89,3 +89,60 @@ TEST(Units, FormatDurationUsesTheLargestWholeUnit) {
 
 }  // namespace
 }  // namespace dvpr
+
+namespace dvpr {
+namespace {
+
+// int64 max = 9'223'372'036'854'775'807; the largest whole hour count that fits is 2'562'047
+// (x 3.6e12 ns = 9'223'369'200'000'000'000).
+TEST(ParseQuantityLimits, DurationsUpToTheLargestSimTime) {
+  EXPECT_EQ(ParseDuration("2562047h"), SimTime::Nanos(9'223'369'200'000'000'000));
+  EXPECT_EQ(ParseDuration("9223372036854775807ns"), SimTime::Max());
+  EXPECT_THROW(ParseDuration("2562048h"), QuantityTooLarge);
+  EXPECT_THROW(ParseDuration("9223372036854775808ns"), QuantityTooLarge);
+  // 30 digits: overflowed the __int128 product before (UBSan), now refused as too large.
+  EXPECT_THROW(ParseDuration("999999999999999999999999999999h"), QuantityTooLarge);
+  EXPECT_THROW(ParseDuration("1" + std::string(60, '0') + "ns"), QuantityTooLarge);
+  // 43 significant digits cannot be held exactly: refused, but not as too large.
+  try {
+    ParseDuration("1.000000000000000000000000000000000000000001h");
+    ADD_FAILURE() << "no error";
+  } catch (const QuantityTooLarge&) {
+    ADD_FAILURE() << "reported as too large";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "invalid duration \"1.000000000000000000000000000000000000000001h\": expected at most 38 "
+                 "significant digits");
+  }
+  // Leading zeros are not significant: 1.5 h.
+  EXPECT_EQ(ParseDuration("0000000000000000000000001.5h"), SimTime::Nanos(5'400'000'000'000));
+}
+
+TEST(ParseQuantityLimits, TooLargeNamesTheLargestValue) {
+  try {
+    ParseDuration("2562048h");
+    FAIL() << "no error";
+  } catch (const QuantityTooLarge& e) {
+    EXPECT_STREQ(e.what(), "invalid duration \"2562048h\": expected at most 9223372036854775807ns");
+  }
+}
+
+TEST(ParseQuantityLimits, BytesAndRatesUpToInt64) {
+  // 2^33 GiB = 2^63 bytes: one past the largest.
+  EXPECT_EQ(ParseBytes("8589934591GiB"), Bytes(9'223'372'035'781'033'984));
+  EXPECT_THROW(ParseBytes("8589934592GiB"), QuantityTooLarge);
+  // 2^60 B/s x 8 = 2^63 bit/s.
+  EXPECT_EQ(ParseDataRate("1152921504606846975Bps").bps(), 9'223'372'036'854'775'800);
+  EXPECT_THROW(ParseDataRate("1152921504606846976Bps"), QuantityTooLarge);
+  EXPECT_THROW(ParseDataRate("99999999999999999999999999999999999999Tbps"), QuantityTooLarge);
+}
+
+TEST(DataRateLimits, TxTimeBeyondTheLargestSimTimeThrows) {
+  // 2^60 bytes at 1 bit/s take 2^63 s, far past int64 ns. 1 GiB at 1 kbit/s: 2^33 bits / 1e3
+  // bit/s = 8'589'934.592 s.
+  EXPECT_THROW(DataRate::BitsPerSecond(1).TxTime(Bytes(std::int64_t{1} << 60)), std::domain_error);
+  EXPECT_EQ(DataRate::Kbps(1).TxTime(Bytes(std::int64_t{1} << 30)), SimTime::Nanos(8'589'934'592'000'000));
+}
+
+}  // namespace
+}  // namespace dvpr
