@@ -18,8 +18,8 @@ read -r -a TARGETS <<< "${DVPR_FUZZ_TARGETS:-config npy csv bin poses lcm}"
 
 cmake -S . -B "$BUILD" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDVPR_FUZZ=ON -DDVPR_WERROR=ON \
-  -DDVPR_BUILD_TESTS=OFF -DDVPR_BUILD_BENCH=OFF >/dev/null
-# Only the fuzz targets and the libraries they link.
+  -DDVPR_BUILD_TESTS=OFF -DDVPR_BUILD_BENCH=OFF -DDVPR_ARCH=generic >/dev/null
+# Only the fuzz targets and the libraries they link (DVPR_ARCH=generic: one variant of each).
 cmake --build "$BUILD" -j "$(nproc)" --target dvpr_fuzz
 
 # The data targets write each input to a file: tmpfs when there is one.
