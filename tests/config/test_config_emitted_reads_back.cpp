@@ -49,5 +49,16 @@ TEST(ConfigEmittedReadsBackTest, NameMustBePrintableUtf8AndNotDotDot) {
   EXPECT_EQ(ParseConfig(EmitConfig(c), "/nonexistent", {}, "config.yaml").name, c.name);
 }
 
+// Found by fuzz_config: a missing key read as a value threw YAML::InvalidNode ("invalid node; this
+// may result from using a map iterator as a sequence iterator"), not a ConfigError naming it.
+TEST(ConfigEmittedReadsBackTest, MissingRangeEndIsAConfigErrorNamingTheKey) {
+  try {
+    Parse("robots: {from: 2}\n");
+    ADD_FAILURE() << "accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("robots.to: expected"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace dvpr
