@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The README's test command: install what is missing, build with
-# AddressSanitizer + UndefinedBehaviorSanitizer, run the whole suite.
+# AddressSanitizer + UndefinedBehaviorSanitizer, run the whole suite, then fuzz (scripts/fuzz.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -12,3 +12,5 @@ JOBS=$(nproc)
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDVPR_SANITIZE=ON -DDVPR_WERROR=ON -DDVPR_BUILD_BENCH=OFF -DDVPR_ARCH=x86-64-v3 >/dev/null
 cmake --build "$BUILD" -j "$JOBS"
 ctest --test-dir "$BUILD" --output-on-failure -j "$JOBS" --timeout 600
+# The libFuzzer targets: a clang build of their own (build/fuzz), about 1.5 minutes of fuzzing.
+bash scripts/fuzz.sh

@@ -45,6 +45,22 @@ constexpr bool WorstCaseTimesFit() {
 }
 static_assert(WorstCaseTimesFit(), "the config's ranges must keep a run's times inside int64 nanoseconds");
 
+// Valid UTF-8 without control characters. The emitter writes other bytes differently (invalid
+// UTF-8 as U+FFFD), so config.yaml would not name the folder the run wrote (found by fuzz_config).
+bool IsPrintableUtf8(std::string_view s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c < 0x20 || c == 0x7f) return false;
+    const std::size_t len = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+    if (len == 0 || i + len > s.size()) return false;
+    for (std::size_t k = 1; k < len; ++k) {
+      if ((static_cast<unsigned char>(s[i + k]) & 0xc0) != 0x80) return false;
+    }
+    i += len;
+  }
+  return true;
+}
+
 // The one spelling of each source, indexed by the enum's value (ToString and the reader).
 constexpr std::array<std::string_view, 2> kDatasetSources{"synthetic", "files"};
 constexpr std::array<std::string_view, 4> kTrainingSources{"synthetic_diverse", "synthetic_deployment_like",
@@ -256,8 +272,10 @@ ExperimentConfig ReadExperiment(const Field& root, const std::string& default_na
   c.name = default_name;
   if (auto f = root.Child("name"); f.present()) {
     c.name = f.String();
-    if (c.name.empty() || c.name.find_first_of("/\\") != std::string::npos) {
-      f.Fail("expected a non-empty name without slashes (it names the output folder)");
+    if (c.name.empty() || c.name.find_first_of("/\\") != std::string::npos || c.name == "." ||
+        c.name == ".." || !IsPrintableUtf8(c.name)) {
+      f.Fail("expected a non-empty name without slashes, control characters or invalid UTF-8, "
+             "not . or .. (it names the output folder)");
     }
   }
   if (auto f = root.Child("seed"); f.present()) {

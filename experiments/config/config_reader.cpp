@@ -15,6 +15,7 @@ namespace {
 std::string Quoted(const std::string& s) { return "'" + s + "'"; }
 
 std::string KindOf(const YAML::Node& node) {
+  if (!node.IsDefined()) return "nothing";  // a missing key: Type() would throw YAML::InvalidNode
   switch (node.Type()) {
     case YAML::NodeType::Map: return "a map";
     case YAML::NodeType::Sequence: return "a list";
@@ -31,7 +32,7 @@ void Field::Fail(const std::string& problem) const {
 }
 
 void Field::ExpectMap(std::initializer_list<std::string_view> allowed) const {
-  if (!node_.IsMap()) Fail("expected a map, got " + KindOf(node_));
+  if (!node_.IsDefined() || !node_.IsMap()) Fail("expected a map, got " + KindOf(node_));
   for (const auto& entry : node_) {
     const std::string key = entry.first.Scalar();
     bool known = false;
@@ -65,7 +66,11 @@ std::vector<Field> Field::Items() const {
 }
 
 const std::string& Field::Scalar(std::string_view expected) const {
-  if (!node_.IsScalar()) Fail("expected " + std::string(expected) + ", got " + KindOf(node_));
+  // IsDefined first: a missing key (robots: {from: 2}) is an invalid node whose IsScalar() throws
+  // YAML::InvalidNode instead of a ConfigError naming the key (found by fuzz_config).
+  if (!node_.IsDefined() || !node_.IsScalar()) {
+    Fail("expected " + std::string(expected) + ", got " + KindOf(node_));
+  }
   return node_.Scalar();
 }
 

@@ -57,6 +57,7 @@ std::vector<LinkOverrideParams> ReadLinks(const Field& f) {
   std::vector<LinkOverrideParams> links;
   if (!f.present()) return links;
   if (!f.node().IsSequence()) f.Fail("expected a list of {src, dst, bandwidth, latency, loss}");
+  if (f.node().size() == 0) return links;  // `links: []`, as EmitConfig writes no overrides
   for (const Field& item : f.Items()) {
     item.ExpectMap({"src", "dst", "bandwidth", "latency", "loss"});
     LinkOverrideParams o;
@@ -141,6 +142,7 @@ std::vector<Dropout> ReadDropout(const Field& f, const SweepConfig& sweep) {
   std::vector<Dropout> out;
   if (!f.present()) return out;
   if (!f.node().IsSequence()) f.Fail("expected a list of {robot, at}");
+  if (f.node().size() == 0) return out;  // `dropout: []`, as EmitConfig writes no dropout
   const int largest = *std::max_element(sweep.robots.begin(), sweep.robots.end());
   for (const Field& item : f.Items()) {
     item.ExpectMap({"robot", "at"});

@@ -98,7 +98,13 @@ Trajectory LoadKittiPoses(const fs::path& path) {
     for (int k = 0; k < 12; ++k) v[k] = ParseNumber(path, line, tokens[static_cast<std::size_t>(k)]);
     t.positions.row(i) << v[3], v[7], v[11];
     t.headings.row(i) << v[2], v[6], v[10];
-    const double norm = t.headings.row(i).norm();
+    double norm = t.headings.row(i).norm();
+    if (!std::isfinite(norm)) {
+      // norm() squares: a column of 1e200 overflows to inf (and gave a zero heading). Scaling by
+      // the largest value first fixes it; ordinary headings do not come here and keep their bits.
+      t.headings.row(i) /= t.headings.row(i).cwiseAbs().maxCoeff();
+      norm = t.headings.row(i).norm();
+    }
     if (norm < 1e-6) FailLine(path, line, "rotation's third column is zero (no heading)");
     t.headings.row(i) /= norm;
   }

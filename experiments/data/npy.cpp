@@ -176,6 +176,9 @@ std::pair<NpyHeader, std::size_t> ParsePreamble(const std::filesystem::path& pat
 template <typename T>
 DescriptorMatrix Convert(const char* data, Eigen::Index rows, Eigen::Index cols, bool fortran) {
   DescriptorMatrix m(rows, cols);
+  // No values: return at once, not after 2^31 empty rows (a 128-byte file of shape
+  // (2147483647, 0) took seconds; found by fuzz_npy).
+  if (m.size() == 0) return m;
   for (Eigen::Index i = 0; i < rows; ++i) {
     for (Eigen::Index j = 0; j < cols; ++j) {
       const Eigen::Index k = fortran ? j * rows + i : i * cols + j;

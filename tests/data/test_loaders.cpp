@@ -79,6 +79,19 @@ TEST_F(LoadersTest, KittiAcceptsCrlfAndTrailingBlankLines) {
   EXPECT_EQ(t.headings.row(0), Eigen::RowVector3d(0, 0, 1));  // normalised from (0, 0, 2)
 }
 
+// Found by tests/fuzz/fuzz_poses: squaring (3e200, 0, 4e200) overflows, and the heading came out
+// (0, 0, 0) instead of (0.6, 0, 0.8).
+TEST_F(LoadersTest, KittiNormalisesHugeHeadingColumns) {
+  const Trajectory t = LoadKittiPoses(Text("p.txt", "1 0 3e200 0 0 1 0 0 0 0 4e200 0\n"));
+  ASSERT_EQ(t.size(), 1);
+  EXPECT_NEAR(t.headings(0, 0), 0.6, 1e-15);
+  EXPECT_EQ(t.headings(0, 1), 0.0);
+  EXPECT_NEAR(t.headings(0, 2), 0.8, 1e-15);
+  // At the top of the double range: (1.5e308, 1.5e308, 1.5e308) / its norm = 1/sqrt(3) each.
+  const Trajectory top = LoadKittiPoses(Text("q.txt", "1 0 1.5e308 0 0 1 1.5e308 0 0 0 1.5e308 0\n"));
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(top.headings(0, k), 0.5773502691896258, 1e-15);
+}
+
 TEST_F(LoadersTest, KittiErrorsNameFileAndLine) {
   ExpectError([&] { LoadKittiPoses(Text("count.txt", Poses(1) + "1 2 3 4 5 6 7 8 9 10 11\n")); },
               {"count.txt", "line 2", "expected 12", "got 11"});
