@@ -12,6 +12,7 @@
 #include "experiments/protocols/inputs.h"
 #include "experiments/results/result_writers.h"
 #include "experiments/sweep/run_sweep.h"
+#include "experiments/sweep/sweep_checks.h"
 
 namespace dvpr {
 
@@ -70,6 +71,7 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
                                      const ExecutorOptions& options, std::ostream& summary) {
   CheckProtocolsAvailable(config, origin, protocols);
   SharedInputs inputs = LoadSharedInputs(config, origin);
+  CheckSweepInputs(inputs, origin);  // what would fail a run fails here, before anything is written
   CreateOutputDir(out_dir);
   inputs.out_dir = out_dir;
   WriteFileAtomic(out_dir / "config.yaml", EmitConfig(config));
