@@ -4,6 +4,8 @@
 // including the simulator events that deliver them.
 #include <benchmark/benchmark.h>
 
+#include "bench/bench_main.h"
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -164,4 +166,4 @@ BENCHMARK(BM_Kitti100BroadcastTransport)->Arg(100)->Unit(benchmark::kMillisecond
 }  // namespace
 }  // namespace dvpr
 
-BENCHMARK_MAIN();
+DVPR_BENCHMARK_MAIN()

@@ -10,6 +10,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "bench/bench_main.h"
+
 #include "agents/kmeans.h"
 #include "experiments/config/config.h"
 #include "experiments/data/loaders.h"
@@ -84,4 +86,4 @@ BENCHMARK(BM_KMeans)->Arg(2)->Arg(11)->Arg(20)->Unit(benchmark::kMillisecond);
 }  // namespace
 }  // namespace dvpr
 
-BENCHMARK_MAIN();
+DVPR_BENCHMARK_MAIN()

@@ -2,6 +2,8 @@
 //   build/netA-rel/bench/bench_scheduler --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
+#include "bench/bench_main.h"
+
 #include <cstdint>
 #include <vector>
 
@@ -89,4 +91,4 @@ BENCHMARK(BM_ScheduleCancelRun)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 }  // namespace
 }  // namespace dvpr
 
-BENCHMARK_MAIN();
+DVPR_BENCHMARK_MAIN()

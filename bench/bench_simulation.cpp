@@ -5,6 +5,8 @@
 // - decentralized, 1000 robots on a 100 000-frame synthetic trajectory (KITTI 00 tiled 22
 //   times, 3 km apart), one iteration; peak RSS reported as a counter.
 #include <benchmark/benchmark.h>
+
+#include "bench/bench_main.h"
 #include <sys/resource.h>
 
 #include <memory>
@@ -112,4 +114,4 @@ BENCHMARK(BM_Decentralized_1000Robots_100kFrames)->Unit(benchmark::kSecond)->Ite
 }  // namespace
 }  // namespace dvpr
 
-BENCHMARK_MAIN();
+DVPR_BENCHMARK_MAIN()

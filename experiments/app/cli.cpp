@@ -12,6 +12,7 @@
 #include "experiments/config/config.h"
 #include "experiments/config/option_reader.h"
 #include "experiments/app/experiment.h"
+#include "experiments/arch/dispatch.h"
 #include "experiments/figures/figures.h"
 #include "experiments/protocols/lcm/lcm_launch.h"
 #include "experiments/sweep/run_executor.h"
@@ -26,7 +27,9 @@ Usage:
   dvpr run CONFIG.yaml [--out DIR] [--set key.path=value ...] [--threads N] [--quiet]
                      expand the config's sweep, run it on all cores, write DIR
                      (default results/<config name>): config.yaml, runs.csv,
-                     per_robot.csv, links.csv, summary.json, figures/*.png
+                     per_robot.csv, links.csv, summary.json, figures/*.png;
+                     DIR appears (an earlier result folder is replaced whole)
+                     only when all succeeded; other existing folders are refused
   dvpr plot DIR      redraw DIR/figures/*.png from the files in DIR
   dvpr agent --config C --robot R [--robots N] [--run K] [--strategy S] [--lcm URL]
              [--speedup X] [--out FILE] [--set key.path=value ...] [--grace SEC]
@@ -203,7 +206,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     return kExitOk;
   }
   if (cmd == "--version") {
-    out << "dvpr " << kVersion << "\n";
+    out << "dvpr " << kVersion << " (" << CompiledArch() << ")\n";  // which build runs: see dispatch.h
     return kExitOk;
   }
   try {

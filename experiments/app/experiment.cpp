@@ -10,6 +10,7 @@
 
 #include "experiments/figures/figures.h"
 #include "experiments/protocols/inputs.h"
+#include "experiments/results/result_folder.h"
 #include "experiments/results/result_writers.h"
 #include "experiments/sweep/run_sweep.h"
 #include "experiments/sweep/sweep_checks.h"
@@ -70,12 +71,15 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
                                      const ProtocolRegistry& protocols,
                                      const ExecutorOptions& options, std::ostream& summary) {
   CheckProtocolsAvailable(config, origin, protocols);
+  CheckOutputFolder(out_dir);  // before the inputs load: a refused --out fails at once
   SharedInputs inputs = LoadSharedInputs(config, origin);
   CheckSweepInputs(inputs, origin);  // what would fail a run fails here, before anything is written
-  CreateOutputDir(out_dir);
-  inputs.out_dir = out_dir;
-  WriteFileAtomic(out_dir / "config.yaml", EmitConfig(config));
-  RowFiles files(out_dir, config.outputs);
+  // Everything is written into folder.dir() and moved to out_dir only when all succeeded.
+  ResultFolder folder(out_dir);
+  const std::filesystem::path dir = folder.dir();
+  inputs.out_dir = dir;
+  WriteFileAtomic(dir / "config.yaml", EmitConfig(config));
+  RowFiles files(dir, config.outputs);
   std::vector<RunResult> rows;
   std::vector<PrCurve> curves;
   RunSweep(inputs, protocols, options, [&](const RunSpec&, RunOutput&& out) {
@@ -84,12 +88,13 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
     for (auto& c : out.curves) curves.push_back(std::move(c));
   });
   files.Commit();
-  WriteFileAtomic(out_dir / "summary.json", SummaryJson(rows));
+  WriteFileAtomic(dir / "summary.json", SummaryJson(rows));
   if (config.outputs.figures) {
-    WriteFigureData(out_dir, FigureData{&inputs.deployment.descriptors, &inputs.training, &curves,
-                                        config.evaluation.suppression_frames});
-    DrawFigures(out_dir, std::cerr);
+    WriteFigureData(dir, FigureData{&inputs.deployment.descriptors, &inputs.training, &curves,
+                                    config.evaluation.suppression_frames});
+    DrawFigures(dir, std::cerr);
   }
+  folder.Commit();
   PrintSummaryTable(rows, summary);
   return rows;
 }

@@ -12,10 +12,12 @@
 namespace dvpr {
 
 // Loads the inputs and checks everything a run would read (CheckSweepInputs; errors up to here
-// leave nothing on disk), creates out_dir, runs the sweep in
-// parallel, writes config.yaml, runs.csv, per_robot.csv, links.csv, summary.json (and
-// queries.csv / messages.csv when asked), the figures when outputs.figures, and prints the
-// summary table to `summary`. Returns the runs.csv rows. `origin` names the config in errors.
+// leave nothing on disk), runs the sweep in parallel, writes
+// config.yaml, runs.csv, per_robot.csv, links.csv, summary.json (and queries.csv / messages.csv
+// when asked), the figures when outputs.figures, and prints the summary table to `summary`.
+// Everything is written into a temporary folder that replaces out_dir as a whole only when all
+// succeeded (ResultFolder): an error or a signal leaves an earlier out_dir as it was. Returns
+// the runs.csv rows. `origin` names the config in errors.
 std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::string& origin,
                                      const std::filesystem::path& out_dir,
                                      const ProtocolRegistry& protocols,

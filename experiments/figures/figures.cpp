@@ -1,6 +1,8 @@
 // gnuplot scripts for the figures (see figures.h) and running them.
 #include "experiments/figures/figures.h"
 
+#include <unistd.h>
+
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -115,7 +117,9 @@ std::string LatencyScript(const fs::path& data_dir, const fs::path& png) {
 // Writes the script, runs gnuplot into a temporary PNG and renames it into place.
 bool Draw(const fs::path& data_dir, const fs::path& png, const std::string& name,
           std::string (*script)(const fs::path&, const fs::path&), std::ostream& log) {
-  const fs::path tmp = png.parent_path() / ("." + png.filename().string() + ".tmp");
+  // pid in the name: two `dvpr plot` of one folder do not draw into the same temporary.
+  const fs::path tmp = png.parent_path() /
+                       ("." + png.filename().string() + ".tmp" + std::to_string(::getpid()));
   const fs::path gp = data_dir / (name + ".gp");
   WriteFileAtomic(gp, script(data_dir, tmp));
   const fs::path err = data_dir / (name + ".log");
@@ -124,6 +128,8 @@ bool Draw(const fs::path& data_dir, const fs::path& png, const std::string& name
   const std::string cmd = "cd '" + data_dir.string() + "' && gnuplot '" + gp.filename().string() +
                           "' 2> '" + err.filename().string() + "'";
   if (std::system(cmd.c_str()) != 0 || !fs::exists(tmp)) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);  // a half-drawn PNG never replaces the earlier one
     log << "dvpr: figure " << png.filename().string() << " not drawn (gnuplot failed, see "
         << err.string() << ")\n";
     return false;

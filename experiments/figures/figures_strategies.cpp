@@ -59,8 +59,8 @@ std::string ChooseAccuracyProtocol(const std::vector<RunResult>& rows) {
   return "";
 }
 
-std::string Num(double v, int decimals = 6) {
-  return std::isnan(v) ? std::string("NaN") : FormatDouble(v, decimals);
+std::string Num(double v) {
+  return std::isnan(v) ? std::string("NaN") : FormatDouble(v);
 }
 
 // Smallest value of `nice` (ascending) that is >= v, else v.

@@ -73,7 +73,7 @@ std::string SummaryJson(const std::vector<RunResult>& rows) {
     if (!n.model.empty()) {
       s << ", \"network_variant\": " << n.variant << ", \"network_model\": "
         << JsonString(n.model) << ", \"bandwidth_bps\": "
-        << (std::isnan(n.bandwidth_bps) ? "null" : FormatDouble(n.bandwidth_bps, 0))
+        << (std::isnan(n.bandwidth_bps) ? "null" : FormatDouble(n.bandwidth_bps))
         << ", \"latency_ms\": " << (std::isnan(n.latency_ms) ? "null" : FormatDouble(n.latency_ms))
         << ", \"loss\": " << JsonString(n.loss);
     }

@@ -32,6 +32,15 @@ const char* const kMessagesHeader =
     "wire_bytes,dropped," DVPR_NETWORK_COLUMNS;
 #undef DVPR_NETWORK_COLUMNS
 
+std::string FormatDouble(double v) {
+  if (std::isnan(v)) return "";
+  if (v == 0.0) v = 0.0;  // no "-0"
+  char buf[64];  // the longest shortest form of a double is 24 characters
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  if (ec != std::errc()) return "";
+  return std::string(buf, end);
+}
+
 std::string FormatDouble(double v, int decimals) {
   if (std::isnan(v)) return "";
   if (v == 0.0) v = 0.0;  // no "-0.000000"
@@ -53,7 +62,7 @@ std::string Key(const RunKey& k) {
 
 std::string Network(const NetworkLabel& n) {
   if (n.model.empty()) return ",,,,";  // protocol=paper: no network
-  return std::to_string(n.variant) + "," + n.model + "," + FormatDouble(n.bandwidth_bps, 0) +
+  return std::to_string(n.variant) + "," + n.model + "," + FormatDouble(n.bandwidth_bps) +
          "," + FormatDouble(n.latency_ms) + "," + n.loss;
 }
 

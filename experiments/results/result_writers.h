@@ -2,8 +2,9 @@
 // The result files of DESIGN.md section 6. Every file is written atomically (a temporary file in
 // the same folder, renamed over the target when complete), so a reader or a crashed run never
 // leaves a half-written file. Formatting is deterministic and locale-free: integers as they are,
-// doubles in fixed notation with 6 decimals (std::to_chars), NaN and empty optionals as empty
-// fields, booleans as 0/1.
+// doubles in the shortest form that reads back to the same double (std::to_chars without a
+// precision, e.g. 0.1, 0.8666666666666667, 1e+06), so another tool can compare to the last bit;
+// NaN and empty optionals as empty fields, booleans as 0/1.
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -60,7 +61,10 @@ std::string SummaryJson(const std::vector<RunResult>& rows);
 // Reads runs.csv back (dvpr plot). Throws naming the file and line on a malformed row.
 std::vector<RunResult> ReadRunsCsv(const std::filesystem::path& path);
 
-// Number formatting shared with the figures' data files.
-std::string FormatDouble(double v, int decimals = 6);
+// Number formatting shared with the figures' data files: the shortest decimal that reads back
+// to exactly `v` ("" for NaN, 0 for -0).
+std::string FormatDouble(double v);
+// Fixed notation with `decimals` decimals, for labels and axes only (it rounds: never for data).
+std::string FormatDouble(double v, int decimals);
 
 }  // namespace dvpr

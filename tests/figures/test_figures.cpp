@@ -112,11 +112,10 @@ TEST_F(StrategyFigures, TradeoffDataColumns) {
   std::istringstream dat(Slurp(dir_ / "strategy_tradeoff.dat"));
   std::string line;
   std::getline(dat, line);
-  EXPECT_EQ(line, "0 0.750000 0.700000 0.800000 4.500000 4.000000 5.000000 17.500000 17.000000 "
-                  "18.000000 0.700000 0.650000 0.750000 9.500000 9.000000 10.000000 NaN NaN NaN");
+  // Full precision, shortest form: (0.8 + 0.7) / 2 is 0.75, (0.75 + 0.65) / 2 is 0.7 in double.
+  EXPECT_EQ(line, "0 0.75 0.7 0.8 4.5 4 5 17.5 17 18 0.7 0.65 0.75 9.5 9 10 NaN NaN NaN");
   std::getline(dat, line);
-  EXPECT_EQ(line, "1 1.000000 1.000000 1.000000 NaN NaN NaN 25.000000 25.000000 25.000000 "
-                  "NaN NaN NaN NaN NaN NaN NaN NaN NaN");
+  EXPECT_EQ(line, "1 1 1 1 NaN NaN NaN 25 25 25 NaN NaN NaN NaN NaN NaN NaN NaN NaN");
   EXPECT_EQ(Slurp(dir_ / "strategy_tradeoff.names"), "decentralized\nbroadcast\nsample_c4\n");
   const std::string meta = Slurp(dir_ / "strategy_tradeoff.meta");
   // Rows without a value at either n get a "not measured" note: broadcast's static balance,
@@ -144,13 +143,13 @@ TEST_F(StrategyFigures, CoincidentStrategiesShareOneLabel) {
 TEST_F(StrategyFigures, SweepDataOneBlockPerStrategy) {
   ASSERT_TRUE(WriteStrategySweepData(dir_, Rows()));
   EXPECT_EQ(Slurp(dir_ / "strategy_sweep_auc.dat"),
-            "# decentralized\n5 0.900000\n10 0.750000\n20 0.700000\n\n\n"
-            "# broadcast\n10 1.000000\n\n\n# sample_c4\n10 0.950000\n");
+            "# decentralized\n5 0.9\n10 0.75\n20 0.7\n\n\n"
+            "# broadcast\n10 1\n\n\n# sample_c4\n10 0.95\n");
   EXPECT_EQ(Slurp(dir_ / "strategy_sweep_balance.dat"),
-            "# decentralized\n5 2.000000\n10 4.500000\n20 9.500000\n\n\n"
-            "# broadcast\nNaN NaN\n\n\n# sample_c4\n10 1.250000\n");
+            "# decentralized\n5 2\n10 4.5\n20 9.5\n\n\n"
+            "# broadcast\nNaN NaN\n\n\n# sample_c4\n10 1.25\n");
   EXPECT_EQ(Slurp(dir_ / "strategy_sweep_bytes.dat"),
-            "# decentralized\n10 17.500000\n\n\n# broadcast\n10 25.000000\n\n\n"
+            "# decentralized\n10 17.5\n\n\n# broadcast\n10 25\n\n\n"
             "# sample_c4\nNaN NaN\n");
   EXPECT_EQ(Slurp(dir_ / "strategy_sweep.titles"), "decentralized\nbroadcast\nsample_c4\n");
 }

@@ -8,9 +8,11 @@
 //   source tree's absolute path replaced by @SOURCE_DIR@, see below).
 //
 // The files were written by the sanitizer build that scripts/test.sh and CI use (RelWithDebInfo
-// with -fsanitize=address,undefined). A build without the sanitizers rounds 43 of the squared
-// distances in queries.csv differently in the 6th decimal (a -O0 build also 3 centroid values in
-// the last bit), so compare with that build.
+// with -fsanitize=address,undefined). A build without the sanitizers computes some squared
+// distances in queries.csv differently in their last bits (43 of them already showed in the 6th
+// decimal when the files had 6; a -O0 build also 3 centroid values), so compare with that build.
+// Numbers are in full precision (the shortest form that reads back to the same double) since
+// issue 12; the files were regenerated then, differing from the 6-decimal ones in form only.
 //
 // config.yaml holds absolute paths (the resolved config), so the checkout's
 // own path is replaced by @SOURCE_DIR@ before comparing; nothing else is.

@@ -1,7 +1,7 @@
 // The paper protocol's sweep driven as `dvpr run` drives it (RunSweep with the built-in
 // protocols, from a config through LoadSharedInputs): determinism for any thread count, run
 // seeds, centroid files, errors naming the run, and agreement with an independent numpy
-// implementation of the paper's evaluation (tests/tools/paper_eval.py).
+// implementation of the paper's evaluation (tests/tools/paper_eval.py), read from runs.csv as written.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -31,6 +31,44 @@ namespace fs = std::filesystem;
 
 using testing_support::Slurp;
 using testing_support::UniformMatrix;
+
+// The auc, auc_reference and relative_auc columns of a runs.csv, read with strtod from the
+// text (not through dvpr's own reader), by the header's column names.
+struct CsvAucs {
+  int robots = 0;
+  int run = 0;
+  double auc = 0;
+  double auc_reference = 0;
+  double relative_auc = 0;
+};
+
+std::vector<std::string> Fields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  for (char ch : line) {
+    if (ch == ',') fields.emplace_back();
+    else fields.back() += ch;
+  }
+  return fields;
+}
+
+std::vector<CsvAucs> ReadAucColumns(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> header = Fields(line);
+  auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const std::size_t robots = column("robots"), run = column("run"), auc = column("auc"),
+                    reference = column("auc_reference"), relative = column("relative_auc");
+  std::vector<CsvAucs> rows;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> f = Fields(line);
+    rows.push_back({std::stoi(f.at(robots)), std::stoi(f.at(run)), std::strtod(f.at(auc).c_str(), nullptr),
+                    std::strtod(f.at(reference).c_str(), nullptr), std::strtod(f.at(relative).c_str(), nullptr)});
+  }
+  return rows;
+}
 
 // Every 10th KITTI 00 pose with smooth 16-D descriptors (tests/kitti_every_tenth.h), written to
 // files that a config names, as a user's own data would be.
@@ -138,6 +176,13 @@ TEST_F(PaperSweepTest, AgreesWithAnIndependentImplementation) {
     }
   }
   const std::vector<RunOutput> ours = Run(Config("training: {centroids: 'given_n{robots}_r{run}.npy'}\n"), 0, dir_ / "given");
+  // runs.csv as `dvpr run` writes it (the same header and CsvRow), read back as text below:
+  // what is compared is what a user's script would read, not only the in-process doubles.
+  std::vector<RunResult> written;
+  for (const RunOutput& o : ours) written.insert(written.end(), o.runs.begin(), o.runs.end());
+  WriteRunsCsv(dir_ / "runs.csv", written);
+  const std::vector<CsvAucs> csv = ReadAucColumns(dir_ / "runs.csv");
+  ASSERT_EQ(csv.size(), written.size());
 
   const fs::path out = dir_ / "reference.csv";
   const std::string cmd = "/usr/bin/python3 " DVPR_SOURCE_DIR "/tests/tools/paper_eval.py --poses '" +
@@ -153,7 +198,9 @@ TEST_F(PaperSweepTest, AgreesWithAnIndependentImplementation) {
   ASSERT_EQ(std::sscanf(line.c_str(), "centralized,%lf,%ld", &central, &relevant), 2) << line;
   EXPECT_EQ(relevant, 167);
   ASSERT_EQ(ours.size(), 8u);
-  EXPECT_NEAR(ours[0].runs.at(0).auc_reference, central, 1e-4);
+  // Both sides compute in double: they agree to rounding, far below the old 6 printed decimals.
+  constexpr double kTolerance = 1e-12;
+  EXPECT_NEAR(ours[0].runs.at(0).auc_reference, central, kTolerance);
   double max_diff = std::abs(ours[0].runs.at(0).auc_reference - central);
   std::size_t rows = 0;
   for (; std::getline(in, line); ++rows) {
@@ -165,13 +212,21 @@ TEST_F(PaperSweepTest, AgreesWithAnIndependentImplementation) {
     ASSERT_EQ(r.key.robots, n);
     ASSERT_EQ(r.key.run, run);
     EXPECT_EQ(r.seed, 0u);  // given centroids: no k-means
-    EXPECT_NEAR(r.auc, auc, 1e-4) << "n " << n << " run " << run;
-    EXPECT_NEAR(r.relative_auc, rel, 1e-4) << "n " << n << " run " << run;
+    EXPECT_NEAR(r.auc, auc, kTolerance) << "n " << n << " run " << run;
+    EXPECT_NEAR(r.relative_auc, rel, kTolerance) << "n " << n << " run " << run;
     EXPECT_DOUBLE_EQ(r.worst_balance_ratio, wbr) << "n " << n << " run " << run;
-    max_diff = std::max(max_diff, std::abs(r.auc - auc));
+    const CsvAucs& c = csv.at(rows);
+    ASSERT_EQ(c.robots, n);
+    ASSERT_EQ(c.run, run);
+    EXPECT_NEAR(c.auc, auc, kTolerance) << "runs.csv, n " << n << " run " << run;
+    EXPECT_NEAR(c.auc_reference, central, kTolerance) << "runs.csv, n " << n << " run " << run;
+    EXPECT_NEAR(c.relative_auc, rel, kTolerance) << "runs.csv, n " << n << " run " << run;
+    EXPECT_EQ(c.auc, r.auc) << "runs.csv does not read back to the computed double";
+    max_diff = std::max({max_diff, std::abs(r.auc - auc), std::abs(c.auc - auc),
+                         std::abs(c.auc_reference - central)});
   }
   EXPECT_EQ(rows, ours.size());
-  std::cout << "max |AUC(dvpr) - AUC(paper_eval.py)| = " << max_diff << "\n";
+  std::cout << "max |AUC(dvpr runs.csv) - AUC(paper_eval.py)| = " << max_diff << "\n";
 }
 
 }  // namespace

@@ -1,0 +1,103 @@
+#include "experiments/results/termination_cleanup.h"
+
+#include <pthread.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
+#include <mutex>
+#include <stdexcept>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace dvpr {
+
+namespace {
+
+constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
+std::mutex& Mutex() {
+  static std::mutex m;
+  return m;
+}
+std::vector<std::filesystem::path>& Registered() {
+  static std::vector<std::filesystem::path> dirs;
+  return dirs;
+}
+int g_pipe_write = -1;   // written by the handler only
+pid_t g_installed_for = 0;
+
+extern "C" void ForwardSignal(int sig) {
+  const int saved = errno;
+  const unsigned char byte = static_cast<unsigned char>(sig);
+  [[maybe_unused]] const ssize_t n = ::write(g_pipe_write, &byte, 1);
+  errno = saved;
+}
+
+// A worker may still create a file in a folder while it is removed: try until it is gone.
+void RemoveFolder(const std::filesystem::path& dir) {
+  for (int attempt = 0; attempt < 10; ++attempt) {
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+    if (!std::filesystem::exists(dir, ec)) return;
+  }
+}
+
+void CleanUpThenDie(int read_fd) {
+  unsigned char sig = 0;
+  while (::read(read_fd, &sig, 1) != 1) {
+    if (errno != EINTR) return;
+  }
+  std::lock_guard lock(Mutex());  // held until the process ends: nothing commits meanwhile
+  for (const auto& dir : Registered()) RemoveFolder(dir);
+  std::signal(sig, SIG_DFL);
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, sig);
+  pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
+  std::raise(sig);
+  _exit(128 + sig);  // not reached: the default action ends the process
+}
+
+// Called with Mutex() held.
+void InstallOnce() {
+  if (g_installed_for == ::getpid()) return;
+  int fds[2];
+  if (::pipe(fds) != 0) throw std::system_error(errno, std::generic_category(), "pipe");
+  g_pipe_write = fds[1];
+  std::thread(CleanUpThenDie, fds[0]).detach();
+  struct sigaction sa {};
+  sa.sa_handler = ForwardSignal;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = SA_RESTART;
+  for (int sig : kSignals) ::sigaction(sig, &sa, nullptr);
+  g_installed_for = ::getpid();
+  Registered().clear();  // a forked child does not own its parent's folders
+}
+
+}  // namespace
+
+void RemoveOnTermination(const std::filesystem::path& dir) {
+  std::lock_guard lock(Mutex());
+  InstallOnce();
+  Registered().push_back(dir);
+}
+
+void KeepOnTermination(const std::filesystem::path& dir) {
+  std::lock_guard lock(Mutex());
+  auto& dirs = Registered();
+  dirs.erase(std::remove(dirs.begin(), dirs.end(), dir), dirs.end());
+}
+
+}  // namespace dvpr
+
+namespace dvpr {
+
+void Uninterrupted(const std::function<void()>& step) {
+  std::lock_guard lock(Mutex());
+  step();
+}
+
+}  // namespace dvpr

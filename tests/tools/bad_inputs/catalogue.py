@@ -1,0 +1,448 @@
+"""The catalogue of bad inputs run by tests/tools/bad_inputs.py (see docs/bad_inputs.md).
+
+Each Case is one bad input a new user might give `dvpr run`, on one of the small configs beside
+this file (base.yaml, files.yaml, centroids.yaml, yaml/*.yaml), with what stderr must name. The
+input files (poses, descriptors, centroids) are written by the functions below, deterministically.
+Cases whose right behaviour is debatable say what they expect and why (`why`).
+"""
+
+import dataclasses
+import random
+import re
+import struct
+from pathlib import Path
+from typing import Callable, Optional
+
+HERE = Path(__file__).resolve().parent
+REPO = HERE.parent.parent.parent
+KITTI = REPO / "data" / "kitti" / "00_poses.txt"
+
+# ---------------------------------------------------------------------------------------------
+# Input files the cases write (deterministic; numbers from a seeded random.Random).
+
+def kitti_lines(n):
+    with open(KITTI) as f:
+        lines = [next(f) for _ in range(n)]
+    return "".join(lines)
+
+
+def matrix(rows, cols, seed=1):
+    rng = random.Random(seed)
+    return [[rng.uniform(-1.0, 1.0) for _ in range(cols)] for _ in range(rows)]
+
+
+def npy_bytes(m, descr="<f4", shape=None, fortran=False):
+    """A version-1 .npy file of the 2-D list m (row-major data unless fortran)."""
+    shape = shape if shape is not None else (len(m), len(m[0]) if m else 0)
+    header = "{'descr': '%s', 'fortran_order': %s, 'shape': %s, }" % (
+        descr, "True" if fortran else "False", "(" + ", ".join(str(s) for s in shape) +
+        ("," if len(shape) == 1 else "") + ")")
+    pad = 64 - (10 + len(header) + 1) % 64
+    header += " " * (pad % 64) + "\n"
+    flat = [v for row in (zip(*m) if fortran else m) for v in row]
+    fmt = {"<f4": "f", "<f8": "d", "<i4": "i", ">f4": "f"}[descr]
+    order = ">" if descr.startswith(">") else "<"
+    values = [int(v) for v in flat] if fmt == "i" else flat
+    data = struct.pack(order + fmt * len(values), *values)
+    return b"\x93NUMPY\x01\x00" + struct.pack("<H", len(header)) + header.encode() + data
+
+
+def npy_with_header(header, m):
+    """A .npy file with this header text (padded) and float32 rows m."""
+    header += " " * ((64 - (10 + len(header) + 1) % 64) % 64) + "\n"
+    data = struct.pack("<%df" % (len(m) * len(m[0])), *[v for row in m for v in row])
+    return b"\x93NUMPY\x01\x00" + struct.pack("<H", len(header)) + header.encode() + data
+
+
+def write(path, content):
+    path.parent.mkdir(parents=True, exist_ok=True)
+    if isinstance(content, str):
+        content = content.encode()
+    path.write_bytes(content)
+
+
+def default_files(d):
+    """The inputs of files.yaml and centroids.yaml (each case overwrites one)."""
+    write(d / "poses.txt", kitti_lines(200))
+    write(d / "desc.npy", npy_bytes(matrix(200, 32)))
+    write(d / "c_n2_r0.npy", npy_bytes(matrix(2, 32, seed=2)))
+    write(d / "c_n3_r0.npy", npy_bytes(matrix(3, 32, seed=3)))
+
+
+def poses_with(n, line_no, replace):
+    """n KITTI poses with line `line_no` (1-based) passed through replace(list of 12 tokens)."""
+    lines = kitti_lines(n).splitlines()
+    tokens = lines[line_no - 1].split()
+    lines[line_no - 1] = " ".join(replace(tokens))
+    return "\n".join(lines) + "\n"
+
+
+# ---------------------------------------------------------------------------------------------
+# The catalogue.
+
+@dataclasses.dataclass
+class Case:
+    id: str
+    what: str                      # the bad input, as a user would describe it
+    expect: tuple = ()             # stderr must contain each; a tuple entry: any one of them
+    base: str = "base.yaml"        # config under bad_inputs/ the case starts from
+    sets: tuple = ()               # --set arguments
+    argv: Optional[list] = None    # dvpr arguments instead of `run CONFIG --quiet --out out SETS`
+    exit: int = 1                  # expected exit code of the error
+    forbid: tuple = ()             # stderr must not contain these (a mislabelled error)
+    files: Optional[Callable] = None  # files(in_dir): writes/spoils the case's input files
+    edit: Optional[Callable] = None   # edit(config_text) -> config_text
+    prior: Optional[str] = None    # an earlier result folder at `out` (run of this base config)
+    success: bool = False          # the input is fine: it must run and leave a whole folder
+    check: Optional[Callable] = None  # check(out_dir) -> problems, for success cases
+    interrupt: bool = False        # SIGINT at the run's first write
+    why: str = ""                  # why the expectation (debatable cases say so)
+
+    @property
+    def category(self):
+        return self.id[0]
+
+
+def S(*sets):
+    return tuple(sets)
+
+
+def spoil(name, content):
+    return lambda d: write(d / name, content)
+
+
+def set_key(key, value):
+    """Edits one `key: value` line of a config (first occurrence)."""
+    def edit(text):
+        out, n = re.subn(r"(?m)^(\s*)" + re.escape(key) + r":.*$",
+                         lambda m: m.group(1) + key + ": " + value, text, count=1)
+        if n != 1:
+            raise RuntimeError("no key " + key + " in the config")
+        return out
+    return edit
+
+
+NAN_ROW = [float("nan")] + [0.5] * 31
+
+
+def quantities():
+    big = "999999999999999999999999999999"  # 30 digits: the most the quantity parser reads
+    return [
+        Case("a01", "network.latency with 30 digits of hours", ("network.latency",),
+             sets=S("network.latency=" + big + "h")),
+        Case("a02", "service.fixed = 2562047h (fits int64 ns, overflows virtual time)",
+             ("service.fixed",), sets=S("service.fixed=2562047h")),
+        Case("a03", "network.latency = 2562047h", ("network.latency",),
+             sets=S("network.latency=2562047h")),
+        Case("a04", "network.latency list with one overflowing value", ("network.latency",),
+             sets=S("network.latency=[2ms, 2562047h]")),
+        Case("a05", "service.per_comparison = 2562047h", ("service.per_comparison",),
+             sets=S("service.per_comparison=2562047h")),
+        Case("a06", "dataset.fps = 1e-9 (frame k at k x 10^9 s)", ("dataset.fps",),
+             sets=S("dataset.fps=1e-9")),
+        Case("a07", "dataset.fps = 1e-300", ("dataset.fps",), sets=S("dataset.fps=1e-300")),
+        Case("a08", "dataset.fps = 1e300 (every frame at t = 0)", ("dataset.fps",),
+             sets=S("dataset.fps=1e300")),
+        Case("a09", "verification.request_bytes = 3000000000 (beyond int32)",
+             ("verification.request_bytes",), sets=S("verification.request_bytes=3000000000")),
+        Case("a10", "verification.request_bytes = 4294992296 (2^32 + 25000)",
+             ("verification.request_bytes",), sets=S("verification.request_bytes=4294992296")),
+        Case("a11", "verification.request_bytes = 2^40, the allowed maximum",
+             ("verification.request_bytes",), sets=S("verification.request_bytes=1099511627776"),
+             why="2^40 bytes (1.1 TB) per request is not a geometric verification; if a range "
+                 "keeps it, the run must send 2^40-byte requests, not 0-byte ones"),
+        Case("a12", "verification.request_bytes with 30 digits of GB",
+             ("verification.request_bytes",), sets=S("verification.request_bytes=" + big + "GB")),
+        Case("a13", "network.bandwidth with 30 digits of Tbps", ("network.bandwidth",),
+             sets=S("network.bandwidth=" + big + "Tbps")),
+        Case("a14", "1 bit/s link and 2^40-byte requests (transmission beyond 292 years)",
+             (("network.bandwidth", "verification.request_bytes"),),
+             sets=S("network.bandwidth=1bps", "verification.request_bytes=1099511627776"),
+             why="a request's transmission time at the configured bandwidth must be "
+                 "representable (issue 12); 2^40 is the largest request_bytes accepted today"),
+        Case("a15", "link override latency = 2562047h", ("network.links",),
+             sets=S("network.links=[{src: 0, dst: 1, latency: 2562047h}]")),
+        Case("a16", "dataset.synthetic.noise = 1e30 (squared distances overflow float)",
+             ("dataset.synthetic.noise",), sets=S("dataset.synthetic.noise=1e30"),
+             why="debatable: the knob has no documented upper bound; issue 12 asks for ranges "
+                 "that keep every derived quantity (here squared descriptor distances) finite"),
+        Case("a17", "evaluation.gt_radius_m = 1e200 (its square is inf)",
+             ("evaluation.gt_radius_m",), sets=S("evaluation.gt_radius_m=1e200"),
+             why="debatable: inf compares fine, but r^2 is a derived quantity that must be "
+                 "representable (issue 12)"),
+        Case("a18", "negative network.latency", ("network.latency",),
+             sets=S("network.latency=-5ms")),
+        Case("a19", "negative service.fixed", ("service.fixed",), sets=S("service.fixed=-1us")),
+        Case("a20", "negative dataset.fps", ("dataset.fps",), sets=S("dataset.fps=-10")),
+        Case("a21", "dataset.fps = 0", ("dataset.fps",), sets=S("dataset.fps=0")),
+        Case("a22", "negative verification.request_bytes", ("verification.request_bytes",),
+             sets=S("verification.request_bytes=-1")),
+        Case("a23", "negative verification.max_distance", ("verification.max_distance",),
+             sets=S("verification.max_distance=-0.5")),
+        Case("a24", "negative evaluation.gt_radius_m", ("evaluation.gt_radius_m",),
+             sets=S("evaluation.gt_radius_m=-5")),
+        Case("a25", "Bernoulli loss p = 1.5", ("network.loss",),
+             sets=S("network.loss={model: bernoulli, p: 1.5}")),
+        Case("a26", "dataset.frames = 0", ("dataset.frames",), sets=S("dataset.frames=0")),
+        Case("a27", "negative runs", ("runs",), sets=S("runs=-1")),
+        Case("a28", "network.bandwidth = 0Mbps", ("network.bandwidth",),
+             sets=S("network.bandwidth=0Mbps")),
+        Case("a29", "network.mtu = 20 (below IPv4's 68)", ("network.mtu",),
+             sets=S("network.mtu=20")),
+        Case("a30", "more robots than frames (robots up to 100000)", ("robots",),
+             sets=S("robots={from: 2, to: 100000}")),
+        Case("a31", "negative dropout time", ("dropout",), sets=S("dropout=[{robot: 1, at: -1s}]")),
+    ]
+
+
+def yaml_structure():
+    def case(id_, name, expect, why=""):
+        return Case(id_, name.replace("_", " ") + " (bad_inputs/yaml/" + name + ".yaml)", expect,
+                    base="yaml/" + name + ".yaml", why=why)
+    deep = 100000
+    return [
+        case("b01", "two_runs_keys", ("runs", "two_runs_keys.yaml")),
+        case("b02", "duplicate_nested_key", ("network.latency",)),
+        case("b03", "second_document", ("second_document.yaml", "document"),
+             why="a reader that takes the first document ignores the rest silently"),
+        Case("b04", "a directory given as the config", ("b04dir", "director"),
+             argv=["run", "{case}/b04dir", "--quiet", "--out", "out"],
+             files=lambda d: (d.parent / "b04dir").mkdir(exist_ok=True),
+             why="the error must name the directory and say it is one (issue 12)"),
+        Case("b05", "an empty config file", ("empty.yaml",),
+             argv=["run", "{in}/empty.yaml", "--quiet", "--out", "out"],
+             files=spoil("empty.yaml", ""),
+             why="debatable: an empty file could mean `all defaults` (the paper's full sweep, "
+                 "minutes); a new user more likely saved the wrong file, so it is an error"),
+        Case("b06", "a config of comments only", ("comments.yaml",),
+             argv=["run", "{in}/comments.yaml", "--quiet", "--out", "out"],
+             files=spoil("comments.yaml", "# runs: 2\n# robots: [2, 3]\n"),
+             why="as b05"),
+        case("b07", "top_level_list", ("top_level_list.yaml",)),
+        case("b08", "syntax_error", ("syntax_error.yaml", "line")),
+        case("b09", "alias_bomb", ("strategies",)),
+        case("b10", "unknown_key", ("netwrok",),
+             why="debatable: unknown keys could be warnings; dvpr rejects them (config.h) so "
+                 "that a typo never runs a sweep on defaults"),
+        case("b11", "unknown_nested_key", ("network.bandwith",), why="as b10"),
+        case("b12", "wrong_type_scalar", ("runs",)),
+        case("b13", "wrong_type_map", ("dataset",)),
+        case("b14", "null_value", ("runs",),
+             why="debatable: a key without a value could mean its default; more likely the "
+                 "value was forgotten, and the default of runs is 10"),
+        case("b15", "huge_integer", ("runs",)),
+        case("b16", "complex_key", ("complex_key.yaml",)),
+        case("b17", "yes_as_bool", ("outputs.figures",),
+             why="debatable: YAML 1.1 reads `no` as false; dvpr accepts only true/false and "
+                 "must say so naming the key"),
+        Case("b18", "dataset nested %d lists deep" % deep, ("deep.yaml",),
+             argv=["run", "{in}/deep.yaml", "--quiet", "--out", "out"],
+             files=spoil("deep.yaml", "name: deep\ndataset: " + "[" * deep + "]" * deep + "\n")),
+        Case("b19", "a binary file (an .npy) given as the config", ("desc.npy",),
+             argv=["run", "{in}/desc.npy", "--quiet", "--out", "out"],
+             files=lambda d: write(d / "desc.npy", npy_bytes(matrix(4, 4)))),
+        Case("b20", "--set with a value that is not YAML", ("runs",), sets=S("runs=[1")),
+        Case("b21", "--set an index past the end of a list", ("dropout",),
+             sets=S("dropout.5.at=1s")),
+        Case("b22", "--set a key below a scalar (runs.x)", ("runs",), sets=S("runs.x=1")),
+        Case("b23", "--set an unknown section", ("netwrk",), sets=S("netwrk.latency=2ms")),
+        Case("b24", "name with a slash", ("name",), sets=S("name=../elsewhere")),
+    ]
+
+
+def files_cases():
+    f = "files.yaml"
+    c = "centroids.yaml"
+    synth_poses = set_key("poses", "poses.txt")
+    inf_row = [float("inf")] + [0.5] * 31
+    return [
+        Case("c01", "centroid file with 16 columns for 32-dim descriptors", ("c_n2_r0.npy",),
+             base=c, files=spoil("c_n2_r0.npy", npy_bytes(matrix(2, 16)))),
+        Case("c02", "centroid file with NaN", ("c_n3_r0.npy",), base=c,
+             files=spoil("c_n3_r0.npy", npy_bytes(matrix(2, 32) + [NAN_ROW]))),
+        Case("c03", "centroid file with Inf", ("c_n2_r0.npy",), base=c,
+             files=spoil("c_n2_r0.npy", npy_bytes([inf_row] + matrix(1, 32)))),
+        Case("c04", "centroid file with 2 rows for 3 robots", ("c_n3_r0.npy",), base=c,
+             files=spoil("c_n3_r0.npy", npy_bytes(matrix(2, 32)))),
+        Case("c05", "centroid files for run 0 only, runs: 2", ("c_n2_r1.npy",), base=c,
+             sets=S("runs=2")),
+        Case("c06", "centroid file for 3 robots missing", ("c_n3_r0.npy",), base=c,
+             files=lambda d: (d / "c_n3_r0.npy").unlink()),
+        Case("c07", "truncated centroid .npy", ("c_n2_r0.npy",), base=c,
+             files=spoil("c_n2_r0.npy", npy_bytes(matrix(2, 32))[:150])),
+        Case("c08", "truncated descriptor .npy", ("desc.npy",), base=f,
+             files=spoil("desc.npy", npy_bytes(matrix(200, 32))[:5000])),
+        Case("c09", "descriptor .npy whose header is garbage", ("desc.npy",), base=f,
+             files=spoil("desc.npy", b"\x93NUMPY\x01\x00\x40\x00" + bytes(range(200, 256)) +
+                         b"\x00\x01\x02\n\n\n\x07\x08" + b"\n" * 2)),
+        Case("c10", "descriptor .npy of int32", ("desc.npy",), base=f,
+             files=spoil("desc.npy", npy_bytes([[1] * 32] * 200, descr="<i4"))),
+        Case("c11", "descriptor .npy with three dimensions", ("desc.npy",), base=f,
+             files=spoil("desc.npy", npy_bytes(matrix(200, 32), shape=(200, 4, 8)))),
+        Case("c12", "ragged descriptor .csv", ("desc.csv",), base=f,
+             edit=set_key("descriptors", "desc.csv"),
+             files=spoil("desc.csv", "".join(",".join("%.3f" % v for v in row[:31 if i == 7 else 32])
+                                             + "\n" for i, row in enumerate(matrix(200, 32))))),
+        Case("c13", "descriptor .csv with NaN", ("desc.csv",), base=f,
+             edit=set_key("descriptors", "desc.csv"),
+             files=spoil("desc.csv", "".join(",".join("nan" if (i, j) == (9, 3) else "%.3f" % v
+                                                      for j, v in enumerate(row)) + "\n"
+                                             for i, row in enumerate(matrix(200, 32))))),
+        Case("c14", "raw .bin whose size is not a whole number of frames", ("desc.bin",), base=f,
+             edit=lambda t: set_key("descriptors", "desc.bin")(t).replace(
+                 "  dim: 32\n", "  dim: 32\n  bin_width: 64\n"),
+             files=spoil("desc.bin", struct.pack("<%df" % (200 * 64 + 7),
+                                                 *([0.25] * (200 * 64 + 7))))),
+        Case("c15", "descriptor values of 1e30 (squared distances overflow float)", ("desc.npy",),
+             base=f, files=spoil("desc.npy", npy_bytes([[v * 1e30 for v in row]
+                                                         for row in matrix(200, 32)])),
+             why="issue 12: values whose squared distances would overflow are refused up front"),
+        Case("c16", "fewer descriptors (150) than poses (200)", ("desc.npy",), base=f,
+             files=spoil("desc.npy", npy_bytes(matrix(150, 32)))),
+        Case("c17", "pose file shorter than dataset.frames, synthetic source", ("dataset.frames",),
+             edit=synth_poses, files=spoil("poses.txt", kitti_lines(200))),
+        Case("c18", "pose file shorter than dataset.frames, files source", ("dataset.frames",),
+             base=f, sets=S("dataset.frames=300"), forbid=("dataset.descriptors",),
+             why="the pose file is short, not the descriptors (issue 12: pose-file errors "
+                 "labelled dataset.descriptors)"),
+        Case("c19", "pose file (150) shorter than the descriptors (200), files source",
+             ("poses.txt",), base=f, files=spoil("poses.txt", kitti_lines(150))),
+        Case("c20", "pose line with 11 numbers, synthetic source", ("poses.txt", "dataset.poses"),
+             edit=synth_poses, files=spoil("poses.txt", poses_with(300, 5, lambda t: t[:11]))),
+        Case("c21", "pose line with 11 numbers, files source", ("poses.txt", "dataset.poses"),
+             base=f, forbid=("dataset.descriptors",),
+             files=spoil("poses.txt", poses_with(200, 5, lambda t: t[:11]))),
+        Case("c22", "pose with NaN", ("poses.txt",), edit=synth_poses,
+             files=spoil("poses.txt", poses_with(300, 9, lambda t: t[:3] + ["nan"] + t[4:]))),
+        Case("c23", "pose translation of 1e300", ("poses.txt",), edit=synth_poses,
+             files=spoil("poses.txt", poses_with(300, 250, lambda t: t[:3] + ["1e300"] + t[4:])),
+             why="issue 12: squared distances of such positions overflow"),
+        Case("c24", "empty pose file", ("poses.txt",), edit=synth_poses,
+             files=spoil("poses.txt", "")),
+        Case("c25", "pose file missing", ("dataset.poses",), edit=synth_poses,
+             files=lambda d: (d / "poses.txt").unlink()),
+        Case("c26", "descriptor file missing", ("dataset.descriptors",), base=f,
+             files=lambda d: (d / "desc.npy").unlink()),
+        Case("c27", "descriptor path is a directory", ("dataset.descriptors", "director"),
+             base=f, why="`file not found` misleads: it is there, as a folder (as b04)",
+             files=lambda d: ((d / "desc.npy").unlink(), (d / "desc.npy").mkdir())),
+        Case("c28", "descriptor file with an unknown extension", ("desc.txt",), base=f,
+             edit=set_key("descriptors", "desc.txt"), files=spoil("desc.txt", "1 2 3\n")),
+        Case("c29", "training.source files without training.descriptors",
+             ("training.descriptors",), base=f, sets=S("training.source=files")),
+        Case("c30", "training descriptors with NaN", ("train.npy",), base=f,
+             sets=S("training={source: files, descriptors: train.npy}"),
+             files=spoil("train.npy", npy_bytes(matrix(50, 32) + [NAN_ROW]))),
+        Case("c31", "training descriptors narrower than dataset.dim", ("train.npy",), base=f,
+             sets=S("training={source: files, descriptors: train.npy}"),
+             files=spoil("train.npy", npy_bytes(matrix(50, 16)))),
+        Case("c32", "dataset.dim larger than the descriptors", ("desc.npy", ("dataset.dim", "dim 64")),
+             base=f, sets=S("dataset.dim=64"),
+             why="the file and the value of dim are enough to fix it; the full key is better"),
+        Case("c33", "pose file of binary garbage", ("poses.txt",), edit=synth_poses,
+             files=spoil("poses.txt", bytes(range(256)) * 4)),
+        Case("c34", "descriptor .npy header with line breaks and a bad value", ("desc.npy",),
+             base=f, files=spoil("desc.npy", npy_with_header(
+                 "{'descr': '<f4',\n 'fortran_order': Maybe,\n 'shape': (200, 32), }",
+                 matrix(200, 32)))),
+    ]
+
+
+def robots_cases():
+    links = lambda v: S("network.links=" + v)
+    return [
+        Case("d01", "link override between robots 0 and 5 (teams of 2 and 3)", ("network.links",),
+             sets=links("[{src: 0, dst: 5, latency: 10ms}]")),
+        Case("d02", "loss override from robot 7 (teams of 2 and 3)", ("network.links",),
+             sets=links("[{src: 7, dst: 0, loss: {model: bernoulli, p: 0.5}}]")),
+        Case("d03", "link override between robots 1 and 2 with robots: [2]", ("network.links",),
+             sets=links("[{src: 1, dst: 2, latency: 10ms}]") + S("robots=[2]")),
+        Case("d04", "link override from a robot to itself", ("network.links",),
+             sets=links("[{src: 1, dst: 1, latency: 10ms}]")),
+        Case("d05", "negative robot in a link override", ("network.links",),
+             sets=links("[{src: -1, dst: 1, latency: 10ms}]")),
+        Case("d06", "latency override on an ideal network", ("network.links",),
+             sets=links("[{src: 0, dst: 1, latency: 10ms}]") + S("network.model=ideal")),
+        Case("d07", "dropout of robot 5 (teams of 2 and 3)", ("dropout",),
+             sets=S("dropout=[{robot: 5, at: 1s}]")),
+        Case("d08", "dropout of robot -1", ("dropout",), sets=S("dropout=[{robot: -1, at: 1s}]")),
+        Case("d09", "link override naming robot 2 (in the team of 3 only)", success=True,
+             sets=links("[{src: 0, dst: 2, latency: 10ms}]"),
+             why="debatable: robot 2 is in the team of 3, so the override is not outside every "
+                 "team (issue 12); like a dropout (config.h) it should apply to the teams that "
+                 "have the robot"),
+        Case("d10", "dropout of robot 2 (in the team of 3 only)", success=True,
+             sets=S("dropout=[{robot: 2, at: 5s}]"),
+             why="documented: a dropout applies to the teams that have the robot (config.h)"),
+    ]
+
+
+def cli_cases():
+    run = lambda *a: ["run", "{config}", "--quiet", "--out", "out", *a]
+    return [
+        Case("e01", "--threads abc", ("--threads",), argv=run("--threads", "abc"), exit=2),
+        Case("e02", "--threads -3", ("--threads",), argv=run("--threads", "-3"), exit=2),
+        Case("e03", "--threads 1.5", ("--threads",), argv=run("--threads", "1.5"), exit=2),
+        Case("e04", "--threads 99999999999", ("--threads",), argv=run("--threads", "99999999999"),
+             exit=2),
+        Case("e05", "--threads ''", ("--threads",), argv=run("--threads", ""), exit=2),
+        Case("e06", "--out ''", ("--out",),
+             argv=["run", "{config}", "--quiet", "--out", ""], exit=2),
+        Case("e07", "--out without a value", ("--out",), argv=["run", "{config}", "--out"], exit=2),
+        Case("e08", "an unknown flag", ("--frobnicate",), argv=run("--frobnicate"), exit=2),
+        Case("e09", "a config file that does not exist", ("nothere.yaml",),
+             argv=["run", "{in}/nothere.yaml", "--quiet", "--out", "out"]),
+        Case("e10", "dvpr run without a config", ("CONFIG",), argv=["run", "--quiet"], exit=2),
+        Case("e11", "two config files", ("second.yaml",),
+             argv=run("{in}/second.yaml"), files=spoil("second.yaml", "runs: 1\n"), exit=2),
+        Case("e12", "--set without '='", ("--set",), argv=run("--set", "runs"), exit=2,
+             why="debatable: a malformed flag is a usage error (2); a bad value for a well-formed "
+                 "--set is a config error (1, b20)"),
+        Case("e13", "--set with an empty key path", ("--set",), argv=run("--set", "=3"), exit=2,
+             why="as e12"),
+        Case("e14", "--out is an existing regular file", ("e14/out",), prior="file",
+             argv=["run", "{config}", "--quiet", "--out", "{case}/out"],
+             why="the file must stay as it was"),
+        Case("e15", "--out below a regular file", ("base.yaml",),
+             argv=["run", "{config}", "--quiet", "--out", "{in}/base.yaml/out"]),
+        Case("e16", "an unknown subcommand", ("runn",), argv=["runn", "{config}"], exit=2),
+    ]
+
+
+def no_file(name):
+    return lambda out: [name + " left from the earlier run"] if (out / name).exists() else []
+
+
+def result_folder_cases():
+    return [
+        Case("f01", "config error (runs=0) into an earlier result folder", ("runs",),
+             sets=S("runs=0"), prior="base.yaml"),
+        Case("f02", "centroid file of the wrong width into an earlier result folder",
+             ("c_n2_r0.npy",), base="centroids.yaml", prior="centroids.yaml",
+             files=spoil("c_n2_r0.npy", npy_bytes(matrix(2, 16)))),
+        Case("f03", "service.fixed = 2562047h into an earlier result folder", ("service.fixed",),
+             sets=S("service.fixed=2562047h"), prior="base.yaml"),
+        Case("f04", "link override outside every team into an earlier result folder",
+             ("network.links",), sets=S("network.links=[{src: 0, dst: 5}]"), prior="base.yaml"),
+        Case("f05", "a later run with queries off", success=True, prior="base.yaml",
+             sets=S("outputs.queries=false"), check=no_file("queries.csv"),
+             why="a result folder describes one run (DESIGN.md 6): replaced whole, or the run "
+                 "refuses with one line and leaves it as it was (issue 12: choose one)"),
+        Case("f06", "a later run with fewer robots", success=True, prior="base.yaml",
+             sets=S("robots=[2]"), check=no_file("centroids/centroids_n3_r0.npy"), why="as f05"),
+        Case("f07", "a later run with messages off after one with messages on", success=True,
+             prior="base.yaml+messages", check=no_file("messages.csv"), why="as f05"),
+        Case("f08", "a run interrupted (SIGINT) at its first write into an earlier result folder",
+             (), interrupt=True, prior="base.yaml", sets=S("dataset.frames=1500", "robots=[2, 3, 4, 5]"),
+             why="Ctrl-C must leave the earlier folder as it was and no temporary files (SIGKILL "
+                 "cannot be cleaned up after, so it is not tried)"),
+        Case("f09", "a late failure into --out a/b/out (parents do not exist)", ("c_n2_r0.npy",),
+             base="centroids.yaml", argv=["run", "{config}", "--quiet", "--out", "a/b/out"],
+             files=spoil("c_n2_r0.npy", npy_bytes(matrix(2, 16))),
+             why="debatable: parent folders created for a run that then fails are left behind"),
+    ]
+
+
+def catalogue():
+    return quantities() + yaml_structure() + files_cases() + robots_cases() + cli_cases() + \
+        result_folder_cases()
