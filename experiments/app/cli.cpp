@@ -1,11 +1,16 @@
 #include "experiments/app/cli.h"
 
+#include <exception>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 
 #include "dvpr/version.h"
 #include "experiments/protocols/lcm/agent_process.h"
 #include "experiments/config/config.h"
+#include "experiments/config/option_reader.h"
 #include "experiments/app/experiment.h"
 #include "experiments/arch/dispatch.h"
 #include "experiments/figures/figures.h"
@@ -38,6 +43,17 @@ Usage:
   dvpr --help        this text
   dvpr --version     the version
 
+Exit status:
+  0  success
+  1  an input you can fix: a config key, a data or centroid file, the output folder;
+     one line on stderr "dvpr: error: <file>: <key.path>: <problem>" (nothing is written
+     when it is found before the run starts, as everything that can be checked is);
+     dvpr launch also when an agent did not exit cleanly (its results are written)
+  2  usage: an unknown command or flag, a missing argument, a flag value that is not
+     what the flag takes (e.g. --threads abc, --threads -3, --out '')
+  3  internal error: a bug in dvpr, not in your input ("dvpr: internal error: ..."); please
+     report it with the config and command line. A crash (a signal) is never 0, 1 or 2.
+
 Examples:
   dvpr run experiments/configs/paper_kitti00.yaml
   dvpr run experiments/configs/paper_kitti00.yaml --set runs=2 --set robots={from: 2, to: 6}
@@ -52,28 +68,30 @@ struct RunArgs {
   ExecutorOptions options;
 };
 
+// Flag values are checked here, so a bad one is a usage error (exit 2) naming the flag.
 RunArgs ParseRunArgs(const std::vector<std::string>& args) {
   RunArgs r;
-  for (std::size_t i = 1; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
-      return args[++i];
-    };
-    if (a == "--out") {
-      r.out = value();
-    } else if (a == "--set") {
-      r.overrides.push_back(ParseOverride(value()));
-    } else if (a == "--threads") {
-      r.options.threads = std::stoi(value());
-    } else if (a == "--quiet") {
+  OptionReader in(args);
+  while (in.Next()) {
+    const std::string& f = in.flag();
+    if (f == "--out") {
+      r.out = in.Text();
+    } else if (f == "--set") {
+      r.overrides.push_back(ParseOverride(in.Text()));
+    } else if (f == "--threads") {
+      r.options.threads = in.Int();
+      if (r.options.threads < 0) {
+        throw std::invalid_argument("--threads: expected a count >= 0 (0: all cores), got " +
+                                    std::to_string(r.options.threads));
+      }
+    } else if (f == "--quiet") {
       r.options.progress = false;
-    } else if (!a.empty() && a[0] == '-') {
-      throw std::invalid_argument("unknown option " + a);
+    } else if (!f.empty() && f[0] == '-') {
+      in.Unknown();
     } else if (r.config.empty()) {
-      r.config = a;
+      r.config = f;
     } else {
-      throw std::invalid_argument("more than one config file (" + r.config.string() + ", " + a + ")");
+      throw std::invalid_argument("more than one config file (" + r.config.string() + ", " + f + ")");
     }
   }
   if (r.config.empty()) throw std::invalid_argument("dvpr run needs a CONFIG.yaml");
@@ -86,26 +104,42 @@ int Run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     a = ParseRunArgs(args);
   } catch (const std::invalid_argument& e) {
     err << "dvpr run: " << e.what() << " (see dvpr --help)\n";
-    return 2;
+    return kExitUsage;
+  } catch (const ConfigError& e) {  // a malformed --set
+    err << "dvpr run: " << e.what() << " (see dvpr --help)\n";
+    return kExitUsage;
   }
   const ExperimentConfig config = LoadConfig(a.config, a.overrides);
   const auto dir = a.out.empty() ? std::filesystem::path("results") / config.name : a.out;
   RunExperiment(config, a.config.string(), dir, BuiltinProtocols(), a.options, out);
   out << "results in " << dir.string() << "\n";
-  return 0;
+  return kExitOk;
 }
 
 int Plot(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   if (args.size() != 2) {
     err << "dvpr plot: expected one folder (see dvpr --help)\n";
-    return 2;
+    return kExitUsage;
   }
   const std::filesystem::path dir = args[1];
   if (!std::filesystem::exists(dir / "runs.csv")) {
     throw std::runtime_error(dir.string() + ": no runs.csv (is this a dvpr run folder?)");
   }
   for (const auto& png : DrawFigures(dir, err)) out << png.string() << "\n";
-  return 0;
+  return kExitOk;
+}
+
+// A message that spans lines (some library's, or one quoting a file) kept to one line, "\n" shown.
+std::string OneLine(std::string_view message) {
+  std::string out;
+  for (const char c : message) {
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c != '\r') {
+      out.push_back(c);
+    }
+  }
+  return out;
 }
 
 // Parses a subcommand's options; bad usage is exit status 2, as for dvpr run.
@@ -116,43 +150,72 @@ int WithOptions(const char* name, const std::vector<std::string>& args, std::ost
     options = parse(args);
   } catch (const std::invalid_argument& e) {
     err << "dvpr " << name << ": " << e.what() << " (see dvpr --help)\n";
-    return 2;
+    return kExitUsage;
+  } catch (const ConfigError& e) {  // a malformed --set
+    err << "dvpr " << name << ": " << e.what() << " (see dvpr --help)\n";
+    return kExitUsage;
   }
   return body(options);
 }
 
+// The subcommand `cmd`; nullopt when there is none of that name.
+std::optional<int> Dispatch(const std::string& cmd, const std::vector<std::string>& args, std::ostream& out,
+                            std::ostream& err) {
+  if (cmd == "run") return Run(args, out, err);
+  if (cmd == "plot") return Plot(args, out, err);
+  if (cmd == "agent") {
+    return WithOptions("agent", args, err, ParseAgentArgs,
+                       [&](const AgentProcessOptions& o) { return RunAgentProcess(o, out); });
+  }
+  if (cmd == "launch") {
+    return WithOptions("launch", args, err, ParseLaunchArgs, [&](const LaunchOptions& o) { return RunLaunch(o, out); });
+  }
+  return std::nullopt;
+}
+
 }  // namespace
+
+// What the user can fix is a ConfigError, a std::invalid_argument (a parameter struct's
+// Validate) or another std::runtime_error (files, I/O, std::filesystem); any other exception
+// (std::logic_error, std::bad_alloc, ...) is dvpr's own fault and must not look like one of those.
+int ReportError(std::exception_ptr error, std::ostream& err) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const std::invalid_argument& e) {
+    err << "dvpr: error: " << OneLine(e.what()) << "\n";
+    return kExitInput;
+  } catch (const std::runtime_error& e) {
+    err << "dvpr: error: " << OneLine(e.what()) << "\n";
+    return kExitInput;
+  } catch (const std::exception& e) {
+    err << "dvpr: internal error: " << OneLine(e.what()) << " (a bug in dvpr; please report it)\n";
+  } catch (...) {
+    err << "dvpr: internal error: an unknown exception (a bug in dvpr; please report it)\n";
+  }
+  return kExitInternal;
+}
 
 int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   if (args.empty()) {
     err << kUsage;
-    return 2;
+    return kExitUsage;
   }
   const std::string& cmd = args[0];
   if (cmd == "--help" || cmd == "-h" || cmd == "help") {
     out << kUsage;
-    return 0;
+    return kExitOk;
   }
   if (cmd == "--version") {
     out << "dvpr " << kVersion << " (" << CompiledArch() << ")\n";  // which build runs: see dispatch.h
-    return 0;
+    return kExitOk;
   }
   try {
-    if (cmd == "run") return Run(args, out, err);
-    if (cmd == "plot") return Plot(args, out, err);
-    if (cmd == "agent") {
-      return WithOptions("agent", args, err, ParseAgentArgs,
-                         [&](const AgentProcessOptions& o) { return RunAgentProcess(o, out); });
-    }
-    if (cmd == "launch") {
-      return WithOptions("launch", args, err, ParseLaunchArgs, [&](const LaunchOptions& o) { return RunLaunch(o, out); });
-    }
-  } catch (const std::exception& e) {
-    err << "dvpr: error: " << e.what() << "\n";
-    return 1;
+    if (const std::optional<int> status = Dispatch(cmd, args, out, err)) return *status;
+  } catch (...) {
+    return ReportError(std::current_exception(), err);
   }
   err << "dvpr: unknown command '" << cmd << "' (see dvpr --help)\n";
-  return 2;
+  return kExitUsage;
 }
 
 }  // namespace dvpr

@@ -13,6 +13,7 @@
 #include "experiments/results/result_folder.h"
 #include "experiments/results/result_writers.h"
 #include "experiments/sweep/run_sweep.h"
+#include "experiments/sweep/sweep_checks.h"
 
 namespace dvpr {
 
@@ -72,6 +73,7 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
   CheckProtocolsAvailable(config, origin, protocols);
   CheckOutputFolder(out_dir);  // before the inputs load: a refused --out fails at once
   SharedInputs inputs = LoadSharedInputs(config, origin);
+  CheckSweepInputs(inputs, origin);  // what would fail a run fails here, before anything is written
   // Everything is written into folder.dir() and moved to out_dir only when all succeeded.
   ResultFolder folder(out_dir);
   const std::filesystem::path dir = folder.dir();

@@ -11,7 +11,8 @@
 
 namespace dvpr {
 
-// Loads the inputs (errors here leave nothing on disk), runs the sweep in parallel, writes
+// Loads the inputs and checks everything a run would read (CheckSweepInputs; errors up to here
+// leave nothing on disk), runs the sweep in parallel, writes
 // config.yaml, runs.csv, per_robot.csv, links.csv, summary.json (and queries.csv / messages.csv
 // when asked), the figures when outputs.figures, and prints the summary table to `summary`.
 // Everything is written into a temporary folder that replaces out_dir as a whole only when all

@@ -319,7 +319,8 @@ void ApplyOverride(YAML::Node& root, const ConfigOverride& o, const std::string&
     const std::string& key = keys[i];
     const bool last = i + 1 == keys.size();
     if (cur.IsSequence() && IsIndex(key)) {
-      const std::size_t idx = std::stoul(key);
+      // Past every list before std::stoul could overflow (a bug's exit status, not a user error's).
+      const std::size_t idx = key.size() > 9 ? cur.size() : std::stoul(key);
       if (idx >= cur.size()) {
         throw ConfigError(origin + ": --set " + o.path + ": index " + key + " is past the end");
       }

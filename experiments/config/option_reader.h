@@ -18,8 +18,11 @@ class OptionReader {
   bool Next() { return ++i_ < args_.size(); }
   const std::string& flag() const { return args_[i_]; }
 
+  // No flag takes an empty value: `--out ''` (an unset shell variable) would otherwise mean the
+  // flag's default, or the current directory.
   const std::string& Text() {
     if (i_ + 1 >= args_.size()) throw std::invalid_argument(flag() + " needs a value");
+    if (args_[i_ + 1].empty()) throw std::invalid_argument(flag() + ": expected a value, got ''");
     return args_[++i_];
   }
   int Int() { return Number<int>("an integer"); }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "experiments/data/npy.h"
+#include "experiments/data/printable.h"
 
 namespace dvpr {
 namespace {
@@ -54,9 +55,9 @@ double ParseNumber(const fs::path& path, std::size_t line, std::string_view toke
   double v = 0.0;
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), v);
   if (token.empty() || ec != std::errc() || end != token.data() + token.size()) {
-    FailLine(path, line, "not a number: '" + std::string(token) + "'");
+    FailLine(path, line, "not a number: '" + Printable(token, 40) + "'");
   }
-  if (!std::isfinite(v)) FailLine(path, line, "NaN or Inf: '" + std::string(token) + "'");
+  if (!std::isfinite(v)) FailLine(path, line, "NaN or Inf: '" + Printable(token, 40) + "'");
   return v;
 }
 
@@ -96,6 +97,12 @@ Trajectory LoadKittiPoses(const fs::path& path) {
     }
     double v[12];
     for (int k = 0; k < 12; ++k) v[k] = ParseNumber(path, line, tokens[static_cast<std::size_t>(k)]);
+    for (const int k : {3, 7, 11}) {
+      if (std::abs(v[k]) > kMaxPoseTranslation_m) {
+        FailLine(path, line, "translation " + std::string(Trim(tokens[static_cast<std::size_t>(k)])) +
+                                 " m is outside [-1e9, 1e9] m");
+      }
+    }
     t.positions.row(i) << v[3], v[7], v[11];
     t.headings.row(i) << v[2], v[6], v[10];
     double norm = t.headings.row(i).norm();
@@ -106,6 +113,7 @@ Trajectory LoadKittiPoses(const fs::path& path) {
       norm = t.headings.row(i).norm();
     }
     if (norm < 1e-6) FailLine(path, line, "rotation's third column is zero (no heading)");
+    if (!std::isfinite(norm)) FailLine(path, line, "rotation's third column is too large to normalise");
     t.headings.row(i) /= norm;
   }
   return t;
@@ -116,6 +124,10 @@ void CheckDescriptorValues(const DescriptorMatrix& m, const std::string& source)
     if (!m.row(i).allFinite()) {
       throw std::runtime_error(source + ": frame " + std::to_string(i) +
                                " (0-based row) holds NaN or Inf");
+    }
+    if (m.row(i).cwiseAbs().maxCoeff() > kMaxDescriptorValue) {
+      throw std::runtime_error(source + ": frame " + std::to_string(i) +
+                               " (0-based row) holds a value outside [-1e9, 1e9]");
     }
     if ((m.row(i).array() == 0.0f).all()) {
       throw std::runtime_error(source + ": frame " + std::to_string(i) +
@@ -219,26 +231,36 @@ void DatasetFiles::Validate() const {
   if (frames == 0 || frames < -1) bad("frames", "must be a positive count or -1 (all)");
 }
 
+void CheckSameFrameCount(const Trajectory& trajectory, const fs::path& poses, const DescriptorMatrix& descriptors,
+                         const fs::path& descriptor_file) {
+  if (trajectory.size() != descriptors.rows()) {
+    throw std::runtime_error("frame count mismatch: pose file " + poses.string() + " has " +
+                             std::to_string(trajectory.size()) + " frames, descriptor file " +
+                             descriptor_file.string() + " has " + std::to_string(descriptors.rows()));
+  }
+}
+
+void KeepFirstFrames(Trajectory& trajectory, int frames, const fs::path& poses) {
+  if (frames < 0) return;
+  if (frames > trajectory.size()) {
+    throw std::runtime_error(std::to_string(frames) + " frames requested, but the pose file " + poses.string() +
+                             " has only " + std::to_string(trajectory.size()));
+  }
+  trajectory.positions.conservativeResize(frames, Eigen::NoChange);
+  trajectory.headings.conservativeResize(frames, Eigen::NoChange);
+}
+
 Dataset LoadDataset(const DatasetFiles& files) {
   files.Validate();
   Trajectory trajectory = LoadKittiPoses(files.poses);
   DescriptorMatrix descriptors = LoadDescriptors(files.descriptors, files.dim, files.bin_frame_width);
-  if (trajectory.size() != descriptors.rows()) {
-    throw std::runtime_error("frame count mismatch: pose file " + files.poses.string() + " has " +
-                             std::to_string(trajectory.size()) + " frames, descriptor file " +
-                             files.descriptors.string() + " has " +
-                             std::to_string(descriptors.rows()));
+  CheckSameFrameCount(trajectory, files.poses, descriptors, files.descriptors);
+  try {
+    KeepFirstFrames(trajectory, files.frames, files.poses);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(std::string("dataset.frames: ") + e.what());
   }
-  if (files.frames > trajectory.size()) {
-    throw std::runtime_error("dataset.frames: " + std::to_string(files.frames) +
-                             " requested but " + files.poses.string() + " has only " +
-                             std::to_string(trajectory.size()));
-  }
-  if (files.frames > 0) {
-    trajectory.positions.conservativeResize(files.frames, Eigen::NoChange);
-    trajectory.headings.conservativeResize(files.frames, Eigen::NoChange);
-    descriptors.conservativeResize(files.frames, Eigen::NoChange);
-  }
+  descriptors.conservativeResize(trajectory.size(), Eigen::NoChange);
   std::string name = files.name.empty() ? files.descriptors.stem().string() : files.name;
   return Dataset{std::move(name), std::move(trajectory), std::move(descriptors), files.fps};
 }

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "experiments/data/printable.h"
+
 namespace dvpr {
 namespace {
 
@@ -60,7 +62,7 @@ class HeaderParser {
         h.shape = Tuple();
         have_shape = true;
       } else {
-        Bad("unknown key '" + key + "'");
+        Bad("unknown key '" + Printable(key) + "'");
       }
       if (!Accept(',')) {
         Expect('}');
@@ -75,7 +77,8 @@ class HeaderParser {
 
  private:
   [[noreturn]] void Bad(const std::string& what) const {
-    Fail(path_, "bad header (" + what + "): " + text_);
+    // The header is the file's bytes: quoted, so the message stays one line whatever they hold.
+    Fail(path_, "bad header (" + what + "): '" + Printable(text_) + "'");
   }
   void SkipSpace() {
     while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
@@ -205,7 +208,7 @@ DescriptorMatrix ReadNpyMatrix(const std::filesystem::path& path) {
   } else if (header.descr == "<f8") {
     item = 8;
   } else {
-    Fail(path, "unsupported dtype '" + header.descr +
+    Fail(path, "unsupported dtype '" + Printable(header.descr) +
                    "' (expected little-endian float32 '<f4' or float64 '<f8')");
   }
   const std::uint64_t rows = header.shape[0], cols = header.shape[1];

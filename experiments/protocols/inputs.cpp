@@ -21,21 +21,25 @@ auto WithKey(const std::string& origin, const std::string& key, Fn&& load) {
   }
 }
 
+// The pose file and the descriptor file are loaded apart, so an error names the key of the file
+// at fault; dataset.frames is checked against the pose file whatever the source (a synthetic
+// deployment longer than its poses would silently run fewer frames than config.yaml says).
 Dataset LoadDeployment(const ExperimentConfig& c, const std::string& origin) {
   const DatasetConfig& d = c.dataset;
-  if (d.source == DatasetSource::kFiles) {
-    DatasetFiles files{.name = c.name, .poses = d.poses, .descriptors = *d.descriptors,
-                       .dim = d.dim, .bin_frame_width = d.bin_width, .fps = d.fps,
-                       .frames = d.frames.value_or(-1)};
-    return WithKey(origin, "dataset.descriptors", [&] { return LoadDataset(files); });
-  }
   Dataset ds;
-  ds.name = c.name;
+  ds.name = c.name.empty() && d.descriptors ? d.descriptors->stem().string() : c.name;
   ds.fps = d.fps;
   ds.trajectory = WithKey(origin, "dataset.poses", [&] { return LoadKittiPoses(d.poses); });
-  if (d.frames && *d.frames < ds.trajectory.size()) {
-    ds.trajectory.positions.conservativeResize(*d.frames, Eigen::NoChange);
-    ds.trajectory.headings.conservativeResize(*d.frames, Eigen::NoChange);
+  if (d.source == DatasetSource::kFiles) {
+    ds.descriptors = WithKey(origin, "dataset.descriptors",
+                             [&] { return LoadDescriptors(*d.descriptors, d.dim, d.bin_width); });
+    WithKey(origin, "dataset.descriptors",
+            [&] { CheckSameFrameCount(ds.trajectory, d.poses, ds.descriptors, *d.descriptors); });
+  }
+  WithKey(origin, "dataset.frames", [&] { KeepFirstFrames(ds.trajectory, d.frames.value_or(-1), d.poses); });
+  if (d.source == DatasetSource::kFiles) {
+    ds.descriptors.conservativeResize(ds.trajectory.size(), Eigen::NoChange);
+    return ds;
   }
   ds.descriptors = WithKey(origin, "dataset.synthetic",
                            [&] { return SyntheticDeployment(ds.trajectory, d.synthetic, c.seed); });
@@ -45,7 +49,8 @@ Dataset LoadDeployment(const ExperimentConfig& c, const std::string& origin) {
 DescriptorMatrix LoadTraining(const ExperimentConfig& c, const Dataset& deployment,
                               const std::string& origin) {
   const TrainingConfig& t = c.training;
-  if (!t.run_centroids.centroids_pattern.empty()) return {};  // k-means is skipped
+  // k-means is skipped; no rows, but the width the centroid files must have.
+  if (!t.run_centroids.centroids_pattern.empty()) return DescriptorMatrix(0, deployment.dim());
   const SyntheticParams& model = c.dataset.synthetic;
   switch (t.source) {
     case TrainingSource::kSyntheticDiverse:

@@ -45,7 +45,7 @@ struct RunSpec {
 struct SharedInputs {
   const ExperimentConfig* config = nullptr;
   Dataset deployment;
-  DescriptorMatrix training;           // empty when training.centroids gives the centroids
+  DescriptorMatrix training;           // no rows (dim columns) when training.centroids gives the centroids
   std::filesystem::path out_dir;       // centroids go to out_dir/centroids/
 };
 

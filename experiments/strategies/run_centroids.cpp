@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "experiments/data/loaders.h"
 #include "experiments/data/npy.h"
 #include "sim/random_bits.h"
 
@@ -23,17 +24,42 @@ std::filesystem::path ExpandCentroidPattern(const std::string& pattern, int robo
   return path;
 }
 
+CentroidMatrix ReadCentroidFile(const std::filesystem::path& path, int robots, int clusters_per_robot,
+                                Eigen::Index dim) {
+  const auto fail = [&](const std::string& what) { throw std::invalid_argument(path.string() + ": " + what); };
+  CentroidMatrix c = ReadNpyMatrix(path);
+  const Eigen::Index k = static_cast<Eigen::Index>(robots) * clusters_per_robot;
+  if (c.rows() != k) {
+    fail(std::to_string(c.rows()) + " centroids, expected " + std::to_string(k) + " (" + std::to_string(robots) +
+         " robots x " + std::to_string(clusters_per_robot) + " per robot)");
+  }
+  if (dim > 0 && c.cols() != dim) {
+    fail(std::to_string(c.cols()) + " values per centroid, expected " + std::to_string(dim) +
+         " (the descriptors' dataset.dim)");
+  }
+  for (Eigen::Index i = 0; i < c.rows(); ++i) {
+    if (!c.row(i).allFinite()) fail("centroid " + std::to_string(i) + " (0-based row) holds NaN or Inf");
+    if (c.cols() > 0 && c.row(i).cwiseAbs().maxCoeff() > kMaxDescriptorValue) {
+      fail("centroid " + std::to_string(i) + " (0-based row) holds a value outside [-1e9, 1e9]");
+    }
+  }
+  return c;
+}
+
+void CheckCentroidFiles(const RunCentroidParams& params, const std::vector<int>& robots, int runs, Eigen::Index dim) {
+  for (const int n : robots) {
+    for (int run = 0; run < runs; ++run) {
+      ReadCentroidFile(ExpandCentroidPattern(params.centroids_pattern, n, run), n, params.clusters_per_robot, dim);
+    }
+  }
+}
+
 CentroidMatrix RunCentroids(const DescriptorMatrix& training, const RunCentroidParams& params, int robots, int run,
                             std::uint64_t* seed_used) {
   const int k = robots * params.clusters_per_robot;
   if (!params.centroids_pattern.empty()) {
-    const auto path = ExpandCentroidPattern(params.centroids_pattern, robots, run);
-    CentroidMatrix c = ReadNpyMatrix(path);
-    if (c.rows() != k) {
-      throw std::invalid_argument(path.string() + ": " + std::to_string(c.rows()) + " centroids, expected " +
-                                  std::to_string(k) + " (" + std::to_string(robots) + " robots x " +
-                                  std::to_string(params.clusters_per_robot) + " per robot)");
-    }
+    CentroidMatrix c = ReadCentroidFile(ExpandCentroidPattern(params.centroids_pattern, robots, run), robots,
+                                        params.clusters_per_robot, training.cols());
     if (seed_used != nullptr) *seed_used = 0;
     return c;
   }

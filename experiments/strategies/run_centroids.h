@@ -12,6 +12,7 @@
 #include <map>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "agents/descriptors.h"
 #include "agents/kmeans.h"
@@ -34,8 +35,20 @@ std::uint64_t RunSeed(std::uint64_t config_seed, int robots, int run);
 // `pattern` with every "{robots}" and "{run}" replaced by the numbers.
 std::filesystem::path ExpandCentroidPattern(const std::string& pattern, int robots, int run);
 
+// The centroid file of a run of `robots` robots: robots x clusters_per_robot rows of `dim`
+// finite values within +-kMaxDescriptorValue (experiments/data/loaders.h; dim <= 0: any width).
+// Throws naming the file: std::invalid_argument for the row count, the width or the first bad
+// row, std::runtime_error for the npy reader's errors.
+CentroidMatrix ReadCentroidFile(const std::filesystem::path& path, int robots, int clusters_per_robot,
+                                Eigen::Index dim);
+
+// ReadCentroidFile for every (robots, run) of a sweep, params.centroids_pattern expanded: run
+// before a sweep starts, so a bad file stops it before anything is written.
+void CheckCentroidFiles(const RunCentroidParams& params, const std::vector<int>& robots, int runs, Eigen::Index dim);
+
 // The centroids of run (robots, run). `seed_used` (if given) gets the k-means seed, 0 when the
-// centroids were read from a file.
+// centroids were read from a file; a file must then be as wide as `training` (which holds no
+// rows but the descriptors' width when centroid files replace k-means; width 0: unchecked).
 CentroidMatrix RunCentroids(const DescriptorMatrix& training, const RunCentroidParams& params, int robots, int run,
                             std::uint64_t* seed_used = nullptr);
 

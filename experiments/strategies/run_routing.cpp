@@ -98,6 +98,24 @@ ReclusterPlan ReclusterPlanOf(const ReclusterParams& params, std::shared_ptr<con
 
 }  // namespace
 
+TrainingUse TrainingUseOf(const StrategySpec& spec, const StrategyInputs& in) {
+  TrainingUse use;
+  if (spec.broadcast()) return use;
+  switch (spec.table) {
+    case Table::kPaper: use.run_centroids = true; break;
+    case Table::kSampleKMeans:
+    case Table::kBalancedSample: return use;
+    case Table::kBalanced: use.descriptors = true; break;
+    case Table::kLpt:
+    case Table::kBounded:
+      use.run_centroids = true;
+      use.descriptors = spec.loads_from_training;
+      break;
+  }
+  use.clusters_per_robot = ClustersPerRobot(spec, in);
+  return use;
+}
+
 RunRouting BuildRunRouting(const StrategySpec& spec, const StrategyInputs& in, int robots, int run) {
   if (in.training == nullptr || in.deployment == nullptr) {
     throw std::invalid_argument("BuildRunRouting: StrategyInputs needs the training and deployment descriptors");

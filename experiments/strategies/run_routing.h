@@ -23,7 +23,7 @@ namespace dvpr {
 
 // What the tables of every run are built from: the inputs the runs of a config share.
 struct StrategyInputs {
-  const DescriptorMatrix* training = nullptr;    // k-means' input (empty when centroid files are given)
+  const DescriptorMatrix* training = nullptr;    // k-means' input (no rows when centroid files are given)
   const DescriptorMatrix* deployment = nullptr;  // sample tables' input; re-clustering splits its frames
   double fps = 10.0;                             // frames per second: the re-clustering leader's timeout
   RunCentroidParams centroids;                   // config seed, clusters per robot, centroid files
@@ -41,6 +41,16 @@ struct RunRouting {
   // run). The static protocol plans the epochs from these and the start table.
   std::optional<ReclusterParams> recluster;
 };
+
+// What a strategy's table takes from the training side, so a sweep can check it before any run
+// (experiments/sweep/sweep_checks.h): the run's centroids (k-means on the training set, or the
+// run's centroid file) and/or the training descriptors themselves.
+struct TrainingUse {
+  int clusters_per_robot = 0;  // k = robots x this; 0 when neither is used
+  bool run_centroids = false;  // RunCentroids (paper, lpt_, bounded_ tables)
+  bool descriptors = false;    // k-means of its own on them (balanced_), or loads from them (_train)
+};
+TrainingUse TrainingUseOf(const StrategySpec& spec, const StrategyInputs& inputs);
 
 // Throws std::invalid_argument when an input it needs is missing or the centroid files do not fit.
 RunRouting BuildRunRouting(const StrategySpec& spec, const StrategyInputs& inputs, int robots, int run);

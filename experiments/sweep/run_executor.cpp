@@ -67,10 +67,17 @@ class Progress {
 RunOutput RunOne(const RunSpec& spec, const std::map<std::string, RunFunction>& fns) {
   const auto fn = fns.find(spec.protocol);
   if (fn == fns.end()) throw std::logic_error("no run function for " + spec.protocol);
+  // The message gains the run's name; the type stays, so a bug (std::logic_error) is still
+  // told apart from an input error (dvpr's exit status 3, not 1).
+  const std::string run = "run " + Describe(spec) + ": ";
   try {
     return fn->second(spec);
-  } catch (const std::exception& e) {
-    throw std::runtime_error("run " + Describe(spec) + ": " + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(run + e.what());
+  } catch (const std::logic_error& e) {
+    throw std::logic_error(run + e.what());
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(run + e.what());
   }
 }
 

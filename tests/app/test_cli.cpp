@@ -1,58 +1,17 @@
 // The dvpr binary on bad configs: one error line naming the key, non-zero exit, nothing written.
-#include <sys/wait.h>
-
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "tests/app/cli_test_support.h"
+
 namespace {
 
+using dvpr::testing_support::CliTest;
+using dvpr::testing_support::Result;
 namespace fs = std::filesystem;
-
-struct Result {
-  int status = -1;
-  std::string err;
-};
-
-class CliTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::path(DVPR_TEST_TMP) / "cli" /
-           ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  // Writes `yaml` to a config file and runs `dvpr run` on it (stderr captured).
-  Result RunConfig(const std::string& yaml, const std::string& extra = "") {
-    const fs::path config = dir_ / "bad.yaml";
-    std::ofstream(config) << yaml;
-    return Dvpr("run '" + config.string() + "' --quiet --out '" + Out().string() + "' " + extra);
-  }
-  Result Dvpr(const std::string& args) {
-    const fs::path err = dir_ / "stderr.txt";
-    const std::string cmd = std::string("'") + DVPR_BINARY_DIR + "/dvpr' " + args + " > '" +
-                            (dir_ / "stdout.txt").string() + "' 2> '" + err.string() + "'";
-    Result r;
-    const int raw = std::system(cmd.c_str());
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    std::ifstream in(err);
-    r.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    return r;
-  }
-  fs::path Out() const { return dir_ / "out"; }
-  // Exit 1, exactly one line on stderr that contains `expected`, no output folder.
-  void ExpectConfigError(const Result& r, const std::string& expected) {
-    EXPECT_EQ(r.status, 1) << r.err;
-    EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
-    EXPECT_EQ(r.err.rfind("dvpr: error: ", 0), 0u) << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_FALSE(fs::exists(Out()));
-  }
-  fs::path dir_;
-};
 
 TEST_F(CliTest, HelpListsSubcommands) {
   const Result r = Dvpr("--help");

@@ -224,5 +224,62 @@ TEST_F(LoadersTest, DatasetFilesValidateNamesField) {
   ExpectError([&] { f.Validate(); }, {"dataset.fps"});
 }
 
+// Asked for more frames than the pose file has, the error says so (a shorter run than asked for
+// would otherwise look like the one the config describes).
+TEST_F(LoadersTest, KeepFirstFramesRefusesMoreFramesThanThePoseFileHas) {
+  const fs::path poses = Text("p.txt", Poses(4));
+  Trajectory t = LoadKittiPoses(poses);
+  try {
+    KeepFirstFrames(t, 5, poses);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "5 frames requested, but the pose file " + poses.string() + " has only 4");
+  }
+  KeepFirstFrames(t, 4, poses);
+  EXPECT_EQ(t.size(), 4);
+  KeepFirstFrames(t, -1, poses);  // all
+  EXPECT_EQ(t.size(), 4);
+  KeepFirstFrames(t, 2, poses);
+  EXPECT_EQ(t.size(), 2);
+  EXPECT_EQ(t.positions.row(1), Eigen::RowVector3d(1, 0, 2));
+  EXPECT_EQ(t.headings.rows(), 2);
+}
+
+TEST_F(LoadersTest, SameFrameCountNamesBothFiles) {
+  const Trajectory t = LoadKittiPoses(Text("p.txt", Poses(3)));
+  const DescriptorMatrix d = DescriptorMatrix::Ones(2, 4);
+  try {
+    CheckSameFrameCount(t, "p.txt", d, "d.npy");
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "frame count mismatch: pose file p.txt has 3 frames, descriptor file d.npy has 2");
+  }
+  EXPECT_NO_THROW(CheckSameFrameCount(t, "p.txt", DescriptorMatrix::Ones(3, 4), "d.npy"));
+}
+
+// A token is quoted escaped: a carriage return or control byte inside it stays on the one line.
+TEST_F(LoadersTest, ANonNumberIsQuotedOnOneLine) {
+  const fs::path p = Text("cr.csv", std::string("1,2\r3,4\n", 8));
+  try {
+    LoadDescriptors(p, 3);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), p.string() + ": line 1: not a number: '2\\r3'");
+  }
+}
+
+// Positions beyond 1e9 m and descriptor values beyond 1e9 would overflow squared distances or the
+// metrics' grid cells (loaders.h); the bound itself is allowed.
+TEST_F(LoadersTest, ValuesBeyondTheDocumentedRangesAreRefused) {
+  const fs::path far = Text("far.txt", "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 1e300 0 1 0 0 0 0 1 0\n");
+  ExpectError([&] { LoadKittiPoses(far); }, {"far.txt: line 2: translation 1e300 m is outside [-1e9, 1e9] m"});
+  const fs::path edge = Text("edge.txt", "1 0 0 -1e9 0 1 0 1e9 0 0 1 0\n");
+  EXPECT_EQ(LoadKittiPoses(edge).positions.row(0), Eigen::RowVector3d(-1e9, 1e9, 0));
+  const fs::path big = Text("big.csv", "1,2\n3,-2e9\n");
+  ExpectError([&] { LoadDescriptors(big, 2); }, {"big.csv: frame 1 (0-based row) holds a value outside [-1e9, 1e9]"});
+  const fs::path tilt = Text("tilt.txt", "1 0 1e200 0 0 1 1e200 0 0 0 1e200 0\n");
+  ExpectError([&] { LoadKittiPoses(tilt); }, {"tilt.txt: line 1: rotation's third column is too large to normalise"});
+}
+
 }  // namespace
 }  // namespace dvpr

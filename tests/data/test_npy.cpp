@@ -124,5 +124,34 @@ TEST_F(NpyTest, RejectsTrailingBytes) {
   ExpectThrowContaining(Tmp("trailing.npy"), "after the data");
 }
 
+// A header is the file's bytes: whatever they hold, the error is one line that quotes them
+// escaped. The header below is numpy's for shape (3, 4) with the key 'shape' changed to 's',
+// a newline, 'ap' and the byte 0x01 (as long, so the header length holds): the parser stops there.
+TEST_F(NpyTest, HeaderErrorsAreOneLineWithTheBytesEscaped) {
+  std::string bytes = Bytes(Fixture("f4_c.npy"));
+  bytes.replace(bytes.find("'shape'"), 7, std::string("'s\nap\x01'"));
+  std::ofstream(Tmp("newline_key.npy"), std::ios::binary) << bytes;
+  try {
+    ReadNpyMatrix(Tmp("newline_key.npy"));
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    EXPECT_EQ(what.rfind("npy file " + Tmp("newline_key.npy").string() +
+                             ": bad header (unknown key 's\\nap\\x01'): '{'descr': '<f4', 'fortran_order': False, "
+                             "'s\\nap\\x01': (3, 4), }",
+                         0),
+              0u)
+        << what;
+  }
+}
+
+TEST_F(NpyTest, AnUnsupportedDtypeIsQuotedEscaped) {
+  std::string bytes = Bytes(Fixture("f4_c.npy"));
+  bytes.replace(bytes.find("'<f4'"), 5, std::string("'<\tX'"));
+  std::ofstream(Tmp("tab_dtype.npy"), std::ios::binary) << bytes;
+  ExpectThrowContaining(Tmp("tab_dtype.npy"), "unsupported dtype '<\\tX' (expected");
+}
+
 }  // namespace
 }  // namespace dvpr

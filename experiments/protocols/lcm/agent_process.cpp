@@ -26,6 +26,7 @@ void AgentProcessOptions::Validate() const {
   auto fail = [](const std::string& what) { throw std::invalid_argument(what); };
   if (config.empty()) fail("--config is required");
   if (robot < 0) fail("--robot is required (0..robots-1)");
+  if (robots && *robots < 2) fail("--robots must be at least 2, got " + std::to_string(*robots));
   if (robots && robot >= *robots) fail("--robot " + std::to_string(robot) + " is not in a team of " + std::to_string(*robots));
   if (run < 0) fail("--run must be >= 0");
   if (!(speedup > 0.0) || !std::isfinite(speedup)) fail("--speedup must be a positive number");

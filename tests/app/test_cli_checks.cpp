@@ -1,0 +1,160 @@
+// Inputs that only fail once the data is loaded - centroid files, the pose file against
+// dataset.frames, link overrides against the teams, strategies against the training set - are
+// found before `dvpr run` writes anything: exit 1, the one line below (worked out from the file
+// names and the shapes written here), and no result folder (issue 12).
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "experiments/data/npy.h"
+#include "tests/app/cli_test_support.h"
+
+namespace dvpr {
+namespace {
+
+using testing_support::CliTest;
+using testing_support::Result;
+
+// A small sweep on a 40-pose trajectory with d = 32 synthetic descriptors.
+class CliChecksTest : public CliTest {
+ protected:
+  void SetUp() override {
+    CliTest::SetUp();
+    std::ofstream poses(Poses());
+    for (int i = 0; i < 40; ++i) poses << "1 0 0 " << i << " 0 1 0 0 0 0 1 0\n";
+    dataset_ = "{source: synthetic, poses: '" + Poses().string() + "', dim: 32}";
+  }
+  path Poses() const { return dir_ / "poses.txt"; }
+  // The config with `rest` appended; the dataset and training sections are members a test may change.
+  std::string Yaml(const std::string& rest) const {
+    return "dataset: " + dataset_ + "\ntraining: " + training_ + "\nprotocols: " + protocols_ +
+           "\nrobots: [2, 3]\nruns: 2\noutputs: {figures: false}\n" + rest;
+  }
+  std::string protocols_ = "[paper]";
+  std::string dataset_;
+  std::string training_ = "{synthetic: {samples: 200, environments: 2}}";
+  // Centroid files c_n{robots}_r{run}.npy of `cols` values, robots x clusters rows, all 0.5.
+  void Centroids(Eigen::Index cols, int clusters = 1) const {
+    for (int n : {2, 3}) {
+      for (int run : {0, 1}) WriteNpy(File(n, run), CentroidMatrix::Constant(n * clusters, cols, 0.5f));
+    }
+  }
+  path File(int robots, int run) const {
+    return dir_ / ("c_n" + std::to_string(robots) + "_r" + std::to_string(run) + ".npy");
+  }
+  std::string WithCentroids(const std::string& rest = "") {
+    training_ = "{centroids: '" + (dir_ / "c_n{robots}_r{run}.npy").string() + "'}";
+    return Yaml(rest);
+  }
+  std::string Error(const std::string& key_and_problem) const {
+    return "dvpr: error: " + Config().string() + ": " + key_and_problem;
+  }
+};
+
+TEST_F(CliChecksTest, CentroidFilesOfTheRightShapeRun) {
+  Centroids(32);
+  const Result r = RunConfig(WithCentroids());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(Out() / "runs.csv"));
+}
+
+// The case of issue 12: 16 columns for 32-dimensional descriptors.
+TEST_F(CliChecksTest, ACentroidFileOfTheWrongWidthNamesTheFile) {
+  Centroids(16);
+  ExpectExactly(RunConfig(WithCentroids()), 1,
+                Error("training.centroids: " + File(2, 0).string() +
+                      ": 16 values per centroid, expected 32 (the descriptors' dataset.dim)"));
+}
+
+// Every run's file is read before the first run: the bad one here is the sweep's last.
+TEST_F(CliChecksTest, ANonFiniteCentroidInTheLastRunNamesItsFile) {
+  Centroids(32);
+  CentroidMatrix c = CentroidMatrix::Constant(3, 32, 0.5f);
+  c(1, 7) = std::numeric_limits<float>::quiet_NaN();
+  WriteNpy(File(3, 1), c);
+  ExpectExactly(RunConfig(WithCentroids()), 1,
+                Error("training.centroids: " + File(3, 1).string() + ": centroid 1 (0-based row) holds NaN or Inf"));
+}
+
+TEST_F(CliChecksTest, ACentroidCountThatFitsNoTeamNamesTheFile) {
+  Centroids(32);
+  WriteNpy(File(3, 0), CentroidMatrix::Constant(2, 32, 0.5f));
+  ExpectExactly(RunConfig(WithCentroids()), 1,
+                Error("training.centroids: " + File(3, 0).string() + ": 2 centroids, expected 3 (3 robots x 1 per robot)"));
+}
+
+// lpt_c2 reads the same files with its own C = 2: 4 centroids for 2 robots.
+TEST_F(CliChecksTest, AStrategyWithItsOwnClusterCountChecksTheFilesForIt) {
+  Centroids(32);
+  ExpectExactly(RunConfig(WithCentroids("strategies: [decentralized, lpt_c2]\n")), 1,
+                Error("training.centroids: " + File(2, 0).string() +
+                      ": 2 centroids, expected 4 (2 robots x 2 per robot) (strategy 'lpt_c2')"));
+}
+
+TEST_F(CliChecksTest, AStrategyThatNeedsTheTrainingDescriptorsIsRefusedWithCentroidFiles) {
+  Centroids(32);
+  ExpectExactly(RunConfig(WithCentroids("strategies: [decentralized, balanced_c2]\n")), 1,
+                Error("strategies[1]: 'balanced_c2' needs the training descriptors, but training.centroids "
+                      "replaces them (drop the strategy or training.centroids)"));
+}
+
+// 200 training descriptors cannot make k = 3 robots x 100 clusters.
+TEST_F(CliChecksTest, AStrategyWithMoreClustersThanTrainingDescriptorsIsRefused) {
+  ExpectExactly(RunConfig(Yaml("strategies: [decentralized, lpt_c100]\n")), 1,
+                Error("strategies[1]: 'lpt_c100' clusters the training descriptors into k = 300 (3 robots x 100), "
+                      "but there are only 200"));
+}
+
+// A npy header holding a newline and a control byte: still one line.
+TEST_F(CliChecksTest, ABrokenCentroidFileHeaderIsOneLine) {
+  Centroids(32);
+  std::string header = "{'descr': '<f4', 'fortran_order': False, 'shape': (2, 32), 'x\n\x01': 1}";
+  header += std::string(64 - (10 + header.size() + 1) % 64, ' ') + "\n";
+  std::ofstream bad(File(2, 0), std::ios::binary);
+  bad << std::string("\x93NUMPY\x01\x00", 8) << static_cast<char>(header.size() % 256)
+      << static_cast<char>(header.size() / 256) << header << std::string(256, '\0');
+  bad.close();
+  const Result r = RunConfig(WithCentroids());
+  ExpectConfigError(r, Config().string() + ": training.centroids: npy file " + File(2, 0).string() +
+                           ": bad header (unknown key 'x\\n\\x01'): '{'descr'");
+}
+
+// The synthetic source used to run the 40 poses there are while config.yaml said 50.
+TEST_F(CliChecksTest, FramesBeyondThePoseFileAreRefusedForTheSyntheticSource) {
+  ExpectExactly(RunConfig(Yaml(""), "--set dataset.frames=50"), 1,
+                Error("dataset.frames: 50 frames requested, but the pose file " + Poses().string() + " has only 40"));
+}
+
+TEST_F(CliChecksTest, FramesBeyondThePoseFileAreRefusedForTheFilesSource) {
+  std::ofstream d(dir_ / "d.csv");
+  for (int i = 0; i < 40; ++i) d << i + 1 << ",1,2\n";
+  d.close();
+  dataset_ = "{source: files, poses: '" + Poses().string() + "', descriptors: '" + (dir_ / "d.csv").string() +
+             "', dim: 3, frames: 41}";
+  ExpectExactly(RunConfig(Yaml("")), 1, Error("dataset.frames: 41 frames requested, but the pose file " + Poses().string() + " has only 40"));
+}
+
+// With descriptor files, an error in the pose file used to be labelled dataset.descriptors.
+TEST_F(CliChecksTest, APoseFileErrorIsLabelledWithThePoseKey) {
+  std::ofstream(dir_ / "d.csv") << "1,2\n3,4\n";
+  std::ofstream(dir_ / "p.txt") << "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0\n";
+  dataset_ = "{source: files, poses: '" + (dir_ / "p.txt").string() + "', descriptors: '" +
+             (dir_ / "d.csv").string() + "', dim: 2}";
+  ExpectExactly(RunConfig(Yaml("")), 1,
+                Error("dataset.poses: " + (dir_ / "p.txt").string() + ": line 2: expected 12 numbers (a 3x4 pose), got 3"));
+}
+
+// Robot 2 is in the team of 3 but not in the team of 2, which used to fail mid-sweep.
+TEST_F(CliChecksTest, ALinkOverrideOutsideATeamIsRefusedBeforeTheRuns) {
+  protocols_ = "[sim]";
+  ExpectExactly(RunConfig(Yaml("network: {links: [{src: 0, dst: 2, latency: 1ms}]}\n")), 1,
+                Error("network.links[0]: 0->2 is not a link between two of the 2 robots (robots: 2, 3; every team "
+                      "of the sweep runs the same network section)"));
+}
+
+}  // namespace
+}  // namespace dvpr
