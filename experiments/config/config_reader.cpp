@@ -202,6 +202,9 @@ std::filesystem::path Field::ExistingFile() const {
     if (std::filesystem::is_regular_file(candidate, ec)) {
       return std::filesystem::absolute(candidate).lexically_normal();
     }
+    if (std::filesystem::is_directory(candidate, ec)) {
+      Fail(Quoted(candidate.string()) + " is a directory, expected a file");
+    }
   }
   std::ostringstream where;
   for (std::size_t i = 0; i < tried.size(); ++i) where << (i ? ", " : "") << tried[i].string();

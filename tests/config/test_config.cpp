@@ -175,7 +175,8 @@ TEST_F(ConfigTest, ParamsErrorsCarryTheKeyPath) {
               "test.yaml: training.synthetic.training_area_m: must be positive");
   starts_with(ErrorOf("verification: {max_distance: -1}\n"),
               "test.yaml: verification.max_distance: must be in [0, 3.4028234663852886e+38], got -1");
-  starts_with(ErrorOf("evaluation: {gt_radius_m: 0}\n"), "test.yaml: evaluation.gt_radius_m: must be positive");
+  starts_with(ErrorOf("evaluation: {gt_radius_m: 0}\n"),
+              "test.yaml: evaluation.gt_radius_m: must be in [0.001, 1000000000], got 0");
 }
 
 // One YAML value that several params structs hold is in each of them.

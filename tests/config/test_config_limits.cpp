@@ -127,6 +127,24 @@ TEST(ConfigLimits, ASecondDocumentIsAnErrorAtItsLine) {
   EXPECT_EQ(ErrorOf("---\nruns: 2\n...\n"), "(no error)");
 }
 
+// The radius of ground truth: poses lie within 1e9 m, and position / radius is a grid cell.
+TEST(ConfigLimits, TheGroundTruthRadiusKeepsItsSquareAndTheGridCellsRepresentable) {
+  EXPECT_EQ(ErrorOfSet("evaluation.gt_radius_m=0.001"), "(no error)");
+  EXPECT_EQ(ErrorOfSet("evaluation.gt_radius_m=1e9"), "(no error)");
+  EXPECT_EQ(ErrorOfSet("evaluation.gt_radius_m=1e200"),
+            "test.yaml: evaluation.gt_radius_m: must be in [0.001, 1000000000], got 1e200");
+  EXPECT_EQ(ErrorOfSet("evaluation.gt_radius_m=0.0009"),
+            "test.yaml: evaluation.gt_radius_m: must be in [0.001, 1000000000], got 0.0009");
+}
+
+// A file key naming a folder says so (it is there, so "not found" would mislead).
+TEST(ConfigLimits, AFolderGivenAsAFileIsNamedAsOne) {
+  const fs::path dir = fs::path(DVPR_TEST_TMP) / "config_limits_poses_dir";
+  fs::create_directories(dir);
+  EXPECT_EQ(ErrorOfSet("dataset.poses=" + dir.string()),
+            "test.yaml: dataset.poses: '" + dir.string() + "' is a directory, expected a file");
+}
+
 TEST(ConfigLimits, ADirectoryIsNamedAsOne) {
   const fs::path dir = fs::path(DVPR_TEST_TMP) / "config_limits_dir.yaml";
   fs::create_directories(dir);
