@@ -2,6 +2,7 @@
 
 #include "sim/random_bits.h"
 
+#include <charconv>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -176,6 +177,13 @@ std::vector<Sample> RandomSamples(int count, double origin, double area, Rng& rn
 // Deployment-like training places lie this far from the deployment's, in another area.
 constexpr double kOtherAreaOrigin_m = 1e5;
 
+// The shortest text that reads back to `v` (as the config's range errors print values).
+std::string Shortest(double v) {
+  char buf[32];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  return ec == std::errc() ? std::string(buf, end) : std::string("?");
+}
+
 void Require(bool ok, const char* field, const std::string& why) {
   if (!ok) throw std::invalid_argument(std::string(field) + ": " + why);
 }
@@ -192,13 +200,18 @@ void SyntheticParams::Validate() const {
   Require(heading_scale > 0 && std::isfinite(heading_scale), "heading_scale", "must be positive");
   Require(heading_fraction >= 0 && heading_fraction <= 1, "heading_fraction", "must lie in [0, 1]");
   Require(variance_decay >= 0 && std::isfinite(variance_decay), "variance_decay", "must not be negative");
-  Require(noise >= 0 && std::isfinite(noise), "noise", "must not be negative");
-  Require(appearance_change >= 0 && std::isfinite(appearance_change), "appearance_change",
-          "must not be negative");
+  // The three scales are relative to the field's unit std; up to kMaxRelativeScale a frame's
+  // values and their squares stay far inside float before the row is normalised (1e30 made them
+  // inf, and the descriptors NaN).
+  const auto scale = [](const char* field, double v) {
+    Require(v >= 0 && v <= SyntheticParams::kMaxRelativeScale, field,
+            "must be in [0, 1000000], got " + Shortest(v));
+  };
+  scale("noise", noise);
+  scale("appearance_change", appearance_change);
   Require(appearance_time_scale_frames > 0 && std::isfinite(appearance_time_scale_frames),
           "appearance_time_scale_frames", "must be positive");
-  Require(environment_offset >= 0 && std::isfinite(environment_offset), "environment_offset",
-          "must not be negative");
+  scale("environment_offset", environment_offset);
 }
 
 void SyntheticTrainingParams::Validate() const {

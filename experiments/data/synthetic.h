@@ -30,6 +30,8 @@ struct SyntheticParams {
   double appearance_change = 0.45;       // slowly time-varying term (light, traffic), same units
   double appearance_time_scale_frames = 200.0;  // its correlation time, in frames
   double environment_offset = 0.8;       // std of an environment's mean, same units
+  // noise, appearance_change and environment_offset lie in [0, kMaxRelativeScale] (Validate).
+  static constexpr double kMaxRelativeScale = 1e6;
   void Validate() const;
   bool operator==(const SyntheticParams&) const = default;
 };

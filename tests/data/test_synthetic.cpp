@@ -129,6 +129,31 @@ void ExpectField(const Params& p, const std::string& field) {
   }
 }
 
+// The relative scales stop at 1e6 (1e30 noise made a frame's squares inf and its descriptor NaN).
+TEST_F(SyntheticTest, RelativeScalesAcceptTheirBoundsAndRefuseOnePast) {
+  const auto error = [](const SyntheticParams& p) -> std::string {
+    try {
+      p.Validate();
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "(no error)";
+  };
+  SyntheticParams p;
+  p.noise = 1e6;
+  EXPECT_EQ(error(p), "(no error)");
+  p.noise = 1e30;
+  EXPECT_EQ(error(p), "noise: must be in [0, 1000000], got 1e+30");
+  p = {};
+  p.appearance_change = 1000000.5;
+  EXPECT_EQ(error(p), "appearance_change: must be in [0, 1000000], got 1000000.5");
+  p = {};
+  p.environment_offset = 0;
+  EXPECT_EQ(error(p), "(no error)");
+  p.environment_offset = -1;
+  EXPECT_EQ(error(p), "environment_offset: must be in [0, 1000000], got -1");
+}
+
 TEST_F(SyntheticTest, ValidateNamesTheField) {
   EXPECT_NO_THROW(SyntheticParams{}.Validate());
   SyntheticParams p;
