@@ -50,8 +50,13 @@ void Field::FailWithin(const std::string& field_and_problem) const {
 
 Field Field::Child(std::string_view key) const {
   const std::string k(key);
-  return Field(*origin_, node_.IsMap() ? node_[k] : YAML::Node(YAML::NodeType::Undefined),
-               path_.empty() ? k : path_ + "." + k);
+  Field child(*origin_, node_.IsMap() ? node_[k] : YAML::Node(YAML::NodeType::Undefined),
+              path_.empty() ? k : path_ + "." + k);
+  // `runs:` with nothing after it is more likely a forgotten value than a wish for the default.
+  if (child.node_.IsDefined() && child.node_.IsNull()) {
+    child.Fail("no value given (write one, or leave the key out for its default)");
+  }
+  return child;
 }
 
 std::vector<Field> Field::Items() const {

@@ -145,6 +145,13 @@ TEST(ConfigLimits, AFolderGivenAsAFileIsNamedAsOne) {
             "test.yaml: dataset.poses: '" + dir.string() + "' is a directory, expected a file");
 }
 
+// A key without a value is an error, not its default (runs: would have run 10 runs).
+TEST(ConfigLimits, AKeyWithoutAValueIsAnError) {
+  EXPECT_EQ(ErrorOf("runs:\n"), "test.yaml: runs: no value given (write one, or leave the key out for its default)");
+  EXPECT_EQ(ErrorOf("network: {latency: ~}\n"),
+            "test.yaml: network.latency: no value given (write one, or leave the key out for its default)");
+}
+
 TEST(ConfigLimits, ADirectoryIsNamedAsOne) {
   const fs::path dir = fs::path(DVPR_TEST_TMP) / "config_limits_dir.yaml";
   fs::create_directories(dir);
