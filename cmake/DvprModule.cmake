@@ -57,15 +57,17 @@ function(dvpr_fast_variants out)
   set(${out} ${result} PARENT_SCOPE)
 endfunction()
 
-# dvpr_executable(<name> SOURCES <files...> LIBS <targets...> [OUTPUT_DIR <dir>])
+# dvpr_executable(<name> SOURCES <files...> LIBS <targets...> [DEFINITIONS <name=value...>]
+#                 [OUTPUT_DIR <dir>])
 # One executable; with DVPR_ARCH=dispatch also <name>-${DVPR_FAST_ARCH} beside it,
 # built from the fast twins. The generic one calls dvpr::ExecFastestVariant
 # (experiments/arch/dispatch.h) first: on a CPU that runs the fast variant it
 # replaces itself with it.
 function(dvpr_executable name)
-  cmake_parse_arguments(ARG "" "OUTPUT_DIR" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(ARG "" "OUTPUT_DIR" "SOURCES;LIBS;DEFINITIONS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_LIBS} dvpr_arch)
+  target_compile_definitions(${name} PRIVATE ${ARG_DEFINITIONS})
   if(ARG_OUTPUT_DIR)
     set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${ARG_OUTPUT_DIR})
   endif()
@@ -76,6 +78,7 @@ function(dvpr_executable name)
     add_executable(${fast} ${ARG_SOURCES})
     target_link_libraries(${fast} PRIVATE ${fast_libs})
     target_compile_options(${fast} PRIVATE ${DVPR_FAST_FLAGS})
+    target_compile_definitions(${fast} PRIVATE ${ARG_DEFINITIONS})
     if(ARG_OUTPUT_DIR)
       set_target_properties(${fast} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${ARG_OUTPUT_DIR})
     endif()
