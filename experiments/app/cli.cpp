@@ -12,8 +12,10 @@
 #include "experiments/config/config.h"
 #include "experiments/config/option_reader.h"
 #include "experiments/app/experiment.h"
+#include "experiments/app/run_on_ranks.h"
 #include "experiments/arch/dispatch.h"
 #include "experiments/figures/figures.h"
+#include "experiments/mpi/mpi_world.h"
 #include "experiments/protocols/lcm/lcm_launch.h"
 #include "experiments/sweep/run_executor.h"
 
@@ -30,6 +32,9 @@ Usage:
                      per_robot.csv, links.csv, summary.json, figures/*.png;
                      DIR appears (an earlier result folder is replaced whole)
                      only when all succeeded; other existing folders are refused
+  mpirun -n K dvpr run CONFIG.yaml [...]   (or srun on a cluster)
+                     the same sweep, its runs spread over K MPI ranks; rank 0
+                     writes DIR, the same files as a single process, byte for byte
   dvpr plot DIR      redraw DIR/figures/*.png from the files in DIR
   dvpr agent --config C --robot R [--robots N] [--run K] [--strategy S] [--lcm URL]
              [--speedup X] [--out FILE] [--set key.path=value ...] [--grace SEC]
@@ -109,11 +114,16 @@ int Run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     err << "dvpr run: " << e.what() << " (see dvpr --help)\n";
     return kExitUsage;
   }
-  const ExperimentConfig config = LoadConfig(a.config, a.overrides);
-  const auto dir = a.out.empty() ? std::filesystem::path("results") / config.name : a.out;
-  RunExperiment(config, a.config.string(), dir, BuiltinProtocols(), a.options, out);
-  out << "results in " << dir.string() << "\n";
-  return kExitOk;
+  const auto run = [&a](const ExecutorOptions& options, std::ostream& summary) {
+    const ExperimentConfig config = LoadConfig(a.config, a.overrides);
+    const auto dir = a.out.empty() ? std::filesystem::path("results") / config.name : a.out;
+    RunExperiment(config, a.config.string(), dir, BuiltinProtocols(), options, summary);
+    summary << "results in " << dir.string() << "\n";
+    return kExitOk;
+  };
+  const MpiWorld world;  // one of several ranks under mpirun or srun (experiments/mpi/mpi_world.h)
+  if (!world.distributed()) return run(a.options, out);
+  return RunOnRanks(world, a.options, run, out, err);
 }
 
 int Plot(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {

@@ -7,11 +7,13 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <stdexcept>
 
 #include "experiments/figures/figures.h"
 #include "experiments/protocols/inputs.h"
 #include "experiments/results/result_folder.h"
 #include "experiments/results/result_writers.h"
+#include "experiments/sweep/run_distributor.h"
 #include "experiments/sweep/run_sweep.h"
 #include "experiments/sweep/sweep_checks.h"
 
@@ -64,6 +66,19 @@ struct RowFiles {
   std::optional<AtomicFile> queries, messages;
 };
 
+// A process of a distributed sweep that does not write the results (run_distributor.h): the
+// same inputs and checks, its runs write into the distributor's run folder, its outputs go to
+// the process that writes.
+void RunShare(const ExperimentConfig& config, const std::string& origin, const ProtocolRegistry& protocols,
+              const ExecutorOptions& options) {
+  SharedInputs inputs = LoadSharedInputs(config, origin);
+  CheckSweepInputs(inputs, origin);
+  inputs.out_dir = options.distributor->run_folder();
+  RunSweep(inputs, protocols, options, [](const RunSpec&, RunOutput&&) {
+    throw std::logic_error("RunShare: an output handed on to a process that does not write results");
+  });
+}
+
 }  // namespace
 
 std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::string& origin,
@@ -71,6 +86,10 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
                                      const ProtocolRegistry& protocols,
                                      const ExecutorOptions& options, std::ostream& summary) {
   CheckProtocolsAvailable(config, origin, protocols);
+  if (options.distributor != nullptr && !options.distributor->writes_results()) {
+    RunShare(config, origin, protocols, options);
+    return {};
+  }
   CheckOutputFolder(out_dir);  // before the inputs load: a refused --out fails at once
   SharedInputs inputs = LoadSharedInputs(config, origin);
   CheckSweepInputs(inputs, origin);  // what would fail a run fails here, before anything is written

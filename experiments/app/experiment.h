@@ -17,7 +17,8 @@ namespace dvpr {
 // when asked), the figures when outputs.figures, and prints the summary table to `summary`.
 // Everything is written into a temporary folder that replaces out_dir as a whole only when all
 // succeeded (ResultFolder): an error or a signal leaves an earlier out_dir as it was. Returns
-// the runs.csv rows. `origin` names the config in errors.
+// the runs.csv rows. `origin` names the config in errors. With options.distributor, in a
+// process that does not write the results, runs only its share and returns no rows.
 std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::string& origin,
                                      const std::filesystem::path& out_dir,
                                      const ProtocolRegistry& protocols,

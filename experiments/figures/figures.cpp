@@ -16,11 +16,13 @@ namespace {
 namespace fs = std::filesystem;
 
 // Same terminal, font and size for every figure; `noenhanced` so underscores print as such.
-// Scripts run in figures/data/, so the PNG (in figures/) is one level up.
+// Scripts run in figures/data/, so the PNG (in figures/) is one level up. Draw() passes the
+// temporary PNG in `dvpr_output`; the script keeps the PNG's own name (so it is the same file in
+// every run of a config, and draws the figure when rerun by hand).
 std::string Preamble(const fs::path& png, int width = 900, int height = 600) {
   return "set terminal pngcairo size " + std::to_string(width) + "," + std::to_string(height) +
-         " font 'DejaVu Sans,11' noenhanced\nset output '../" + png.filename().string() +
-         "'\nset grid lc rgb '#dddddd'\nset border lw 1\nset key box opaque\n";
+         " font 'DejaVu Sans,11' noenhanced\nset output (exists('dvpr_output') ? dvpr_output : '../" +
+         png.filename().string() + "')\nset grid lc rgb '#dddddd'\nset border lw 1\nset key box opaque\n";
 }
 
 std::vector<std::string> ReadLines(const fs::path& path) {
@@ -121,12 +123,13 @@ bool Draw(const fs::path& data_dir, const fs::path& png, const std::string& name
   const fs::path tmp = png.parent_path() /
                        ("." + png.filename().string() + ".tmp" + std::to_string(::getpid()));
   const fs::path gp = data_dir / (name + ".gp");
-  WriteFileAtomic(gp, script(data_dir, tmp));
+  WriteFileAtomic(gp, script(data_dir, png));
   const fs::path err = data_dir / (name + ".log");
   // Run inside the data folder: the scripts name their files relative to it, so they do not
   // depend on where the results folder is (and can be rerun after moving it).
-  const std::string cmd = "cd '" + data_dir.string() + "' && gnuplot '" + gp.filename().string() +
-                          "' 2> '" + err.filename().string() + "'";
+  const std::string cmd = "cd '" + data_dir.string() + "' && gnuplot -e \"dvpr_output='../" +
+                          tmp.filename().string() + "'\" '" + gp.filename().string() + "' 2> '" +
+                          err.filename().string() + "'";
   if (std::system(cmd.c_str()) != 0 || !fs::exists(tmp)) {
     std::error_code ignored;
     fs::remove(tmp, ignored);  // a half-drawn PNG never replaces the earlier one

@@ -278,8 +278,9 @@ std::string Margins(double l, double r, double b, double t) {
 
 std::string Terminal(const fs::path& png, int width, int height) {
   return "set terminal pngcairo size " + std::to_string(width) + "," + std::to_string(height) +
-         " font 'DejaVu Sans,11' noenhanced\nset encoding utf8\nset output '../" +
-         png.filename().string() + "'\nset datafile missing 'NaN'\nset border lw 1\n";
+         " font 'DejaVu Sans,11' noenhanced\nset encoding utf8\n"
+         "set output (exists('dvpr_output') ? dvpr_output : '../" +  // as Preamble (figures.cpp)
+         png.filename().string() + "')\nset datafile missing 'NaN'\nset border lw 1\n";
 }
 
 std::string RunsText(const std::string& runs) {

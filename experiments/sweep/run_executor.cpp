@@ -1,14 +1,11 @@
 #include "experiments/sweep/run_executor.h"
 
-#include <unistd.h>
-
-#include <chrono>
 #include <cstdint>
-#include <cstdio>
 #include <stdexcept>
 #include <utility>
 
 #include "experiments/parallel/parallel_for_in_order.h"
+#include "experiments/sweep/run_progress.h"
 
 namespace dvpr {
 
@@ -35,34 +32,6 @@ std::string Describe(const RunSpec& spec) {
 
 namespace {
 
-// Progress on stderr: a rewritten line on a terminal, else a line every 10% (logs stay short).
-class Progress {
- public:
-  Progress(std::size_t total, bool enabled)
-      : total_(total), enabled_(enabled && total > 0), tty_(isatty(STDERR_FILENO) != 0),
-        start_(std::chrono::steady_clock::now()) {}
-
-  void Done(std::size_t done) {
-    if (!enabled_) return;
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    const std::size_t decile = done * 10 / total_;
-    if (!tty_ && decile == last_decile_ && done != total_) return;
-    last_decile_ = decile;
-    const double eta = elapsed / static_cast<double>(done) * static_cast<double>(total_ - done);
-    std::fprintf(stderr, "%sruns %zu/%zu  elapsed %.1fs  eta %.1fs%s", tty_ ? "\r" : "", done,
-                 total_, elapsed, eta, tty_ && done != total_ ? "\033[K" : "\n");
-    std::fflush(stderr);
-  }
-
- private:
-  std::size_t total_;
-  bool enabled_;
-  bool tty_;
-  std::size_t last_decile_ = 0;
-  std::chrono::steady_clock::time_point start_;
-};
-
 // Runs one spec; an error names the run.
 RunOutput RunOne(const RunSpec& spec, const std::map<std::string, RunFunction>& fns) {
   const auto fn = fns.find(spec.protocol);
@@ -87,7 +56,7 @@ void ExecuteRuns(const std::vector<RunSpec>& specs,
                  const std::map<std::string, RunFunction>& run_functions,
                  const std::function<void(const RunSpec&, RunOutput&&)>& consume,
                  const ExecutorOptions& options) {
-  Progress progress(specs.size(), options.progress);
+  RunProgress progress(specs.size(), options.progress);
   ParallelForInOrder(
       static_cast<std::int64_t>(specs.size()), options.threads,
       [&](std::int64_t i) { return RunOne(specs[static_cast<std::size_t>(i)], run_functions); },

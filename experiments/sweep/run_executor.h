@@ -34,9 +34,14 @@ class ProtocolRegistry {
 // The protocols built into this dvpr (experiments/sweep/builtin_protocols.cpp).
 ProtocolRegistry BuiltinProtocols();
 
+class RunDistributor;  // experiments/sweep/run_distributor.h
+
 struct ExecutorOptions {
   int threads = 0;          // 0: all cores
   bool progress = true;     // runs done/total, elapsed, estimate on stderr
+  // Spreads the runs over several processes (MPI ranks: experiments/mpi/); null runs them all
+  // in this one (ExecuteRuns).
+  const RunDistributor* distributor = nullptr;
 };
 
 // Calls run_functions.at(spec.protocol)(spec) for every spec on the ParallelFor pool

@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "experiments/sweep/run_distributor.h"
 #include "experiments/sweep/sweep.h"
 
 namespace dvpr {
@@ -19,7 +20,12 @@ void RunSweep(const SharedInputs& inputs, const ProtocolRegistry& protocols,
     run_functions[p] = (*factory)(inputs);
   }
   const std::vector<NetworkVariant> networks = ExpandNetworks(config.network);
-  ExecuteRuns(ExpandSweep(config, networks), run_functions, consume, options);
+  const std::vector<RunSpec> specs = ExpandSweep(config, networks);
+  if (options.distributor != nullptr) {
+    options.distributor->Execute(specs, run_functions, inputs.out_dir, consume, options);
+  } else {
+    ExecuteRuns(specs, run_functions, consume, options);
+  }
 }
 
 std::vector<RunOutput> RunSweepInMemory(const SharedInputs& inputs, const ExecutorOptions& options) {

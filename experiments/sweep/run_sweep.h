@@ -15,7 +15,8 @@ using RunConsumer = std::function<void(const RunSpec&, RunOutput&&)>;
 
 // Expands inputs.config's sweep (ExpandSweep), makes the run function of each of its protocols
 // from `protocols` (once, with `inputs`), runs every spec (ExecuteRuns) and hands each output to
-// consume in spec order. Throws std::invalid_argument when a protocol is not in `protocols`.
+// consume in spec order (with options.distributor, this process's part of a sweep spread over
+// several: run_distributor.h). Throws std::invalid_argument when a protocol is not in `protocols`.
 void RunSweep(const SharedInputs& inputs, const ProtocolRegistry& protocols,
               const ExecutorOptions& options, const RunConsumer& consume);
 
