@@ -13,6 +13,7 @@ PACKAGES=(
   gnuplot-nox                                # figures
   python3 python3-numpy                      # independent cross-checks in the tests
   iproute2                                   # ip: loopback multicast for the LCM team tests
+  chromium                                   # headless browser: the replay page's test (tests/replay)
 )
 
 missing=()
