@@ -14,6 +14,7 @@ PACKAGES=(
   python3 python3-numpy                      # independent cross-checks in the tests
   iproute2                                   # ip: loopback multicast for the LCM team tests
   openmpi-bin libopenmpi-dev                 # mpirun -n K dvpr run (optional; CI tests it)
+  chromium                                   # headless browser: the replay page's test (tests/replay)
 )
 
 missing=()

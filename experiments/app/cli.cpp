@@ -17,6 +17,7 @@
 #include "experiments/figures/figures.h"
 #include "experiments/mpi/mpi_world.h"
 #include "experiments/protocols/lcm/lcm_launch.h"
+#include "experiments/replay/replay.h"
 #include "experiments/sweep/run_executor.h"
 
 namespace dvpr {
@@ -45,6 +46,14 @@ Usage:
                      N agent processes on this machine, each configured strategy
                      in turn; gathers their logs into DIR (default
                      results/<config name>_lcm) with protocol=lcm
+  dvpr replay RESULT_DIR [--robots N] [--run K] [--network V] [--strategy S ...]
+              [--out FILE]
+                     one self-contained HTML page replaying a simulated run of
+                     RESULT_DIR (needs outputs.messages: true): robots moving,
+                     messages travelling (coloured by role), queues, bytes of
+                     each strategy; default FILE RESULT_DIR/replay_n<N>_run<K>_net<V>.html,
+                     default run the first in messages.csv; open FILE#t=12.5 for
+                     that instant (docs/replay.md)
   dvpr --help        this text
   dvpr --version     the version
 
@@ -64,6 +73,7 @@ Examples:
   dvpr run experiments/configs/paper_kitti00.yaml --set runs=2 --set robots={from: 2, to: 6}
   dvpr launch --config experiments/configs/paper_kitti00.yaml --robots 4 --speedup 5 \
               --set dataset.frames=600 --set evaluation.suppression_frames=50
+  dvpr replay results/replay_demo
 )";
 
 struct RunArgs {
@@ -176,6 +186,12 @@ std::optional<int> Dispatch(const std::string& cmd, const std::vector<std::strin
   if (cmd == "agent") {
     return WithOptions("agent", args, err, ParseAgentArgs,
                        [&](const AgentProcessOptions& o) { return RunAgentProcess(o, out); });
+  }
+  if (cmd == "replay") {
+    return WithOptions("replay", args, err, replay::ParseReplayArgs, [&](const replay::ReplayOptions& o) {
+      replay::WriteReplay(o, out);
+      return kExitOk;
+    });
   }
   if (cmd == "launch") {
     return WithOptions("launch", args, err, ParseLaunchArgs, [&](const LaunchOptions& o) { return RunLaunch(o, out); });

@@ -1,0 +1,73 @@
+#include "experiments/replay/replay.h"
+
+#include <stdexcept>
+
+#include "experiments/config/option_reader.h"
+#include "experiments/replay/replay_page.h"
+#include "experiments/replay/replay_tracks.h"
+#include "experiments/results/result_writers.h"
+
+namespace dvpr::replay {
+
+namespace {
+
+int Count(OptionReader& in) {
+  const std::string flag = in.flag();
+  const int v = in.Int();
+  if (v < 0) throw std::invalid_argument(flag + ": expected a number >= 0, got " + std::to_string(v));
+  return v;
+}
+
+void CheckFolder(const std::filesystem::path& dir) {
+  if (!std::filesystem::exists(dir)) throw std::runtime_error(dir.string() + ": no such result folder");
+  if (!std::filesystem::is_directory(dir)) throw std::runtime_error(dir.string() + ": not a folder (expected a result folder)");
+  if (!std::filesystem::exists(dir / "messages.csv")) {
+    throw std::runtime_error(dir.string() + ": no messages.csv (record it: dvpr run CONFIG --set outputs.messages=true)");
+  }
+}
+
+std::string Strategies(const ReplayRun& run) {
+  std::string s;
+  for (const auto& m : run.strategies) s += (s.empty() ? "" : " vs ") + m.strategy;
+  return s;
+}
+
+}  // namespace
+
+ReplayOptions ParseReplayArgs(const std::vector<std::string>& args) {
+  ReplayOptions o;
+  OptionReader in(args);
+  while (in.Next()) {
+    const std::string& f = in.flag();
+    if (f == "--robots") o.selection.robots = Count(in);
+    else if (f == "--run") o.selection.run = Count(in);
+    else if (f == "--network") o.selection.network = Count(in);
+    else if (f == "--strategy") o.selection.strategies.push_back(in.Text());
+    else if (f == "--out") o.out = in.Text();
+    else if (!f.empty() && f[0] == '-') in.Unknown();
+    else if (o.dir.empty()) o.dir = f;
+    else throw std::invalid_argument("more than one result folder (" + o.dir.string() + ", " + f + ")");
+  }
+  if (o.dir.empty()) throw std::invalid_argument("dvpr replay needs a RESULT_DIR");
+  return o;
+}
+
+std::filesystem::path WriteReplay(const ReplayOptions& options, std::ostream& out) {
+  CheckFolder(options.dir);
+  const ReplayRun run = ReadReplayRun(options.dir / "messages.csv", options.selection);
+  const Tracks tracks = LoadTracks(options.dir / "config.yaml", run.robots);
+  const std::filesystem::path file =
+      !options.out.empty() ? options.out
+                           : options.dir / ("replay_n" + std::to_string(run.robots) + "_run" + std::to_string(run.run) +
+                                            "_net" + std::to_string(run.network_variant) + ".html");
+  const std::string page = ReplayPage(run, tracks);
+  WriteFileAtomic(file, page);
+  std::size_t messages = 0;
+  for (const auto& s : run.strategies) messages += s.messages.size();
+  out << "replay of " << tracks.name << ": " << run.robots << " robots, run " << run.run << ", network "
+      << run.network_variant << " (" << NetworkName(run) << "), " << Strategies(run) << ", " << messages
+      << " messages: " << file.string() << " (" << (page.size() + 512) / 1024 << " KiB)\n";
+  return file;
+}
+
+}  // namespace dvpr::replay

@@ -1,0 +1,213 @@
+#include "experiments/replay/replay_messages.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <fstream>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string_view>
+#include <tuple>
+
+namespace dvpr::replay {
+
+namespace {
+
+// The columns the replay reads; others are skipped.
+enum Column { kProtocol, kStrategy, kRobots, kRun, kSent, kDelivered, kSrc, kDst, kChannel, kWireBytes,
+              kDropped, kVariant, kModel, kBandwidth, kLatency, kLoss, kColumns };
+constexpr std::array<const char*, kColumns> kNames = {
+    "protocol", "strategy", "robots",  "run",           "sent_ns",       "delivered_ns",
+    "src",      "dst",      "channel", "wire_bytes",    "dropped",       "network_variant",
+    "network_model", "bandwidth_bps", "latency_ms", "loss"};
+
+std::vector<std::string_view> Split(std::string_view line) {
+  std::vector<std::string_view> out;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = line.find(',', start);
+    out.push_back(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+    if (comma == std::string_view::npos) return out;
+    start = comma + 1;
+  }
+}
+
+std::string Join(const std::set<int>& values) {
+  std::string s;
+  for (int v : values) s += (s.empty() ? "" : ", ") + std::to_string(v);
+  return s.empty() ? "none" : s;
+}
+
+// One data line of messages.csv: its fields by Column, with errors naming file, line and column.
+class Row {
+ public:
+  Row(const std::filesystem::path& file, long line, const std::array<std::size_t, kColumns>& index,
+      std::string_view text)
+      : file_(file), line_(line), fields_(Split(text)), index_(index) {}
+  std::string_view Text(Column c) const {
+    if (index_[c] >= fields_.size()) Fail(c, "a value", "a short row");
+    return fields_[index_[c]];
+  }
+  template <typename T>
+  T Number(Column c) const {
+    const std::string_view t = Text(c);
+    T v{};
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (ec != std::errc() || end != t.data() + t.size() || t.empty()) Fail(c, "a number", "'" + std::string(t) + "'");
+    return v;
+  }
+  bool Empty(Column c) const { return Text(c).empty(); }
+
+ private:
+  [[noreturn]] void Fail(Column c, const std::string& expected, const std::string& got) const {
+    throw std::runtime_error(file_.string() + ": line " + std::to_string(line_) + ": " + kNames[c] +
+                             ": expected " + expected + ", got " + got);
+  }
+  const std::filesystem::path& file_;
+  long line_;
+  std::vector<std::string_view> fields_;
+  const std::array<std::size_t, kColumns>& index_;
+};
+
+std::array<std::size_t, kColumns> HeaderIndex(std::string_view header, const std::filesystem::path& file) {
+  const std::vector<std::string_view> names = Split(header);
+  std::array<std::size_t, kColumns> index{};
+  for (int c = 0; c < kColumns; ++c) {
+    const auto it = std::find(names.begin(), names.end(), kNames[static_cast<std::size_t>(c)]);
+    if (it == names.end()) {
+      throw std::runtime_error(file.string() + ": no column '" + kNames[static_cast<std::size_t>(c)] +
+                               "' in its header (is this a dvpr messages.csv?)");
+    }
+    index[static_cast<std::size_t>(c)] = static_cast<std::size_t>(it - names.begin());
+  }
+  return index;
+}
+
+Message MessageOf(const Row& row) {
+  Message m;
+  m.sent_ns = row.Number<std::int64_t>(kSent);
+  if (!row.Empty(kDelivered)) m.delivered_ns = row.Number<std::int64_t>(kDelivered);
+  m.src = row.Number<int>(kSrc);
+  m.dst = row.Number<int>(kDst);
+  const std::string_view channel = row.Text(kChannel);
+  m.role = RoleOfChannel(channel);
+  m.queue = QueueEffectOfChannel(channel);
+  m.counted_bytes = row.Number<std::int64_t>(kWireBytes);
+  m.dropped = row.Number<int>(kDropped) != 0;
+  return m;
+}
+
+using RunId = std::tuple<int, int, int>;  // robots, run, network variant
+
+// What one pass over the file collects: the selected run's rows per strategy, and what else the
+// file holds, for the error messages.
+struct Scan {
+  std::optional<RunId> chosen;
+  ReplayRun run;
+  std::vector<std::string> order;                      // strategies, first appearance
+  std::map<std::string, std::vector<Message>> by_strategy;
+  std::map<std::string, std::string> last_channel;     // shared medium: the previous copy's channel
+  std::set<int> robots, runs, variants;
+  long sim_rows = 0;
+};
+
+bool Selected(const Selection& s, const RunId& id) {
+  return (!s.robots || *s.robots == std::get<0>(id)) && (!s.run || *s.run == std::get<1>(id)) &&
+         (!s.network || *s.network == std::get<2>(id));
+}
+
+void Take(Scan& scan, const Row& row, const RunId& id) {
+  if (!scan.chosen) {
+    scan.chosen = id;
+    std::tie(scan.run.robots, scan.run.run, scan.run.network_variant) = id;
+    scan.run.network_model = row.Text(kModel);
+    scan.run.bandwidth_bps = row.Number<double>(kBandwidth);
+    scan.run.latency_ms = row.Number<double>(kLatency);
+    scan.run.loss = row.Text(kLoss);
+  }
+  if (id != *scan.chosen) return;
+  const std::string strategy(row.Text(kStrategy));
+  auto [it, added] = scan.by_strategy.try_emplace(strategy);
+  if (added) scan.order.push_back(strategy);
+  Message m = MessageOf(row);
+  // A shared-medium broadcast is one transmission: its copies follow each other in the file.
+  std::string& last = scan.last_channel[strategy];
+  const std::string channel(row.Text(kChannel));
+  if (scan.run.network_model == "shared_medium" && !it->second.empty() && last == channel &&
+      it->second.back().src == m.src && it->second.back().sent_ns == m.sent_ns) {
+    m.counted_bytes = 0;
+  }
+  last = channel;
+  it->second.push_back(m);
+}
+
+Scan ScanFile(const std::filesystem::path& file, const Selection& selection) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error(file.string() + ": cannot open it");
+  std::string line;
+  if (!std::getline(in, line)) throw std::runtime_error(file.string() + ": empty file (no header)");
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  const std::array<std::size_t, kColumns> index = HeaderIndex(line, file);
+  Scan scan;
+  for (long number = 2; std::getline(in, line); ++number) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    const Row row(file, number, index, line);
+    if (row.Text(kProtocol) != "sim") continue;
+    ++scan.sim_rows;
+    const RunId id{row.Number<int>(kRobots), row.Number<int>(kRun), row.Number<int>(kVariant)};
+    scan.robots.insert(std::get<0>(id));
+    scan.runs.insert(std::get<1>(id));
+    scan.variants.insert(std::get<2>(id));
+    if (Selected(selection, id)) Take(scan, row, id);
+  }
+  return scan;
+}
+
+std::string Describe(const Selection& s) {
+  std::string d;
+  if (s.robots) d += " robots=" + std::to_string(*s.robots);
+  if (s.run) d += " run=" + std::to_string(*s.run);
+  if (s.network) d += " network=" + std::to_string(*s.network);
+  return d;
+}
+
+std::vector<std::string> ChosenStrategies(const Scan& scan, const Selection& s, const std::filesystem::path& file) {
+  if (s.strategies.empty()) {
+    const auto has = [&](const char* name) { return scan.by_strategy.contains(name); };
+    if (has("decentralized") && has("broadcast")) return {"decentralized", "broadcast"};
+    return scan.order;
+  }
+  for (const std::string& name : s.strategies) {
+    if (scan.by_strategy.contains(name)) continue;
+    std::string have;
+    for (const auto& o : scan.order) have += (have.empty() ? "" : ", ") + o;
+    throw std::runtime_error(file.string() + ": no messages of strategy '" + name + "' in robots=" +
+                             std::to_string(scan.run.robots) + " run=" + std::to_string(scan.run.run) +
+                             " (it has: " + have + ")");
+  }
+  return s.strategies;
+}
+
+}  // namespace
+
+ReplayRun ReadReplayRun(const std::filesystem::path& file, const Selection& selection) {
+  Scan scan = ScanFile(file, selection);
+  if (scan.sim_rows == 0) {
+    throw std::runtime_error(file.string() + ": no messages of protocol sim (a replay needs a simulated run "
+                             "with outputs.messages: true)");
+  }
+  if (!scan.chosen) {
+    throw std::runtime_error(file.string() + ": no messages of" + Describe(selection) + " (it has robots " +
+                             Join(scan.robots) + "; runs " + Join(scan.runs) + "; network variants " +
+                             Join(scan.variants) + ")");
+  }
+  const std::vector<std::string> strategies = ChosenStrategies(scan, selection, file);
+  ReplayRun run = std::move(scan.run);
+  for (const std::string& name : strategies) {
+    run.strategies.push_back(StrategyMessages{name, std::move(scan.by_strategy[name])});
+  }
+  return run;
+}
+
+}  // namespace dvpr::replay

@@ -1,0 +1,59 @@
+#pragma once
+// The messages of one simulated run, read from a result folder's messages.csv
+// (DESIGN.md section 6) for `dvpr replay`. Columns are found by their header
+// names, so columns added later (anywhere) are ignored.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "experiments/replay/message_role.h"
+
+namespace dvpr::replay {
+
+// Which run of the folder to replay. An unset field takes the value of the
+// first sim row of messages.csv that matches the set ones.
+struct Selection {
+  std::optional<int> robots;
+  std::optional<int> run;
+  std::optional<int> network;            // network_variant
+  std::vector<std::string> strategies;   // empty: decentralized and broadcast when the run has
+                                         // both, else every strategy of the run (file order)
+};
+
+struct Message {
+  std::int64_t sent_ns = 0;
+  std::int64_t delivered_ns = -1;  // -1: dropped, or still in flight when the run ended
+  int src = 0;
+  int dst = 0;
+  MessageRole role = MessageRole::kOther;
+  QueueEffect queue = QueueEffect::kNone;
+  // The bytes this copy added to what was sent: its wire bytes, except on a shared medium,
+  // where one transmission reaches every receiver and only the first copy counts.
+  std::int64_t counted_bytes = 0;
+  bool dropped = false;
+};
+
+struct StrategyMessages {
+  std::string strategy;
+  std::vector<Message> messages;  // in send order, as messages.csv lists them
+};
+
+struct ReplayRun {
+  int robots = 0;
+  int run = 0;
+  int network_variant = 0;
+  std::string network_model;  // point_to_point | shared_medium | ideal
+  double bandwidth_bps = 0;
+  double latency_ms = 0;
+  std::string loss;
+  std::vector<StrategyMessages> strategies;  // in the order of Selection::strategies
+};
+
+// Reads `messages_csv` and keeps the rows of the selected run (protocol sim). Throws
+// std::runtime_error, one line naming the file, when it is missing, malformed, has no sim
+// messages, or none of the selection (listing what it has).
+ReplayRun ReadReplayRun(const std::filesystem::path& messages_csv, const Selection& selection);
+
+}  // namespace dvpr::replay

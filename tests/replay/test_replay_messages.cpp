@@ -1,0 +1,126 @@
+// Reading messages.csv for a replay: which run is selected, what each row becomes, the errors.
+#include <gtest/gtest.h>
+
+#include "experiments/replay/replay_messages.h"
+#include "tests/replay/replay_test_support.h"
+
+namespace dvpr::replay {
+namespace {
+
+class ReplayMessagesTest : public ReplayFolderTest {
+ protected:
+  // Two runs of 3 robots on network 0 and one on network 1; broadcast listed before decentralized.
+  std::filesystem::path File() const {
+    return Write("messages.csv", std::string(kHeader) +
+        "lcm,decentralized,3,0,5,9,0,1,DVPR_QUERY_1,x,query_t,536,587,0,0,point_to_point,1e+07,2,none,q\n"
+        "sim,broadcast,3,0,0,2469600,0,1,DVPR_QUERY_ALL,x,query_t,536,589,0,0,point_to_point,1e+07,2,none,q\n"
+        "sim,broadcast,3,0,0,,0,2,DVPR_QUERY_ALL,x,query_t,536,589,1,0,point_to_point,1e+07,2,none,q\n"
+        "sim,decentralized,3,0,1499,,1,2,DVPR_MATCH_2,x,match_t,40,95,0,0,point_to_point,1e+07,2,none,r\n"
+        "sim,decentralized,3,0,2000,30000000,2,0,DVPR_VREQ_0,x,verify_request_t,25000,25900,0,0,point_to_point,1e+07,2,none,v\n"
+        "sim,decentralized,3,1,7,8,1,0,DVPR_QUERY_0,x,query_t,536,587,0,0,point_to_point,1e+07,2,none,q\n"
+        "sim,decentralized,3,0,100,200,1,0,DVPR_QUERY_0,x,query_t,536,587,0,1,shared_medium,1e+06,0.5,none,q\n");
+  }
+};
+
+TEST_F(ReplayMessagesTest, DefaultsToTheFirstSimRunAndTheTwoStrategiesOfThePaper) {
+  const ReplayRun run = ReadReplayRun(File(), {});
+  EXPECT_EQ(run.robots, 3);
+  EXPECT_EQ(run.run, 0);
+  EXPECT_EQ(run.network_variant, 0);
+  EXPECT_EQ(run.network_model, "point_to_point");
+  EXPECT_EQ(run.bandwidth_bps, 1e7);
+  EXPECT_EQ(run.latency_ms, 2.0);
+  EXPECT_EQ(run.loss, "none");
+  ASSERT_EQ(run.strategies.size(), 2u);
+  EXPECT_EQ(run.strategies[0].strategy, "decentralized");  // the paper's method first, whatever the file order
+  EXPECT_EQ(run.strategies[1].strategy, "broadcast");
+  ASSERT_EQ(run.strategies[0].messages.size(), 2u);         // not the lcm row, not run 1, not network 1
+  ASSERT_EQ(run.strategies[1].messages.size(), 2u);
+}
+
+TEST_F(ReplayMessagesTest, EachRowAsTheReplayNeedsIt) {
+  const ReplayRun run = ReadReplayRun(File(), {});
+  const Message& reply = run.strategies[0].messages[0];
+  EXPECT_EQ(reply.sent_ns, 1499);
+  EXPECT_EQ(reply.delivered_ns, -1);  // in flight when the run ended: not delivered, not dropped
+  EXPECT_FALSE(reply.dropped);
+  EXPECT_EQ(reply.src, 1);
+  EXPECT_EQ(reply.dst, 2);
+  EXPECT_EQ(reply.role, MessageRole::kReply);
+  EXPECT_EQ(reply.queue, QueueEffect::kAnswer);
+  EXPECT_EQ(reply.counted_bytes, 95);
+  const Message& verify = run.strategies[0].messages[1];
+  EXPECT_EQ(verify.delivered_ns, 30000000);
+  EXPECT_EQ(verify.role, MessageRole::kVerifyRequest);
+  EXPECT_EQ(verify.counted_bytes, 25900);
+  const Message& dropped = run.strategies[1].messages[1];
+  EXPECT_TRUE(dropped.dropped);
+  EXPECT_EQ(dropped.delivered_ns, -1);
+  EXPECT_EQ(dropped.counted_bytes, 589);  // point-to-point: each copy is its own transmission
+}
+
+TEST_F(ReplayMessagesTest, SelectsRunNetworkAndStrategies) {
+  Selection s;
+  s.run = 1;
+  const ReplayRun one = ReadReplayRun(File(), s);
+  EXPECT_EQ(one.run, 1);
+  ASSERT_EQ(one.strategies.size(), 1u);  // run 1 has only the paper's method
+  EXPECT_EQ(one.strategies[0].messages.at(0).sent_ns, 7);
+  Selection net;
+  net.network = 1;
+  const ReplayRun shared = ReadReplayRun(File(), net);
+  EXPECT_EQ(shared.network_model, "shared_medium");
+  EXPECT_EQ(shared.bandwidth_bps, 1e6);
+  EXPECT_EQ(shared.latency_ms, 0.5);
+  Selection only;
+  only.strategies = {"broadcast"};
+  const ReplayRun b = ReadReplayRun(File(), only);
+  ASSERT_EQ(b.strategies.size(), 1u);
+  EXPECT_EQ(b.strategies[0].strategy, "broadcast");
+}
+
+TEST_F(ReplayMessagesTest, ASelectionTheFileDoesNotHoldSaysWhatItHas) {
+  const std::filesystem::path f = File();
+  Selection s;
+  s.run = 7;
+  EXPECT_EQ(ErrorOf([&] { ReadReplayRun(f, s); }),
+            f.string() + ": no messages of run=7 (it has robots 3; runs 0, 1; network variants 0, 1)");
+  Selection strategy;
+  strategy.strategies = {"multi_probe_2"};
+  EXPECT_EQ(ErrorOf([&] { ReadReplayRun(f, strategy); }),
+            f.string() + ": no messages of strategy 'multi_probe_2' in robots=3 run=0 (it has: broadcast, decentralized)");
+}
+
+TEST_F(ReplayMessagesTest, ASharedMediumBroadcastCountsOnce) {
+  const auto f = Write("messages.csv", std::string(kHeader) +
+      "sim,broadcast,3,0,0,10,0,1,DVPR_QUERY_ALL,x,query_t,536,589,0,0,shared_medium,1e+07,2,none,q\n"
+      "sim,broadcast,3,0,0,10,0,2,DVPR_QUERY_ALL,x,query_t,536,589,0,0,shared_medium,1e+07,2,none,q\n"
+      "sim,broadcast,3,0,0,20,0,2,DVPR_VREQ_2,x,verify_request_t,900,990,0,0,shared_medium,1e+07,2,none,v\n"
+      "sim,broadcast,3,0,5,30,0,1,DVPR_QUERY_ALL,x,query_t,536,589,0,0,shared_medium,1e+07,2,none,q\n"
+      "sim,broadcast,3,0,5,30,0,2,DVPR_QUERY_ALL,x,query_t,536,589,0,0,shared_medium,1e+07,2,none,q\n"
+      "sim,broadcast,3,0,5,30,1,0,DVPR_QUERY_ALL,x,query_t,536,589,0,0,shared_medium,1e+07,2,none,q\n");
+  const ReplayRun run = ReadReplayRun(f, {});
+  std::vector<std::int64_t> counted;
+  for (const Message& m : run.strategies.at(0).messages) counted.push_back(m.counted_bytes);
+  EXPECT_EQ(counted, (std::vector<std::int64_t>{589, 0, 990, 589, 0, 589}));  // the last: another sender
+}
+
+TEST_F(ReplayMessagesTest, FilesThatCannotBeReplayedAreOneLineNamingTheFile) {
+  const auto none = Write("none.csv", std::string(kHeader));
+  EXPECT_EQ(ErrorOf([&] { ReadReplayRun(none, {}); }),
+            none.string() + ": no messages of protocol sim (a replay needs a simulated run with outputs.messages: true)");
+  const auto header = Write("header.csv", "protocol,strategy,robots,run,sent_ns\nsim,broadcast,3,0,0\n");
+  EXPECT_EQ(ErrorOf([&] { ReadReplayRun(header, {}); }),
+            header.string() + ": no column 'delivered_ns' in its header (is this a dvpr messages.csv?)");
+  const auto bad = Write("bad.csv", std::string(kHeader) +
+      "sim,broadcast,3,0,zero,10,0,1,DVPR_QUERY_ALL,x,query_t,536,589,0,0,point_to_point,1e+07,2,none,q\n");
+  EXPECT_EQ(ErrorOf([&] { ReadReplayRun(bad, {}); }), bad.string() + ": line 2: sent_ns: expected a number, got 'zero'");
+  const auto short_row = Write("short.csv", std::string(kHeader) + "sim,broadcast,3,0\n");
+  EXPECT_EQ(ErrorOf([&] { ReadReplayRun(short_row, {}); }), short_row.string() + ": line 2: network_variant: expected a value, got a short row");
+  const auto empty = Write("empty.csv", "");
+  EXPECT_EQ(ErrorOf([&] { ReadReplayRun(empty, {}); }), empty.string() + ": empty file (no header)");
+  EXPECT_EQ(ErrorOf([&] { ReadReplayRun(dir_ / "absent.csv", {}); }), (dir_ / "absent.csv").string() + ": cannot open it");
+}
+
+}  // namespace
+}  // namespace dvpr::replay

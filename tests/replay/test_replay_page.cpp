@@ -1,0 +1,83 @@
+// The page's data, worked out by hand for a tiny run, and the page being self-contained.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "experiments/replay/replay_page.h"
+
+namespace dvpr::replay {
+namespace {
+
+ReplayRun TinyRun() {
+  ReplayRun run;
+  run.robots = 2;
+  run.run = 1;
+  run.network_variant = 0;
+  run.network_model = "point_to_point";
+  run.bandwidth_bps = 1e7;
+  run.latency_ms = 2;
+  run.loss = "none";
+  StrategyMessages d{"decentralized", {}};
+  // sent 1000 ns = 1 us, delivered 2501000 ns = 2501 us: latency 2500 us
+  d.messages.push_back({1000, 2501000, 0, 1, MessageRole::kQuery, QueueEffect::kRequest, 587, false});
+  // sent 1499 ns rounds to 1 us (0 after the previous send); dropped: -1
+  d.messages.push_back({1499, -1, 1, 0, MessageRole::kReply, QueueEffect::kAnswer, 95, true});
+  // sent 0.1 s = 100000 us (99999 after the previous); never delivered, not dropped: -2
+  d.messages.push_back({100000000, -1, 0, 1, MessageRole::kQuery, QueueEffect::kRequest, 587, false});
+  run.strategies.push_back(d);
+  return run;
+}
+
+Tracks TinyTracks() {
+  Tracks t;
+  t.name = "tiny";
+  t.fps = 10;
+  t.robots.push_back({0, {1.04, 2.0}, {-0.25, 3.0}});  // decimetres: 10, -3 (half away from zero), 20, 30
+  t.robots.push_back({2, {-7.5}, {0.0}});               // -75, 0
+  return t;
+}
+
+TEST(ReplayPageTest, DataIsCompactAndWorkedOutByHand) {
+  EXPECT_EQ(PageData(TinyRun(), TinyTracks()),
+            "{\"name\":\"tiny\",\"robots\":2,\"run\":1,\"variant\":0,"
+            "\"network\":\"point-to-point, 10 Mbit/s, 2 ms\",\"fps\":10,"
+            "\"roles\":[\"query\",\"reply\",\"verify request\",\"verify result\",\"re-clustering\",\"other\"],"
+            "\"first\":[0,2],\"tracks\":[[10,-3,20,30],[-75,0]],"
+            "\"strategies\":[{\"name\":\"decentralized\",\"kinds\":[[0,587,1],[1,95,-1]],"
+            "\"m\":[1,2500,0,1,0,0,-1,1,0,1,99999,-2,0,1,0]}]}");
+}
+
+TEST(ReplayPageTest, NamesCannotCloseTheScriptElement) {
+  Tracks t = TinyTracks();
+  t.name = "a</script>\"b\\";
+  const std::string data = PageData(TinyRun(), t);
+  EXPECT_NE(data.find("\"name\":\"a\\u003c/script\\u003e\\\"b\\\\\""), std::string::npos) << data;
+}
+
+TEST(ReplayPageTest, NetworkNames) {
+  ReplayRun run = TinyRun();
+  EXPECT_EQ(NetworkName(run), "point-to-point, 10 Mbit/s, 2 ms");
+  run.network_model = "shared_medium";
+  run.bandwidth_bps = 1e9;
+  run.latency_ms = 0.5;
+  run.loss = "bernoulli";
+  EXPECT_EQ(NetworkName(run), "shared medium, 1 Gbit/s, 0.5 ms, loss: bernoulli");
+  run.network_model = "ideal";
+  run.bandwidth_bps = 2500;
+  run.loss = "none";
+  EXPECT_EQ(NetworkName(run), "ideal, 2.5 kbit/s, 0.5 ms");
+}
+
+// Opened without a network: nothing fetched (no URL, no src=, no import), the data inside.
+TEST(ReplayPageTest, SelfContained) {
+  const std::string page = ReplayPage(TinyRun(), TinyTracks());
+  for (const char* remote : {"http:", "https:", "//cdn", "src=", "import ", "fetch(", "XMLHttpRequest", "@import", "url("}) {
+    EXPECT_EQ(page.find(remote), std::string::npos) << remote;
+  }
+  EXPECT_EQ(page.find(kDataPlaceholder), std::string::npos);
+  EXPECT_NE(page.find("<script id=\"replay-data\" type=\"application/json\">{\"name\":\"tiny\""), std::string::npos);
+  EXPECT_EQ(page.rfind("</html>\n"), page.size() - 8);
+}
+
+}  // namespace
+}  // namespace dvpr::replay
