@@ -65,18 +65,33 @@ void WriteRunFile(const fs::path& out_dir, const RunFile& file) {
   if (!out.flush()) throw std::runtime_error((out_dir / rel).string() + ": cannot write");
 }
 
-// The run folders of ranks that were killed (SIGKILL, a crash) before removing theirs:
-// "dvpr-rank<r>-<pid>" whose process is gone.
+std::string HostName() {
+  char name[256] = {};
+  if (::gethostname(name, sizeof name - 1) != 0) return "host";
+  return name;
+}
+
+// "dvpr-rank<r>-<host>-<pid>": the host in the name, so a temporary folder shared by several
+// machines never has a live rank's folder taken for a dead one's.
+std::string RunFolderPrefix(int rank) { return "dvpr-rank" + std::to_string(rank) + "-" + HostName() + "-"; }
+
+bool AllDigits(const std::string& s) {
+  return !s.empty() && s.size() <= 9 && s.find_first_not_of("0123456789") == std::string::npos;
+}
+
+// The run folders of this machine's ranks that were killed (SIGKILL, a crash) before removing
+// theirs: "dvpr-rank<r>-<host>-<pid>" whose process is gone.
 void RemoveStaleRunFolders(const fs::path& temp) {
+  const std::string host = "-" + HostName() + "-";
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(temp, ec)) {
     const std::string name = entry.path().filename().string();
-    const std::size_t dash = name.rfind('-');
-    if (name.rfind("dvpr-rank", 0) != 0 || dash == std::string::npos || dash + 1 == name.size()) continue;
-    const std::string digits = name.substr(dash + 1);
-    if (digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
-    const auto pid = static_cast<pid_t>(std::stol(digits));
-    if (pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
+    const std::size_t at = name.find(host);
+    if (name.rfind("dvpr-rank", 0) != 0 || at == std::string::npos) continue;
+    const std::string rank = name.substr(9, at - 9), pid = name.substr(at + host.size());
+    if (!AllDigits(rank) || !AllDigits(pid)) continue;
+    const auto id = static_cast<pid_t>(std::stol(pid));
+    if (id == ::getpid() || ::kill(id, 0) == 0 || errno != ESRCH) continue;
     std::error_code ignored;
     fs::remove_all(entry.path(), ignored);
   }
@@ -87,8 +102,7 @@ void RemoveStaleRunFolders(const fs::path& temp) {
 MpiRunDistributor::MpiRunDistributor(const MpiWorld& world) : world_(world) {
   RemoveStaleRunFolders(fs::temp_directory_path());
   if (world.rank() == 0) return;
-  run_folder_ = fs::temp_directory_path() /
-                ("dvpr-rank" + std::to_string(world.rank()) + "-" + std::to_string(::getpid()));
+  run_folder_ = fs::temp_directory_path() / (RunFolderPrefix(world.rank()) + std::to_string(::getpid()));
   RemoveOnTermination(run_folder_);  // killed by the launcher, the rank leaves nothing behind
   fs::remove_all(run_folder_);       // one of this pid's earlier life
   fs::create_directories(run_folder_);

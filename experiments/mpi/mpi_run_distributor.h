@@ -24,7 +24,7 @@ namespace dvpr {
 class MpiRunDistributor final : public RunDistributor {
  public:
   // Ranks other than 0 create their run folder (in the system's temporary folder); every rank
-  // first removes those left there by killed ranks of earlier jobs.
+  // first removes those that killed ranks of earlier jobs on this machine left there.
   explicit MpiRunDistributor(const MpiWorld& world);
   ~MpiRunDistributor() override;
   MpiRunDistributor(const MpiRunDistributor&) = delete;
