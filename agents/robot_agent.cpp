@@ -1,9 +1,12 @@
 #include "agents/robot_agent.h"
 
 #include <algorithm>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
+
+#include "agents/verification_payload.h"
 
 namespace dvpr {
 
@@ -240,7 +243,9 @@ void RobotAgent::MaybeVerify(int k) {
   r.match_robot = static_cast<std::int16_t>(o.best->robot.value);
   r.match_frame = o.best->frame.value;
   r.payload_size = static_cast<std::int32_t>(params_.verification.request_bytes.value());
-  r.payload.assign(static_cast<std::size_t>(r.payload_size), 0);
+  const auto dim = static_cast<std::size_t>(frames_.descriptors->cols());
+  r.payload = VerificationPayload(o.frame, std::span<const float>(frames_.descriptors->row(o.frame.value).data(), dim),
+                                  static_cast<std::size_t>(r.payload_size));
   transport_.Publish(channels::VerifyRequest(o.best->robot), r);
 }
 
