@@ -37,7 +37,7 @@ TEST(StartTime, ReadsAUtcInstantWithOrWithoutFraction) {
 TEST(StartTime, RejectsOtherFormsNamingTheKeyAndValue) {
   const std::string range = "in [1970-01-01T00:00:00Z, 9999-12-31T23:59:59.999999Z], got ";
   EXPECT_EQ(ErrorOf("start_time: 2011-02-29T00:00:00Z\n"),
-            "test.yaml:1: start_time: expected a UTC instant YYYY-MM-DDTHH:MM:SS[.ffffff]Z " + range +
+            "test.yaml: start_time: expected a UTC instant YYYY-MM-DDTHH:MM:SS[.ffffff]Z " + range +
                 "'2011-02-29T00:00:00Z'");
   for (const std::string bad : {"2011-10-03 12:00:00", "2011-10-03T12:00:00+02:00", "2011-10-03", "1317643200",
                                 "1969-12-31T23:59:59Z", "2011-10-03T24:00:00Z", "2011-10-03T12:00:60Z",
