@@ -13,6 +13,9 @@ PACKAGES=(
   gnuplot-nox                                # figures
   python3 python3-numpy                      # independent cross-checks in the tests
   iproute2                                   # ip: loopback multicast for the LCM team tests
+  liblcm-java default-jdk-headless           # lcm.jar and javac: the Java types (dvpr_lcmtypes.jar)
+  libjchart2d-java                           # jchart2d.jar, which lcm-spy needs (README "LCM tools")
+  python3-matplotlib                         # scripts/examples/bytes_per_channel.py
 )
 
 missing=()
