@@ -54,7 +54,7 @@ bool LengthFieldFits(std::span<const std::uint8_t>) { return true; }
 
 template <>
 inline bool LengthFieldFits<query_t>(std::span<const std::uint8_t> buf) {
-  constexpr std::size_t kDimOffset = 8 + 8 + 2 + 4;  // fingerprint, utime, robot, frame
+  constexpr std::size_t kDimOffset = 8 + 8 + 2 + 4 + 8;  // fingerprint, utime, robot, frame, capture_utime
   const auto dim = ReadBigEndian(buf, kDimOffset, 2);
   if (!dim) return false;
   const auto room = (buf.size() - (kDimOffset + 2)) / sizeof(float);

@@ -10,8 +10,16 @@
 
 namespace dvpr {
 
+namespace {
+
+std::int64_t SystemUtime(std::chrono::system_clock::time_point t) {
+  return std::chrono::duration_cast<std::chrono::microseconds>(t.time_since_epoch()).count();
+}
+
+}  // namespace
+
 LcmTransport::LcmTransport(const std::string& url, double speedup)
-    : lcm_(url), speedup_(speedup), zero_(WallClock::now()) {
+    : lcm_(url), speedup_(speedup), zero_(WallClock::now()), zero_utime_(SystemUtime(std::chrono::system_clock::now())) {
   if (!(speedup > 0.0) || !std::isfinite(speedup)) {
     throw std::invalid_argument("LcmTransport: speedup must be a positive number");
   }
@@ -40,6 +48,11 @@ void LcmTransport::SetEpoch(std::chrono::system_clock::time_point epoch) {
   // steady_clock cannot be set, system_clock can: convert once, now.
   const auto from_now = epoch - std::chrono::system_clock::now();
   zero_ = WallClock::now() + std::chrono::duration_cast<WallClock::duration>(from_now);
+  zero_utime_ = SystemUtime(epoch);
+}
+
+std::int64_t LcmTransport::UtimeAt(SimTime t) const {
+  return zero_utime_ + std::llround(static_cast<double>(t.ns()) / speedup_ / 1000.0);
 }
 
 void LcmTransport::ScheduleAfter(SimTime delay, Callback fn) {

@@ -51,6 +51,8 @@ class LcmTransport final : public Transport {
   LcmTransport& operator=(const LcmTransport&) = delete;
 
   SimTime Now() const override;  // negative before the epoch
+  // The wall-clock instant of agent time t (epoch + t / speedup), microseconds since 1970.
+  std::int64_t UtimeAt(SimTime t) const override;
   void ScheduleAfter(SimTime delay, Callback fn) override;
 
   // Agent time 0 is the wall-clock instant `epoch` (may be in the future).
@@ -105,6 +107,7 @@ class LcmTransport final : public Transport {
   lcm::LCM lcm_;
   double speedup_;
   WallClock::time_point zero_;
+  std::int64_t zero_utime_;  // zero_ on the system clock, microseconds since the Unix epoch
   std::optional<WallClock::time_point> running_due_;  // due time of the timer being run
   std::priority_queue<Timer, std::vector<Timer>, std::greater<>> timers_;
   std::map<std::uint64_t, Callback> timer_callbacks_;

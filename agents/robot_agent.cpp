@@ -1,9 +1,12 @@
 #include "agents/robot_agent.h"
 
 #include <algorithm>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
+
+#include "agents/verification_payload.h"
 
 namespace dvpr {
 
@@ -94,9 +97,10 @@ void RobotAgent::PublishQuery(int k, const QueryPlan& plan) {
   const FrameId frame(frames_.first.value + k);
   const auto dim = static_cast<int>(frames_.descriptors->cols());
   query_t q;
-  q.utime = transport_.Now().us();
+  q.utime = transport_.Utime();
   q.robot = static_cast<std::int16_t>(id_.value);
   q.frame = frame.value;
+  q.capture_utime = transport_.UtimeAt(frames_.TimeOf(k));
   q.dim = static_cast<std::int16_t>(dim);
   const float* d = frames_.descriptors->row(frame.value).data();
   q.descriptor.assign(d, d + dim);
@@ -141,7 +145,7 @@ void RobotAgent::ServeSearch(Task task) {
       RecordReply(task.frame, best);
     } else {
       match_t m;
-      m.utime = transport_.Now().us();
+      m.utime = transport_.Utime();
       m.query_robot = static_cast<std::int16_t>(task.querier.value);
       m.query_frame = task.frame.value;
       m.responder = static_cast<std::int16_t>(id_.value);
@@ -166,7 +170,7 @@ void RobotAgent::ServeVerify(Task task) {
       outcomes_[static_cast<std::size_t>(LocalIndexOf(task.frame))].verify_accepted = verdict.accepted;
     } else {
       verify_result_t v;
-      v.utime = transport_.Now().us();
+      v.utime = transport_.Utime();
       v.query_robot = static_cast<std::int16_t>(task.querier.value);
       v.query_frame = task.frame.value;
       v.match_robot = static_cast<std::int16_t>(id_.value);
@@ -233,13 +237,15 @@ void RobotAgent::MaybeVerify(int k) {
     return;
   }
   verify_request_t r;
-  r.utime = transport_.Now().us();
+  r.utime = transport_.Utime();
   r.query_robot = static_cast<std::int16_t>(id_.value);
   r.query_frame = o.frame.value;
   r.match_robot = static_cast<std::int16_t>(o.best->robot.value);
   r.match_frame = o.best->frame.value;
   r.payload_size = static_cast<std::int32_t>(params_.verification.request_bytes.value());
-  r.payload.assign(static_cast<std::size_t>(r.payload_size), 0);
+  const auto dim = static_cast<std::size_t>(frames_.descriptors->cols());
+  r.payload = VerificationPayload(o.frame, std::span<const float>(frames_.descriptors->row(o.frame.value).data(), dim),
+                                  static_cast<std::size_t>(r.payload_size));
   transport_.Publish(channels::VerifyRequest(o.best->robot), r);
 }
 

@@ -6,7 +6,8 @@
 
 namespace dvpr {
 
-SimTransport::SimTransport(Network& network, NodeId node) : network_(network), node_(node) {
+SimTransport::SimTransport(Network& network, NodeId node, std::int64_t start_utime)
+    : network_(network), node_(node), start_utime_(start_utime) {
   network_.Attach(node_, this);
 }
 

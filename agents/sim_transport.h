@@ -19,8 +19,9 @@ namespace dvpr {
 
 class SimTransport final : public Transport, private NetworkEndpoint {
  public:
-  // Attaches to `network` as `node` (one transport per node).
-  SimTransport(Network& network, NodeId node);
+  // Attaches to `network` as `node` (one transport per node). start_utime: virtual time 0 as
+  // microseconds since the Unix epoch (the config's start_time), for the messages' utime.
+  SimTransport(Network& network, NodeId node, std::int64_t start_utime = 0);
   ~SimTransport() override;
   SimTransport(const SimTransport&) = delete;
   SimTransport& operator=(const SimTransport&) = delete;
@@ -29,6 +30,7 @@ class SimTransport final : public Transport, private NetworkEndpoint {
   RobotId robot() const { return RobotId(node_.value); }
 
   SimTime Now() const override;
+  std::int64_t UtimeAt(SimTime t) const override { return start_utime_ + t.us(); }
   void ScheduleAfter(SimTime delay, Callback fn) override;
 
  private:
@@ -49,6 +51,7 @@ class SimTransport final : public Transport, private NetworkEndpoint {
 
   Network& network_;
   NodeId node_;
+  std::int64_t start_utime_;
   std::deque<ChannelHandlers> by_channel_;  // indexed by ChannelId; deque: references stay valid
   std::unordered_map<std::uint64_t, ChannelId> subscriptions_;  // id -> channel
   std::vector<std::pair<const char*, MessageTypeId>> types_;  // getTypeName() pointers seen

@@ -69,6 +69,10 @@ class Transport {
 
   // The agent's clock: virtual time in simulation, time since start when real.
   virtual SimTime Now() const = 0;
+  // Agent time `t` as a message timestamp (utime): microseconds since the Unix epoch. In
+  // simulation the run's start instant + t; when real, the wall-clock instant of t.
+  virtual std::int64_t UtimeAt(SimTime t) const = 0;
+  std::int64_t Utime() const { return UtimeAt(Now()); }
   // Runs fn after delay (>= 0) on the agent's own thread of control.
   virtual void ScheduleAfter(SimTime delay, Callback fn) = 0;
 

@@ -15,6 +15,9 @@ PACKAGES=(
   iproute2                                   # ip: loopback multicast for the LCM team tests
   openmpi-bin libopenmpi-dev                 # mpirun -n K dvpr run (optional; CI tests it)
   chromium                                   # headless browser: the replay page's test (tests/replay)
+  liblcm-java default-jdk-headless           # lcm.jar and javac: the Java types (dvpr_lcmtypes.jar)
+  libjchart2d-java                           # jchart2d.jar, which lcm-spy needs (README "LCM tools")
+  python3-matplotlib                         # scripts/examples/bytes_per_channel.py
 )
 
 missing=()

@@ -27,7 +27,7 @@ ReclusterAgentRouting::ReclusterAgentRouting(const ReclusterPlan& plan) : plan_(
 
 descriptor_batch_t ReclusterAgentRouting::NewBatch(int epoch) const {
   descriptor_batch_t b;
-  b.utime = transport_->Now().us();
+  b.utime = transport_->Utime();
   b.epoch = epoch;
   b.sender = static_cast<std::int16_t>(self_.value);
   b.count = 0;
@@ -132,7 +132,7 @@ void ReclusterAgentRouting::LeaderCompute(int epoch, bool timed_out) {
 
 void ReclusterAgentRouting::PublishTable(std::shared_ptr<const CentroidTable> table, int epoch) {
   centroid_table_t msg;
-  msg.utime = transport_->Now().us();
+  msg.utime = transport_->Utime();
   msg.epoch = epoch;
   msg.leader = static_cast<std::int16_t>(self_.value);
   msg.k = static_cast<std::int16_t>(table->num_centroids());

@@ -62,7 +62,9 @@ Exit status:
   1  an input you can fix: a config key, a data or centroid file, the output folder;
      one line on stderr "dvpr: error: <file>: <key.path>: <problem>" (nothing is written
      when it is found before the run starts, as everything that can be checked is);
-     dvpr launch also when an agent did not exit cleanly (its results are written)
+     dvpr launch also when an agent did not exit cleanly: its first error line is
+     printed; the teams that ran are written, a team no agent of which ran has no
+     rows, and when none ran nothing is written
   2  usage: an unknown command or flag, a missing argument, a flag value that is not
      what the flag takes (e.g. --threads abc, --threads -3, --out '')
   3  internal error: a bug in dvpr, not in your input ("dvpr: internal error: ..."); please
@@ -72,7 +74,7 @@ Examples:
   dvpr run experiments/configs/paper_kitti00.yaml
   dvpr run experiments/configs/paper_kitti00.yaml --set runs=2 --set robots={from: 2, to: 6}
   dvpr launch --config experiments/configs/paper_kitti00.yaml --robots 4 --speedup 5 \
-              --set dataset.frames=600 --set evaluation.suppression_frames=50
+              --set dataset.frames=1700 --set evaluation.suppression_frames=50
   dvpr replay results/replay_demo
 )";
 

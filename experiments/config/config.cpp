@@ -12,6 +12,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "experiments/config/config_reader.h"
+#include "experiments/config/utc_instant.h"
 #include "experiments/config/yaml_check.h"
 #include "experiments/strategies/strategy_spec.h"
 
@@ -263,9 +264,16 @@ OutputsConfig ReadOutputs(const Field& f, const SweepConfig& sweep);
 
 namespace {
 
+std::int64_t ReadStartTime(const Field& f) {
+  const std::string s = f.String();
+  if (const auto utime = ParseUtcInstant(s)) return *utime;
+  f.Fail("expected a UTC instant YYYY-MM-DDTHH:MM:SS[.ffffff]Z in [" + FormatUtcInstant(kMinUtcInstant) + ", " +
+         FormatUtcInstant(kMaxUtcInstant) + "], got '" + s + "'");
+}
+
 ExperimentConfig ReadExperiment(const Field& root, const std::string& default_name) {
   if (!root.present()) root.Fail("the config is empty");
-  root.ExpectMap({"name", "seed", "dataset", "training", "robots", "runs", "protocols",
+  root.ExpectMap({"name", "seed", "start_time", "dataset", "training", "robots", "runs", "protocols",
                   "strategies", "evaluation", "network", "verification", "service", "dropout",
                   "outputs"});
   ExperimentConfig c;
@@ -281,6 +289,7 @@ ExperimentConfig ReadExperiment(const Field& root, const std::string& default_na
   if (auto f = root.Child("seed"); f.present()) {
     c.seed = static_cast<std::uint64_t>(f.Int(0, std::numeric_limits<long long>::max()));
   }
+  if (auto f = root.Child("start_time"); f.present()) c.start_utime = ReadStartTime(f);
   const Field dataset = root.Child("dataset");
   c.dataset = ReadDataset(dataset.present() ? dataset
                                             : Field(root.origin(), YAML::Node(YAML::NodeType::Map),

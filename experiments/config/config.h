@@ -120,9 +120,15 @@ struct OutputsConfig {
   bool operator==(const OutputsConfig&) const = default;
 };
 
+// Virtual time 0 of a simulated run as a message timestamp (utime, microseconds since the Unix
+// epoch): 2011-10-03T12:00:00Z, the day KITTI 00 was recorded. A fixed instant, not the wall
+// clock, so a config gives the same event log every time.
+inline constexpr std::int64_t kDefaultStartUtime = 1317643200000000;
+
 struct ExperimentConfig {
   std::string name = "experiment";
   std::uint64_t seed = 1;
+  std::int64_t start_utime = kDefaultStartUtime;  // YAML: start_time (utc_instant.h)
   DatasetConfig dataset;
   TrainingConfig training;
   SweepConfig sweep;               // YAML: top-level robots, runs, protocols, strategies

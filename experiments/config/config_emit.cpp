@@ -7,6 +7,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "experiments/config/config.h"
+#include "experiments/config/utc_instant.h"
 
 namespace dvpr {
 
@@ -159,6 +160,7 @@ std::string EmitConfig(const ExperimentConfig& c) {
   out << YAML::BeginMap;
   out << YAML::Key << "name" << YAML::Value << c.name;
   out << YAML::Key << "seed" << YAML::Value << c.seed;
+  out << YAML::Key << "start_time" << YAML::Value << FormatUtcInstant(c.start_utime);
   EmitDataset(out, c.dataset);
   EmitTraining(out, c.training);
   EmitSweep(out, c.sweep);

@@ -18,6 +18,7 @@ query_t MakeQuery(int dim) {
   q.utime = 1234567;
   q.robot = 7;
   q.frame = 4540;
+  q.capture_utime = 1317643200000000;
   q.dim = static_cast<std::int16_t>(dim);
   q.descriptor.resize(dim);
   for (int i = 0; i < dim; ++i) q.descriptor[i] = 0.25f * static_cast<float>(i) - 3.0f;
@@ -62,9 +63,9 @@ verify_result_t MakeVerifyResult() {
   return v;
 }
 
-TEST(MessageSize, QueryWith128FloatsIs536Bytes) {
-  // fingerprint 8 + utime 8 + robot 2 + frame 4 + dim 2 + 128 x 4 = 536
-  EXPECT_EQ(Encode(MakeQuery(128)).size(), 536u);
+TEST(MessageSize, QueryWith128FloatsIs544Bytes) {
+  // fingerprint 8 + utime 8 + robot 2 + frame 4 + capture_utime 8 + dim 2 + 128 x 4 = 544
+  EXPECT_EQ(Encode(MakeQuery(128)).size(), 544u);
 }
 
 TEST(MessageSize, MatchIs35Bytes) {
@@ -149,6 +150,7 @@ TEST(MessageRoundTrip, QueryEmptyTypicalAndMaximal) {
     EXPECT_EQ(out.utime, in.utime);
     EXPECT_EQ(out.robot, in.robot);
     EXPECT_EQ(out.frame, in.frame);
+    EXPECT_EQ(out.capture_utime, in.capture_utime);
     EXPECT_EQ(out.dim, dim);
     EXPECT_EQ(out.descriptor, in.descriptor) << "dim " << dim;
   }
@@ -222,7 +224,7 @@ TEST(MessageDecode, GarbageLengthFieldDoesNotAllocate) {
   bytes[size_offset + 1] = bytes[size_offset + 2] = bytes[size_offset + 3] = 0xff;
   EXPECT_FALSE(Decode<verify_request_t>(bytes).has_value());
   auto q = Encode(MakeQuery(4));
-  q[22] = 0x80;  // dim = -32768 + ...: negative
+  q[30] = 0x80;  // dim (after fingerprint 8, utime 8, robot 2, frame 4, capture_utime 8) negative
   EXPECT_FALSE(Decode<query_t>(q).has_value());
 }
 

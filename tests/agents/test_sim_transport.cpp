@@ -14,13 +14,13 @@ namespace dvpr {
 namespace {
 
 // Three robots on 1 Mbit/s, 5 ms point-to-point links.
-//  query_t with 128 floats: 8 + 8 + 2 + 4 + 2 + 512 = 536 bytes; on
-//  "DVPR_QUERY_ALL" (14 chars): UDP 8 + 15 + 536 = 559, frame 559 + 28 + 2 = 589
-//  bytes = 4712 bits -> 4.712 ms + 5 ms = 9.712 ms.
+//  query_t with 128 floats: 8 + 8 + 2 + 4 + 8 + 2 + 512 = 544 bytes; on
+//  "DVPR_QUERY_ALL" (14 chars): UDP 8 + 15 + 544 = 567, frame 567 + 28 + 2 = 597
+//  bytes = 4776 bits -> 4.776 ms + 5 ms = 9.776 ms.
 //  match_t: 8 + 8 + 2 + 4 + 2 + 1 + 2 + 4 + 4 = 35 bytes; on "DVPR_MATCH_0"
 //  (12 chars): UDP 8 + 13 + 35 = 56, frame 86 bytes -> 0.688 ms + 5 ms = 5.688 ms.
-constexpr SimTime kQueryArrival = SimTime::Micros(9712);
-constexpr SimTime kMatchArrival = SimTime::Micros(9712 + 5688);
+constexpr SimTime kQueryArrival = SimTime::Micros(9776);
+constexpr SimTime kMatchArrival = SimTime::Micros(9776 + 5688);
 
 class SimTransportTest : public ::testing::Test {
  protected:
@@ -66,12 +66,12 @@ TEST_F(SimTransportTest, QueryAndRepliesArriveAtHandWorkedTimes) {
   auto sub = robots[0]->Subscribe<match_t>(channels::Match(RobotId(0)), [&](const match_t& m) {
     matches.emplace_back(robots[0]->Now(), m.responder);
   });
-  EXPECT_EQ(robots[0]->Publish(channels::kQueryAll, Query(0, 17)), 536u);
+  EXPECT_EQ(robots[0]->Publish(channels::kQueryAll, Query(0, 17)), 544u);
   sim.Run();
   ASSERT_EQ(matches.size(), 2u);
   EXPECT_EQ(matches[0], std::make_pair(kMatchArrival, 1));
   EXPECT_EQ(matches[1], std::make_pair(kMatchArrival, 2));
-  EXPECT_EQ(net.Counters(NodeId(0), NodeId(1)).wire_bytes, 589);
+  EXPECT_EQ(net.Counters(NodeId(0), NodeId(1)).wire_bytes, 597);
   EXPECT_EQ(net.Counters(NodeId(2), NodeId(0)).wire_bytes, 86);
 }
 

@@ -21,13 +21,13 @@ TEST(WireFormat, UdpPayloadOf517BytesIsA547BytePppFrame) {
 
 TEST(WireFormat, QueryOnTheBroadcastChannel) {
   // A query_t with a 128-float descriptor encodes to 8 (fingerprint) + 8 + 2
-  // + 4 + 2 + 512 = 536 bytes. On "DVPR_QUERY_ALL" (14 characters):
-  // LCM datagram 8 + 14 + 1 + 536 = 559; IP 559 + 28 = 587; PPP 589.
-  const WireFootprint fp = ComputeWireFootprint(Bytes(536), 14, WireParams{});
+  // + 4 + 8 + 2 + 512 = 544 bytes. On "DVPR_QUERY_ALL" (14 characters):
+  // LCM datagram 8 + 14 + 1 + 544 = 567; IP 567 + 28 = 595; PPP 597.
+  const WireFootprint fp = ComputeWireFootprint(Bytes(544), 14, WireParams{});
   EXPECT_EQ(fp.lcm_datagrams, 1);
-  EXPECT_EQ(fp.udp_payload_bytes, Bytes(559));
+  EXPECT_EQ(fp.udp_payload_bytes, Bytes(567));
   EXPECT_EQ(fp.ip_packets, 1);
-  EXPECT_EQ(fp.wire_bytes, Bytes(589));
+  EXPECT_EQ(fp.wire_bytes, Bytes(597));
 }
 
 TEST(WireFormat, ThirtyKilobyteMessageIsIpFragmented) {

@@ -285,12 +285,13 @@ AgentLog MakeLog(const AgentProcessOptions& o, const Team& t, const RobotAgent& 
 
 int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   o.Validate();
+  // LCM first: an agent that cannot talk fails at once, before minutes of loading and k-means.
+  LcmTransport transport(o.lcm_url, o.speedup);
   const Team t = LoadTeam(o);
   const Dataset& data = t.inputs.deployment;
   const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), t.robots);
   const FrameRange range = split.ranges.at(static_cast<std::size_t>(o.robot));
 
-  LcmTransport transport(o.lcm_url, o.speedup);
   TrafficCounters traffic{o.robot, WireParams{}, std::vector<AgentLinkCount>(static_cast<std::size_t>(t.robots)),
                           std::vector<std::int64_t>(static_cast<std::size_t>(t.robots), 0), 0,
                           static_cast<int>(data.size()), 0};

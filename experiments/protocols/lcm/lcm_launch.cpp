@@ -5,9 +5,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -15,6 +18,7 @@
 #include "experiments/protocols/lcm/agent_process.h"
 #include "experiments/protocols/inputs.h"
 #include "experiments/config/option_reader.h"
+#include "experiments/results/result_folder.h"
 #include "experiments/results/result_writers.h"
 #include "experiments/protocols/sim/sim_protocol.h"
 #include "experiments/data/split.h"
@@ -217,72 +221,96 @@ GatheredRun GatherTeam(const ExperimentConfig& config, const SharedInputs& input
   return g;
 }
 
-int RunLaunch(const LaunchOptions& o, std::ostream& out) {
-  o.Validate();
-  const ExperimentConfig config = LoadConfig(o.config, o.overrides);
-  const auto dir = o.out.empty() ? std::filesystem::path("results") / (config.name + "_lcm") : o.out;
-  CreateOutputDir(dir / "agents");
-  // Broadcast first: its AUC is every strategy's reference.
-  std::vector<StrategySpec> strategies = config.sweep.strategies;
-  std::stable_partition(strategies.begin(), strategies.end(), [](const StrategySpec& s) { return s.broadcast(); });
+namespace {
 
-  struct Team { std::string strategy; std::vector<Child> children; };
-  std::vector<Team> teams;
-  for (const StrategySpec& spec : strategies) {
-    const std::string& strategy = spec.name;
-    Team team{strategy, {}};
-    for (int r = 0; r < o.robots; ++r) {
-      const auto stem = dir / "agents" / (strategy + "_robot" + std::to_string(r));
-      const auto log = std::filesystem::path(stem.string() + ".log");
-      std::filesystem::remove(log);  // a stale log must not pass for this run's
-      team.children.push_back(Child{r, Spawn(AgentArgv(o, strategy, r, log), stem.string() + ".out")});
-    }
-    out << "launch: " << strategy << ": " << o.robots << " agents started\n" << std::flush;
-    // The frames' wall time, plus the agents' grace, plus start-up and barrier.
-    const int frames = config.dataset.frames.value_or(1 << 20);
-    const double timeout_s = o.timeout_s > 0 ? o.timeout_s
-                                             : (frames / o.robots + 1) / config.dataset.fps / o.speedup + o.grace_s + 120;
-    WaitAll(team.children, std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(timeout_s)));
-    teams.push_back(std::move(team));
-  }
+struct Team {
+  std::string strategy;
+  std::vector<Child> children;
+};
 
-  SharedInputs inputs = LoadSharedInputs(config, o.config.string());
-  inputs.config = &config;
-  RunOutput all;
-  std::ostringstream agents_csv;
-  agents_csv << "strategy,robot,exit,log,queries,incomplete\n";
-  double reference_auc = kNotApplicable;
-  bool clean = true;
-  for (const Team& team : teams) {
-    std::vector<std::optional<AgentLog>> logs(static_cast<std::size_t>(o.robots));
-    for (const Child& c : team.children) {
-      const auto path = dir / "agents" / (team.strategy + "_robot" + std::to_string(c.robot) + ".log");
-      const bool ok = WIFEXITED(c.status) && WEXITSTATUS(c.status) == 0 && !c.killed_at_timeout;
-      if (ok && std::filesystem::exists(path)) logs[static_cast<std::size_t>(c.robot)] = ReadAgentLog(path);
-      clean = clean && ok;
-      std::int64_t incomplete = 0;
-      if (const auto& l = logs[static_cast<std::size_t>(c.robot)]) {
-        for (const auto& q : l->queries) incomplete += q.Complete() ? 0 : 1;
-      }
-      const auto& l = logs[static_cast<std::size_t>(c.robot)];
-      agents_csv << team.strategy << ',' << c.robot << ',' << Describe(c) << ',' << (l ? path.filename().string() : "")
-                 << ',' << (l ? std::to_string(l->queries.size()) : "") << ',' << (l ? std::to_string(incomplete) : "") << '\n';
-      if (!ok) out << "launch: " << team.strategy << " robot " << c.robot << ": " << Describe(c) << " (see "
-                   << (dir / "agents" / (team.strategy + "_robot" + std::to_string(c.robot) + ".out")).string() << ")\n";
-    }
-    GatheredRun g = GatherTeam(config, inputs, team.strategy, o.robots, o.run, logs, reference_auc);
-    if (team.strategy == "broadcast") {
-      reference_auc = g.auc;
-      g.rows.runs.front().auc_reference = g.auc;
-      g.rows.runs.front().relative_auc = 1.0;
-    }
-    out << "launch: " << team.strategy << ": " << g.queries << " queries, " << g.incomplete
-        << " with a reply missing, auc " << FormatDouble(g.auc, 4) << "\n";
-    for (auto& r : g.rows.runs) all.runs.push_back(r);
-    all.per_robot.insert(all.per_robot.end(), g.rows.per_robot.begin(), g.rows.per_robot.end());
-    all.links.insert(all.links.end(), g.rows.links.begin(), g.rows.links.end());
-    all.queries.insert(all.queries.end(), g.rows.queries.begin(), g.rows.queries.end());
+std::filesystem::path AgentFile(const std::filesystem::path& dir, const std::string& strategy, int robot,
+                                const char* ext) {
+  return dir / "agents" / (strategy + "_robot" + std::to_string(robot) + ext);
+}
+
+// Starts one agent per robot for `strategy` and waits for them (killing the ones still running
+// at the timeout).
+Team RunTeam(const LaunchOptions& o, const ExperimentConfig& config, const std::string& strategy,
+             const std::filesystem::path& dir, std::ostream& out) {
+  Team team{strategy, {}};
+  for (int r = 0; r < o.robots; ++r) {
+    const auto log = AgentFile(dir, strategy, r, ".log");
+    std::filesystem::remove(log);  // a stale log must not pass for this run's
+    team.children.push_back(Child{r, Spawn(AgentArgv(o, strategy, r, log), AgentFile(dir, strategy, r, ".out"))});
   }
+  out << "launch: " << strategy << ": " << o.robots << " agents started\n" << std::flush;
+  // The frames' wall time, plus the agents' grace, plus start-up and barrier.
+  const int frames = config.dataset.frames.value_or(1 << 20);
+  const double timeout_s =
+      o.timeout_s > 0 ? o.timeout_s : (frames / o.robots + 1) / config.dataset.fps / o.speedup + o.grace_s + 120;
+  WaitAll(team.children,
+          std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(timeout_s)));
+  return team;
+}
+
+// Why an agent failed, in one line: the first line of its output that names an error (dvpr's
+// own "dvpr: error: ..." or the LCM library's, which comes first when LCM cannot open), else
+// its last line, else nothing.
+std::string FirstErrorLine(const std::filesystem::path& output) {
+  std::ifstream in(output);
+  std::string line, last;
+  while (std::getline(in, line)) {
+    std::string lower = line;
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (lower.find("error") != std::string::npos) return line;
+    if (!line.empty()) last = line;
+  }
+  return last;
+}
+
+struct TeamLogs {
+  std::vector<std::optional<AgentLog>> logs;
+  bool clean = true;  // every agent exited 0 and left its log
+  bool ran = false;   // at least one agent left a log: the team ran and has rows
+};
+
+// Reads the team's logs, lists each agent in agents.csv and prints why each failed one failed.
+TeamLogs CollectTeam(const Team& team, int robots, const std::filesystem::path& dir, std::ostream& agents_csv,
+                     std::ostream& out) {
+  TeamLogs t;
+  t.logs.resize(static_cast<std::size_t>(robots));
+  for (const Child& c : team.children) {
+    const auto path = AgentFile(dir, team.strategy, c.robot, ".log");
+    auto& l = t.logs[static_cast<std::size_t>(c.robot)];
+    const bool ok = WIFEXITED(c.status) && WEXITSTATUS(c.status) == 0 && !c.killed_at_timeout;
+    if (ok && std::filesystem::exists(path)) l = ReadAgentLog(path);
+    t.clean = t.clean && ok && l.has_value();
+    t.ran = t.ran || l.has_value();
+    std::int64_t incomplete = 0;
+    if (l) {
+      for (const auto& q : l->queries) incomplete += q.Complete() ? 0 : 1;
+    }
+    agents_csv << team.strategy << ',' << c.robot << ',' << Describe(c) << ',' << (l ? path.filename().string() : "")
+               << ',' << (l ? std::to_string(l->queries.size()) : "") << ',' << (l ? std::to_string(incomplete) : "")
+               << '\n';
+    if (!ok) {
+      const std::string why = FirstErrorLine(AgentFile(dir, team.strategy, c.robot, ".out"));
+      out << "launch: " << team.strategy << " robot " << c.robot << ": " << Describe(c)
+          << (why.empty() ? std::string() : ": " + why) << "\n";
+    }
+  }
+  return t;
+}
+
+void Append(RunOutput& all, const RunOutput& rows) {
+  all.runs.insert(all.runs.end(), rows.runs.begin(), rows.runs.end());
+  all.per_robot.insert(all.per_robot.end(), rows.per_robot.begin(), rows.per_robot.end());
+  all.links.insert(all.links.end(), rows.links.begin(), rows.links.end());
+  all.queries.insert(all.queries.end(), rows.queries.begin(), rows.queries.end());
+}
+
+void WriteLaunchFiles(const std::filesystem::path& dir, const ExperimentConfig& config, const RunOutput& all,
+                      const std::string& agents_csv) {
   WriteFileAtomic(dir / "config.yaml", EmitConfig(config));
   WriteRunsCsv(dir / "runs.csv", all.runs);
   auto write = [&](const char* name, const char* header, const auto& rows) {
@@ -293,9 +321,57 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
   write("per_robot.csv", kPerRobotHeader, all.per_robot);
   write("links.csv", kLinksHeader, all.links);
   if (config.outputs.queries) write("queries.csv", kQueriesHeader, all.queries);
-  WriteFileAtomic(dir / "agents.csv", agents_csv.str());
+  WriteFileAtomic(dir / "agents.csv", agents_csv);
   WriteFileAtomic(dir / "summary.json", SummaryJson(all.runs));
-  out << "results in " << dir.string() << "\n";
+}
+
+}  // namespace
+
+int RunLaunch(const LaunchOptions& o, std::ostream& out) {
+  o.Validate();
+  const ExperimentConfig config = LoadConfig(o.config, o.overrides);
+  const auto target = o.out.empty() ? std::filesystem::path("results") / (config.name + "_lcm") : o.out;
+  // Agents write into the temporary folder; the target appears only if some team ran.
+  ResultFolder folder(target);
+  const std::filesystem::path dir = folder.dir();
+  CreateOutputDir(dir / "agents");
+  // Broadcast first: its AUC is every strategy's reference.
+  std::vector<StrategySpec> strategies = config.sweep.strategies;
+  std::stable_partition(strategies.begin(), strategies.end(), [](const StrategySpec& s) { return s.broadcast(); });
+  std::vector<Team> teams;
+  for (const StrategySpec& spec : strategies) teams.push_back(RunTeam(o, config, spec.name, dir, out));
+
+  SharedInputs inputs = LoadSharedInputs(config, o.config.string());
+  inputs.config = &config;
+  RunOutput all;
+  std::ostringstream agents_csv;
+  agents_csv << "strategy,robot,exit,log,queries,incomplete\n";
+  double reference_auc = kNotApplicable;
+  bool clean = true;
+  for (const Team& team : teams) {
+    const TeamLogs t = CollectTeam(team, o.robots, dir, agents_csv, out);
+    clean = clean && t.clean;
+    if (!t.ran) {  // no agent left a log: rows of zeros would pass for a run
+      out << "launch: " << team.strategy << ": no agent ran, no rows written\n";
+      continue;
+    }
+    GatheredRun g = GatherTeam(config, inputs, team.strategy, o.robots, o.run, t.logs, reference_auc);
+    if (team.strategy == "broadcast") {
+      reference_auc = g.auc;
+      g.rows.runs.front().auc_reference = g.auc;
+      g.rows.runs.front().relative_auc = 1.0;
+    }
+    out << "launch: " << team.strategy << ": " << g.queries << " queries, " << g.incomplete
+        << " with a reply missing, auc " << FormatDouble(g.auc, 4) << "\n";
+    Append(all, g.rows);
+  }
+  if (all.runs.empty()) {
+    out << "launch: no team ran; nothing written to " << target.string() << "\n";
+    return 1;  // the folder's destructor removes the temporary folder
+  }
+  WriteLaunchFiles(dir, config, all, agents_csv.str());
+  folder.Commit();
+  out << "results in " << target.string() << "\n";
   return clean ? 0 : 1;
 }
 

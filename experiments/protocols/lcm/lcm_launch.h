@@ -41,8 +41,12 @@ struct LaunchOptions {
 
 LaunchOptions ParseLaunchArgs(const std::vector<std::string>& args);
 
-// Runs every strategy's team, writes the output folder. Returns 0 when every
-// agent exited cleanly, 1 when some did not (the results are written anyway).
+// Runs every strategy's team, writes the output folder as one transaction
+// (result_folder.h). An agent that fails is reported on `out` with the first
+// error line of its output. A team none of whose agents left a log never ran:
+// it gets no rows (rows of zeros would pass for a run). Returns 0 when every
+// agent exited cleanly, 1 when some did not (the rows of the teams that ran
+// are written anyway); when no team ran, nothing is written at all.
 int RunLaunch(const LaunchOptions& options, std::ostream& out);
 
 // One strategy's team, as gathered: logs[r] empty when robot r left none.

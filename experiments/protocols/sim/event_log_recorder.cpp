@@ -7,7 +7,7 @@ void EventLogRecorder::OnDelivered(const MessageCopy& copy, SimTime at) {
   if (message >= logged_.size()) logged_.resize(message + 1, false);
   if (logged_[message]) return;  // a broadcast is logged once, not per receiver
   logged_[message] = true;
-  writer_.Write(at.us(), copy.channel_name, copy.payload);
+  writer_.Write(start_utime_ + at.us(), copy.channel_name, copy.payload);
 }
 
 }  // namespace dvpr

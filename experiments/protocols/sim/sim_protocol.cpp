@@ -28,6 +28,7 @@ SimRunParams ToSimParams(const ExperimentConfig& c, const RunSpec& spec) {
     if (d.robot < spec.robots) p.dropouts.push_back({RobotId(d.robot), d.at});
   }
   p.record_messages = c.outputs.messages;
+  p.start_utime = c.start_utime;
   return p;
 }
 

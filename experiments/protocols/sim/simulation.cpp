@@ -41,7 +41,7 @@ struct NetworkRecorders {
     if (params.record_messages) rows_subscription = network.Subscribe(rows);
     if (!params.lcm_log.empty()) {
       event_log_file = std::make_unique<LcmEventLogWriter>(params.lcm_log);
-      event_log = std::make_unique<EventLogRecorder>(*event_log_file);
+      event_log = std::make_unique<EventLogRecorder>(*event_log_file, params.start_utime);
       event_log_subscription = network.Subscribe(*event_log);
     }
   }
@@ -76,7 +76,7 @@ SimRunLog RunSimulation(const Dataset& data, const TeamRouting& routing, const S
     const FrameRange range = split.ranges[static_cast<std::size_t>(r)];
     FrameStream frames{&data.descriptors, range.begin, range.size(), data.fps};
     for (int k = 0; k < range.size(); ++k) log.capture_time[static_cast<std::size_t>(range.begin.value + k)] = frames.TimeOf(k);
-    transports.push_back(std::make_unique<SimTransport>(network, NodeId(r)));
+    transports.push_back(std::make_unique<SimTransport>(network, NodeId(r), params.start_utime));
     agents.push_back(std::make_unique<RobotAgent>(RobotId(r), params.agent, *transports.back(),
                                                   routing.MakeAgentRouting(), frames, verifier));
   }

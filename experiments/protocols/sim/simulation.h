@@ -31,6 +31,7 @@ struct SimRunParams {
   std::vector<RobotDropout> dropouts;
   bool record_messages = false;           // keep one MessageRow per message and destination
   std::filesystem::path lcm_log;          // non-empty: write every delivered message there
+  std::int64_t start_utime = 0;           // virtual time 0 in microseconds since 1970 (messages' utime)
   void Validate(const Dataset& data) const;
 };
 

@@ -143,5 +143,16 @@ TEST_F(LcmTransportTest, DeliversCountsGarbageAndKeepsTimersOnSchedule) {
   EXPECT_TRUE(after_epoch);
 }
 
+// utime is the wall clock: agent time t after the epoch is the epoch + t / speedup, in
+// microseconds since 1970 (2 s of agent time at speedup 4 is 0.5 s of wall time).
+TEST_F(LcmTransportTest, UtimeIsTheEpochPlusAgentTimeOverSpeedup) {
+  LcmTransport t(Url(7712), 4.0);
+  constexpr std::int64_t kEpoch = 1317643200000000;  // 2011-10-03T12:00:00Z
+  t.SetEpoch(std::chrono::system_clock::time_point(std::chrono::microseconds(kEpoch)));
+  EXPECT_EQ(t.UtimeAt(SimTime::Zero()), kEpoch);
+  EXPECT_EQ(t.UtimeAt(SimTime::Seconds(2.0)), kEpoch + 500000);
+  EXPECT_EQ(t.UtimeAt(SimTime::Micros(-8)), kEpoch - 2);
+}
+
 }  // namespace
 }  // namespace dvpr

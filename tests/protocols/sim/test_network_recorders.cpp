@@ -97,12 +97,15 @@ TEST(MessageRowRecorder, NamesComeBackWhateverOrderTheIdsAppearIn) {
 }
 
 // Three robots on 1 Mbit/s, 5 ms links (as tests/agents/test_sim_transport.cpp):
-//  query_t with 128 floats is 536 bytes; on "DVPR_QUERY_ALL" (14 chars): UDP
-//  8 + 15 + 536 = 559, frame 589 bytes -> 4.712 ms + 5 ms = 9.712 ms.
+//  query_t with 128 floats is 544 bytes; on "DVPR_QUERY_ALL" (14 chars): UDP
+//  8 + 15 + 544 = 567, frame 597 bytes -> 4.776 ms + 5 ms = 9.776 ms.
 //  match_t is 35 bytes; on "DVPR_MATCH_0" (12 chars): UDP 8 + 13 + 35 = 56,
 //  frame 86 bytes -> 0.688 ms + 5 ms = 5.688 ms.
-constexpr SimTime kQueryArrival = SimTime::Micros(9712);
-constexpr SimTime kMatchArrival = SimTime::Micros(9712 + 5688);
+constexpr SimTime kQueryArrival = SimTime::Micros(9776);
+constexpr SimTime kMatchArrival = SimTime::Micros(9776 + 5688);
+// Virtual time 0 as a timestamp: 2011-10-03T12:00:00Z (python3: datetime(2011, 10, 3, 12,
+// tzinfo=timezone.utc).timestamp() * 1e6).
+constexpr std::int64_t kStartUtime = 1317643200000000;
 
 query_t Query(int robot, int frame) {
   query_t q{};
@@ -115,7 +118,8 @@ query_t Query(int robot, int frame) {
 
 // Robot 0 broadcasts a query, robots 1 and 2 answer it: the log holds the
 // query once (not once per receiver) and both matches, at their first
-// delivery, and each event decodes into its type.
+// delivery, stamped with the run's start instant + virtual time, and each
+// event decodes into its type.
 TEST(EventLogRecorder, LogsEachMessageOnceAtItsFirstDelivery) {
   const std::filesystem::path path = std::filesystem::path(DVPR_TEST_TMP) / "event_log_recorder.lcmlog";
   std::filesystem::create_directories(path.parent_path());
@@ -137,7 +141,7 @@ TEST(EventLogRecorder, LogsEachMessageOnceAtItsFirstDelivery) {
     }
     subs.push_back(robots[0]->Subscribe<match_t>(channels::Match(RobotId(0)), [](const match_t&) {}));
     LcmEventLogWriter writer(path);
-    EventLogRecorder recorder(writer);
+    EventLogRecorder recorder(writer, kStartUtime);
     const ObserverSubscription subscription = net.Subscribe(recorder);
     robots[0]->Publish(channels::kQueryAll, Query(0, 17));
     sim.Run();
@@ -169,9 +173,9 @@ TEST(EventLogRecorder, LogsEachMessageOnceAtItsFirstDelivery) {
   EXPECT_EQ(queries, 1);
   EXPECT_EQ(matches, 2);
   ASSERT_EQ(seen.size(), 3u);
-  EXPECT_EQ(seen[0], std::make_pair(std::string("DVPR_QUERY_ALL"), kQueryArrival.us()));
-  EXPECT_EQ(seen[1], std::make_pair(std::string("DVPR_MATCH_0"), kMatchArrival.us()));
-  EXPECT_EQ(seen[2], std::make_pair(std::string("DVPR_MATCH_0"), kMatchArrival.us()));
+  EXPECT_EQ(seen[0], std::make_pair(std::string("DVPR_QUERY_ALL"), kStartUtime + 9776));
+  EXPECT_EQ(seen[1], std::make_pair(std::string("DVPR_MATCH_0"), kStartUtime + 9776 + 5688));
+  EXPECT_EQ(seen[2], std::make_pair(std::string("DVPR_MATCH_0"), kStartUtime + 9776 + 5688));
 }
 
 }  // namespace

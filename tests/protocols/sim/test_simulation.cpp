@@ -105,8 +105,8 @@ TEST(SimulationHandRouted, DecentralizedSendsOneQueryAndOneReplyPerRemoteFrame) 
   EXPECT_EQ(log.queries.size(), 240u);
   std::map<std::pair<int, int>, int> queries;  // (src, dst) -> query_t messages
   for (const auto& m : log.messages) {
-    // query_t with 16 floats: 8 fingerprint + 8 + 2 + 4 + 2 + 64 = 88; match_t: 35 (see test_messages).
-    EXPECT_EQ(m.payload_bytes, m.type == "query_t" ? 88 : 35);
+    // query_t with 16 floats: 8 fingerprint + 8 + 2 + 4 + 8 + 2 + 64 = 96; match_t: 35 (see test_messages).
+    EXPECT_EQ(m.payload_bytes, m.type == "query_t" ? 96 : 35);
     EXPECT_FALSE(m.dropped);
     EXPECT_EQ(m.delivered_ns, m.sent_ns);  // ideal network: no delay
     if (m.type == "query_t") ++queries[{m.src, m.dst}];

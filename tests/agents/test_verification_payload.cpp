@@ -1,0 +1,41 @@
+// The verification request's payload: bytes derived from the frame (id and descriptor), not zeros.
+// Expected bytes from an independent implementation in python3 (struct, 64-bit FNV-1a over
+// pack('<i', frame) + pack('<2f', *descriptor), then SplitMix64 words packed '<Q'):
+//   frame 3, (1.0, 2.0): 5d 09 d1 99 ea 69 0a aa b7 e0 c0 ce
+//   frame 4, (1.0, 2.0): 77 5f 7b 0a d2 13 44 ea 74 ad ca 14
+//   frame 3, (1.0, 2.5): a2 44 d4 7a 86 95 37 e2 e1 5b 47 5c
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "agents/verification_payload.h"
+
+namespace dvpr {
+namespace {
+
+using Bytes12 = std::vector<std::uint8_t>;
+
+TEST(VerificationPayload, BytesComeFromTheFrameIdAndDescriptor) {
+  const std::array<float, 2> d{1.0f, 2.0f}, other{1.0f, 2.5f};
+  EXPECT_EQ(VerificationPayload(FrameId(3), d, 12),
+            (Bytes12{0x5d, 0x09, 0xd1, 0x99, 0xea, 0x69, 0x0a, 0xaa, 0xb7, 0xe0, 0xc0, 0xce}));
+  EXPECT_EQ(VerificationPayload(FrameId(4), d, 12),
+            (Bytes12{0x77, 0x5f, 0x7b, 0x0a, 0xd2, 0x13, 0x44, 0xea, 0x74, 0xad, 0xca, 0x14}));
+  EXPECT_EQ(VerificationPayload(FrameId(3), other, 12),
+            (Bytes12{0xa2, 0x44, 0xd4, 0x7a, 0x86, 0x95, 0x37, 0xe2, 0xe1, 0x5b, 0x47, 0x5c}));
+}
+
+TEST(VerificationPayload, HasTheRequestedSizeAndALongerOneExtendsAShorter) {
+  const std::array<float, 2> d{1.0f, 2.0f};
+  for (std::size_t size : {0u, 1u, 7u, 8u, 9u, 25000u}) EXPECT_EQ(VerificationPayload(FrameId(3), d, size).size(), size);
+  const auto longer = VerificationPayload(FrameId(3), d, 25000);
+  const auto shorter = VerificationPayload(FrameId(3), d, 12);
+  EXPECT_TRUE(std::equal(shorter.begin(), shorter.end(), longer.begin()));
+  // Not zeros: of 25000 bytes from a 64-bit mixer, each value 0..255 appears about 98 times.
+  EXPECT_LT(std::count(longer.begin(), longer.end(), 0), 200);
+}
+
+}  // namespace
+}  // namespace dvpr

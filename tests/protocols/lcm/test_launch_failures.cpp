@@ -1,0 +1,101 @@
+// `dvpr launch` when agents fail to start: each failed agent's first error line is printed, a team
+// that never ran gets no rows, and launch exits 1. When no team ran, no result folder appears
+// (not even a half-written one); when one strategy's agents all fail, only the teams that ran have
+// rows.
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "lcm_test_support.h"
+
+namespace dvpr {
+namespace {
+
+using namespace lcm_test;
+
+std::string ReadText(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<std::string> LaunchArgv(const std::string& lcm_url, const fs::path& out) {
+  std::vector<std::string> a{Dvpr(),    "launch",  "--config", ConfigPath(), "--robots", "2", "--speedup", "10",
+                             "--lcm",   lcm_url,   "--out",    out.string(), "--timeout", "120", "--grace", "5"};
+  for (const auto& s : SmallConfigSets()) {
+    a.push_back("--set");
+    a.push_back(s);
+  }
+  return a;
+}
+
+// Everything in `dir` whose name starts with `prefix` (temporary result folders are ".<name>.tmp-<pid>").
+std::vector<std::string> NamesStartingWith(const fs::path& dir, const std::string& prefix) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind(prefix, 0) == 0) names.push_back(name);
+  }
+  return names;
+}
+
+// An LCM provider that does not exist: lcm_create fails in every agent, whatever the network.
+TEST(LaunchFailureTest, NoAgentCanOpenLcmPrintsEachCauseWritesNothingAndExits1) {
+  const fs::path dir = TestDir();
+  const int status = WaitFor(Spawn(LaunchArgv("nosuchprovider://nowhere", dir / "out"), dir / "launch.out"),
+                             std::chrono::seconds(240));
+  const std::string printed = ReadText(dir / "launch.out");
+  ASSERT_TRUE(WIFEXITED(status)) << printed;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << printed;
+  // The LCM library's own line is the first error line of each agent's output.
+  for (const std::string strategy : {"broadcast", "decentralized"}) {
+    for (const std::string robot : {"0", "1"}) {
+      const std::string cause = "launch: " + strategy + " robot " + robot +
+                                ": exit 1: Error: LCM provider \"nosuchprovider\" not found\n";
+      EXPECT_NE(printed.find(cause), std::string::npos) << "missing: " << cause << "in:\n" << printed;
+    }
+    EXPECT_NE(printed.find("launch: " + strategy + ": no agent ran, no rows written\n"), std::string::npos) << printed;
+  }
+  EXPECT_EQ(printed.find("queries,"), std::string::npos) << printed;  // no team summary line
+  EXPECT_NE(printed.find("launch: no team ran; nothing written to " + (dir / "out").string()), std::string::npos)
+      << printed;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  EXPECT_TRUE(NamesStartingWith(dir, ".out.tmp-").empty());
+}
+
+// A strategy the agents refuse (re-clustering, which `dvpr agent` does not implement): all its
+// agents fail, while broadcast's team runs. Rows for broadcast only, its agents and the refused
+// ones in agents.csv, the causes printed, exit 1.
+TEST(LaunchFailureTest, StrategyWhoseAgentsAllFailedHasNoRowsWhileTheOthersDo) {
+  const std::string why = IsolateNetwork();
+  if (!why.empty()) GTEST_SKIP() << why;
+  const fs::path dir = TestDir();
+  std::vector<std::string> argv = LaunchArgv(Url(7711), dir / "out");
+  for (const std::string s : {"dataset.frames=100", "strategies=[recluster_c2_p50, broadcast]"}) {
+    argv.push_back("--set");
+    argv.push_back(s);
+  }
+  const int status = WaitFor(Spawn(argv, dir / "launch.out"), std::chrono::seconds(240));
+  const std::string printed = ReadText(dir / "launch.out");
+  ASSERT_TRUE(WIFEXITED(status)) << printed;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << printed;
+  for (const std::string robot : {"0", "1"}) {
+    const std::string cause = "launch: recluster_c2_p50 robot " + robot +
+                              ": exit 1: dvpr: error: --strategy: 'recluster_c2_p50' re-clusters during the run";
+    EXPECT_NE(printed.find(cause), std::string::npos) << "missing: " << cause << "\nin:\n" << printed;
+  }
+  EXPECT_NE(printed.find("launch: recluster_c2_p50: no agent ran, no rows written\n"), std::string::npos) << printed;
+  EXPECT_NE(printed.find("launch: broadcast: 100 queries, 0 with a reply missing"), std::string::npos) << printed;
+  const std::string runs = ReadText(dir / "out" / "runs.csv");
+  EXPECT_EQ(std::count(runs.begin(), runs.end(), '\n'), 2) << runs;  // header + broadcast
+  EXPECT_NE(runs.find(",broadcast,"), std::string::npos) << runs;
+  EXPECT_EQ(runs.find("recluster"), std::string::npos) << runs;
+  const std::string agents = ReadText(dir / "out" / "agents.csv");
+  EXPECT_NE(agents.find("recluster_c2_p50,0,exit 1,,,\n"), std::string::npos) << agents;
+  EXPECT_NE(agents.find("recluster_c2_p50,1,exit 1,,,\n"), std::string::npos) << agents;
+  EXPECT_NE(agents.find("broadcast,0,exit 0,broadcast_robot0.log,50,0\n"), std::string::npos) << agents;
+}
+
+}  // namespace
+}  // namespace dvpr
