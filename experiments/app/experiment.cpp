@@ -32,7 +32,7 @@ void CheckProtocolsAvailable(const ExperimentConfig& config, const std::string& 
 
 // The row files, open as temporaries until every run has been written.
 struct RowFiles {
-  RowFiles(const std::filesystem::path& dir, const OutputsConfig& outputs)
+  RowFiles(const std::filesystem::path& dir, const OutputsConfig& outputs, bool dropouts)
       : runs(dir / "runs.csv"), per_robot(dir / "per_robot.csv"), links(dir / "links.csv") {
     runs.stream() << kRunsHeader << '\n';
     per_robot.stream() << kPerRobotHeader << '\n';
@@ -45,6 +45,10 @@ struct RowFiles {
       messages.emplace(dir / "messages.csv");
       messages->stream() << kMessagesHeader << '\n';
     }
+    if (dropouts) {
+      failover.emplace(dir / "failover.csv");
+      failover->stream() << kFailoverHeader << '\n';
+    }
   }
   void Write(const RunOutput& out) {
     for (const auto& r : out.runs) runs.stream() << CsvRow(r) << '\n';
@@ -52,6 +56,7 @@ struct RowFiles {
     for (const auto& r : out.links) links.stream() << CsvRow(r) << '\n';
     if (queries) for (const auto& r : out.queries) queries->stream() << CsvRow(r) << '\n';
     if (messages) for (const auto& r : out.messages) messages->stream() << CsvRow(r) << '\n';
+    if (failover) for (const auto& r : out.failover) failover->stream() << CsvRow(r) << '\n';
   }
   void Commit() {
     runs.Commit();
@@ -59,9 +64,10 @@ struct RowFiles {
     links.Commit();
     if (queries) queries->Commit();
     if (messages) messages->Commit();
+    if (failover) failover->Commit();
   }
   AtomicFile runs, per_robot, links;
-  std::optional<AtomicFile> queries, messages;
+  std::optional<AtomicFile> queries, messages, failover;
 };
 
 }  // namespace
@@ -79,7 +85,7 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
   const std::filesystem::path dir = folder.dir();
   inputs.out_dir = dir;
   WriteFileAtomic(dir / "config.yaml", EmitConfig(config));
-  RowFiles files(dir, config.outputs);
+  RowFiles files(dir, config.outputs, !config.dropout.empty());
   std::vector<RunResult> rows;
   std::vector<PrCurve> curves;
   RunSweep(inputs, protocols, options, [&](const RunSpec&, RunOutput&& out) {
