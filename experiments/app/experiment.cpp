@@ -85,7 +85,9 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
   const std::filesystem::path dir = folder.dir();
   inputs.out_dir = dir;
   WriteFileAtomic(dir / "config.yaml", EmitConfig(config));
-  RowFiles files(dir, config.outputs, !config.dropout.empty());
+  // failover.csv only with failover on: a config with a dropout alone (tests/golden) writes what it
+  // always wrote.
+  RowFiles files(dir, config.outputs, !config.dropout.empty() && config.failover.enabled);
   std::vector<RunResult> rows;
   std::vector<PrCurve> curves;
   RunSweep(inputs, protocols, options, [&](const RunSpec&, RunOutput&& out) {

@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -110,6 +111,12 @@ void WaitAll(std::vector<Child>& children, std::chrono::steady_clock::duration t
     c.exited = true;
     c.killed_at_timeout = true;
   }
+}
+
+// A robot the config drops (`dropout:`) kills its own process (dvpr agent): that is no failure.
+bool DroppedOnPurpose(const ExperimentConfig& config, const Child& c) {
+  if (c.killed_at_timeout || !WIFSIGNALED(c.status) || WTERMSIG(c.status) != SIGKILL) return false;
+  return std::any_of(config.dropout.begin(), config.dropout.end(), [&](const Dropout& d) { return d.robot == c.robot; });
 }
 
 std::vector<std::string> AgentArgv(const LaunchOptions& o, const std::string& strategy, int robot,
@@ -259,7 +266,7 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
       const auto path = dir / "agents" / (team.strategy + "_robot" + std::to_string(c.robot) + ".log");
       const bool ok = WIFEXITED(c.status) && WEXITSTATUS(c.status) == 0 && !c.killed_at_timeout;
       if (ok && std::filesystem::exists(path)) logs[static_cast<std::size_t>(c.robot)] = ReadAgentLog(path);
-      clean = clean && ok;
+      clean = clean && (ok || DroppedOnPurpose(config, c));
       std::int64_t incomplete = 0;
       if (const auto& l = logs[static_cast<std::size_t>(c.robot)]) {
         for (const auto& q : l->queries) incomplete += q.Complete() ? 0 : 1;
