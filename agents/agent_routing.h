@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "agents/failure_detector.h"
 #include "agents/ids.h"
 
 namespace dvpr {
@@ -52,6 +53,9 @@ class AgentRouting {
   // Keeps a query the robot was told to store (its own frame or a remote one), `querier` being
   // the robot that took it.
   virtual void Store(RobotId querier, FrameId frame, const float* descriptor) = 0;
+  // The robots this component has declared lost (failover, agents/failover_routing.h), in order
+  // of detection; none for a component without failover.
+  virtual std::vector<LostRobot> Lost() const { return {}; }
 };
 
 class TeamRouting {

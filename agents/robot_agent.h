@@ -68,6 +68,7 @@ class RobotAgent {
   const std::vector<QueryRecord>& outcomes() const { return outcomes_; }
   RobotLoad load() const;
   const IncrementalIndex& index() const { return index_; }
+  const AgentRouting& routing() const { return *routing_; }
 
  private:
   struct Task {

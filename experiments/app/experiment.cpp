@@ -34,7 +34,7 @@ void CheckProtocolsAvailable(const ExperimentConfig& config, const std::string& 
 
 // The row files, open as temporaries until every run has been written.
 struct RowFiles {
-  RowFiles(const std::filesystem::path& dir, const OutputsConfig& outputs)
+  RowFiles(const std::filesystem::path& dir, const OutputsConfig& outputs, bool dropouts)
       : runs(dir / "runs.csv"), per_robot(dir / "per_robot.csv"), links(dir / "links.csv") {
     runs.stream() << kRunsHeader << '\n';
     per_robot.stream() << kPerRobotHeader << '\n';
@@ -47,6 +47,10 @@ struct RowFiles {
       messages.emplace(dir / "messages.csv");
       messages->stream() << kMessagesHeader << '\n';
     }
+    if (dropouts) {
+      failover.emplace(dir / "failover.csv");
+      failover->stream() << kFailoverHeader << '\n';
+    }
   }
   void Write(const RunOutput& out) {
     for (const auto& r : out.runs) runs.stream() << CsvRow(r) << '\n';
@@ -54,6 +58,7 @@ struct RowFiles {
     for (const auto& r : out.links) links.stream() << CsvRow(r) << '\n';
     if (queries) for (const auto& r : out.queries) queries->stream() << CsvRow(r) << '\n';
     if (messages) for (const auto& r : out.messages) messages->stream() << CsvRow(r) << '\n';
+    if (failover) for (const auto& r : out.failover) failover->stream() << CsvRow(r) << '\n';
   }
   void Commit() {
     runs.Commit();
@@ -61,9 +66,10 @@ struct RowFiles {
     links.Commit();
     if (queries) queries->Commit();
     if (messages) messages->Commit();
+    if (failover) failover->Commit();
   }
   AtomicFile runs, per_robot, links;
-  std::optional<AtomicFile> queries, messages;
+  std::optional<AtomicFile> queries, messages, failover;
 };
 
 // A process of a distributed sweep that does not write the results (run_distributor.h): the
@@ -98,7 +104,9 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
   const std::filesystem::path dir = folder.dir();
   inputs.out_dir = dir;
   WriteFileAtomic(dir / "config.yaml", EmitConfig(config));
-  RowFiles files(dir, config.outputs);
+  // failover.csv only with failover on: a config with a dropout alone (tests/golden) writes what it
+  // always wrote.
+  RowFiles files(dir, config.outputs, !config.dropout.empty() && config.failover.enabled);
   std::vector<RunResult> rows;
   std::vector<PrCurve> curves;
   RunSweep(inputs, protocols, options, [&](const RunSpec&, RunOutput&& out) {

@@ -260,6 +260,7 @@ VerificationParams ReadVerification(const Field& f);
 ServiceParams ReadService(const Field& f);
 std::vector<Dropout> ReadDropout(const Field& f, const SweepConfig& sweep);
 OutputsConfig ReadOutputs(const Field& f, const SweepConfig& sweep);
+FailoverParams ReadFailover(const Field& f, const SweepConfig& sweep);
 }  // namespace config_detail
 
 namespace {
@@ -275,7 +276,7 @@ ExperimentConfig ReadExperiment(const Field& root, const std::string& default_na
   if (!root.present()) root.Fail("the config is empty");
   root.ExpectMap({"name", "seed", "start_time", "dataset", "training", "robots", "runs", "protocols",
                   "strategies", "evaluation", "network", "verification", "service", "dropout",
-                  "outputs"});
+                  "outputs", "failover"});
   ExperimentConfig c;
   c.name = default_name;
   if (auto f = root.Child("name"); f.present()) {
@@ -303,6 +304,7 @@ ExperimentConfig ReadExperiment(const Field& root, const std::string& default_na
   c.agent.service = config_detail::ReadService(root.Child("service"));
   c.dropout = config_detail::ReadDropout(root.Child("dropout"), c.sweep);
   c.outputs = config_detail::ReadOutputs(root.Child("outputs"), c.sweep);
+  c.failover = config_detail::ReadFailover(root.Child("failover"), c.sweep);
   return c;
 }
 

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "agents/agent_params.h"
+#include "agents/failure_detector.h"
 #include "experiments/data/synthetic.h"
 #include "experiments/evaluation/ground_truth.h"
 #include "experiments/strategies/run_centroids.h"
@@ -137,6 +138,7 @@ struct ExperimentConfig {
   AgentParams agent;               // YAML: sections service and verification
   std::vector<Dropout> dropout;
   OutputsConfig outputs;
+  FailoverParams failover;         // YAML: section failover (docs/failover.md)
   bool operator==(const ExperimentConfig&) const = default;
 };
 

@@ -140,6 +140,14 @@ void EmitRest(YAML::Emitter& out, const ExperimentConfig& c) {
         << YAML::Key << "at" << YAML::Value << FormatDuration(d.at) << YAML::EndMap;
   }
   out << YAML::EndSeq;
+  // Written only when it differs from the default, so the files of runs without failover stay
+  // as they were before it existed; reading it back gives the same config either way.
+  if (c.failover != FailoverParams{}) {
+    out << YAML::Key << "failover" << YAML::Value << YAML::Flow << YAML::BeginMap
+        << YAML::Key << "enabled" << YAML::Value << c.failover.enabled
+        << YAML::Key << "heartbeat_period" << YAML::Value << FormatDuration(c.failover.heartbeat_period)
+        << YAML::Key << "timeout" << YAML::Value << FormatDuration(c.failover.timeout) << YAML::EndMap;
+  }
   const auto& o = c.outputs;
   out << YAML::Key << "outputs" << YAML::Value << YAML::Flow << YAML::BeginMap
       << YAML::Key << "figures" << YAML::Value << o.figures

@@ -171,4 +171,28 @@ OutputsConfig ReadOutputs(const Field& f, const SweepConfig& sweep) {
   return o;
 }
 
+// failover: {enabled, heartbeat_period, timeout} (docs/failover.md). The re-clustering
+// strategies have no failover: asking for it with one of them is an error here, before any run.
+FailoverParams ReadFailover(const Field& f, const SweepConfig& sweep) {
+  FailoverParams p;
+  if (!f.present()) return p;
+  f.ExpectMap({"enabled", "heartbeat_period", "timeout"});
+  if (auto c = f.Child("enabled"); c.present()) p.enabled = c.Bool();
+  if (auto c = f.Child("heartbeat_period"); c.present()) {
+    p.heartbeat_period = c.Duration(FailoverParams::kMinPeriod, FailoverParams::kMaxTimeout);
+  }
+  if (auto c = f.Child("timeout"); c.present()) p.timeout = c.Duration(FailoverParams::kMinPeriod, FailoverParams::kMaxTimeout);
+  if (p.timeout <= p.heartbeat_period) {
+    f.Child(f.Child("timeout").present() ? "timeout" : "heartbeat_period")
+        .Fail("timeout must be longer than heartbeat_period, got " + FormatDuration(p.timeout) + " and " +
+              FormatDuration(p.heartbeat_period));
+  }
+  for (const StrategySpec& s : sweep.strategies) {
+    if (p.enabled && s.reclusters()) {
+      f.Child("enabled").Fail("'" + s.name + "' re-clusters, which has no failover; list it in a config without");
+    }
+  }
+  return p;
+}
+
 }  // namespace dvpr::config_detail

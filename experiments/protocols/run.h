@@ -58,6 +58,7 @@ struct RunOutput {
   std::vector<QueryRow> queries;      // only when outputs.queries
   std::vector<MessageRow> messages;   // only when outputs.messages
   std::vector<PrCurve> curves;        // for figure 2; kept only at outputs.pr_robots, run 0
+  std::vector<FailoverRow> failover;  // sim: one per dropped robot (failover.csv)
 };
 
 using RunFunction = std::function<RunOutput(const RunSpec&)>;

@@ -12,6 +12,7 @@ StrategyInputs StrategyInputsOf(const SharedInputs& inputs) {
   s.deployment = &inputs.deployment.descriptors;
   s.fps = inputs.deployment.fps;
   s.centroids = c.training.run_centroids;  // the config seed, clusters per robot, centroid files
+  s.failover = c.failover;
   return s;
 }
 

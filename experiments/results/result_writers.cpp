@@ -30,6 +30,8 @@ const char* const kQueriesHeader =
 const char* const kMessagesHeader =
     "protocol,strategy,robots,run,sent_ns,delivered_ns,src,dst,channel,type,payload_bytes,"
     "wire_bytes,dropped," DVPR_NETWORK_COLUMNS;
+const char* const kFailoverHeader =
+    "protocol,strategy,robots,run,robot,at_ns,detected_ns,stored,kept,incomplete_queries," DVPR_NETWORK_COLUMNS;
 #undef DVPR_NETWORK_COLUMNS
 
 std::string FormatDouble(double v) {
@@ -84,6 +86,12 @@ std::string CsvRow(const RobotLoadRow& r) {
          "," + std::to_string(r.comparisons) + "," + std::to_string(r.stored) + "," +
          FormatDouble(r.busy_fraction) + "," + std::to_string(r.max_queue) + "," +
          Network(r.key.network);
+}
+
+std::string CsvRow(const FailoverRow& r) {
+  return Key(r.key) + "," + std::to_string(r.robot) + "," + std::to_string(r.at_ns) + "," +
+         (r.detected_ns ? std::to_string(*r.detected_ns) : std::string()) + "," + std::to_string(r.stored) + "," +
+         std::to_string(r.kept) + "," + std::to_string(r.incomplete_queries) + "," + Network(r.key.network);
 }
 
 std::string CsvRow(const LinkRow& r) {

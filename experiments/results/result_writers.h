@@ -45,11 +45,13 @@ extern const char* const kPerRobotHeader;   // per_robot.csv
 extern const char* const kLinksHeader;      // links.csv
 extern const char* const kQueriesHeader;    // queries.csv
 extern const char* const kMessagesHeader;   // messages.csv
+extern const char* const kFailoverHeader;   // failover.csv
 std::string CsvRow(const RunResult& r);
 std::string CsvRow(const RobotLoadRow& r);
 std::string CsvRow(const LinkRow& r);
 std::string CsvRow(const QueryRow& r);
 std::string CsvRow(const MessageRow& r);
+std::string CsvRow(const FailoverRow& r);
 
 // Whole files at once (tests, small outputs).
 void WriteRunsCsv(const std::filesystem::path& path, const std::vector<RunResult>& rows);

@@ -65,6 +65,18 @@ struct RobotLoadRow {
   std::int64_t max_queue = 0;
 };
 
+// One row of failover.csv (written when the config has a dropout): one dropped robot of a run
+// (docs/failover.md).
+struct FailoverRow {
+  RunKey key;
+  int robot = 0;                          // the dropped robot
+  std::int64_t at_ns = 0;                 // when it dropped
+  std::optional<std::int64_t> detected_ns;  // when the last robot that stayed declared it lost
+  std::int64_t stored = 0;                // descriptors it held: gone with it
+  std::int64_t kept = 0;                  // of which a copy survives at a robot that stayed
+  std::int64_t incomplete_queries = 0;    // the run's queries with a reply that never came
+};
+
 // One row of links.csv: one directed pair (src -> dst) of one run.
 struct LinkRow {
   RunKey key;

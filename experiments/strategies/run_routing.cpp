@@ -10,6 +10,7 @@
 #include "agents/load_balanced_table.h"
 #include "agents/probe_routing.h"
 #include "agents/recluster/recluster_routing.h"
+#include "agents/frame_stream.h"
 #include "experiments/data/split.h"
 #include "experiments/strategies/deployment_sample.h"
 
@@ -96,6 +97,15 @@ ReclusterPlan ReclusterPlanOf(const ReclusterParams& params, std::shared_ptr<con
   return plan;
 }
 
+// The agent time of the team's last frame (the longest sub-sequence's).
+SimTime LastFrameTime(const StrategyInputs& in, int robots) {
+  int longest = 0;
+  for (const FrameRange& r : SplitSequence(static_cast<int>(in.deployment->rows()), robots).ranges) {
+    longest = std::max(longest, r.size());
+  }
+  return FrameStream{nullptr, FrameId(0), longest, in.fps}.TimeOf(std::max(0, longest - 1));
+}
+
 }  // namespace
 
 TrainingUse TrainingUseOf(const StrategySpec& spec, const StrategyInputs& in) {
@@ -127,6 +137,9 @@ RunRouting BuildRunRouting(const StrategySpec& spec, const StrategyInputs& in, i
   } else {
     r.table = std::make_shared<const CentroidTable>(BuildTable(spec, in, robots, run));
     if (spec.reclusters()) {
+      if (in.failover.enabled) {
+        throw std::invalid_argument("failover.enabled: '" + spec.name + "' re-clusters, which has no failover");
+      }
       r.recluster = ReclusterParamsOf(spec, in, robots, run);
       r.team = std::make_unique<ReclusterRouting>(ReclusterPlanOf(*r.recluster, r.table, in, robots));
       return r;
@@ -141,7 +154,13 @@ RunRouting BuildRunRouting(const StrategySpec& spec, const StrategyInputs& in, i
     }
   }
   r.stateless = stateless.get();
-  r.team = std::move(stateless);
+  if (in.failover.enabled) {
+    auto team = std::make_unique<FailoverTeam>(std::move(stateless), r.table, in.failover, LastFrameTime(in, robots));
+    r.failover = team.get();
+    r.team = std::move(team);
+  } else {
+    r.team = std::move(stateless);
+  }
   return r;
 }
 

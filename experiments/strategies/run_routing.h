@@ -14,6 +14,7 @@
 
 #include "agents/centroid_table.h"
 #include "agents/agent_routing.h"
+#include "agents/failover_routing.h"
 #include "agents/recluster/recluster.h"
 #include "agents/routing.h"
 #include "experiments/strategies/run_centroids.h"
@@ -28,6 +29,9 @@ struct StrategyInputs {
   double fps = 10.0;                             // frames per second: the re-clustering leader's timeout
   RunCentroidParams centroids;                   // config seed, clusters per robot, centroid files
   RunCentroidCache* cache = nullptr;             // optional, one per run: k-means shared by its strategies
+  // enabled: every stateless strategy's team routes around lost robots (FailoverTeam); the
+  // re-clustering strategies have no failover (BuildRunRouting throws).
+  FailoverParams failover;
 };
 
 struct RunRouting {
@@ -37,6 +41,9 @@ struct RunRouting {
   // The same object when the strategy keeps no per-robot state (Route(self, descriptor) answers
   // for every robot); null when it re-clusters.
   const RoutingStrategy* stateless = nullptr;
+  // `team` itself when it fails over (StrategyInputs::failover), null otherwise; real agents
+  // tell it that their process announces the heartbeats (UseProcessHeartbeats).
+  FailoverTeam* failover = nullptr;
   // Set when the strategy re-clusters: C, P, the sample stride, seed RunSeed(config seed, robots,
   // run). The static protocol plans the epochs from these and the start table.
   std::optional<ReclusterParams> recluster;

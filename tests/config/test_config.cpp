@@ -245,3 +245,40 @@ outputs: {queries: true, pr_robots: 5}
 
 }  // namespace
 }  // namespace dvpr
+
+namespace dvpr {
+namespace {
+
+// failover (docs/failover.md): off by default and then not written back, so the config.yaml of a
+// run without it reads as before; on, it is written and reads back the same.
+TEST_F(ConfigTest, FailoverIsReadCheckedAndWrittenOnlyWhenSet) {
+  const ExperimentConfig off = Parse("name: f\n");
+  EXPECT_FALSE(off.failover.enabled);
+  EXPECT_EQ(off.failover.heartbeat_period, SimTime::Millis(250));
+  EXPECT_EQ(off.failover.timeout, SimTime::Seconds(1));
+  EXPECT_EQ(EmitConfig(off).find("\nfailover:"), std::string::npos) << EmitConfig(off);
+
+  const ExperimentConfig on = Parse("failover: {enabled: true, heartbeat_period: 40ms, timeout: 300ms}\n");
+  EXPECT_TRUE(on.failover.enabled);
+  EXPECT_EQ(on.failover.heartbeat_period, SimTime::Millis(40));
+  EXPECT_EQ(on.failover.timeout, SimTime::Millis(300));
+  const std::string yaml = EmitConfig(on);
+  EXPECT_NE(yaml.find("\nfailover: {enabled: true, heartbeat_period: 40ms, timeout: 300ms}\n"), std::string::npos) << yaml;
+  EXPECT_EQ(ParseConfig(yaml, "/nonexistent", {}, "config.yaml"), on);
+  EXPECT_TRUE(Parse("", {ParseOverride("failover.enabled=true")}).failover.enabled);
+}
+
+TEST_F(ConfigTest, FailoverErrorsNameTheKey) {
+  EXPECT_EQ(ErrorOf("failover: {timeout: 200ms}\n"),
+            "test.yaml: failover.timeout: timeout must be longer than heartbeat_period, got 200ms and 250ms");
+  EXPECT_NE(ErrorOf("failover: {heartbeat_period: 0ms}\n").find("test.yaml: failover.heartbeat_period: must be in [1ms, 1h]"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("failover: {enabled: yes please}\n").find("test.yaml: failover.enabled:"), std::string::npos);
+  EXPECT_NE(ErrorOf("failover: {enable: true}\n").find("test.yaml: failover.enable:"), std::string::npos);
+  EXPECT_EQ(ErrorOf("strategies: [decentralized, recluster_c2_p50]\nfailover: {enabled: true}\n"),
+            "test.yaml: failover.enabled: 'recluster_c2_p50' re-clusters, which has no failover; list it in a config "
+            "without");
+}
+
+}  // namespace
+}  // namespace dvpr

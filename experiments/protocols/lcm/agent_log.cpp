@@ -110,6 +110,7 @@ void WriteAgentLog(const std::filesystem::path& path, const AgentLog& l) {
       << ',' << (q.latency ? std::to_string(q.latency->ns()) : "") << ',' << (q.verify_requested ? 1 : 0) << ','
       << Opt<int>(q.verify_accepted ? std::optional<int>(*q.verify_accepted) : std::nullopt) << '\n';
   }
+  for (const LostRobot& r : l.lost) o << "lost," << r.robot.value << ',' << r.detected.ns() << '\n';
   WriteFileAtomic(path, o.str());
 }
 
@@ -167,6 +168,10 @@ AgentLog ReadAgentLog(const std::filesystem::path& path) {
     } else if (kind == "query") {
       Fields f(std::move(cells), 11, where);
       ReadQuery(f, l);
+    } else if (kind == "lost") {
+      Fields f(std::move(cells), 3, where);
+      const RobotId robot(f.Next<int>());
+      l.lost.push_back(LostRobot{robot, SimTime::Nanos(f.Next<std::int64_t>())});
     } else {
       throw std::runtime_error(where + ": unknown record '" + kind + "'");
     }

@@ -11,6 +11,7 @@
 //   recv,src,messages                                 one line per source robot
 //   query,frame,sent_ns,expected,received,match_robot,match_frame,distance,latency_ns,
 //         verify_requested,verify_accepted            one line per frame taken
+//   lost,robot,detected_ns                            one line per robot declared lost (failover)
 //
 // Times: start_utime is the team's agreed start (wall clock, us since the Unix
 // epoch); end_ns and sent_ns are agent time (frame k is taken at k/fps);
@@ -55,6 +56,7 @@ struct AgentLog {
   std::vector<AgentLinkCount> sent;            // per destination robot
   std::vector<std::int64_t> received_from;     // per source robot (own echoes excluded)
   std::vector<QueryRecord> queries;            // the frames taken; latency: wall clock
+  std::vector<LostRobot> lost;                 // failover: robots declared lost, agent time of detection
 };
 
 void WriteAgentLog(const std::filesystem::path& path, const AgentLog& log);

@@ -1,5 +1,7 @@
 #include "experiments/protocols/lcm/agent_process.h"
 
+#include <signal.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -86,6 +88,10 @@ std::int64_t TeamKey(const ExperimentConfig& c, const Dataset& data, const Centr
   h.AddValue(c.agent.service.fixed.ns());
   h.AddValue(c.agent.service.per_comparison.ns());
   h.AddValue(c.agent.verification.max_distance);
+  if (c.failover.enabled) {  // a robot that fails over routes otherwise than one that does not
+    h.AddValue(c.failover.timeout.ns());
+    h.AddValue(c.failover.heartbeat_period.ns());
+  }
   return h.value();
 }
 
@@ -238,6 +244,8 @@ Team LoadTeam(const AgentProcessOptions& o) {
   // Built by every process from the same inputs, so the whole team routes alike.
   t.routing = BuildRunRouting(t.strategy, StrategyInputsOf(t.inputs), t.robots, o.run);
   t.key = TeamKey(t.config, t.inputs.deployment, t.routing.table.get(), t.strategy.name, t.robots, o.run);
+  // The process announces the heartbeats (DVPR_STATUS, every kAnnouncePeriod); failover listens.
+  if (t.routing.failover != nullptr) t.routing.failover->UseProcessHeartbeats(t.key);
   return t;
 }
 
@@ -272,6 +280,7 @@ AgentLog MakeLog(const AgentProcessOptions& o, const Team& t, const RobotAgent& 
   l.load = agent.load();
   l.sent = traffic.sent;
   l.received_from = traffic.received_from;
+  l.lost = agent.routing().Lost();
   for (QueryRecord q : agent.outcomes()) {
     if (!q.Taken()) continue;
     // Latency as the network delivered it: the wall clock, not agent time.
@@ -279,6 +288,15 @@ AgentLog MakeLog(const AgentProcessOptions& o, const Team& t, const RobotAgent& 
     l.queries.push_back(q);
   }
   return l;
+}
+
+// `dropout:` in a real team: the robot's process kills itself at that agent time, as the
+// operating system would kill it (SIGKILL: no log, no last heartbeat, nothing flushed).
+void ScheduleDropout(const ExperimentConfig& c, int robot, Transport& transport) {
+  for (const Dropout& d : c.dropout) {
+    if (d.robot != robot) continue;
+    transport.ScheduleAfter(std::max(SimTime::Zero(), d.at - transport.Now()), [] { raise(SIGKILL); });
+  }
 }
 
 }  // namespace
@@ -327,6 +345,7 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   }
   transport.SetEpoch(std::chrono::system_clock::time_point(std::chrono::microseconds(*start)));
   agent.Start();
+  ScheduleDropout(t.config, o.robot, transport);
 
   // The run: serve until every robot is done, or give up at the deadline.
   const SimTime deadline = LastFrameTime(split, data.fps) + SimTime::Seconds(o.grace_s * o.speedup);

@@ -116,6 +116,12 @@ void WaitAll(std::vector<Child>& children, std::chrono::steady_clock::duration t
   }
 }
 
+// A robot the config drops (`dropout:`) kills its own process (dvpr agent): that is no failure.
+bool DroppedOnPurpose(const ExperimentConfig& config, const Child& c) {
+  if (c.killed_at_timeout || !WIFSIGNALED(c.status) || WTERMSIG(c.status) != SIGKILL) return false;
+  return std::any_of(config.dropout.begin(), config.dropout.end(), [&](const Dropout& d) { return d.robot == c.robot; });
+}
+
 std::vector<std::string> AgentArgv(const LaunchOptions& o, const std::string& strategy, int robot,
                                    const std::filesystem::path& log) {
   std::vector<std::string> a{o.binary.string(), "agent", "--config", o.config.string()};
@@ -275,8 +281,8 @@ struct TeamLogs {
 };
 
 // Reads the team's logs, lists each agent in agents.csv and prints why each failed one failed.
-TeamLogs CollectTeam(const Team& team, int robots, const std::filesystem::path& dir, std::ostream& agents_csv,
-                     std::ostream& out) {
+TeamLogs CollectTeam(const ExperimentConfig& config, const Team& team, int robots, const std::filesystem::path& dir,
+                     std::ostream& agents_csv, std::ostream& out) {
   TeamLogs t;
   t.logs.resize(static_cast<std::size_t>(robots));
   for (const Child& c : team.children) {
@@ -284,7 +290,8 @@ TeamLogs CollectTeam(const Team& team, int robots, const std::filesystem::path& 
     auto& l = t.logs[static_cast<std::size_t>(c.robot)];
     const bool ok = WIFEXITED(c.status) && WEXITSTATUS(c.status) == 0 && !c.killed_at_timeout;
     if (ok && std::filesystem::exists(path)) l = ReadAgentLog(path);
-    t.clean = t.clean && ok && l.has_value();
+    const bool dropped = DroppedOnPurpose(config, c);
+    t.clean = t.clean && ((ok && l.has_value()) || dropped);
     t.ran = t.ran || l.has_value();
     std::int64_t incomplete = 0;
     if (l) {
@@ -293,7 +300,7 @@ TeamLogs CollectTeam(const Team& team, int robots, const std::filesystem::path& 
     agents_csv << team.strategy << ',' << c.robot << ',' << Describe(c) << ',' << (l ? path.filename().string() : "")
                << ',' << (l ? std::to_string(l->queries.size()) : "") << ',' << (l ? std::to_string(incomplete) : "")
                << '\n';
-    if (!ok) {
+    if (!ok && !dropped) {
       const std::string why = FirstErrorLine(AgentFile(dir, team.strategy, c.robot, ".out"));
       out << "launch: " << team.strategy << " robot " << c.robot << ": " << Describe(c)
           << (why.empty() ? std::string() : ": " + why) << "\n";
@@ -349,7 +356,7 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
   double reference_auc = kNotApplicable;
   bool clean = true;
   for (const Team& team : teams) {
-    const TeamLogs t = CollectTeam(team, o.robots, dir, agents_csv, out);
+    const TeamLogs t = CollectTeam(config, team, o.robots, dir, agents_csv, out);
     clean = clean && t.clean;
     if (!t.ran) {  // no agent left a log: rows of zeros would pass for a run
       out << "launch: " << team.strategy << ": no agent ran, no rows written\n";

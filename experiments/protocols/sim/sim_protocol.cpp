@@ -83,6 +83,11 @@ void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLo
     m.key = key;
     out.messages.push_back(std::move(m));
   }
+  for (const DropoutOutcome& d : log.dropouts) {
+    std::optional<std::int64_t> detected;
+    if (d.detected) detected = d.detected->ns();
+    out.failover.push_back(FailoverRow{key, d.robot.value, d.at.ns(), detected, d.stored, d.kept, s.latency.incomplete});
+  }
 }
 
 RunResult MakeRow(const RunSpec& spec, const std::string& strategy, const SimRunSummary& s, double reference_auc) {

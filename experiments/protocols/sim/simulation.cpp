@@ -1,7 +1,9 @@
 #include "experiments/protocols/sim/simulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -51,6 +53,43 @@ struct NetworkRecorders {
   std::unique_ptr<EventLogRecorder> event_log;
   ObserverSubscription event_log_subscription;
 };
+
+bool IsDropped(const SimRunParams& params, int robot) {
+  for (const auto& d : params.dropouts) {
+    if (d.robot.value == robot) return true;
+  }
+  return false;
+}
+
+// Per dropout: what its store held, how much of it a robot that stayed keeps a copy of, and
+// when the last robot that stayed declared it lost.
+std::vector<DropoutOutcome> DropoutOutcomes(const SimRunParams& params,
+                                            const std::vector<std::unique_ptr<RobotAgent>>& agents) {
+  std::set<std::pair<int, int>> live_copies;  // (robot that saw it, frame)
+  for (std::size_t r = 0; r < agents.size(); ++r) {
+    if (IsDropped(params, static_cast<int>(r))) continue;
+    for (const IndexEntry& e : agents[r]->index().entries()) live_copies.insert({e.robot.value, e.frame.value});
+  }
+  std::vector<DropoutOutcome> out;
+  for (const auto& d : params.dropouts) {
+    DropoutOutcome o{d.robot, d.at, std::nullopt, 0, 0};
+    for (const IndexEntry& e : agents[static_cast<std::size_t>(d.robot.value)]->index().entries()) {
+      ++o.stored;
+      o.kept += live_copies.count({e.robot.value, e.frame.value}) > 0 ? 1 : 0;
+    }
+    bool all = true;
+    for (std::size_t r = 0; r < agents.size() && all; ++r) {
+      if (IsDropped(params, static_cast<int>(r))) continue;
+      const auto lost = agents[r]->routing().Lost();
+      const auto it = std::find_if(lost.begin(), lost.end(), [&](const LostRobot& l) { return l.robot == d.robot; });
+      if (it == lost.end()) all = false;
+      else if (!o.detected || it->detected > *o.detected) o.detected = it->detected;
+    }
+    if (!all) o.detected.reset();
+    out.push_back(o);
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -104,6 +143,7 @@ SimRunLog RunSimulation(const Dataset& data, const TeamRouting& routing, const S
     for (int d = 0; d < n; ++d) log.links.push_back(s == d ? LinkCounters{} : network.Counters(NodeId(s), NodeId(d)));
   for (int s = 0; s < n; ++s) log.senders.push_back(network.Sender(NodeId(s)));
   log.messages = recorders.rows.Rows();
+  log.dropouts = DropoutOutcomes(params, agents);
   if (recorders.event_log_file) recorders.event_log_file->Close();
   return log;
 }

@@ -5,6 +5,7 @@
 // returned log (SummarizeSimRun).
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 #include "agents/agent_routing.h"
@@ -35,6 +36,15 @@ struct SimRunParams {
   void Validate(const Dataset& data) const;
 };
 
+// What became of a dropped robot (docs/failover.md).
+struct DropoutOutcome {
+  RobotId robot;
+  SimTime at;
+  std::optional<SimTime> detected;  // when the last live robot declared it lost; empty: not all did
+  std::int64_t stored = 0;          // descriptors in its store when it dropped: gone with it
+  std::int64_t kept = 0;            // of which a live robot's store holds a copy (replication)
+};
+
 struct SimRunLog {
   int robots = 0;
   std::vector<QueryRecord> queries;       // robot by robot, frames in order
@@ -47,6 +57,7 @@ struct SimRunLog {
   std::int64_t verify_accepted = 0;
   std::uint64_t events = 0;
   SimTime end;
+  std::vector<DropoutOutcome> dropouts;   // one per params.dropouts entry, in its order
 };
 
 // Every robot routes through its own component made by `routing` (a stateless strategy or one
