@@ -1,5 +1,6 @@
 #include "experiments/app/experiment.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -32,7 +33,7 @@ void CheckProtocolsAvailable(const ExperimentConfig& config, const std::string& 
 
 // The row files, open as temporaries until every run has been written.
 struct RowFiles {
-  RowFiles(const std::filesystem::path& dir, const OutputsConfig& outputs)
+  RowFiles(const std::filesystem::path& dir, const OutputsConfig& outputs, bool bow_strategies)
       : runs(dir / "runs.csv"), per_robot(dir / "per_robot.csv"), links(dir / "links.csv") {
     runs.stream() << kRunsHeader << '\n';
     per_robot.stream() << kPerRobotHeader << '\n';
@@ -45,6 +46,12 @@ struct RowFiles {
       messages.emplace(dir / "messages.csv");
       messages->stream() << kMessagesHeader << '\n';
     }
+    if (bow_strategies) {
+      bow.emplace(dir / "bow.csv");
+      bow->stream() << kBowHeader << '\n';
+      bow_sizes.emplace(dir / "bow_sizes.csv");
+      bow_sizes->stream() << kBowSizesHeader << '\n';
+    }
   }
   void Write(const RunOutput& out) {
     for (const auto& r : out.runs) runs.stream() << CsvRow(r) << '\n';
@@ -52,6 +59,8 @@ struct RowFiles {
     for (const auto& r : out.links) links.stream() << CsvRow(r) << '\n';
     if (queries) for (const auto& r : out.queries) queries->stream() << CsvRow(r) << '\n';
     if (messages) for (const auto& r : out.messages) messages->stream() << CsvRow(r) << '\n';
+    if (bow) for (const auto& r : out.bow) bow->stream() << CsvRow(r) << '\n';
+    if (bow_sizes) for (const auto& r : out.bow_sizes) bow_sizes->stream() << CsvRow(r) << '\n';
   }
   void Commit() {
     runs.Commit();
@@ -59,9 +68,11 @@ struct RowFiles {
     links.Commit();
     if (queries) queries->Commit();
     if (messages) messages->Commit();
+    if (bow) bow->Commit();
+    if (bow_sizes) bow_sizes->Commit();
   }
   AtomicFile runs, per_robot, links;
-  std::optional<AtomicFile> queries, messages;
+  std::optional<AtomicFile> queries, messages, bow, bow_sizes;
 };
 
 }  // namespace
@@ -79,7 +90,9 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
   const std::filesystem::path dir = folder.dir();
   inputs.out_dir = dir;
   WriteFileAtomic(dir / "config.yaml", EmitConfig(config));
-  RowFiles files(dir, config.outputs);
+  const bool bow = std::any_of(config.sweep.strategies.begin(), config.sweep.strategies.end(),
+                               [](const StrategySpec& s) { return s.bag_of_words(); });
+  RowFiles files(dir, config.outputs, bow);
   std::vector<RunResult> rows;
   std::vector<PrCurve> curves;
   RunSweep(inputs, protocols, options, [&](const RunSpec&, RunOutput&& out) {
