@@ -69,7 +69,7 @@ TEST_F(SyntheticBowTest, RevisitsShareWordsOtherPlacesDoNot) {
   const auto w = SyntheticBowWords(Frames({{0, 0, 0}, {2, 0, 0}, {300, 0, 0}, {0, 0, std::numbers::pi}}),
                                    appearance_, bow_, 3);
   const std::size_t revisit = SharedWords(w[0], w[1]);
-  EXPECT_GT(revisit, 100u);
+  EXPECT_GT(revisit, 50u);  // of about 200 distinct words per frame (300 features)
   EXPECT_LT(SharedWords(w[0], w[2]) * 10, revisit);
   EXPECT_LT(SharedWords(w[0], w[3]) * 10, revisit);
   const BowData data = TfIdfFromWords(w, bow_.vocabulary);
