@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include <dvpr/bow_query_t.hpp>
 #include <dvpr/centroid_table_t.hpp>
 #include <dvpr/descriptor_batch_t.hpp>
 #include <dvpr/match_t.hpp>
@@ -87,6 +88,15 @@ template <>
 inline bool LengthFieldFits<centroid_table_t>(std::span<const std::uint8_t> buf) {
   constexpr std::size_t kKOffset = 8 + 8 + 4 + 2;  // fingerprint, utime, epoch, leader
   return RowsFit(buf, kKOffset + 4, ReadBigEndian(buf, kKOffset, 2), ReadBigEndian(buf, kKOffset + 2, 2), 2);
+}
+
+// bow_query_t (docs/bow.md): count words and count weights, 8 bytes per entry, must fit.
+template <>
+inline bool LengthFieldFits<bow_query_t>(std::span<const std::uint8_t> buf) {
+  constexpr std::size_t kCountOffset = 8 + 8 + 2 + 4;  // fingerprint, utime, robot, frame
+  const auto count = ReadBigEndian(buf, kCountOffset, 4);
+  if (!count || *count < 0) return false;
+  return static_cast<std::uint64_t>(*count) * 8 <= buf.size() - (kCountOffset + 4);
 }
 }  // namespace codec_detail
 

@@ -1,5 +1,6 @@
 #include "experiments/app/experiment.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -34,7 +35,7 @@ void CheckProtocolsAvailable(const ExperimentConfig& config, const std::string& 
 
 // The row files, open as temporaries until every run has been written.
 struct RowFiles {
-  RowFiles(const std::filesystem::path& dir, const OutputsConfig& outputs, bool dropouts)
+  RowFiles(const std::filesystem::path& dir, const OutputsConfig& outputs, bool dropouts, bool bow_strategies)
       : runs(dir / "runs.csv"), per_robot(dir / "per_robot.csv"), links(dir / "links.csv") {
     runs.stream() << kRunsHeader << '\n';
     per_robot.stream() << kPerRobotHeader << '\n';
@@ -51,6 +52,12 @@ struct RowFiles {
       failover.emplace(dir / "failover.csv");
       failover->stream() << kFailoverHeader << '\n';
     }
+    if (bow_strategies) {
+      bow.emplace(dir / "bow.csv");
+      bow->stream() << kBowHeader << '\n';
+      bow_sizes.emplace(dir / "bow_sizes.csv");
+      bow_sizes->stream() << kBowSizesHeader << '\n';
+    }
   }
   void Write(const RunOutput& out) {
     for (const auto& r : out.runs) runs.stream() << CsvRow(r) << '\n';
@@ -59,6 +66,8 @@ struct RowFiles {
     if (queries) for (const auto& r : out.queries) queries->stream() << CsvRow(r) << '\n';
     if (messages) for (const auto& r : out.messages) messages->stream() << CsvRow(r) << '\n';
     if (failover) for (const auto& r : out.failover) failover->stream() << CsvRow(r) << '\n';
+    if (bow) for (const auto& r : out.bow) bow->stream() << CsvRow(r) << '\n';
+    if (bow_sizes) for (const auto& r : out.bow_sizes) bow_sizes->stream() << CsvRow(r) << '\n';
   }
   void Commit() {
     runs.Commit();
@@ -67,9 +76,11 @@ struct RowFiles {
     if (queries) queries->Commit();
     if (messages) messages->Commit();
     if (failover) failover->Commit();
+    if (bow) bow->Commit();
+    if (bow_sizes) bow_sizes->Commit();
   }
   AtomicFile runs, per_robot, links;
-  std::optional<AtomicFile> queries, messages, failover;
+  std::optional<AtomicFile> queries, messages, failover, bow, bow_sizes;
 };
 
 // A process of a distributed sweep that does not write the results (run_distributor.h): the
@@ -106,7 +117,9 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
   WriteFileAtomic(dir / "config.yaml", EmitConfig(config));
   // failover.csv only with failover on: a config with a dropout alone (tests/golden) writes what it
   // always wrote.
-  RowFiles files(dir, config.outputs, !config.dropout.empty() && config.failover.enabled);
+  const bool bow = std::any_of(config.sweep.strategies.begin(), config.sweep.strategies.end(),
+                               [](const StrategySpec& s) { return s.bag_of_words(); });
+  RowFiles files(dir, config.outputs, !config.dropout.empty() && config.failover.enabled, bow);
   std::vector<RunResult> rows;
   std::vector<PrCurve> curves;
   RunSweep(inputs, protocols, options, [&](const RunSpec&, RunOutput&& out) {

@@ -107,9 +107,26 @@ SyntheticTrainingParams ReadSyntheticTraining(const Field& f) {
   return t;
 }
 
+// dataset.synthetic_bow: the BoW model's fields under their own names (docs/bow.md).
+SyntheticBowParams ReadSyntheticBow(const Field& f) {
+  SyntheticBowParams p;
+  f.ExpectMap({"features", "vocabulary", "landmark_density", "range_m", "field_of_view_deg"});
+  if (auto c = f.Child("features"); c.present()) p.features = static_cast<int>(c.Int(1, 100000));
+  if (auto c = f.Child("vocabulary"); c.present()) p.vocabulary = static_cast<int>(c.Int(2, 10000000));
+  const std::pair<const char*, double*> numbers[] = {{"landmark_density", &p.landmark_density},
+                                                     {"range_m", &p.range_m},
+                                                     {"field_of_view_deg", &p.field_of_view_deg}};
+  for (const auto& [key, value] : numbers) {
+    if (auto c = f.Child(key); c.present()) *value = c.Double();
+  }
+  f.Validate(p);
+  return p;
+}
+
 DatasetConfig ReadDataset(const Field& f) {
   DatasetConfig d;
-  f.ExpectMap({"source", "poses", "descriptors", "bin_width", "dim", "fps", "frames", "synthetic"});
+  f.ExpectMap({"source", "poses", "descriptors", "bin_width", "dim", "fps", "frames", "synthetic", "bow",
+               "synthetic_bow"});
   if (auto c = f.Child("source"); c.present()) d.source = ReadEnum<DatasetSource>(c, kDatasetSources);
   const Field poses = f.Child("poses");
   d.poses = poses.present() ? poses.ExistingFile()
@@ -129,6 +146,8 @@ DatasetConfig ReadDataset(const Field& f) {
     }
   }
   d.synthetic = ReadSyntheticModel(f.Child("synthetic"), d.dim);
+  if (const Field bow = f.Child("bow"); bow.present()) d.bow = bow.ExistingFile();
+  if (const Field model = f.Child("synthetic_bow"); model.present()) d.synthetic_bow = ReadSyntheticBow(model);
   return d;
 }
 
@@ -296,6 +315,9 @@ ExperimentConfig ReadExperiment(const Field& root, const std::string& default_na
                                             : Field(root.origin(), YAML::Node(YAML::NodeType::Map),
                                                     "dataset"));
   c.sweep = ReadSweep(root);
+  const bool bow = std::any_of(c.sweep.strategies.begin(), c.sweep.strategies.end(),
+                               [](const StrategySpec& s) { return s.bag_of_words(); });
+  if (bow && !c.dataset.bow && !c.dataset.synthetic_bow) c.dataset.synthetic_bow = SyntheticBowParams{};
   c.training = ReadTraining(root.Child("training"), c.sweep, c.seed);
   c.evaluation = ReadEvaluation(root.Child("evaluation"));
   c.network = config_detail::ReadNetwork(root.Child("network"));

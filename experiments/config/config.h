@@ -29,6 +29,7 @@
 #include "agents/agent_params.h"
 #include "agents/failure_detector.h"
 #include "experiments/data/synthetic.h"
+#include "experiments/data/synthetic_bow.h"
 #include "experiments/evaluation/ground_truth.h"
 #include "experiments/strategies/run_centroids.h"
 #include "experiments/strategies/strategy_spec.h"
@@ -67,6 +68,11 @@ struct DatasetConfig {
   double fps = 10.0;
   std::optional<int> frames;     // empty = all frames; else only the first `frames`
   SyntheticParams synthetic;     // the YAML keys are the field names; dim is dataset.dim
+  // Bag-of-words vectors (docs/bow.md), read only when a bow_ strategy runs: the user's file
+  // (sparse text, one frame per line of word:weight pairs), or else the synthetic model (set to
+  // its defaults by the reader when a bow_ strategy is configured and neither key is given).
+  std::optional<std::filesystem::path> bow;
+  std::optional<SyntheticBowParams> synthetic_bow;
   bool operator==(const DatasetConfig&) const = default;
 };
 

@@ -66,6 +66,16 @@ void EmitDataset(YAML::Emitter& out, const DatasetConfig& d) {
       << Num(k.appearance_time_scale_frames)
       << YAML::Key << "environment_offset" << YAML::Value << Num(k.environment_offset)
       << YAML::EndMap;
+  if (d.bow) out << YAML::Key << "bow" << YAML::Value << d.bow->string();
+  if (d.synthetic_bow) {
+    const auto& b = *d.synthetic_bow;
+    out << YAML::Key << "synthetic_bow" << YAML::Value << YAML::Flow << YAML::BeginMap
+        << YAML::Key << "features" << YAML::Value << b.features
+        << YAML::Key << "vocabulary" << YAML::Value << b.vocabulary
+        << YAML::Key << "landmark_density" << YAML::Value << Num(b.landmark_density)
+        << YAML::Key << "range_m" << YAML::Value << Num(b.range_m)
+        << YAML::Key << "field_of_view_deg" << YAML::Value << Num(b.field_of_view_deg) << YAML::EndMap;
+  }
   out << YAML::EndMap;
 }
 

@@ -181,6 +181,11 @@ std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::ostream& log) {
     }
     if (Draw(data, png, f.name, f.script, log)) drawn.push_back(png);
   }
+  // Figure 9 only where bag-of-words ran (no "skipped" line elsewhere).
+  if (WriteBowComparisonData(out_dir, data, rows)) {
+    const fs::path png = fig / "bow_comparison.png";
+    if (Draw(data, png, "bow_comparison", BowComparisonScript, log)) drawn.push_back(png);
+  }
   return drawn;
 }
 

@@ -15,6 +15,9 @@
 //                            bytes per query (dot plots, min-max over runs), and relative AUC vs
 //                            worst balance (one labelled point per strategy, the issue-8 target)
 //   8 strategy_sweep.png     relative AUC, worst balance, bytes per query vs n, every strategy
+//   9 bow_comparison.png     global descriptors vs bag-of-words (docs/bow.md): relative AUC and
+//                            query bytes vs n, partial-query sizes, votes off the centralized
+//                            best; drawn only when the folder has bow.csv
 #include <filesystem>
 #include <ostream>
 #include <string>
@@ -91,6 +94,12 @@ std::string StrategySweepScript(const std::filesystem::path& data_dir,
                                 const std::filesystem::path& png);
 // "point-to-point 10 Mbit/s": how the figures name a network variant.
 std::string NetworkText(const NetworkLabel& network);
+
+// Figure 9 (experiments/figures/figures_bow.cpp): its data from out_dir's bow.csv,
+// bow_sizes.csv and `rows`; false (nothing written) when out_dir has no bow.csv.
+bool WriteBowComparisonData(const std::filesystem::path& out_dir, const std::filesystem::path& data_dir,
+                            const std::vector<RunResult>& rows);
+std::string BowComparisonScript(const std::filesystem::path& data_dir, const std::filesystem::path& png);
 
 // Reads out_dir/runs.csv, writes the data of figures 3, 5, 6, 7, 8, then draws every figure whose data
 // exists. Figures that cannot be drawn (no data, gnuplot missing or failing) are reported on

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "experiments/data/bow_file.h"
 #include "experiments/data/loaders.h"
+#include "experiments/data/synthetic_bow.h"
 
 namespace dvpr {
 
@@ -69,12 +71,35 @@ DescriptorMatrix LoadTraining(const ExperimentConfig& c, const Dataset& deployme
   return {};
 }
 
+// The BoW vectors, only when a bow_ strategy runs (the default experiment's outputs and time do
+// not change): the user's file, cut to dataset.frames like the poses, or the synthetic model.
+BowData LoadBow(const ExperimentConfig& c, const std::string& origin, const Dataset& ds) {
+  const bool wanted = std::any_of(c.sweep.strategies.begin(), c.sweep.strategies.end(),
+                                  [](const StrategySpec& s) { return s.bag_of_words(); });
+  if (!wanted) return {};
+  const DatasetConfig& d = c.dataset;
+  if (!d.bow) {
+    return WithKey(origin, "dataset.synthetic_bow", [&] {
+      return SyntheticBow(ds.trajectory, d.synthetic, d.synthetic_bow.value_or(SyntheticBowParams{}), c.seed);
+    });
+  }
+  BowData bow = WithKey(origin, "dataset.bow", [&] { return LoadBowFile(*d.bow); });
+  const auto lines = static_cast<Eigen::Index>(bow.frames.size());
+  if (lines < ds.size() || (!d.frames && lines != ds.size())) {
+    throw ConfigError(origin + ": dataset.bow: " + d.bow->string() + " has " + std::to_string(lines) +
+                      " frames (lines), the dataset " + std::to_string(ds.size()));
+  }
+  bow.frames.resize(static_cast<std::size_t>(ds.size()));
+  return bow;
+}
+
 }  // namespace
 
 SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string& origin) {
   SharedInputs in;
   in.config = &config;
   in.deployment = LoadDeployment(config, origin);
+  in.bow = LoadBow(config, origin, in.deployment);
   const int largest = *std::max_element(config.sweep.robots.begin(), config.sweep.robots.end());
   if (in.deployment.size() < largest) {
     throw ConfigError(origin + ": robots: " + std::to_string(largest) + " robots but only " +

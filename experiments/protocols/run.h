@@ -15,7 +15,9 @@
 
 #include "agents/descriptors.h"
 #include "experiments/config/config.h"
+#include "experiments/data/bow_data.h"
 #include "experiments/data/dataset.h"
+#include "experiments/results/bow_rows.h"
 #include "experiments/results/results.h"
 #include "experiments/strategies/strategy_spec.h"
 #include "net_models/link_factory.h"
@@ -45,6 +47,7 @@ struct RunSpec {
 struct SharedInputs {
   const ExperimentConfig* config = nullptr;
   Dataset deployment;
+  BowData bow;                         // the deployment's BoW vectors; empty unless a bow_ strategy runs
   DescriptorMatrix training;           // no rows (dim columns) when training.centroids gives the centroids
   std::filesystem::path out_dir;       // centroids go to out_dir/centroids/
 };
@@ -59,6 +62,8 @@ struct RunOutput {
   std::vector<MessageRow> messages;   // only when outputs.messages
   std::vector<PrCurve> curves;        // for figure 2; kept only at outputs.pr_robots, run 0
   std::vector<FailoverRow> failover;  // sim: one per dropped robot (failover.csv)
+  std::vector<BowRow> bow;            // bow_ strategies only (bow.csv)
+  std::vector<BowSizeRow> bow_sizes;  // bow_ strategies only (bow_sizes.csv)
 };
 
 using RunFunction = std::function<RunOutput(const RunSpec&)>;

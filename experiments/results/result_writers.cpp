@@ -32,6 +32,11 @@ const char* const kMessagesHeader =
     "wire_bytes,dropped," DVPR_NETWORK_COLUMNS;
 const char* const kFailoverHeader =
     "protocol,strategy,robots,run,robot,at_ns,detected_ns,stored,kept,incomplete_queries," DVPR_NETWORK_COLUMNS;
+const char* const kBowHeader =
+    "protocol,strategy,robots,run,queries,partial_queries,payload_bytes,query_bytes_per_query,mean_words,"
+    "mean_part_words,part_bytes_p50,part_bytes_p90,part_bytes_max,voted,vote_not_centralized,"
+    "vote_not_centralized_fraction," DVPR_NETWORK_COLUMNS;
+const char* const kBowSizesHeader = "protocol,strategy,robots,run,payload_bytes,messages," DVPR_NETWORK_COLUMNS;
 #undef DVPR_NETWORK_COLUMNS
 
 std::string FormatDouble(double v) {
@@ -113,6 +118,24 @@ std::string CsvRow(const MessageRow& r) {
          std::to_string(r.src) + "," + std::to_string(r.dst) + "," + r.channel + "," + r.type +
          "," + std::to_string(r.payload_bytes) + "," + std::to_string(r.wire_bytes) + "," +
          (r.dropped ? "1" : "0") + "," + Network(r.key.network);
+}
+
+std::string CsvRow(const BowRow& r) {
+  const auto ratio = [](std::int64_t a, std::int64_t b) {
+    return b > 0 ? static_cast<double>(a) / static_cast<double>(b) : kNotApplicable;
+  };
+  std::ostringstream s;
+  s << Key(r.key) << ',' << r.queries << ',' << r.partial_queries << ',' << r.payload_bytes << ','
+    << FormatDouble(ratio(r.payload_bytes, r.queries)) << ',' << FormatDouble(r.mean_words) << ','
+    << FormatDouble(r.mean_part_words) << ',' << r.part_bytes_p50 << ',' << r.part_bytes_p90 << ','
+    << r.part_bytes_max << ',' << r.voted << ',' << r.vote_not_centralized << ','
+    << FormatDouble(ratio(r.vote_not_centralized, r.voted)) << ',' << Network(r.key.network);
+  return s.str();
+}
+
+std::string CsvRow(const BowSizeRow& r) {
+  return Key(r.key) + "," + std::to_string(r.payload_bytes) + "," + std::to_string(r.messages) + "," +
+         Network(r.key.network);
 }
 
 void CreateOutputDir(const std::filesystem::path& dir) {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "experiments/results/bow_rows.h"
 #include "experiments/results/results.h"
 
 namespace dvpr {
@@ -52,6 +53,11 @@ std::string CsvRow(const LinkRow& r);
 std::string CsvRow(const QueryRow& r);
 std::string CsvRow(const MessageRow& r);
 std::string CsvRow(const FailoverRow& r);
+// bow.csv and bow_sizes.csv, written only when a bow_ strategy runs (docs/bow.md).
+extern const char* const kBowHeader;
+extern const char* const kBowSizesHeader;
+std::string CsvRow(const BowRow& r);
+std::string CsvRow(const BowSizeRow& r);
 
 // Whole files at once (tests, small outputs).
 void WriteRunsCsv(const std::filesystem::path& path, const std::vector<RunResult>& rows);

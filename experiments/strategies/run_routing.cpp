@@ -110,7 +110,7 @@ SimTime LastFrameTime(const StrategyInputs& in, int robots) {
 
 TrainingUse TrainingUseOf(const StrategySpec& spec, const StrategyInputs& in) {
   TrainingUse use;
-  if (spec.broadcast()) return use;
+  if (spec.broadcast() || spec.bag_of_words()) return use;
   switch (spec.table) {
     case Table::kPaper: use.run_centroids = true; break;
     case Table::kSampleKMeans:
@@ -126,7 +126,26 @@ TrainingUse TrainingUseOf(const StrategySpec& spec, const StrategyInputs& in) {
   return use;
 }
 
+namespace {
+
+RunRouting BowRouting(const StrategySpec& spec, const StrategyInputs& in, int robots) {
+  if (in.bow == nullptr || in.bow->empty()) {
+    throw std::invalid_argument("strategy " + spec.name + ": the dataset has no bag-of-words vectors");
+  }
+  RunRouting r;
+  if (spec.bow == StrategySpec::Bow::kModulo) {
+    r.words = std::make_shared<const WordOwners>(WordOwners::Modulo(in.bow->vocabulary, robots));
+  } else if (spec.bow == StrategySpec::Bow::kDocumentFrequency) {
+    r.words = std::make_shared<const WordOwners>(
+        WordOwners::ByDocumentFrequency(DocumentFrequency(in.bow->frames, in.bow->vocabulary), robots));
+  }
+  return r;
+}
+
+}  // namespace
+
 RunRouting BuildRunRouting(const StrategySpec& spec, const StrategyInputs& in, int robots, int run) {
+  if (spec.bag_of_words()) return BowRouting(spec, in, robots);
   if (in.training == nullptr || in.deployment == nullptr) {
     throw std::invalid_argument("BuildRunRouting: StrategyInputs needs the training and deployment descriptors");
   }

@@ -12,11 +12,13 @@
 #include <memory>
 #include <optional>
 
+#include "agents/bow_words.h"
 #include "agents/centroid_table.h"
 #include "agents/agent_routing.h"
 #include "agents/failover_routing.h"
 #include "agents/recluster/recluster.h"
 #include "agents/routing.h"
+#include "experiments/data/bow_data.h"
 #include "experiments/strategies/run_centroids.h"
 #include "experiments/strategies/strategy_spec.h"
 
@@ -32,6 +34,7 @@ struct StrategyInputs {
   // enabled: every stateless strategy's team routes around lost robots (FailoverTeam); the
   // re-clustering strategies have no failover (BuildRunRouting throws).
   FailoverParams failover;
+  const BowData* bow = nullptr;                  // the deployment's BoW vectors: bow_ strategies' word owners
 };
 
 struct RunRouting {
@@ -47,6 +50,11 @@ struct RunRouting {
   // Set when the strategy re-clusters: C, P, the sample stride, seed RunSeed(config seed, robots,
   // run). The static protocol plans the epochs from these and the start table.
   std::optional<ReclusterParams> recluster;
+  // bow_decentralized*: which robot owns each word (modulo n, or LPT on the document
+  // frequencies of the deployment's vectors, known before deployment like their idf); the
+  // other bow_ strategies and the descriptor strategies leave it null, and bow_ ones set no
+  // table nor team.
+  std::shared_ptr<const WordOwners> words;
 };
 
 // What a strategy's table takes from the training side, so a sweep can check it before any run

@@ -160,6 +160,15 @@ Spec ParseParts(std::string_view name) {
     s.routing = Spec::Routing::kBroadcast;
     return s;
   }
+  for (const auto& [bow_name, kind] : {std::pair{"bow_centralized", Spec::Bow::kCentralized},
+                                       std::pair{"bow_broadcast", Spec::Bow::kBroadcast},
+                                       std::pair{"bow_decentralized", Spec::Bow::kModulo},
+                                       std::pair{"bow_decentralized_df", Spec::Bow::kDocumentFrequency}}) {
+    if (name == bow_name) {
+      s.bow = kind;
+      return s;
+    }
+  }
   const std::size_t plus = name.find('+');
   if (plus == std::string_view::npos) {
     if (ReadPart(name, kRoutings, s) || ReadPart(name, kTables, s) ||
@@ -167,7 +176,8 @@ Spec ParseParts(std::string_view name) {
       return s;
     }
     throw std::invalid_argument("unknown name (expected decentralized, broadcast, " + Forms(kRoutings) + ", " +
-                                Forms(kTables) + ", " + std::string(kRecluster.form) + " or TABLE+ROUTING)");
+                                Forms(kTables) + ", " + std::string(kRecluster.form) +
+                                ", bow_centralized, bow_broadcast, bow_decentralized, bow_decentralized_df or TABLE+ROUTING)");
   }
   if (name.find('+', plus + 1) != std::string_view::npos) {
     throw std::invalid_argument("at most one '+' (TABLE+ROUTING)");

@@ -23,6 +23,11 @@
 //   recluster_cC_pP           starts as lpt_cC_train; every P frames of each robot's stream the
 //                             leader re-clusters (k = C n) a sample of the descriptors seen so far
 //                             and the robots move what they no longer own (agents/recluster.h)
+//   bow_centralized           bag-of-words reference: one index of every frame's tf-idf vector
+//   bow_broadcast             the full BoW vector to every robot, each answers from its own frames
+//   bow_decentralized         the distributed inverted index (Cieslewski and Scaramuzza, ICRA
+//                             2017): word w owned by robot w mod n, partial queries, vote
+//   bow_decentralized_df      the same with words packed onto robots by document frequency (LPT)
 //   <table>+<routing>         a table above (lpt_, bounded_, sample_, balanced_) combined with a
 //                             routing above (multi_probe_, adaptive_probe_, replicate_), e.g.
 //                             lpt_c10+adaptive_probe_0.1
@@ -57,12 +62,16 @@ struct StrategySpec {
   // > 0: adaptive re-clustering every this many frames of each robot's stream (recluster_cC_pP);
   // the table above (lpt_cC_train) is the one the team starts with.
   int recluster_period = 0;
+  // Bag-of-words strategies (docs/bow.md): they use the dataset's BoW vectors, no table.
+  enum class Bow { kNone, kCentralized, kBroadcast, kModulo, kDocumentFrequency };
+  Bow bow = Bow::kNone;
 
   bool broadcast() const { return routing == Routing::kBroadcast; }
   bool reclusters() const { return recluster_period > 0; }
+  bool bag_of_words() const { return bow != Bow::kNone; }
   // The paper's method itself (`decentralized`): its table, nearest owner, no re-clustering.
   bool paper_method() const {
-    return table == Table::kPaper && routing == Routing::kNearest && !reclusters();
+    return table == Table::kPaper && routing == Routing::kNearest && !reclusters() && !bag_of_words();
   }
   bool operator==(const StrategySpec&) const = default;
 };

@@ -6,6 +6,7 @@
 
 #include "experiments/sweep/run_executor.h"
 #include "experiments/protocols/sim/sim_protocol.h"
+#include "experiments/protocols/paper/static_bow.h"
 #include "experiments/protocols/paper/static_protocol.h"
 #include "experiments/protocols/paper/static_recluster.h"
 #include "experiments/protocols/paper/static_strategies.h"
@@ -72,6 +73,50 @@ PaperRunResult PaperStrategyRun(const StrategySpec& spec, const RunSpec& run, co
   return r;
 }
 
+// A bow_ strategy in the static protocol (experiments/protocols/paper/static_bow.h): its row,
+// per-robot load, bow.csv row and partial-query sizes.
+// Its PR curve is not kept: figure 2 compares the descriptor strategies with their centralized one.
+void AppendBowRun(const StrategySpec& strategy, const RunSpec& spec, const BowEvaluator& bow,
+                  const StrategyInputs& inputs, RunOutput& out) {
+  const RunRouting routing = BuildRunRouting(strategy, inputs, spec.robots, spec.run);
+  BowRunResult r = routing.words ? bow.Evaluate(*routing.words, strategy.name, false)
+                                 : bow.Reference(strategy.name, spec.robots,
+                                                 strategy.bow == StrategySpec::Bow::kBroadcast);
+  r.paper.row.key = spec.Key(strategy.name);
+  r.paper.row.seed = spec.seed;
+  out.runs.push_back(r.paper.row);
+  for (auto& load : r.paper.per_robot) {
+    load.key = r.paper.row.key;
+    out.per_robot.push_back(std::move(load));
+  }
+  r.bow.key = r.paper.row.key;
+  out.bow.push_back(r.bow);
+  for (const auto& [bytes, count] : r.part_sizes) out.bow_sizes.push_back({r.paper.row.key, bytes, count});
+}
+
+// Beside the bow_ strategies, a descriptor strategy's query messages in the same terms
+// (bow.csv), so the comparison sets the bytes of the three designs side by side.
+void AppendDescriptorTraffic(const StrategySpec& strategy, const RunSpec& spec, const StrategyInputs& inputs,
+                             RunOutput& out) {
+  const DescriptorMatrix& x = *inputs.deployment;
+  BowRunResult r;
+  if (strategy.broadcast()) {
+    r = DescriptorQueryTraffic(nullptr, spec.robots, x);
+  } else {
+    const RunRouting routing = BuildRunRouting(strategy, inputs, spec.robots, spec.run);
+    if (routing.stateless == nullptr) return;  // re-clustering: its traffic is the simulation's to count
+    r = DescriptorQueryTraffic(routing.stateless, spec.robots, x);
+  }
+  r.bow.key = spec.Key(strategy.name);
+  out.bow.push_back(r.bow);
+  for (const auto& [bytes, count] : r.part_sizes) out.bow_sizes.push_back({r.bow.key, bytes, count});
+}
+
+bool AnyBow(const ExperimentConfig& c) {
+  return std::any_of(c.sweep.strategies.begin(), c.sweep.strategies.end(),
+                     [](const StrategySpec& s) { return s.bag_of_words(); });
+}
+
 RunFunction MakePaperRun(const SharedInputs& in) {
   PaperProtocolParams params = ToPaperParams(in);
   if (!params.centroids_out_dir.empty()) std::filesystem::create_directories(params.centroids_out_dir);
@@ -79,7 +124,10 @@ RunFunction MakePaperRun(const SharedInputs& in) {
   const int pr_robots = PrRobots(*in.config);
   const StrategyInputs strategy_inputs = StrategyInputsOf(in);
   const std::int64_t frames = in.deployment.size();  // every frame is one query
-  return [params, evaluator, pr_robots, strategy_inputs, frames](const RunSpec& spec) {
+  // The BoW index and its centralized ranking, once for all runs; only when a bow_ strategy runs.
+  std::shared_ptr<const BowEvaluator> bow;
+  if (AnyBow(*in.config)) bow = std::make_shared<const BowEvaluator>(*evaluator, in.bow);
+  return [params, evaluator, bow, pr_robots, strategy_inputs, frames](const RunSpec& spec) {
     RunOutput out;
     PaperProtocolParams run_params = params;
     run_params.keep_curves = spec.robots == pr_robots && spec.run == 0;
@@ -87,6 +135,11 @@ RunFunction MakePaperRun(const SharedInputs& in) {
     StrategyInputs run_inputs = strategy_inputs;
     run_inputs.cache = &centroids;
     for (const StrategySpec& strategy : spec.strategies) {
+      if (strategy.bag_of_words()) {
+        AppendBowRun(strategy, spec, *bow, run_inputs, out);
+        continue;
+      }
+      if (bow) AppendDescriptorTraffic(strategy, spec, run_inputs, out);
       if (strategy.broadcast()) {
         out.runs.push_back(PaperBroadcastRow(spec, *evaluator, frames));
         continue;

@@ -94,10 +94,24 @@ void CheckStrategies(const SharedInputs& in, const std::string& origin) {
   if (!c.training.run_centroids.centroids_pattern.empty()) CheckCentroidFilesOf(in, centroid_readers, origin);
 }
 
+// The bag-of-words strategies run in the static protocol only (docs/bow.md).
+void CheckBowProtocols(const ExperimentConfig& c, const std::string& origin) {
+  const auto& protocols = c.sweep.protocols;
+  const bool other = std::any_of(protocols.begin(), protocols.end(), [](const std::string& p) { return p != "paper"; });
+  for (std::size_t i = 0; i < c.sweep.strategies.size(); ++i) {
+    const StrategySpec& s = c.sweep.strategies[i];
+    if (s.bag_of_words() && other) {
+      throw ConfigError(origin + ": strategies[" + std::to_string(i) + "]: '" + s.name +
+                        "' runs only in the paper protocol (protocols: [paper]); see docs/bow.md");
+    }
+  }
+}
+
 }  // namespace
 
 void CheckSweepInputs(const SharedInputs& inputs, const std::string& origin) {
   if (inputs.config == nullptr) throw std::invalid_argument("CheckSweepInputs: the shared inputs have no config");
+  CheckBowProtocols(*inputs.config, origin);
   CheckNetworks(*inputs.config, origin);
   CheckStrategies(inputs, origin);
 }

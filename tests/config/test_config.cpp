@@ -179,6 +179,23 @@ TEST_F(ConfigTest, ParamsErrorsCarryTheKeyPath) {
               "test.yaml: evaluation.gt_radius_m: must be in [0.001, 1000000000], got 0");
 }
 
+// Bag-of-words keys (docs/bow.md): the model is set to its defaults only when a bow_ strategy
+// runs, its fields are range-checked with their key path, and dataset.bow must exist.
+TEST_F(ConfigTest, BagOfWordsKeys) {
+  EXPECT_FALSE(Parse("name: x\n").dataset.synthetic_bow);
+  EXPECT_EQ(Parse("strategies: [bow_decentralized]\n").dataset.synthetic_bow, SyntheticBowParams{});
+  const ExperimentConfig c = Parse("dataset: {synthetic_bow: {features: 300, vocabulary: 10000}}\n");
+  ASSERT_TRUE(c.dataset.synthetic_bow);
+  EXPECT_EQ(c.dataset.synthetic_bow->features, 300);
+  EXPECT_EQ(c.dataset.synthetic_bow->vocabulary, 10000);
+  EXPECT_EQ(ErrorOf("dataset: {synthetic_bow: {vocabulary: 1}}\n").rfind(
+                "test.yaml: dataset.synthetic_bow.vocabulary: ", 0), 0u);
+  EXPECT_EQ(ErrorOf("dataset: {synthetic_bow: {range_m: 0}}\n"),
+            "test.yaml: dataset.synthetic_bow.range_m: must be in (0, 1000]");
+  EXPECT_EQ(ErrorOf("dataset: {synthetic_bow: {words: 3}}\n").rfind("test.yaml: dataset.synthetic_bow.words: ", 0), 0u);
+  EXPECT_EQ(ErrorOf("dataset: {bow: no_such_file.txt}\n").rfind("test.yaml: dataset.bow: ", 0), 0u);
+}
+
 // One YAML value that several params structs hold is in each of them.
 TEST_F(ConfigTest, SharedValuesReachEveryParamsStruct) {
   const ExperimentConfig c =

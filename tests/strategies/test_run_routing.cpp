@@ -240,5 +240,27 @@ TEST(DeploymentSample, TakesEveryTwentiethFrame) {
   EXPECT_EQ(s(2, 0), 40.0f);
 }
 
+// bow_ strategies take their word owners from the dataset's BoW vectors, no table. Document
+// frequencies of {0, 1}, {0}, {2}: [2, 1, 1]; LPT on 2 robots: w0 -> r0, w1 -> r1, w2 -> r1.
+TEST_F(RunRoutingTest, BagOfWordsStrategiesAssignWords) {
+  BowData bow;
+  bow.vocabulary = 3;
+  bow.frames = {{{0, .5f}, {1, .5f}}, {{0, 1.f}}, {{2, 1.f}}};
+  inputs_.bow = &bow;
+  const RunRouting modulo = Build("bow_decentralized", 2);
+  ASSERT_TRUE(modulo.words);
+  EXPECT_EQ(modulo.words->OwnerOf(2), RobotId(0));
+  EXPECT_FALSE(modulo.table);
+  EXPECT_FALSE(modulo.team);
+  const RunRouting df = Build("bow_decentralized_df", 2);
+  ASSERT_TRUE(df.words);
+  EXPECT_EQ(df.words->OwnerOf(0), RobotId(0));
+  EXPECT_EQ(df.words->OwnerOf(1), RobotId(1));
+  EXPECT_EQ(df.words->OwnerOf(2), RobotId(1));
+  EXPECT_FALSE(Build("bow_broadcast", 2).words);
+  inputs_.bow = nullptr;
+  EXPECT_THROW(Build("bow_decentralized", 2), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace dvpr

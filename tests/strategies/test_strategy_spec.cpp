@@ -32,6 +32,19 @@ TEST(ParseStrategy, BroadcastSaysSo) {
   EXPECT_FALSE(s.reclusters());
 }
 
+TEST(ParseStrategy, BagOfWordsNames) {
+  EXPECT_EQ(ParseStrategy("bow_centralized").bow, StrategySpec::Bow::kCentralized);
+  EXPECT_EQ(ParseStrategy("bow_broadcast").bow, StrategySpec::Bow::kBroadcast);
+  EXPECT_EQ(ParseStrategy("bow_decentralized").bow, StrategySpec::Bow::kModulo);
+  const StrategySpec df = ParseStrategy("bow_decentralized_df");
+  EXPECT_EQ(df.bow, StrategySpec::Bow::kDocumentFrequency);
+  EXPECT_TRUE(df.bag_of_words());
+  EXPECT_FALSE(df.paper_method());
+  EXPECT_FALSE(df.broadcast());
+  EXPECT_FALSE(ParseStrategy("decentralized").bag_of_words());
+  EXPECT_THROW(ParseStrategy("bow_decentralized_x"), std::invalid_argument);
+}
+
 TEST(ParseStrategy, ProbingReadsItsCountOrEpsilon) {
   const StrategySpec m = ParseStrategy("multi_probe_5");
   EXPECT_EQ(m.table, Table::kPaper);

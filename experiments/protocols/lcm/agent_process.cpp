@@ -232,6 +232,11 @@ Team LoadTeam(const AgentProcessOptions& o) {
                                 "' re-clusters during the run, which dvpr agent does not implement; run it in the "
                                 "simulation (dvpr run)");
   }
+  if (t.strategy.bag_of_words()) {
+    throw std::invalid_argument("--strategy: '" + t.strategy.name +
+                                "' is a bag-of-words strategy, which only the static protocol implements "
+                                "(docs/bow.md); run it with dvpr run and protocols: [paper]");
+  }
   t.inputs = LoadSharedInputs(t.config, o.config.string());
   t.inputs.config = &t.config;
   t.robots = o.robots.value_or(t.config.sweep.robots.front());

@@ -337,6 +337,12 @@ void WriteLaunchFiles(const std::filesystem::path& dir, const ExperimentConfig& 
 int RunLaunch(const LaunchOptions& o, std::ostream& out) {
   o.Validate();
   const ExperimentConfig config = LoadConfig(o.config, o.overrides);
+  for (const StrategySpec& s : config.sweep.strategies) {
+    if (s.bag_of_words()) {  // before any agent starts (docs/bow.md)
+      throw std::invalid_argument("strategies: '" + s.name + "' is a bag-of-words strategy, which dvpr launch does "
+                                  "not run (only the static protocol implements it; docs/bow.md)");
+    }
+  }
   const auto target = o.out.empty() ? std::filesystem::path("results") / (config.name + "_lcm") : o.out;
   // Agents write into the temporary folder; the target appears only if some team ran.
   ResultFolder folder(target);
