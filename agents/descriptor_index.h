@@ -6,23 +6,14 @@
 // grown geometrically, with squared norms cached so a search is one
 // matrix-vector product: ||x - q||^2 = ||x||^2 - 2 x.q + ||q||^2, the same
 // expansion the static protocol's batched distances use.
-//
-// Search stays exact as the store grows (issue 15): from kGroupedFrom rows on, the rows are
-// grouped by sub-centroids (agents/subcentroids.h) whose triangle-inequality bounds skip groups
-// that cannot hold the nearest row, a fast float distance screens the rest, and the few rows that
-// rounding cannot separate from the best get the distance the plain search computes for them, bit
-// for bit (the same Eigen matrix-vector product, see GemvRowDot): same match, same distance, same
-// tie to the entry added first, whichever path ran.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <optional>
-#include <utility>
 #include <vector>
 
 #include "agents/descriptors.h"
 #include "agents/ids.h"
-#include "agents/subcentroids.h"
 
 namespace dvpr {
 
@@ -55,12 +46,6 @@ class IncrementalIndex {
   // query_frame; ties go to the entry added first. Every stored entry counts
   // as a comparison.
   IndexSearchResult Search(const float* query, FrameId query_frame, int window) const;
-  // The same result by looking at every row: the search of a small store, and the reference the
-  // grouped search is tested against.
-  IndexSearchResult SearchAll(const float* query, FrameId query_frame, int window) const;
-
-  // Stores of at least this many rows are searched by groups.
-  static constexpr std::size_t kGroupedFrom = 512;
 
   const std::vector<IndexEntry>& entries() const { return entries_; }
   // The stored descriptor of entry i (dim() floats), valid until the next Add or RemoveIf.
@@ -75,21 +60,8 @@ class IncrementalIndex {
   int dim_;
   std::vector<float> data_;   // size() x dim, row-major
   std::vector<float> norms_;  // squared norms of the rows
-  float max_norm_ = 0.0f;     // of norms_ (a bound for RemoveIf's survivors too)
-  SubCentroids groups_;       // empty below kGroupedFrom rows
-  std::size_t regroup_at_ = kGroupedFrom;
   std::vector<IndexEntry> entries_;
-  bool InWindow(std::size_t i, FrameId query_frame, int window) const {
-    const long gap = static_cast<long>(entries_[i].frame.value) - query_frame.value;
-    return (gap < 0 ? -gap : gap) <= window;
-  }
-  float PlainDistance(std::size_t i, const float* query, float q_norm) const;
-  double CollectCandidates(const float* query, float q_norm, double err, FrameId query_frame, int window) const;
-  IndexSearchResult SearchGrouped(const float* query, FrameId query_frame, int window) const;
   mutable std::vector<float> scratch_;
-  mutable std::vector<double> bounds_;
-  mutable std::vector<std::uint32_t> order_;
-  mutable std::vector<std::pair<float, std::uint32_t>> candidates_;
 };
 
 }  // namespace dvpr
