@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "sim/event_heap.h"
+#include "sim/radix_event_queue.h"
 #include "sim/random.h"
 #include "sim/simulator.h"
 
@@ -49,7 +51,31 @@ void BM_HoldModel(benchmark::State& state) {
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(executed));
 }
-BENCHMARK(BM_HoldModel)->Arg(16)->Arg(1024)->Arg(65536)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HoldModel)->Arg(16)->Arg(1024)->Arg(65536)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+
+// The hold model on a bare queue, to choose the Simulator's queue (issue 15): pop the earliest
+// (time, key) entry, push one at a random delay after it, `pending` entries throughout.
+template <typename Queue>
+void BM_QueueHold(benchmark::State& state) {
+  const auto pending = static_cast<std::size_t>(state.range(0));
+  const auto delays = Delays(1 << 16);
+  constexpr std::uint64_t kOps = 4'000'000;
+  std::uint64_t done = 0;
+  for (auto _ : state) {
+    Queue q;
+    std::uint64_t key = 1;
+    for (std::size_t i = 0; i < pending; ++i) q.Push({delays[i & 0xFFFF], key++});
+    for (std::uint64_t i = 0; i < kOps; ++i) {
+      const auto e = q.Pop();
+      q.Push({e.time + delays[i & 0xFFFF], key++});
+    }
+    benchmark::DoNotOptimize(q.size());
+    done += kOps;
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(done));
+}
+BENCHMARK(BM_QueueHold<EventHeap>)->Arg(16)->Arg(1024)->Arg(65536)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_QueueHold<RadixEventQueue>)->Arg(16)->Arg(1024)->Arg(65536)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 
 // Schedule a batch of events at random times, then run them all.
 void BM_ScheduleThenRun(benchmark::State& state) {

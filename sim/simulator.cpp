@@ -58,9 +58,9 @@ void Simulator::Execute(const Entry& e) {
 
 void Simulator::RunUntil(std::int64_t until) {
   stop_ = false;
-  while (!heap_.empty() && !stop_) {
-    if (heap_.top().time > until) break;
-    const Entry e = heap_.Pop();
+  while (!queue_.empty() && !stop_) {
+    if (queue_.Top().time > until) break;
+    const Entry e = queue_.Pop();
     if (SlotAt(e.key & kSlotMask).key != e.key) continue;  // cancelled
     Execute(e);
   }

@@ -1,0 +1,73 @@
+#pragma once
+// What the simulation benchmarks run on: KITTI 00 with synthetic descriptors, that trajectory
+// tiled to any length (copies 3 km apart, so each copy is new ground), the decentralized
+// centroid table, point-to-point links, and the process's peak memory.
+#include <sys/resource.h>
+
+#include <memory>
+#include <string>
+
+#include "agents/centroid_table.h"
+#include "agents/kmeans.h"
+#include "experiments/data/loaders.h"
+#include "experiments/data/synthetic.h"
+#include "experiments/protocols/sim/simulation.h"
+
+namespace dvpr::bench {
+
+inline Trajectory Kitti00Poses() {
+  return LoadKittiPoses(std::string(DVPR_SOURCE_DIR) + "/data/kitti/00_poses.txt");
+}
+
+inline Dataset Kitti00() {
+  Dataset d;
+  d.name = "kitti00";
+  d.trajectory = Kitti00Poses();
+  d.descriptors = SyntheticDeployment(d.trajectory, SyntheticParams{}, 1);
+  return d;
+}
+
+// The first `frames` frames of KITTI 00 repeated, copy c shifted 3000 c metres along x.
+inline Dataset Tiled(Eigen::Index frames) {
+  const Trajectory base = Kitti00Poses();
+  const Eigen::Index n = base.size();
+  Dataset d;
+  d.name = "tiled";
+  d.trajectory.positions.resize(frames, 3);
+  d.trajectory.headings.resize(frames, 3);
+  for (Eigen::Index first = 0; first < frames; first += n) {
+    const Eigen::Index rows = std::min(n, frames - first);
+    d.trajectory.positions.middleRows(first, rows) = base.positions.topRows(rows);
+    d.trajectory.positions.middleRows(first, rows).col(0).array() += 3000.0 * static_cast<double>(first / n);
+    d.trajectory.headings.middleRows(first, rows) = base.headings.topRows(rows);
+  }
+  d.descriptors = SyntheticDeployment(d.trajectory, SyntheticParams{}, 1);
+  return d;
+}
+
+inline std::shared_ptr<const CentroidTable> Table(int robots, int iterations) {
+  KMeansParams p;
+  p.k = robots;
+  p.seed = 3;
+  p.max_iterations = iterations;
+  const DescriptorMatrix training =
+      SyntheticTrainingDiverse(SyntheticParams{}, SyntheticTrainingParams{.samples = 20000}, 2);
+  return std::make_shared<CentroidTable>(CentroidTable::RoundRobin(KMeans(training, p), robots));
+}
+
+inline SimRunParams PointToPoint(int robots) {
+  SimRunParams p;
+  p.robots = robots;
+  p.network.model = LinkModelKind::kPointToPoint;
+  p.network.bandwidth = DataRate::Mbps(10);
+  p.network.latency = SimTime::Millis(2);
+  return p;
+}
+
+inline double PeakRssMiB() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) / 1024.0;
+}
+
+}  // namespace dvpr::bench
