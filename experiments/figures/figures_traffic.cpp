@@ -22,6 +22,13 @@ std::string Quote(const std::string& s) {
   return out + "'";
 }
 
+// A gnuplot string in double quotes, where "\\n" breaks the line.
+std::string DQuote(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\\\"") : std::string(1, c);
+  return out + "\"";
+}
+
 std::string Xtics(const std::vector<int>& robots) {
   std::string s = "set xtics (";
   for (std::size_t i = 0; i < robots.size(); ++i) s += (i ? ", " : "") + std::to_string(robots[i]);
@@ -64,10 +71,11 @@ std::string PrBytesPanel(const fs::path& dir, const TrafficTable& t, int v, cons
   const int n = robots.back();
   const double ratio = t.Find("broadcast", v, n)->pr_bytes_per_query / t.Find("decentralized", v, n)->pr_bytes_per_query;
   std::ostringstream s;
-  s << "set title 'Place-recognition bytes per query (query + reply, every copy)\\n" << NetworkName(*t.Network(v))
-    << ", mean over runs'\nset xlabel 'robots n'\nset ylabel 'wire bytes per query'\nset logscale y\n"
-    << Xtics(t.robots) << "set key outside bottom center horizontal\n"
-    << "set label 1 " << Quote("measured at n = " + std::to_string(n) + ": broadcast / decentralized = " +
+  s << "set title " << DQuote("Place-recognition bytes per query (query + reply, every copy)\\n" +
+                              NetworkName(*t.Network(v)) + ", mean over runs")
+    << "\nset xlabel 'robots n'\nset ylabel 'wire bytes per query'\nset logscale y\n"
+    << Xtics(t.robots) << "set key below horizontal\n"
+    << "set label 1 " << DQuote("measured at n = " + std::to_string(n) + ": broadcast / decentralized = " +
                                 FormatDouble(ratio, 1) + "\\n(n - 1 = " + std::to_string(n - 1) + ")")
     << " at graph 0.03, graph 0.93 left front\n"
     << "plot 'pr_bytes.dat' index 0 using 1:2 with linespoints lw 2 pt 7 " << Colour(t, "decentralized")
@@ -98,7 +106,7 @@ std::string PrRatioPanel(const fs::path& dir, const TrafficTable& t) {
   WriteFileAtomic(dir / "pr_ratio.dat", dat);
   WriteFileAtomic(dir / "pr_band.dat", band);
   return "set title 'Broadcast / decentralized place-recognition bytes, every network'\nset ylabel 'ratio'\n"
-         "set key outside bottom center maxrows 4\n" + plot.str() + "\n";
+         "set key below maxrows 4\n" + plot.str() + "\n";
 }
 
 }  // namespace
@@ -279,7 +287,7 @@ std::optional<FigureScript> WriteRobotLoadFigure(const fs::path& dir, const Traf
     << Quote("Searches served per robot, one run (n = " + std::to_string(n) + ", run 0, " +
              NetworkName(*t.Network(v)) + ")") << " font ',13'\n"
     << "set style fill solid 0.5\nset boxwidth 0.8\nset grid ytics\nset xlabel 'robot'\nset ylabel 'searches served'\n"
-    << "set xrange [-0.7:" << n - 0.3 << "]\nset xtics 1\nset key outside bottom center horizontal\n";
+    << "set xrange [-0.7:" << n - 0.3 << "]\nset xtics 1\nset key below horizontal\n";
   for (const std::string& st : shown) s << LoadPanel(dir, t, per_robot, st, v, n);
   return FigureScript{s.str() + "unset multiplot\n", shown.size() == 1 ? 900 : 1500, 600};
 }
@@ -324,12 +332,14 @@ std::optional<FigureScript> WriteMatrixFigure(const fs::path& dir, const Traffic
   s << "set multiplot layout 1," << shown.size() << " title "
     << Quote("Wire bytes sent, sender x receiver, one run (n = " + std::to_string(n) + ", run 0, " +
              NetworkName(*t.Network(v)) + ")") << " font ',13'\n"
-    << "set size ratio -1\nunset grid\nset xlabel 'receiver'\nset ylabel 'sender'\nset cblabel 'kB sent'\n"
+    << "set size ratio -1\nunset grid\nunset key\nset xlabel 'receiver'\nset ylabel 'sender'\n"
     << "set xrange [-0.5:" << n - 0.5 << "]\nset yrange [" << n - 0.5 << ":-0.5]\nset cbrange [0:" << FormatDouble(top)
     << "]\nset palette defined (0 '#ffffff', 1 '#c6dbef', 2 '#6baed6', 3 '#2171b5', 4 '#08306b')\n"
     << "set tics out\nset xtics " << std::max(1, n / 10) << "\nset ytics " << std::max(1, n / 10) << "\n";
   for (std::size_t i = 0; i < shown.size(); ++i) {
-    s << "set title " << Quote(shown[i]) << " tc rgb '" << figure_style::StrategyColour(t.StrategyIndex(shown[i]))
+    // One colour bar, beside the last panel: both panels share its range.
+    s << (i + 1 == shown.size() ? "set colorbox\nset cblabel 'kB sent'\n" : "unset colorbox\n") << "set title "
+      << Quote(shown[i]) << " tc rgb '" << figure_style::StrategyColour(t.StrategyIndex(shown[i]))
       << "'\nplot 'matrix_" << i << ".dat' matrix with image notitle\n";
   }
   return FigureScript{s.str() + "unset multiplot\n", shown.size() == 1 ? 800 : 1400, 650};
@@ -348,7 +358,7 @@ std::vector<std::size_t> SharedMediumVariants(const TrafficTable& t) {
 std::string OfferedPanel(const fs::path& dir, const TrafficTable& t, const std::vector<std::size_t>& shared) {
   std::string dat;
   std::ostringstream plot;
-  plot << "plot x with lines lw 1 dt 3 lc rgb '#555555' title 'delivered = offered'";
+  plot << "plot x with lines lw 2 dt 2 lc rgb '#777777' title 'delivered = offered'";
   int block = 0;
   for (const std::string& s : t.strategies) {
     for (std::size_t i : shared) {
@@ -366,7 +376,7 @@ std::string OfferedPanel(const fs::path& dir, const TrafficTable& t, const std::
   WriteFileAtomic(dir / "offered.dat", dat);
   return "set title 'Offered vs delivered load (points: n = " + std::to_string(t.robots.front()) + " .. " +
          std::to_string(t.robots.back()) + ")'\nset xlabel 'offered load, every copy sent [Mbit/s]'\n"
-         "set ylabel 'delivered load [Mbit/s]'\nset logscale xy\nset key outside bottom center maxrows 4\n" +
+         "set ylabel 'delivered load [Mbit/s]'\nset logscale xy\nset key below maxrows 4\n" +
          plot.str() + "\n";
 }
 
@@ -403,7 +413,7 @@ std::string LatencyPanel(const fs::path& dir, const TrafficTable& t, const std::
   }
   return "set title 'Mean query latency vs bandwidth at n = " + std::to_string(n) +
          "'\nset xlabel 'bandwidth of the shared medium [Mbit/s]'\nset ylabel 'mean query latency [ms]'\n"
-         "set logscale xy\nset key outside bottom center maxrows 4\n" + plot.str() + "\n";
+         "set logscale xy\nset key below maxrows 4\n" + plot.str() + "\n";
 }
 
 }  // namespace
