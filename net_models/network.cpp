@@ -152,7 +152,7 @@ void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::v
   const auto payload_bytes = static_cast<std::int64_t>(payload.size());
   const WireFootprint fp = AppendLinkFrames(
       Bytes(payload_bytes), static_cast<std::int64_t>(ChannelName(channel).size()), wire_, frames_);
-  TransmitFrom(src, now, sender);
+  const LinkModel::MediumUse use = TransmitFrom(src, now, sender);
 
   const std::uint32_t slot = AllocatePayload(std::move(payload));
   Payload& p = payloads_[slot];
@@ -177,20 +177,33 @@ void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::v
     ++p.refs;
     sim_.ScheduleAt(outcomes_[i].arrival, [this, slot, dst, copy] { Deliver(slot, dst, copy); });
   }
+  if (!observers_.empty()) NotifyMedium(p, use);
   if (p.refs == 0) ReleasePayload(slot);
 }
 
 // Fills outcomes_ for dsts_ and frames_; the sender counts what its message
 // put on the medium (nothing when it is offline).
-void Network::TransmitFrom(NodeId src, SimTime now, NodeCounters& sender) {
+LinkModel::MediumUse Network::TransmitFrom(NodeId src, SimTime now, NodeCounters& sender) {
   outcomes_.resize(dsts_.size());
   if (!IsOnline(src, now)) {
     std::fill(outcomes_.begin(), outcomes_.end(), LinkDelivery{now, DropReason::kOffline});
-    return;
+    return {};
   }
   const LinkModel::MediumUse use = link_->Transmit(LinkTransmission{src, dsts_, now, frames_}, outcomes_);
   sender.transmissions += use.transmissions;
   sender.medium_bytes += use.bytes.value();
+  return use;
+}
+
+void Network::NotifyMedium(const Payload& p, const LinkModel::MediumUse& use) {
+  const MediumReport m{.message = p.message,
+                       .sent = p.sent,
+                       .src = p.src,
+                       .channel = p.channel,
+                       .channel_name = ChannelName(p.channel),
+                       .transmissions = use.transmissions,
+                       .bytes = use.bytes.value()};
+  for (NetworkObserver* o : observers_) o->OnMedium(m);
 }
 
 MessageCopy Network::CopyOf(const Payload& p, NodeId dst, std::uint64_t copy) const {

@@ -170,7 +170,8 @@ class Network {
   void CheckNode(NodeId node, const char* what) const;
   void CheckNames(ChannelId channel, MessageTypeId type) const;
   void Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::vector<std::uint8_t>&& payload);
-  void TransmitFrom(NodeId src, SimTime now, NodeCounters& sender);
+  LinkModel::MediumUse TransmitFrom(NodeId src, SimTime now, NodeCounters& sender);
+  void NotifyMedium(const Payload& p, const LinkModel::MediumUse& use);
   std::uint32_t AllocatePayload(std::vector<std::uint8_t>&& bytes);
   void ReleasePayload(std::uint32_t slot);
   void Deliver(std::uint32_t slot, NodeId dst, std::uint64_t copy);

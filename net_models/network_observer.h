@@ -39,6 +39,20 @@ struct MessageCopy {
   std::int64_t wire_bytes = 0;            // what one copy costs on the wire (wire_format.h)
 };
 
+// What one message put on the medium (LinkModel::MediumUse), reported once per Send/SendTo
+// call that had a destination, after the OnSent of its copies: a point-to-point message costs
+// one transmission per copy, a shared-medium broadcast one for all. An offline sender's message
+// reports none (0 bytes). The view is valid during the call only.
+struct MediumReport {
+  std::uint64_t message = 0;  // as MessageCopy::message
+  SimTime sent;
+  NodeId src;
+  ChannelId channel{};
+  std::string_view channel_name;
+  std::uint64_t transmissions = 0;
+  std::int64_t bytes = 0;     // frame bytes that went on the medium
+};
+
 // Override what you need. Hooks run inside the simulation: they must not
 // send, nor subscribe or unsubscribe observers.
 class NetworkObserver {
@@ -48,6 +62,7 @@ class NetworkObserver {
   // At the arrival time, before the receiver's NetworkEndpoint gets it.
   virtual void OnDelivered(const MessageCopy& /*copy*/, SimTime /*at*/) {}
   virtual void OnDropped(const MessageCopy& /*copy*/, SimTime /*at*/, DropReason /*reason*/) {}
+  virtual void OnMedium(const MediumReport& /*use*/) {}
 };
 
 }  // namespace dvpr

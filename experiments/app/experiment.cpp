@@ -169,7 +169,7 @@ void PrintSummaryTable(const std::vector<RunResult>& rows, std::ostream& out) {
   for (const auto& r : rows) {
     if (!shown.contains(r.key.robots)) continue;
     std::string label = r.key.protocol + " " + r.key.strategy;
-    if (!r.key.network.model.empty()) label += " net" + std::to_string(r.key.network.variant);
+    if (!r.key.network.model.empty()) label += ", " + NetworkName(r.key.network);
     const std::string id = label + "|" + std::to_string(r.key.robots);
     auto [it, added] = index.emplace(id, groups.size());
     if (added) groups.push_back(Acc{label, r.key.robots});
@@ -181,13 +181,15 @@ void PrintSummaryTable(const std::vector<RunResult>& rows, std::ostream& out) {
       if (!std::isnan(v[i])) { a.sums[i] += v[i]; ++a.counts[i]; }
     }
   }
-  char line[256];
-  std::snprintf(line, sizeof line, "%-34s %6s %5s %7s %8s %9s %11s %10s\n", "protocol strategy",
+  int width = 34;  // the label column fits the longest network name
+  for (const Acc& a : groups) width = std::max(width, static_cast<int>(a.label.size()));
+  char line[512];
+  std::snprintf(line, sizeof line, "%-*s %6s %5s %7s %8s %9s %11s %10s\n", width, "protocol strategy",
                 "robots", "runs", "auc", "rel_auc", "worst_bal", "bytes/query", "latency_ms");
   out << line;
   for (const Acc& a : groups) {
     auto mean = [&](int i) { return a.counts[i] ? a.sums[i] / a.counts[i] : std::nan(""); };
-    std::snprintf(line, sizeof line, "%-34s %6d %5d %7s %8s %9s %11s %10s\n", a.label.c_str(),
+    std::snprintf(line, sizeof line, "%-*s %6d %5d %7s %8s %9s %11s %10s\n", width, a.label.c_str(),
                   a.robots, a.n, Cell(mean(0), 3).c_str(), Cell(mean(1), 3).c_str(),
                   Cell(mean(2), 2).c_str(), Cell(mean(3), 0).c_str(), Cell(mean(4), 3).c_str());
     out << line;

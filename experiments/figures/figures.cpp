@@ -3,10 +3,14 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
+#include <optional>
 #include <sstream>
 
+#include "experiments/figures/figures_traffic.h"
 #include "experiments/results/result_writers.h"
 
 namespace dvpr {
@@ -102,23 +106,9 @@ std::string RelativeAucScript(const fs::path& data_dir, const fs::path& png) {
          "unset multiplot\n";
 }
 
-std::string BytesScript(const fs::path& data_dir, const fs::path& png) {
-  return Preamble(png) +
-         "set title 'Bytes on the wire per query vs team size (simulation, mean over runs)'\n"
-         "set xlabel 'robots n'\nset ylabel 'wire bytes per query'\nset logscale y\n"
-         "set key top left\n" + PlotSeries(data_dir, "bytes_per_query", "with linespoints lw 2 pt 7 ps 0.8");
-}
-
-std::string LatencyScript(const fs::path& data_dir, const fs::path& png) {
-  return Preamble(png) +
-         "set title 'Query latency vs team size (simulation, mean over runs)'\n"
-         "set xlabel 'robots n'\nset ylabel 'mean query latency [ms]'\nset logscale y\n"
-         "set key top left\n" + PlotSeries(data_dir, "query_latency", "with linespoints lw 2 pt 7 ps 0.8");
-}
-
 // Writes the script, runs gnuplot into a temporary PNG and renames it into place.
 bool Draw(const fs::path& data_dir, const fs::path& png, const std::string& name,
-          std::string (*script)(const fs::path&, const fs::path&), std::ostream& log) {
+          const std::function<std::string(const fs::path&, const fs::path&)>& script, std::ostream& log) {
   // pid in the name: two `dvpr plot` of one folder do not draw into the same temporary.
   const fs::path tmp = png.parent_path() /
                        ("." + png.filename().string() + ".tmp" + std::to_string(::getpid()));
@@ -143,6 +133,42 @@ bool Draw(const fs::path& data_dir, const fs::path& png, const std::string& name
   return true;
 }
 
+// Strategy figures compare strategies beyond the paper's two; with only those they repeat
+// what the traffic figures show.
+bool ComparesStrategies(const std::vector<RunResult>& rows) {
+  return std::any_of(rows.begin(), rows.end(), [](const RunResult& r) {
+    return r.key.strategy != "decentralized" && r.key.strategy != "broadcast";
+  });
+}
+
+struct Figure {
+  std::string name;
+  bool available;
+  std::function<std::string(const fs::path&, const fs::path&)> script;
+  std::string missing;
+};
+
+// Figures 5-9 (figures_traffic.h): data written now, drawn with the others.
+void AddTrafficFigures(const fs::path& out_dir, const fs::path& data, const std::vector<RunResult>& rows,
+                       std::vector<Figure>& figures) {
+  const TrafficTable t = TabulateTraffic(rows);
+  const CsvTable per_robot = ReadCsvTable(out_dir / "per_robot.csv");
+  const CsvTable links = ReadCsvTable(out_dir / "links.csv");
+  auto add = [&](const char* name, const std::function<std::optional<FigureScript>(std::string&)>& write) {
+    std::string why;
+    const std::optional<FigureScript> f = write(why);
+    const auto script = [f](const fs::path&, const fs::path& png) {
+      return Preamble(png, f->width, f->height) + f->body;
+    };
+    figures.push_back(Figure{name, f.has_value(), script, why});
+  };
+  add("place_recognition_bytes", [&](std::string& why) { return WritePlaceRecognitionFigure(data, t, why); });
+  add("traffic_by_role", [&](std::string& why) { return WriteRoleFigure(data, t, why); });
+  add("robot_load", [&](std::string& why) { return WriteRobotLoadFigure(data, t, per_robot, why); });
+  add("traffic_matrix", [&](std::string& why) { return WriteMatrixFigure(data, t, links, why); });
+  add("saturation", [&](std::string& why) { return WriteSaturationFigure(data, t, why); });
+}
+
 }  // namespace
 
 std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::ostream& log) {
@@ -151,30 +177,27 @@ std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::ostream& log) {
   fs::create_directories(data);
   const std::vector<RunResult> rows = ReadRunsCsv(out_dir / "runs.csv");
   const bool have3 = WriteRelativeAucData(data, rows);
-  const bool have5 = WriteBytesPerQueryData(data, rows);
-  const bool have6 = WriteLatencyData(data, rows);
-  const bool have7 = WriteStrategyTradeoffData(data, rows);
-  const bool have8 = WriteStrategySweepData(data, rows);
+  const bool strategies = ComparesStrategies(rows);
+  const bool have7 = strategies && WriteStrategyTradeoffData(data, rows);
+  const bool have8 = strategies && WriteStrategySweepData(data, rows);
+  std::vector<Figure> figures = {
+      {"confusion_matrix", fs::exists(data / "confusion.meta"), ConfusionScript, "no deployment data"},
+      {"pr_curves", fs::exists(data / "pr_curves.titles"), PrScript, "needs the paper protocol"},
+      {"relative_auc_balance", have3, RelativeAucScript, "no decentralized runs"},
+      {"descriptor_dims", fs::exists(data / "descriptor_dims.titles"), DimsScript, "no data"}};
+  AddTrafficFigures(out_dir, data, rows, figures);
+  const char* no_strategies = "only the paper's two strategies are configured";
+  figures.push_back({"strategy_tradeoff", have7, StrategyTradeoffScript,
+                     strategies ? "no relative AUC in runs.csv" : no_strategies});
+  figures.push_back({"strategy_sweep", have8, StrategySweepScript,
+                     strategies ? "needs a relative AUC at two or more n" : no_strategies});
   if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
     log << "dvpr: figures not drawn: gnuplot is not installed (scripts/setup.sh installs it)\n";
     return {};
   }
-  struct Figure {
-    const char* name; bool available; std::string (*script)(const fs::path&, const fs::path&);
-    const char* missing;
-  };
-  const Figure figures[] = {
-      {"confusion_matrix", fs::exists(data / "confusion.meta"), ConfusionScript, "no deployment data"},
-      {"pr_curves", fs::exists(data / "pr_curves.titles"), PrScript, "needs the paper protocol"},
-      {"relative_auc_balance", have3, RelativeAucScript, "no decentralized runs"},
-      {"descriptor_dims", fs::exists(data / "descriptor_dims.titles"), DimsScript, "no data"},
-      {"bytes_per_query", have5, BytesScript, "needs protocol sim"},
-      {"query_latency", have6, LatencyScript, "needs protocol sim"},
-      {"strategy_tradeoff", have7, StrategyTradeoffScript, "no relative AUC in runs.csv"},
-      {"strategy_sweep", have8, StrategySweepScript, "needs a relative AUC at two or more n"}};
   std::vector<fs::path> drawn;
   for (const Figure& f : figures) {
-    const fs::path png = fig / (std::string(f.name) + ".png");
+    const fs::path png = fig / (f.name + ".png");
     if (!f.available) {
       log << "dvpr: figure " << f.name << ".png skipped (" << f.missing << ")\n";
       continue;

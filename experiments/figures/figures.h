@@ -9,13 +9,13 @@
 //   2 pr_curves.png          precision-recall, centralized vs decentralized at one n
 //   3 relative_auc_balance.png  relative AUC and worst balance ratio vs n (mean line, runs dots)
 //   4 descriptor_dims.png    descriptor dimensions 1 and 2, training vs deployment
-//   5 bytes_per_query.png    bytes per query vs n, per strategy and network model (sim)
-//   6 query_latency.png      mean query latency vs n, per strategy and bandwidth (sim)
-//   7 strategy_tradeoff.png  every strategy at two n (10 and 20): relative AUC, worst balance,
+//   5-9 the traffic of the simulation (figures_traffic.h): place_recognition_bytes.png,
+//       traffic_by_role.png, robot_load.png, traffic_matrix.png, saturation.png
+//   10 strategy_tradeoff.png  every strategy at two n (10 and 20): relative AUC, worst balance,
 //                            bytes per query (dot plots, min-max over runs), and relative AUC vs
 //                            worst balance (one labelled point per strategy, the issue-8 target)
-//   8 strategy_sweep.png     relative AUC, worst balance, bytes per query vs n, every strategy
-//   9 bow_comparison.png     global descriptors vs bag-of-words (docs/bow.md): relative AUC and
+//   11 strategy_sweep.png    relative AUC, worst balance, bytes per query vs n, every strategy
+//   12 bow_comparison.png    global descriptors vs bag-of-words (docs/bow.md): relative AUC and
 //                            query bytes vs n, partial-query sizes, votes off the centralized
 //                            best; drawn only when the folder has bow.csv
 #include <filesystem>
@@ -44,12 +44,9 @@ struct FigureData {
 // All three of the above into out_dir/figures/data/.
 void WriteFigureData(const std::filesystem::path& out_dir, const FigureData& data);
 
-// Data files of figures 3, 5 and 6, from runs.csv rows. Each returns false (and writes nothing)
+// Data file of figure 3, from runs.csv rows. Each returns false (and writes nothing)
 // when the rows hold nothing to plot (e.g. no sim rows for figure 5).
 bool WriteRelativeAucData(const std::filesystem::path& data_dir, const std::vector<RunResult>& rows);
-bool WriteBytesPerQueryData(const std::filesystem::path& data_dir,
-                            const std::vector<RunResult>& rows);
-bool WriteLatencyData(const std::filesystem::path& data_dir, const std::vector<RunResult>& rows);
 
 // Figures 7 and 8 (experiments/figures/figures_strategies.cpp): runs.csv aggregated per (strategy, n).
 // Mean, min and max over the runs that have the metric (NaN and runs = 0 when none).
@@ -95,14 +92,15 @@ std::string StrategySweepScript(const std::filesystem::path& data_dir,
 // "point-to-point 10 Mbit/s": how the figures name a network variant.
 std::string NetworkText(const NetworkLabel& network);
 
-// Figure 9 (experiments/figures/figures_bow.cpp): its data from out_dir's bow.csv,
+// Figure 12 (experiments/figures/figures_bow.cpp): its data from out_dir's bow.csv,
 // bow_sizes.csv and `rows`; false (nothing written) when out_dir has no bow.csv.
 bool WriteBowComparisonData(const std::filesystem::path& out_dir, const std::filesystem::path& data_dir,
                             const std::vector<RunResult>& rows);
 std::string BowComparisonScript(const std::filesystem::path& data_dir, const std::filesystem::path& png);
 
-// Reads out_dir/runs.csv, writes the data of figures 3, 5, 6, 7, 8, then draws every figure whose data
-// exists. Figures that cannot be drawn (no data, gnuplot missing or failing) are reported on
+// Reads out_dir/runs.csv (and per_robot.csv, links.csv), writes the data of figures 3, 5-12, then
+// draws every figure whose data exists; the strategy figures (10, 11) only when runs.csv has a
+// strategy other than decentralized and broadcast. Figures that cannot be drawn (no data, gnuplot missing or failing) are reported on
 // `log` and skipped. Returns the PNGs written.
 std::vector<std::filesystem::path> DrawFigures(const std::filesystem::path& out_dir,
                                                std::ostream& log);

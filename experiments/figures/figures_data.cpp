@@ -63,24 +63,9 @@ Series MeansBy(const std::vector<RunResult>& rows, Pick pick, SeriesOf series_of
   return out;
 }
 
-std::string BandwidthLabel(double bps) {
-  if (std::isnan(bps)) return "";
-  if (bps >= 1e9 && std::fmod(bps, 1e9) == 0) return FormatDouble(bps / 1e9, 0) + " Gbit/s";
-  if (bps >= 1e6) return FormatDouble(bps / 1e6, std::fmod(bps, 1e6) == 0 ? 0 : 2) + " Mbit/s";
-  return FormatDouble(bps / 1e3, std::fmod(bps, 1e3) == 0 ? 0 : 2) + " kbit/s";
-}
-
-std::string ModelLabel(const std::string& model) {
-  if (model == "point_to_point") return "point-to-point";
-  if (model == "shared_medium") return "shared medium";
-  return model;
-}
-
 }  // namespace
 
-std::string NetworkText(const NetworkLabel& network) {
-  return ModelLabel(network.model) + " " + BandwidthLabel(network.bandwidth_bps);
-}
+std::string NetworkText(const NetworkLabel& network) { return NetworkName(network); }
 
 void WriteConfusionData(const std::filesystem::path& data_dir, const DescriptorMatrix& deployment,
                         int step) {
@@ -170,33 +155,6 @@ bool WriteRelativeAucData(const std::filesystem::path& data_dir,
   WriteSeries(data_dir, "balance",
               {{"every run", runs_bal}, {"mean over runs", bal.empty() ? Points{} : bal[0].second}});
   WriteFileAtomic(data_dir / "relative_auc.protocol", protocol + "\n");
-  return true;
-}
-
-bool WriteBytesPerQueryData(const std::filesystem::path& data_dir,
-                            const std::vector<RunResult>& rows) {
-  const Series s = MeansBy(
-      rows, [](const RunResult& r) { return r.key.protocol == "sim"; },
-      [](const RunResult& r) {
-        return r.key.strategy + ", " + ModelLabel(r.key.network.model) + " " +
-               BandwidthLabel(r.key.network.bandwidth_bps);
-      },
-      [](const RunResult& r) { return r.bytes_per_query; });
-  if (s.empty()) return false;
-  WriteSeries(data_dir, "bytes_per_query", s);
-  return true;
-}
-
-bool WriteLatencyData(const std::filesystem::path& data_dir, const std::vector<RunResult>& rows) {
-  const Series s = MeansBy(
-      rows, [](const RunResult& r) { return r.key.protocol == "sim"; },
-      [](const RunResult& r) {
-        return r.key.strategy + ", " + ModelLabel(r.key.network.model) + " " +
-               BandwidthLabel(r.key.network.bandwidth_bps);
-      },
-      [](const RunResult& r) { return r.mean_latency_ms; });
-  if (s.empty()) return false;
-  WriteSeries(data_dir, "query_latency", s);
   return true;
 }
 

@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "experiments/figures/figure_style.h"
 #include "experiments/figures/figures.h"
 #include "experiments/results/result_writers.h"
 
@@ -30,8 +31,7 @@ constexpr double kCharHeight = 14.0;  // px
 constexpr double kTargetBalance = 1.5;
 constexpr double kTargetAuc = 0.95;
 
-constexpr const char* kColours[10] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
-                                      "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+const auto& kColours = figure_style::kStrategyColours;  // the colours of every figure
 
 void Accumulate(RunSpread& s, double v) {
   if (std::isnan(v)) return;

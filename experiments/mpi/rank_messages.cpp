@@ -1,5 +1,6 @@
 #include "experiments/mpi/rank_messages.h"
 
+#include <array>
 #include <cstring>
 #include <optional>
 #include <stdexcept>
@@ -8,6 +9,57 @@
 namespace dvpr {
 
 namespace {
+
+// Each row type's fields, listed once: `f` is called with every field in order, so the writer
+// and the reader cannot disagree and a field added to a row needs one line here. (A field left
+// out would not travel, and the writing rank's folder would differ from a single process's;
+// tests/mpi compares whole folders.)
+template <typename F> void Fields(NetworkLabel& n, F&& f) { f(n.variant, n.model, n.bandwidth_bps, n.latency_ms, n.loss); }
+template <typename F> void Fields(RunKey& k, F&& f) { f(k.protocol, k.strategy, k.robots, k.run, k.network); }
+template <typename F> void Fields(CopyBytes& c, F&& f) { f(c.payload, c.wire, c.delivered_payload, c.delivered_wire); }
+template <typename F> void Fields(RunRoleBytes& r, F&& f) { f(r.copies, r.medium); }
+template <typename F>
+void Fields(RunResult& r, F&& f) {
+  f(r.key, r.seed, r.auc, r.auc_reference, r.relative_auc, r.worst_balance_ratio, r.queries, r.messages,
+    r.payload_bytes, r.wire_bytes, r.bytes_per_query, r.mean_latency_ms, r.p99_latency_ms, r.dropped_messages,
+    r.roles, r.duration_s);
+}
+template <typename F>
+void Fields(RobotLoadRow& r, F&& f) {
+  f(r.key, r.robot, r.queries_received, r.comparisons, r.stored, r.busy_fraction, r.max_queue);
+}
+template <typename F>
+void Fields(LinkRow& r, F&& f) {
+  f(r.key, r.src, r.dst, r.messages, r.payload_bytes, r.wire_bytes, r.dropped, r.roles);
+}
+template <typename F>
+void Fields(QueryRow& r, F&& f) {
+  f(r.key, r.robot, r.frame, r.sent_ns, r.match_robot, r.match_frame, r.distance, r.latency_ns, r.relevant,
+    r.correct);
+}
+template <typename F>
+void Fields(MessageRow& r, F&& f) {
+  f(r.key, r.sent_ns, r.delivered_ns, r.src, r.dst, r.channel, r.type, r.payload_bytes, r.wire_bytes, r.dropped,
+    r.role);
+}
+template <typename F> void Fields(PrCurve& c, F&& f) { f(c.label, c.robots, c.run, c.recall, c.precision); }
+template <typename F>
+void Fields(FailoverRow& r, F&& f) {
+  f(r.key, r.robot, r.at_ns, r.detected_ns, r.stored, r.kept, r.incomplete_queries);
+}
+template <typename F>
+void Fields(BowRow& r, F&& f) {
+  f(r.key, r.queries, r.partial_queries, r.payload_bytes, r.mean_words, r.mean_part_words, r.part_bytes_p50,
+    r.part_bytes_p90, r.part_bytes_max, r.voted, r.vote_not_centralized);
+}
+template <typename F> void Fields(BowSizeRow& r, F&& f) { f(r.key, r.payload_bytes, r.messages); }
+template <typename F>
+void Fields(RunOutput& o, F&& f) {
+  f(o.runs, o.per_robot, o.links, o.queries, o.messages, o.curves, o.failover, o.bow, o.bow_sizes);
+}
+
+template <typename T>
+concept HasFields = requires(T& t) { Fields(t, [](auto&...) {}); };
 
 class ByteWriter {
  public:
@@ -32,29 +84,16 @@ class ByteWriter {
     Put(static_cast<std::uint64_t>(v.size()));
     for (const T& x : v) Put(x);
   }
-  void Put(const NetworkLabel& n) { Put(n.variant), Put(n.model), Put(n.bandwidth_bps), Put(n.latency_ms), Put(n.loss); }
-  void Put(const RunKey& k) { Put(k.protocol), Put(k.strategy), Put(k.robots), Put(k.run), Put(k.network); }
-  void Put(const RunResult& r) {
-    Put(r.key), Put(r.seed), Put(r.auc), Put(r.auc_reference), Put(r.relative_auc), Put(r.worst_balance_ratio);
-    Put(r.queries), Put(r.messages), Put(r.payload_bytes), Put(r.wire_bytes), Put(r.bytes_per_query);
-    Put(r.mean_latency_ms), Put(r.p99_latency_ms), Put(r.dropped_messages);
+  template <typename T, std::size_t N>
+  void Put(const std::array<T, N>& a) {
+    for (const T& x : a) Put(x);
   }
-  void Put(const RobotLoadRow& r) {
-    Put(r.key), Put(r.robot), Put(r.queries_received), Put(r.comparisons), Put(r.stored), Put(r.busy_fraction),
-        Put(r.max_queue);
+  template <typename T>
+    requires HasFields<T>
+  void Put(const T& row) {
+    // Fields() lists a row's members for reading and writing alike; the writer only reads them.
+    Fields(const_cast<T&>(row), [this](const auto&... field) { (Put(field), ...); });
   }
-  void Put(const LinkRow& r) {
-    Put(r.key), Put(r.src), Put(r.dst), Put(r.messages), Put(r.payload_bytes), Put(r.wire_bytes), Put(r.dropped);
-  }
-  void Put(const QueryRow& r) {
-    Put(r.key), Put(r.robot), Put(r.frame), Put(r.sent_ns), Put(r.match_robot), Put(r.match_frame);
-    Put(r.distance), Put(r.latency_ns), Put(r.relevant), Put(r.correct);
-  }
-  void Put(const MessageRow& r) {
-    Put(r.key), Put(r.sent_ns), Put(r.delivered_ns), Put(r.src), Put(r.dst), Put(r.channel), Put(r.type);
-    Put(r.payload_bytes), Put(r.wire_bytes), Put(r.dropped);
-  }
-  void Put(const PrCurve& c) { Put(c.label), Put(c.robots), Put(c.run), Put(c.recall), Put(c.precision); }
 
   Bytes8 Take() { return std::move(bytes_); }
 
@@ -87,29 +126,15 @@ class ByteReader {
     v.resize(Count(1));  // every element takes at least one byte: a corrupt count fails here
     for (T& x : v) Get(x);
   }
-  void Get(NetworkLabel& n) { Get(n.variant), Get(n.model), Get(n.bandwidth_bps), Get(n.latency_ms), Get(n.loss); }
-  void Get(RunKey& k) { Get(k.protocol), Get(k.strategy), Get(k.robots), Get(k.run), Get(k.network); }
-  void Get(RunResult& r) {
-    Get(r.key), Get(r.seed), Get(r.auc), Get(r.auc_reference), Get(r.relative_auc), Get(r.worst_balance_ratio);
-    Get(r.queries), Get(r.messages), Get(r.payload_bytes), Get(r.wire_bytes), Get(r.bytes_per_query);
-    Get(r.mean_latency_ms), Get(r.p99_latency_ms), Get(r.dropped_messages);
+  template <typename T, std::size_t N>
+  void Get(std::array<T, N>& a) {
+    for (T& x : a) Get(x);
   }
-  void Get(RobotLoadRow& r) {
-    Get(r.key), Get(r.robot), Get(r.queries_received), Get(r.comparisons), Get(r.stored), Get(r.busy_fraction),
-        Get(r.max_queue);
+  template <typename T>
+    requires HasFields<T>
+  void Get(T& row) {
+    Fields(row, [this](auto&... field) { (Get(field), ...); });
   }
-  void Get(LinkRow& r) {
-    Get(r.key), Get(r.src), Get(r.dst), Get(r.messages), Get(r.payload_bytes), Get(r.wire_bytes), Get(r.dropped);
-  }
-  void Get(QueryRow& r) {
-    Get(r.key), Get(r.robot), Get(r.frame), Get(r.sent_ns), Get(r.match_robot), Get(r.match_frame);
-    Get(r.distance), Get(r.latency_ns), Get(r.relevant), Get(r.correct);
-  }
-  void Get(MessageRow& r) {
-    Get(r.key), Get(r.sent_ns), Get(r.delivered_ns), Get(r.src), Get(r.dst), Get(r.channel), Get(r.type);
-    Get(r.payload_bytes), Get(r.wire_bytes), Get(r.dropped);
-  }
-  void Get(PrCurve& c) { Get(c.label), Get(c.robots), Get(c.run), Get(c.recall), Get(c.precision); }
 
   // Every byte has been read.
   void End() const {
@@ -144,7 +169,7 @@ class ByteReader {
 Bytes8 EncodeOutput(std::size_t index, const RunOutput& o) {
   ByteWriter w;
   w.Put(static_cast<std::uint64_t>(index));
-  w.Put(o.runs), w.Put(o.per_robot), w.Put(o.links), w.Put(o.queries), w.Put(o.messages), w.Put(o.curves);
+  w.Put(o);
   return w.Take();
 }
 
@@ -154,7 +179,7 @@ IndexedOutput DecodeOutput(const Bytes8& bytes) {
   IndexedOutput out;
   RunOutput& o = out.output;
   r.Get(index);
-  r.Get(o.runs), r.Get(o.per_robot), r.Get(o.links), r.Get(o.queries), r.Get(o.messages), r.Get(o.curves);
+  r.Get(o);
   r.End();
   out.index = static_cast<std::size_t>(index);
   return out;

@@ -32,6 +32,36 @@ const char* const kMetricOrder[] = {
     "payload_bytes", "wire_bytes", "bytes_per_query", "mean_latency_ms", "p99_latency_ms",
     "dropped_messages"};
 
+// The by-role metrics, in runs.csv's order; the runs without a network's counts are skipped.
+const char* const kRoleSuffixes[] = {"payload_bytes", "wire_bytes", "copy_wire_bytes",
+                                     "delivered_payload_bytes", "delivered_wire_bytes"};
+
+std::vector<std::string> RoleMetricNames() {
+  std::vector<std::string> names = {"duration_s", "copy_wire_bytes", "delivered_payload_bytes", "delivered_wire_bytes",
+                                    "place_recognition_bytes_per_query"};
+  for (const char* role : kMessageRoleNames) {
+    for (const char* suffix : kRoleSuffixes) names.push_back(std::string(role) + "_" + suffix);
+  }
+  return names;
+}
+
+std::vector<double> RoleMetricValues(const RunResult& r) {
+  const std::size_t count = 5 + std::size(kRoleSuffixes) * kMessageRoles;
+  if (!r.roles) return std::vector<double>(count, kNotApplicable);
+  CopyBytes total;
+  for (const CopyBytes& c : r.roles->copies) total += c;
+  std::vector<double> v = {r.duration_s, double(total.wire), double(total.delivered_payload), double(total.delivered_wire),
+                           PlaceRecognitionBytesPerQuery(r)};
+  for (int i = 0; i < kMessageRoles; ++i) {
+    const CopyBytes& c = r.roles->copies[static_cast<std::size_t>(i)];
+    for (double x : {double(c.payload), double(r.roles->medium[static_cast<std::size_t>(i)]), double(c.wire),
+                     double(c.delivered_payload), double(c.delivered_wire)}) {
+      v.push_back(x);
+    }
+  }
+  return v;
+}
+
 void AddRun(Group& g, const RunResult& r) {
   ++g.runs;
   const double values[] = {r.auc, r.auc_reference, r.relative_auc, r.worst_balance_ratio,
@@ -39,6 +69,9 @@ void AddRun(Group& g, const RunResult& r) {
                            double(r.wire_bytes), r.bytes_per_query, r.mean_latency_ms,
                            r.p99_latency_ms, double(r.dropped_messages)};
   for (std::size_t i = 0; i < std::size(kMetricOrder); ++i) g.means[kMetricOrder[i]].Add(values[i]);
+  const std::vector<std::string> names = RoleMetricNames();
+  const std::vector<double> role_values = RoleMetricValues(r);
+  for (std::size_t i = 0; i < names.size(); ++i) g.means[names[i]].Add(role_values[i]);
 }
 
 std::string JsonString(const std::string& s) {
@@ -52,39 +85,84 @@ std::string JsonString(const std::string& s) {
 
 }  // namespace
 
+double PlaceRecognitionBytesPerQuery(const RunResult& r) {
+  if (!r.roles || r.queries <= 0) return kNotApplicable;
+  const auto& c = r.roles->copies;
+  const std::int64_t bytes = c[static_cast<std::size_t>(MessageRole::kQuery)].wire +
+                             c[static_cast<std::size_t>(MessageRole::kReply)].wire;
+  return static_cast<double>(bytes) / static_cast<double>(r.queries);
+}
+
+namespace {
+
+std::string GroupId(const RunKey& k, const std::string& strategy) {
+  return k.protocol + "|" + strategy + "|" + std::to_string(k.robots) + "|" + k.network.model + "|" +
+         std::to_string(k.network.variant);
+}
+
+void WriteGroup(std::ostringstream& s, const Group& g) {
+  const NetworkLabel& n = g.key.network;
+  s << "\n    {\"protocol\": " << JsonString(g.key.protocol) << ", \"strategy\": " << JsonString(g.key.strategy)
+    << ", \"robots\": " << g.key.robots;
+  if (!n.model.empty()) {
+    s << ", \"network_variant\": " << n.variant << ", \"network_model\": " << JsonString(n.model)
+      << ", \"bandwidth_bps\": " << (std::isnan(n.bandwidth_bps) ? "null" : FormatDouble(n.bandwidth_bps))
+      << ", \"latency_ms\": " << (std::isnan(n.latency_ms) ? "null" : FormatDouble(n.latency_ms))
+      << ", \"loss\": " << JsonString(n.loss) << ", \"network_name\": " << JsonString(NetworkName(n));
+  }
+  s << ", \"runs\": " << g.runs << ",\n     \"mean\": {";
+  for (std::size_t m = 0; m < std::size(kMetricOrder); ++m) {
+    s << (m ? ", " : "") << JsonString(kMetricOrder[m]) << ": " << g.means.at(kMetricOrder[m]).Json();
+  }
+  if (g.means.at("copy_wire_bytes").count > 0) {  // bytes by role: only where a network counted them
+    for (const std::string& name : RoleMetricNames()) s << ", " << JsonString(name) << ": " << g.means.at(name).Json();
+  }
+  s << "}}";
+}
+
+// Broadcast over decentralized place-recognition bytes per query (query and reply copies), per
+// (protocol, n, network variant) that has both: the paper's n - 1 law, measured.
+void WriteRatios(std::ostringstream& s, const std::vector<Group>& groups, const std::map<std::string, std::size_t>& index) {
+  s << ",\n  \"place_recognition_ratio\": [";
+  bool first = true;
+  for (const Group& d : groups) {
+    if (d.key.strategy != "decentralized") continue;
+    const auto b = index.find(GroupId(d.key, "broadcast"));
+    if (b == index.end()) continue;
+    const Mean& dm = d.means.at("place_recognition_bytes_per_query");
+    const Mean& bm = groups[b->second].means.at("place_recognition_bytes_per_query");
+    if (dm.count == 0 || bm.count == 0 || dm.sum == 0) continue;
+    const double dec = dm.sum / dm.count;
+    const double bro = bm.sum / bm.count;
+    s << (first ? "" : ",") << "\n    {\"protocol\": " << JsonString(d.key.protocol) << ", \"robots\": "
+      << d.key.robots << ", \"network_variant\": " << d.key.network.variant << ", \"network_name\": "
+      << JsonString(NetworkName(d.key.network)) << ", \"broadcast_bytes_per_query\": " << FormatDouble(bro)
+      << ", \"decentralized_bytes_per_query\": " << FormatDouble(dec) << ", \"ratio\": " << FormatDouble(bro / dec)
+      << ", \"n_minus_1\": " << d.key.robots - 1 << "}";
+    first = false;
+  }
+  s << "\n  ]";
+}
+
+}  // namespace
+
 std::string SummaryJson(const std::vector<RunResult>& rows) {
   std::vector<Group> groups;
   std::map<std::string, std::size_t> index;
   for (const auto& r : rows) {
-    const std::string id = r.key.protocol + "|" + r.key.strategy + "|" +
-                           std::to_string(r.key.robots) + "|" + r.key.network.model + "|" +
-                           std::to_string(r.key.network.variant);
-    auto [it, added] = index.emplace(id, groups.size());
+    auto [it, added] = index.emplace(GroupId(r.key, r.key.strategy), groups.size());
     if (added) groups.push_back(Group{r.key, 0, {}});
     AddRun(groups[it->second], r);
   }
   std::ostringstream s;
   s << "{\n  \"groups\": [";
   for (std::size_t i = 0; i < groups.size(); ++i) {
-    const Group& g = groups[i];
-    const NetworkLabel& n = g.key.network;
-    s << (i ? "," : "") << "\n    {\"protocol\": " << JsonString(g.key.protocol)
-      << ", \"strategy\": " << JsonString(g.key.strategy) << ", \"robots\": " << g.key.robots;
-    if (!n.model.empty()) {
-      s << ", \"network_variant\": " << n.variant << ", \"network_model\": "
-        << JsonString(n.model) << ", \"bandwidth_bps\": "
-        << (std::isnan(n.bandwidth_bps) ? "null" : FormatDouble(n.bandwidth_bps))
-        << ", \"latency_ms\": " << (std::isnan(n.latency_ms) ? "null" : FormatDouble(n.latency_ms))
-        << ", \"loss\": " << JsonString(n.loss);
-    }
-    s << ", \"runs\": " << g.runs << ",\n     \"mean\": {";
-    for (std::size_t m = 0; m < std::size(kMetricOrder); ++m) {
-      s << (m ? ", " : "") << JsonString(kMetricOrder[m]) << ": "
-        << g.means.at(kMetricOrder[m]).Json();
-    }
-    s << "}}";
+    s << (i ? "," : "");
+    WriteGroup(s, groups[i]);
   }
-  s << "\n  ]\n}\n";
+  s << "\n  ]";
+  WriteRatios(s, groups, index);
+  s << "\n}\n";
   return s.str();
 }
 
@@ -112,6 +190,22 @@ T Parse(const std::string& s, const std::string& where) {
   return v;
 }
 
+// runs.csv fields 24..: copy_wire_bytes and the delivered totals (sums of the roles', not
+// kept), then five per role: payload, medium (wire), copy wire, delivered payload, delivered wire.
+RunRoleBytes ParseRunRoles(const std::vector<std::string>& f, const std::string& where) {
+  RunRoleBytes roles;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(kMessageRoles); ++i) {
+    const std::size_t at = 27 + 5 * i;
+    CopyBytes& c = roles.copies[i];
+    c.payload = Parse<std::int64_t>(f[at], where);
+    roles.medium[i] = Parse<std::int64_t>(f[at + 1], where);
+    c.wire = Parse<std::int64_t>(f[at + 2], where);
+    c.delivered_payload = Parse<std::int64_t>(f[at + 3], where);
+    c.delivered_wire = Parse<std::int64_t>(f[at + 4], where);
+  }
+  return roles;
+}
+
 RunResult ParseRunRow(const std::vector<std::string>& f, const std::string& where) {
   RunResult r;
   r.key.protocol = f[0];
@@ -136,10 +230,15 @@ RunResult ParseRunRow(const std::vector<std::string>& f, const std::string& wher
     r.key.network.latency_ms = Parse<double>(f[20], where);
     r.key.network.loss = f[21];
   }
+  // f[22] is the network's name, made from the fields above.
+  r.duration_s = Parse<double>(f[23], where);
+  if (!f[24].empty()) r.roles = ParseRunRoles(f, where);
   return r;
 }
 
 }  // namespace
+
+constexpr std::size_t kRunsFields = 27 + 5 * kMessageRoles;
 
 std::vector<RunResult> ReadRunsCsv(const std::filesystem::path& path) {
   std::ifstream in(path);
@@ -152,7 +251,9 @@ std::vector<RunResult> ReadRunsCsv(const std::filesystem::path& path) {
   for (int number = 2; std::getline(in, line); ++number) {
     const std::string where = path.string() + ":" + std::to_string(number);
     const auto fields = SplitCsv(line);
-    if (fields.size() != 22) throw std::runtime_error(where + ": expected 22 fields");
+    if (fields.size() != kRunsFields) {
+      throw std::runtime_error(where + ": expected " + std::to_string(kRunsFields) + " fields");
+    }
     rows.push_back(ParseRunRow(fields, where));
   }
   return rows;

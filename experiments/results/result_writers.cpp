@@ -12,24 +12,52 @@
 namespace dvpr {
 
 // Network columns come after the ones DESIGN.md requires, so scripts reading by position still
-// find the required columns first.
-#define DVPR_NETWORK_COLUMNS "network_variant,network_model,bandwidth_bps,latency_ms,loss"
-const char* const kRunsHeader =
-    "protocol,strategy,robots,run,seed,auc,auc_reference,relative_auc,worst_balance_ratio,"
-    "queries,messages,payload_bytes,wire_bytes,bytes_per_query,mean_latency_ms,p99_latency_ms,"
-    "dropped_messages," DVPR_NETWORK_COLUMNS;
+// find the required columns first; the columns of issue 16 (network name, bytes by role) after
+// those, and messages.csv's role last of all.
+#define DVPR_NETWORK_COLUMNS "network_variant,network_model,bandwidth_bps,latency_ms,loss,network_name"
+
+namespace {
+
+// ",query_<a>,query_<b>,...,reply_<a>,...": the by-role columns, role-major.
+std::string RoleColumns(std::initializer_list<const char*> suffixes) {
+  std::string out;
+  for (const char* role : kMessageRoleNames) {
+    for (const char* suffix : suffixes) out += std::string(",") + role + "_" + suffix;
+  }
+  return out;
+}
+
+const std::string& RunsHeaderText() {
+  static const std::string h =
+      "protocol,strategy,robots,run,seed,auc,auc_reference,relative_auc,worst_balance_ratio,"
+      "queries,messages,payload_bytes,wire_bytes,bytes_per_query,mean_latency_ms,p99_latency_ms,"
+      "dropped_messages," DVPR_NETWORK_COLUMNS ",duration_s,copy_wire_bytes,delivered_payload_bytes,delivered_wire_bytes" +
+      RoleColumns({"payload_bytes", "wire_bytes", "copy_wire_bytes", "delivered_payload_bytes",
+                   "delivered_wire_bytes"});
+  return h;
+}
+
+const std::string& LinksHeaderText() {
+  static const std::string h =
+      "protocol,strategy,robots,run,src,dst,messages,payload_bytes,wire_bytes,dropped,"
+      DVPR_NETWORK_COLUMNS ",delivered_payload_bytes,delivered_wire_bytes" +
+      RoleColumns({"payload_bytes", "wire_bytes", "delivered_payload_bytes", "delivered_wire_bytes"});
+  return h;
+}
+
+}  // namespace
+
+const char* const kRunsHeader = RunsHeaderText().c_str();
 const char* const kPerRobotHeader =
     "protocol,strategy,robots,run,robot,queries_received,comparisons,stored,busy_fraction,"
     "max_queue," DVPR_NETWORK_COLUMNS;
-const char* const kLinksHeader =
-    "protocol,strategy,robots,run,src,dst,messages,payload_bytes,wire_bytes,dropped,"
-    DVPR_NETWORK_COLUMNS;
+const char* const kLinksHeader = LinksHeaderText().c_str();
 const char* const kQueriesHeader =
     "protocol,strategy,robots,run,robot,frame,sent_ns,match_robot,match_frame,distance,"
     "latency_ns,relevant,correct," DVPR_NETWORK_COLUMNS;
 const char* const kMessagesHeader =
     "protocol,strategy,robots,run,sent_ns,delivered_ns,src,dst,channel,type,payload_bytes,"
-    "wire_bytes,dropped," DVPR_NETWORK_COLUMNS;
+    "wire_bytes,dropped," DVPR_NETWORK_COLUMNS ",role";
 const char* const kFailoverHeader =
     "protocol,strategy,robots,run,robot,at_ns,detected_ns,stored,kept,incomplete_queries," DVPR_NETWORK_COLUMNS;
 const char* const kBowHeader =
@@ -38,6 +66,26 @@ const char* const kBowHeader =
     "vote_not_centralized_fraction," DVPR_NETWORK_COLUMNS;
 const char* const kBowSizesHeader = "protocol,strategy,robots,run,payload_bytes,messages," DVPR_NETWORK_COLUMNS;
 #undef DVPR_NETWORK_COLUMNS
+
+std::string NetworkName(const NetworkLabel& n) {
+  if (n.model.empty()) return "";
+  std::string name = n.model == "point_to_point"  ? "point-to-point"
+                     : n.model == "shared_medium" ? "shared medium"
+                                                  : n.model;
+  const double bps = n.bandwidth_bps;
+  if (!std::isnan(bps)) {
+    if (bps >= 1e9 && std::fmod(bps, 1e9) == 0) {
+      name += " " + FormatDouble(bps / 1e9) + " Gbit/s";
+    } else if (bps >= 1e6) {
+      name += " " + FormatDouble(bps / 1e6) + " Mbit/s";
+    } else {
+      name += " " + FormatDouble(bps / 1e3) + " kbit/s";
+    }
+  }
+  if (!std::isnan(n.latency_ms)) name += " " + FormatDouble(n.latency_ms) + " ms";
+  if (!n.loss.empty() && n.loss != "none") name += " " + n.loss + " loss";
+  return name;
+}
 
 std::string FormatDouble(double v) {
   if (std::isnan(v)) return "";
@@ -68,9 +116,39 @@ std::string Key(const RunKey& k) {
 }
 
 std::string Network(const NetworkLabel& n) {
-  if (n.model.empty()) return ",,,,";  // protocol=paper: no network
+  if (n.model.empty()) return ",,,,,";  // protocol=paper: no network
   return std::to_string(n.variant) + "," + n.model + "," + FormatDouble(n.bandwidth_bps) +
-         "," + FormatDouble(n.latency_ms) + "," + n.loss;
+         "," + FormatDouble(n.latency_ms) + "," + n.loss + "," + NetworkName(n);
+}
+
+// Empty fields where a row has no bytes by role (no simulated network counted them).
+std::string Empty(int fields) { return std::string(static_cast<std::size_t>(fields), ','); }
+
+std::string RunRoles(const std::optional<RunRoleBytes>& roles) {
+  if (!roles) return Empty(3 + 5 * kMessageRoles);
+  CopyBytes total;
+  for (const CopyBytes& c : roles->copies) total += c;
+  std::string out = "," + std::to_string(total.wire) + "," + std::to_string(total.delivered_payload) + "," +
+                    std::to_string(total.delivered_wire);
+  for (int i = 0; i < kMessageRoles; ++i) {
+    const CopyBytes& c = roles->copies[static_cast<std::size_t>(i)];
+    out += "," + std::to_string(c.payload) + "," + std::to_string(roles->medium[static_cast<std::size_t>(i)]) +
+           "," + std::to_string(c.wire) + "," + std::to_string(c.delivered_payload) + "," +
+           std::to_string(c.delivered_wire);
+  }
+  return out;
+}
+
+std::string LinkRoles(const std::optional<RoleCopyBytes>& roles) {
+  if (!roles) return Empty(2 + 4 * kMessageRoles);
+  CopyBytes total;
+  for (const CopyBytes& c : *roles) total += c;
+  std::string out = "," + std::to_string(total.delivered_payload) + "," + std::to_string(total.delivered_wire);
+  for (const CopyBytes& c : *roles) {
+    out += "," + std::to_string(c.payload) + "," + std::to_string(c.wire) + "," +
+           std::to_string(c.delivered_payload) + "," + std::to_string(c.delivered_wire);
+  }
+  return out;
 }
 
 }  // namespace
@@ -82,7 +160,8 @@ std::string CsvRow(const RunResult& r) {
     << FormatDouble(r.worst_balance_ratio) << ',' << r.queries << ',' << r.messages << ','
     << r.payload_bytes << ',' << r.wire_bytes << ',' << FormatDouble(r.bytes_per_query) << ','
     << FormatDouble(r.mean_latency_ms) << ',' << FormatDouble(r.p99_latency_ms) << ','
-    << r.dropped_messages << ',' << Network(r.key.network);
+    << r.dropped_messages << ',' << Network(r.key.network) << ',' << FormatDouble(r.duration_s)
+    << RunRoles(r.roles);
   return s.str();
 }
 
@@ -103,7 +182,7 @@ std::string CsvRow(const LinkRow& r) {
   return Key(r.key) + "," + std::to_string(r.src) + "," + std::to_string(r.dst) + "," +
          std::to_string(r.messages) + "," + std::to_string(r.payload_bytes) + "," +
          std::to_string(r.wire_bytes) + "," + std::to_string(r.dropped) + "," +
-         Network(r.key.network);
+         Network(r.key.network) + LinkRoles(r.roles);
 }
 
 std::string CsvRow(const QueryRow& r) {
@@ -117,7 +196,7 @@ std::string CsvRow(const MessageRow& r) {
   return Key(r.key) + "," + std::to_string(r.sent_ns) + "," + Opt(r.delivered_ns) + "," +
          std::to_string(r.src) + "," + std::to_string(r.dst) + "," + r.channel + "," + r.type +
          "," + std::to_string(r.payload_bytes) + "," + std::to_string(r.wire_bytes) + "," +
-         (r.dropped ? "1" : "0") + "," + Network(r.key.network);
+         (r.dropped ? "1" : "0") + "," + Network(r.key.network) + "," + r.role;
 }
 
 std::string CsvRow(const BowRow& r) {

@@ -63,8 +63,13 @@ std::string CsvRow(const BowSizeRow& r);
 void WriteRunsCsv(const std::filesystem::path& path, const std::vector<RunResult>& rows);
 // summary.json: per (protocol, strategy, robots, network variant), in order of first
 // appearance, the number of runs and the mean of every runs.csv metric (NaNs skipped; null
-// when no run has the metric).
+// when no run has the metric; the by-role ones only where a network counted them), then
+// place_recognition_ratio: broadcast over decentralized PlaceRecognitionBytesPerQuery means.
 std::string SummaryJson(const std::vector<RunResult>& rows);
+
+// Offered wire bytes of the place-recognition messages (query and reply, every destination
+// copy) per query: the quantity of the paper's n - 1 law. NaN without bytes by role.
+double PlaceRecognitionBytesPerQuery(const RunResult& r);
 
 // Reads runs.csv back (dvpr plot). Throws naming the file and line on a malformed row.
 std::vector<RunResult> ReadRunsCsv(const std::filesystem::path& path);

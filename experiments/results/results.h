@@ -8,6 +8,7 @@
 //   executor from the RunSpec; a run function may leave them default.
 // - A double that does not apply (e.g. latency in the static protocol) stays NaN and is written as
 //   an empty CSV field; an optional that is empty is written as an empty field.
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -25,6 +26,49 @@ struct NetworkLabel {
   double bandwidth_bps = kNotApplicable;
   double latency_ms = kNotApplicable;
   std::string loss;           // none | bernoulli | gilbert_elliott
+};
+
+// "point-to-point 10 Mbit/s 2 ms" (+ " bernoulli loss"): how the summary table, the CSVs'
+// network_name column and the figures' legends name a network variant; "" without a network.
+// No commas, so a CSV field needs no quoting.
+std::string NetworkName(const NetworkLabel& network);
+
+// What a message does, read from its channel (protocols/sim/message_roles.h). The byte columns
+// by role of runs.csv and links.csv follow this order; every message has exactly one role, so
+// the roles' bytes sum to each total.
+enum class MessageRole : int {
+  kQuery,          // a place-recognition query (search, store or both; broadcast or unicast)
+  kReply,          // its reply, the best match (match_t)
+  kVerifyRequest,  // geometric-verification request
+  kVerifyResult,   // its accept/reject
+  kRecluster,      // adaptive re-clustering: samples, tables, migrated descriptors
+  kOther,          // any channel not named above
+};
+inline constexpr int kMessageRoles = 6;
+inline constexpr std::array<const char*, kMessageRoles> kMessageRoleNames = {
+    "query", "reply", "verify_request", "verify_result", "recluster", "other"};
+
+// Bytes of the copies of messages (one copy per destination): offered (sent, whatever became of
+// them) and delivered. wire = the copy's LCM/UDP/IP/link bytes (wire_format.h).
+struct CopyBytes {
+  std::int64_t payload = 0;
+  std::int64_t wire = 0;
+  std::int64_t delivered_payload = 0;
+  std::int64_t delivered_wire = 0;
+  CopyBytes& operator+=(const CopyBytes& o) {
+    payload += o.payload;
+    wire += o.wire;
+    delivered_payload += o.delivered_payload;
+    delivered_wire += o.delivered_wire;
+    return *this;
+  }
+};
+using RoleCopyBytes = std::array<CopyBytes, kMessageRoles>;
+
+// A run's bytes by role, counted by the simulated network (absent for rows without one).
+struct RunRoleBytes {
+  RoleCopyBytes copies{};                               // per role, summed over all pairs
+  std::array<std::int64_t, kMessageRoles> medium{};     // per role: bytes put on the medium
 };
 
 // Common key of every row: which run of the sweep produced it.
@@ -52,6 +96,8 @@ struct RunResult {
   double mean_latency_ms = kNotApplicable;
   double p99_latency_ms = kNotApplicable;
   std::int64_t dropped_messages = 0;
+  std::optional<RunRoleBytes> roles;        // sim only: the network's bytes by message role
+  double duration_s = kNotApplicable;       // sim only: how long the robots drove (offered load = bytes / this)
 };
 
 // One row of per_robot.csv.
@@ -86,6 +132,7 @@ struct LinkRow {
   std::int64_t payload_bytes = 0;
   std::int64_t wire_bytes = 0;
   std::int64_t dropped = 0;
+  std::optional<RoleCopyBytes> roles;  // sim only: this pair's bytes by message role
 };
 
 // One row of queries.csv (written when outputs.queries is true).
@@ -114,6 +161,7 @@ struct MessageRow {
   std::int64_t payload_bytes = 0;
   std::int64_t wire_bytes = 0;
   bool dropped = false;
+  std::string role;                    // kMessageRoleNames; "" when the producer knows none
 };
 
 // A precision-recall curve in ranking order (for figure 2). label says what it is, e.g.

@@ -67,7 +67,7 @@ TEST_F(StrategyFigures, MeansMinMaxPerStrategyAndN) {
   EXPECT_EQ(t.strategies, (std::vector<std::string>{"decentralized", "broadcast", "sample_c4"}));
   EXPECT_EQ(t.robots, (std::vector<int>{5, 10, 20}));
   EXPECT_EQ(t.bytes_variant, 0);
-  EXPECT_EQ(t.bytes_network, "point-to-point 10 Mbit/s");
+  EXPECT_EQ(t.bytes_network, "point-to-point 10 Mbit/s 2 ms");
 
   const StrategyStats* d10 = t.Find("decentralized", 10);
   ASSERT_NE(d10, nullptr);
@@ -121,7 +121,7 @@ TEST_F(StrategyFigures, TradeoffDataColumns) {
   // Rows without a value at either n get a "not measured" note: broadcast's static balance,
   // sample_c4's bytes (no sim rows).
   EXPECT_EQ(meta.rfind("robots 10 20\nmissing_0\nmissing_3 1\nmissing_6 2\nprotocol paper\n"
-                       "network point-to-point 10 Mbit/s\nruns 2\n", 0),
+                       "network point-to-point 10 Mbit/s 2 ms\nruns 2\n", 0),
             0u) << meta;
   // One scatter label per strategy with both a balance and an AUC: broadcast has no balance.
   const std::string labels = Slurp(dir_ / "strategy_tradeoff_labels_0.txt");

@@ -47,13 +47,111 @@ TEST(ResultWriters, RunsCsvColumnsAndFormatting) {
                 "mean_latency_ms,p99_latency_ms,dropped_messages,", 0), 0u);
   EXPECT_EQ(CsvRow(SimRow(0, 0.8)),
             "sim,decentralized,4,0,99,0.5,0.625,0.8,0.6666666666666666,100,200,51700,54700,"
-            "547,9.376,12.5,0,1,point_to_point,1e+06,5,none");
+            "547,9.376,12.5,0,1,point_to_point,1e+06,5,none,point-to-point 1 Mbit/s 5 ms,"
+            + std::string(3 + 5 * 6, ','));  // no bytes by role: duration and 33 byte columns empty
   RunResult paper;
   paper.key.protocol = "paper";
   paper.key.strategy = "decentralized";
   paper.key.robots = 2;
   paper.key.run = 1;
-  EXPECT_EQ(CsvRow(paper), "paper,decentralized,2,1,0,,,,,0,0,0,0,,,,0,,,,,");
+  EXPECT_EQ(CsvRow(paper), "paper,decentralized,2,1,0,,,,,0,0,0,0,,,,0," + std::string(5 + 1 + 3 + 30, ','));
+}
+
+// Bytes by role: five columns per role in MessageRole order after the totals; hand-made numbers.
+RunResult WithRoles(RunResult r) {
+  RunRoleBytes b;
+  for (int i = 0; i < kMessageRoles; ++i) {
+    const std::int64_t k = 10 * (i + 1);  // role i: payload k, copy wire k + 1, ...
+    b.copies[static_cast<std::size_t>(i)] = CopyBytes{k, k + 1, k + 2, k + 3};
+    b.medium[static_cast<std::size_t>(i)] = k + 4;
+  }
+  r.roles = b;
+  r.duration_s = 45.5;
+  return r;
+}
+
+TEST(ResultWriters, RunsCsvBytesByRole) {
+  const std::string header = kRunsHeader;
+  EXPECT_NE(header.find(",loss,network_name,duration_s,copy_wire_bytes,delivered_payload_bytes,"
+                        "delivered_wire_bytes,query_payload_bytes,query_wire_bytes,query_copy_wire_bytes,"
+                        "query_delivered_payload_bytes,query_delivered_wire_bytes,reply_payload_bytes,"),
+            std::string::npos) << header;
+  EXPECT_TRUE(header.ends_with(",other_copy_wire_bytes,other_delivered_payload_bytes,other_delivered_wire_bytes"));
+  // Totals over roles 10..60: copy wire 11+21+..+61 = 216, delivered payload 222, delivered wire 228.
+  const std::string row = CsvRow(WithRoles(SimRow(0, 0.8)));
+  EXPECT_NE(row.find(",none,point-to-point 1 Mbit/s 5 ms,45.5,216,222,228,10,14,11,12,13,20,24,21,22,23,"),
+            std::string::npos) << row;
+  EXPECT_TRUE(row.ends_with(",50,54,51,52,53,60,64,61,62,63")) << row;
+  // runs.csv reads back with its roles (dvpr plot draws from the file).
+  const fs::path dir = fs::path(DVPR_TEST_TMP) / "writers_roles";
+  fs::remove_all(dir);
+  CreateOutputDir(dir);
+  WriteRunsCsv(dir / "runs.csv", {WithRoles(SimRow(0, 0.8)), SimRow(1, 0.6)});
+  const auto rows = ReadRunsCsv(dir / "runs.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(CsvRow(rows[0]), row);
+  ASSERT_TRUE(rows[0].roles.has_value());
+  EXPECT_EQ(rows[0].roles->medium[5], 64);
+  EXPECT_FALSE(rows[1].roles.has_value());
+}
+
+TEST(ResultWriters, LinksCsvBytesByRole) {
+  LinkRow l;
+  l.key = SimRow(0, 0.8).key;
+  l.src = 1;
+  l.dst = 2;
+  l.messages = 3;
+  l.payload_bytes = 210;
+  l.wire_bytes = 216;
+  RoleCopyBytes roles{};
+  for (int i = 0; i < kMessageRoles; ++i) {
+    const std::int64_t k = 10 * (i + 1);
+    roles[static_cast<std::size_t>(i)] = CopyBytes{k, k + 1, k + 2, k + 3};
+  }
+  l.roles = roles;
+  EXPECT_EQ(CsvRow(l),
+            "sim,decentralized,4,0,1,2,3,210,216,0,1,point_to_point,1e+06,5,none,point-to-point 1 Mbit/s 5 ms,"
+            "222,228,10,11,12,13,20,21,22,23,30,31,32,33,40,41,42,43,50,51,52,53,60,61,62,63");
+  EXPECT_NE(std::string(kLinksHeader).find(",network_name,delivered_payload_bytes,delivered_wire_bytes,"
+                                           "query_payload_bytes,query_wire_bytes,query_delivered_payload_bytes,"),
+            std::string::npos);
+  MessageRow m;
+  m.key = l.key;
+  m.channel = "DVPR_MATCH_0";
+  m.type = "match_t";
+  m.role = "reply";
+  EXPECT_TRUE(CsvRow(m).ends_with(",0,0,0,1,point_to_point,1e+06,5,none,point-to-point 1 Mbit/s 5 ms,reply")) << CsvRow(m);
+  EXPECT_TRUE(std::string(kMessagesHeader).ends_with(",dropped,network_variant,network_model,bandwidth_bps,latency_ms,"
+                                                     "loss,network_name,role"));
+}
+
+TEST(ResultWriters, NetworkNamesSayTheirParameters) {
+  EXPECT_EQ(NetworkName(NetworkLabel{.variant = 3, .model = "shared_medium", .bandwidth_bps = 1e7,
+                                     .latency_ms = 2, .loss = "none"}),
+            "shared medium 10 Mbit/s 2 ms");
+  EXPECT_EQ(NetworkName(NetworkLabel{.variant = 0, .model = "point_to_point", .bandwidth_bps = 2.5e9,
+                                     .latency_ms = 0.5, .loss = "bernoulli"}),
+            "point-to-point 2500 Mbit/s 0.5 ms bernoulli loss");
+  EXPECT_EQ(NetworkName(NetworkLabel{.variant = 0, .model = "point_to_point", .bandwidth_bps = 64e3,
+                                     .latency_ms = 20, .loss = "none"}),
+            "point-to-point 64 kbit/s 20 ms");
+  EXPECT_EQ(NetworkName(NetworkLabel{}), "");
+}
+
+// The place-recognition ratio: broadcast over decentralized (query + reply copy wire) per query.
+TEST(ResultWriters, SummaryHasTheMeasuredPlaceRecognitionRatio) {
+  RunResult dec = WithRoles(SimRow(0, 0.8));  // (11 + 21) / 100 queries = 0.32 bytes per query
+  RunResult bro = WithRoles(SimRow(0, 1.0));
+  bro.key.strategy = "broadcast";
+  bro.roles->copies[0].wire = 301;  // (301 + 21) / 100 = 3.22: ratio 3.22 / 0.32 = 10.0625
+  const std::string json = SummaryJson({dec, bro});
+  EXPECT_NE(json.find("\"place_recognition_bytes_per_query\": 0.32,"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"place_recognition_ratio\": [\n    {\"protocol\": \"sim\", \"robots\": 4, "
+                      "\"network_variant\": 1, \"network_name\": \"point-to-point 1 Mbit/s 5 ms\", "
+                      "\"broadcast_bytes_per_query\": 3.22, \"decentralized_bytes_per_query\": 0.32, "
+                      "\"ratio\": 10.0625, \"n_minus_1\": 3}"),
+            std::string::npos) << json;
+  EXPECT_NE(json.find("\"query_wire_bytes\": 14,"), std::string::npos);
 }
 
 TEST(ResultWriters, QueryRowEmptyFieldsWhenNoMatch) {
@@ -65,7 +163,7 @@ TEST(ResultWriters, QueryRowEmptyFieldsWhenNoMatch) {
   q.frame = 17;
   q.sent_ns = 1700000000;
   q.relevant = true;
-  EXPECT_EQ(CsvRow(q), "sim,broadcast,3,0,2,17,1700000000,,,,,1,0,,,,,");
+  EXPECT_EQ(CsvRow(q), "sim,broadcast,3,0,2,17,1700000000,,,,,1,0,,,,,,");
 }
 
 TEST(ResultWriters, AtomicWriteLeavesNoTemporary) {

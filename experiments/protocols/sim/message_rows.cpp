@@ -1,5 +1,7 @@
 #include "experiments/protocols/sim/message_rows.h"
 
+#include "experiments/protocols/sim/message_roles.h"
+
 namespace dvpr {
 
 void MessageRowRecorder::OnSent(const MessageCopy& copy) {
@@ -47,6 +49,7 @@ std::vector<MessageRow> MessageRowRecorder::Rows() const {
     row.payload_bytes = r.payload_bytes;
     row.wire_bytes = r.wire_bytes;
     row.dropped = r.dropped;
+    row.role = kMessageRoleNames[static_cast<std::size_t>(RoleOfChannel(row.channel))];
   }
   return rows;
 }

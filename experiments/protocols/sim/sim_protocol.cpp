@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 #include "experiments/evaluation/metrics.h"
@@ -32,6 +33,21 @@ SimRunParams ToSimParams(const ExperimentConfig& c, const RunSpec& spec) {
   return p;
 }
 
+// The simulated network counted bytes by role; real agents' logs (lcm protocol) have none.
+// Also how long the robots drove: the last frame's capture time plus one frame period.
+RunResult WithRoles(RunResult row, const SimRunLog& log, double fps) {
+  if (!log.link_roles.empty()) row.roles = log.roles;
+  SimTime last = SimTime::Zero();
+  for (const SimTime t : log.capture_time) last = std::max(last, t);
+  row.duration_s = static_cast<double>(last.ns()) * 1e-9 + 1.0 / fps;
+  return row;
+}
+
+std::optional<RoleCopyBytes> RolesOf(const SimRunLog& log, int src, int dst) {
+  if (log.link_roles.empty()) return std::nullopt;
+  return log.link_roles[static_cast<std::size_t>(src * log.robots + dst)];
+}
+
 std::string LogName(const RunSpec& spec, const std::string& strategy) {
   return "sim_" + strategy + "_n" + std::to_string(spec.robots) + "_r" + std::to_string(spec.run) + "_v" +
          std::to_string(spec.network->index) + ".lcmlog";
@@ -57,7 +73,8 @@ void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLo
       const LinkCounters& lc = log.links[static_cast<std::size_t>(r * log.robots + d)];
       if (lc.messages == 0) continue;
       out.links.push_back(LinkRow{key, r, d, static_cast<std::int64_t>(lc.messages), lc.payload_bytes, lc.wire_bytes,
-                                  static_cast<std::int64_t>(lc.dropped)});
+                                  static_cast<std::int64_t>(lc.dropped),
+                                  RolesOf(log, r, d)});
     }
   }
   if (c.outputs.queries) {
@@ -139,12 +156,12 @@ RunFunction MakeSimRun(const SharedInputs& in) {
     auto [broadcast_log, broadcast] = run_one(ParseStrategy("broadcast"));
     for (const StrategySpec& strategy : spec.strategies) {
       if (strategy.broadcast()) {
-        out.runs.push_back(MakeRow(spec, strategy.name, broadcast, broadcast.auc));
+        out.runs.push_back(WithRoles(MakeRow(spec, strategy.name, broadcast, broadcast.auc), broadcast_log, data->fps));
         AppendRows(spec, strategy.name, broadcast_log, broadcast, *config, out);
         continue;
       }
       auto [log, summary] = run_one(strategy);
-      out.runs.push_back(MakeRow(spec, strategy.name, summary, broadcast.auc));
+      out.runs.push_back(WithRoles(MakeRow(spec, strategy.name, summary, broadcast.auc), log, data->fps));
       AppendRows(spec, strategy.name, log, summary, *config, out);
     }
     return out;

@@ -9,6 +9,7 @@
 
 #include "agents/sim_transport.h"
 #include "experiments/protocols/sim/event_log_recorder.h"
+#include "experiments/protocols/sim/message_roles.h"
 #include "experiments/protocols/sim/message_rows.h"
 #include "experiments/protocols/sim/pose_oracle.h"
 #include "experiments/evaluation/metrics.h"
@@ -37,9 +38,11 @@ void SimRunParams::Validate(const Dataset& data) const {
 
 namespace {
 
-// What a run records of its network, as params ask: messages.csv rows, an LCM event log.
+// What a run records of its network: its bytes by role always; as params ask, messages.csv rows
+// and an LCM event log.
 struct NetworkRecorders {
-  NetworkRecorders(Network& network, const SimRunParams& params) {
+  NetworkRecorders(Network& network, const SimRunParams& params)
+      : roles(network.nodes()), roles_subscription(network.Subscribe(roles)) {
     if (params.record_messages) rows_subscription = network.Subscribe(rows);
     if (!params.lcm_log.empty()) {
       event_log_file = std::make_unique<LcmEventLogWriter>(params.lcm_log);
@@ -47,6 +50,8 @@ struct NetworkRecorders {
       event_log_subscription = network.Subscribe(*event_log);
     }
   }
+  RoleBytesRecorder roles;
+  ObserverSubscription roles_subscription;
   MessageRowRecorder rows;
   ObserverSubscription rows_subscription;
   std::unique_ptr<LcmEventLogWriter> event_log_file;
@@ -142,6 +147,10 @@ SimRunLog RunSimulation(const Dataset& data, const TeamRouting& routing, const S
   for (int s = 0; s < n; ++s)
     for (int d = 0; d < n; ++d) log.links.push_back(s == d ? LinkCounters{} : network.Counters(NodeId(s), NodeId(d)));
   for (int s = 0; s < n; ++s) log.senders.push_back(network.Sender(NodeId(s)));
+  log.roles = recorders.roles.Run();
+  log.link_roles.reserve(log.links.size());
+  for (int s = 0; s < n; ++s)
+    for (int d = 0; d < n; ++d) log.link_roles.push_back(recorders.roles.Pair(s, d));
   log.messages = recorders.rows.Rows();
   log.dropouts = DropoutOutcomes(params, agents);
   if (recorders.event_log_file) recorders.event_log_file->Close();

@@ -51,6 +51,8 @@ struct SimRunLog {
   std::vector<RobotLoad> loads;           // per robot
   std::vector<LinkCounters> links;        // robots x robots, row = source
   std::vector<NodeCounters> senders;      // per robot: transmissions it put on the medium
+  RunRoleBytes roles;                     // the run's bytes by message role
+  std::vector<RoleCopyBytes> link_roles;  // robots x robots, row = source: by role
   std::vector<MessageRow> messages;       // when record_messages
   std::vector<SimTime> capture_time;      // per frame of the sequence
   std::int64_t verify_requested = 0;

@@ -47,9 +47,9 @@ TEST(MessageRowRecorder, OneRowPerMessageAndDestinationAsMessagesCsvWritesIt) {
     lines.push_back(CsvRow(row));
   }
   EXPECT_EQ(lines, (std::vector<std::string>{
-                       "sim,broadcast,4,0,0,9376000,0,1,ALL,dvpr.test_t,505,547,0,,,,,",
-                       "sim,broadcast,4,0,0,9376000,0,2,ALL,dvpr.test_t,505,547,0,,,,,",
-                       "sim,broadcast,4,0,0,,0,3,ALL,dvpr.test_t,505,547,1,,,,,",
+                       "sim,broadcast,4,0,0,9376000,0,1,ALL,dvpr.test_t,505,547,0,,,,,,,other",  // ALL: no role of dvpr
+                       "sim,broadcast,4,0,0,9376000,0,2,ALL,dvpr.test_t,505,547,0,,,,,,,other",
+                       "sim,broadcast,4,0,0,,0,3,ALL,dvpr.test_t,505,547,1,,,,,,,other",
                    }));
 }
 

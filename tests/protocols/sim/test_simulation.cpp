@@ -210,5 +210,52 @@ TEST_F(SimulationTest, DroppedRobotLosesItsMessagesAndOthersFinish) {
   EXPECT_EQ(dropped, 3 * 30);
 }
 
+// Bytes by role (issue 16) against the network's own counters, on a saturated shared medium
+// (drops) with verification traffic: every role is counted once, offered and delivered apart.
+TEST_F(SimulationTest, BytesByRoleSumToTheNetworksTotals) {
+  const BroadcastRouting routing(kRobots);
+  SimRunParams p = IdealParams(kRobots);
+  p.network.model = LinkModelKind::kSharedMedium;
+  p.network.bandwidth = DataRate::Kbps(100);
+  p.network.queue_packets = 4;
+  p.agent.verification.max_distance = 1e9;  // every match is verified
+  const SimRunLog log = RunSimulation(data_, routing, p);
+  const SimRunSummary s = SummarizeSimRun(log, data_.trajectory.positions, 5.0, 10);
+  CopyBytes copies;
+  std::int64_t medium = 0;
+  for (int r = 0; r < kMessageRoles; ++r) {
+    copies += log.roles.copies[static_cast<std::size_t>(r)];
+    medium += log.roles.medium[static_cast<std::size_t>(r)];
+  }
+  EXPECT_EQ(copies.payload, s.payload_bytes);
+  EXPECT_EQ(copies.wire, s.wire_bytes);
+  EXPECT_EQ(medium, s.medium_bytes);
+  EXPECT_LT(copies.delivered_wire, copies.wire);  // the medium saturated and dropped
+  EXPECT_GT(s.dropped, 0);
+  EXPECT_GT(log.roles.copies[static_cast<std::size_t>(MessageRole::kVerifyRequest)].payload, 0);
+  // Per pair, the roles sum to links.csv's columns; by role, messages.csv's rows sum to the run's.
+  ASSERT_EQ(log.link_roles.size(), log.links.size());
+  for (std::size_t i = 0; i < log.links.size(); ++i) {
+    CopyBytes pair;
+    for (const CopyBytes& c : log.link_roles[i]) pair += c;
+    EXPECT_EQ(pair.payload, log.links[i].payload_bytes);
+    EXPECT_EQ(pair.wire, log.links[i].wire_bytes);
+  }
+  std::map<std::string, CopyBytes> by_role;
+  for (const MessageRow& m : log.messages) {
+    CopyBytes& c = by_role[m.role];
+    c.payload += m.payload_bytes;
+    c.wire += m.wire_bytes;
+    if (m.delivered_ns) c.delivered_wire += m.wire_bytes;
+  }
+  for (int r = 0; r < kMessageRoles; ++r) {
+    const CopyBytes& want = log.roles.copies[static_cast<std::size_t>(r)];
+    const CopyBytes got = by_role[kMessageRoleNames[static_cast<std::size_t>(r)]];
+    EXPECT_EQ(got.payload, want.payload) << kMessageRoleNames[static_cast<std::size_t>(r)];
+    EXPECT_EQ(got.wire, want.wire);
+    EXPECT_EQ(got.delivered_wire, want.delivered_wire);
+  }
+}
+
 }  // namespace
 }  // namespace dvpr

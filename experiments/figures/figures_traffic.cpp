@@ -1,0 +1,433 @@
+// The traffic figures (figures_traffic.h): their data files and gnuplot commands.
+#include "experiments/figures/figures_traffic.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "experiments/figures/figure_style.h"
+#include "experiments/results/result_writers.h"
+
+namespace dvpr {
+
+namespace {
+
+namespace fs = std::filesystem;
+using figure_style::NetworkDash;
+using figure_style::NetworkPoint;
+
+std::string Quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
+  return out + "'";
+}
+
+// A gnuplot string in double quotes, where "\\n" breaks the line.
+std::string DQuote(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\\\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::string Xtics(const std::vector<int>& robots) {
+  std::string s = "set xtics (";
+  for (std::size_t i = 0; i < robots.size(); ++i) s += (i ? ", " : "") + std::to_string(robots[i]);
+  return s + ")\n";
+}
+
+std::string Colour(const TrafficTable& t, const std::string& strategy) {
+  return "lc rgb '" + figure_style::StrategyColour(t.StrategyIndex(strategy)) + "'";
+}
+
+// The robot counts at which every strategy of `strategies` has a cell on variant v.
+std::vector<int> CommonRobots(const TrafficTable& t, const std::vector<std::string>& strategies, int v) {
+  std::vector<int> out;
+  for (int n : t.robots) {
+    if (std::all_of(strategies.begin(), strategies.end(), [&](const std::string& s) { return t.Find(s, v, n); })) {
+      out.push_back(n);
+    }
+  }
+  return out;
+}
+
+std::string Block(const std::string& title, const std::vector<std::pair<double, double>>& points) {
+  std::string s = "# " + title + "\n";
+  for (const auto& [x, y] : points) s += FormatDouble(x) + " " + FormatDouble(y) + "\n";
+  return s + "\n\n";
+}
+
+// Left panel of figure 1: bytes per query of both methods and the law, on network v.
+std::string PrBytesPanel(const fs::path& dir, const TrafficTable& t, int v, const std::vector<int>& robots) {
+  std::string dat;
+  for (const char* s : {"decentralized", "broadcast"}) {
+    std::vector<std::pair<double, double>> p;
+    for (int n : robots) p.emplace_back(n, t.Find(s, v, n)->pr_bytes_per_query);
+    dat += Block(s, p);
+  }
+  std::vector<std::pair<double, double>> law;
+  for (int n : robots) law.emplace_back(n, (n - 1) * t.Find("decentralized", v, n)->pr_bytes_per_query);
+  dat += Block("n - 1 law", law);
+  WriteFileAtomic(dir / "pr_bytes.dat", dat);
+  const int n = robots.back();
+  const double ratio = t.Find("broadcast", v, n)->pr_bytes_per_query / t.Find("decentralized", v, n)->pr_bytes_per_query;
+  std::ostringstream s;
+  s << "set title " << DQuote("Place-recognition bytes per query (query + reply, every copy)\\n" +
+                              NetworkName(*t.Network(v)) + ", mean over runs")
+    << "\nset xlabel 'robots n'\nset ylabel 'wire bytes per query'\nset logscale y\n"
+    << Xtics(t.robots) << "set key below horizontal\n"
+    << "set label 1 " << DQuote("measured at n = " + std::to_string(n) + ": broadcast / decentralized = " +
+                                FormatDouble(ratio, 1) + "\\n(n - 1 = " + std::to_string(n - 1) + ")")
+    << " at graph 0.03, graph 0.93 left front\n"
+    << "plot 'pr_bytes.dat' index 0 using 1:2 with linespoints lw 2 pt 7 " << Colour(t, "decentralized")
+    << " title 'decentralized (one owner)', \\\n     '' index 1 using 1:2 with linespoints lw 2 pt 5 "
+    << Colour(t, "broadcast") << " title 'broadcast (n - 1 robots)', \\\n     '' index 2 using 1:2 with lines lw 1.5 dt 2 "
+    << "lc rgb '#333333' title 'n - 1 law: (n - 1) x decentralized'\nunset label 1\nunset logscale y\n";
+  return s.str();
+}
+
+// Right panel of figure 1: the measured ratio on every network, the band [n - 1, n + 1].
+std::string PrRatioPanel(const fs::path& dir, const TrafficTable& t) {
+  std::string dat, band;
+  std::ostringstream plot;
+  plot << "plot 'pr_band.dat' using 1:2:3 with filledcurves fc rgb '#e6e6e6' title 'between n - 1 and n + 1'";
+  int block = 0;
+  for (std::size_t i = 0; i < t.networks.size(); ++i) {
+    const int v = t.networks[i].variant;
+    std::vector<std::pair<double, double>> p;
+    for (int n : CommonRobots(t, {"decentralized", "broadcast"}, v)) {
+      p.emplace_back(n, t.Find("broadcast", v, n)->pr_bytes_per_query / t.Find("decentralized", v, n)->pr_bytes_per_query);
+    }
+    if (p.empty()) continue;
+    dat += Block(NetworkName(t.networks[i]), p);
+    plot << ", \\\n     'pr_ratio.dat' index " << block++ << " using 1:2 with linespoints lw 1.5 lc rgb '#222222' dt "
+         << NetworkDash(i) << " pt " << NetworkPoint(i) << " title " << Quote(NetworkName(t.networks[i]));
+  }
+  for (int n : t.robots) band += std::to_string(n) + " " + std::to_string(n - 1) + " " + std::to_string(n + 1) + "\n";
+  WriteFileAtomic(dir / "pr_ratio.dat", dat);
+  WriteFileAtomic(dir / "pr_band.dat", band);
+  return "set title 'Broadcast / decentralized place-recognition bytes, every network'\nset ylabel 'ratio'\n"
+         "set key below maxrows 4\n" + plot.str() + "\n";
+}
+
+}  // namespace
+
+std::optional<FigureScript> WritePlaceRecognitionFigure(const fs::path& dir, const TrafficTable& t, std::string& why) {
+  const int v = t.ShownVariant();
+  const std::vector<int> robots = v < 0 ? std::vector<int>{} : CommonRobots(t, {"decentralized", "broadcast"}, v);
+  if (robots.empty()) {
+    why = "needs protocol sim with strategies decentralized and broadcast";
+    return std::nullopt;
+  }
+  FigureScript f;
+  f.width = 1500;
+  f.height = 650;
+  f.body = "set multiplot layout 1,2 spacing 0.1\nset grid\n" + PrBytesPanel(dir, t, v, robots) + "set yrange [0:*]\n" +
+           PrRatioPanel(dir, t) + "unset multiplot\n";
+  return f;
+}
+
+namespace {
+
+// The roles any strategy sent on network v (the others stay out of the legend).
+std::vector<int> RolesSent(const TrafficTable& t, int v) {
+  std::vector<int> roles;
+  for (int r = 0; r < kMessageRoles; ++r) {
+    for (const auto& [key, c] : t.cells) {
+      if (std::get<1>(key) == v && c.role_bytes_per_query[static_cast<std::size_t>(r)] > 0) {
+        roles.push_back(r);
+        break;
+      }
+    }
+  }
+  return roles;
+}
+
+std::string RolePanel(const fs::path& dir, const TrafficTable& t, int v, std::size_t i, const std::vector<int>& roles,
+                      bool key) {
+  const std::string& s = t.strategies[i];
+  std::string dat;
+  double pr = 0, verify = 0, total = 0;
+  for (int n : t.robots) {
+    const TrafficCell* c = t.Find(s, v, n);
+    if (c == nullptr) continue;
+    dat += std::to_string(n);
+    for (int r : roles) dat += " " + FormatDouble(c->role_bytes_per_query[static_cast<std::size_t>(r)]);
+    dat += "\n";
+    const auto& b = c->role_bytes_per_query;
+    pr = b[0] + b[1];
+    verify = b[2] + b[3];
+    total = 0;
+    for (double x : b) total += x;
+  }
+  const std::string file = "roles_" + std::to_string(i) + ".dat";
+  WriteFileAtomic(dir / file, dat);
+  std::ostringstream p;
+  p << "set title " << Quote(s) << " tc rgb '" << figure_style::StrategyColour(t.StrategyIndex(s)) << "'\n"
+    << "set label 1 " << Quote("largest n: place recognition " + FormatDouble(100 * pr / total, 0) +
+                                "%, verification " + FormatDouble(100 * verify / total, 0) + "%")
+    << " at graph 0.02, graph 0.95 left front font ',10'\n";
+  p << (key ? "set key at screen 0.5, screen 0.02 center bottom horizontal\n" : "unset key\n") << "plot ";
+  for (std::size_t k = 0; k < roles.size(); ++k) {
+    const auto r = static_cast<std::size_t>(roles[k]);
+    p << (k ? ", \\\n     " : "") << Quote(file) << " using " << k + 2 << (k == 0 ? ":xtic(1)" : "")
+      << " lc rgb '" << figure_style::kRoleColours[r] << "' "
+      << (key ? "title " + Quote(kMessageRoleNames[r]) : std::string("notitle"));
+  }
+  return p.str() + "\nunset label 1\n";
+}
+
+}  // namespace
+
+std::optional<FigureScript> WriteRoleFigure(const fs::path& dir, const TrafficTable& t, std::string& why) {
+  const int v = t.ShownVariant();
+  std::vector<std::size_t> shown;
+  double ymax = 0;
+  for (std::size_t i = 0; i < t.strategies.size(); ++i) {
+    bool any = false;
+    for (int n : t.robots) {
+      if (const TrafficCell* c = t.Find(t.strategies[i], v, n)) {
+        any = true;
+        double sum = 0;
+        for (double b : c->role_bytes_per_query) sum += b;
+        ymax = std::max(ymax, sum);
+      }
+    }
+    if (any) shown.push_back(i);
+  }
+  if (shown.empty()) {
+    why = "needs protocol sim";
+    return std::nullopt;
+  }
+  const std::vector<int> roles = RolesSent(t, v);
+  std::ostringstream s;
+  s << "set multiplot layout 1," << shown.size() << " margins 0.07,0.98,0.2,0.86 spacing 0.04 title "
+    << Quote("All traffic per query by message role (offered wire bytes of every copy), " + NetworkName(*t.Network(v)) +
+             ", mean over runs") << " font ',13'\n"
+    << "set style data histograms\nset style histogram rowstacked\nset style fill solid 0.9 border rgb '#333333'\n"
+    << "set boxwidth 0.75\nset grid ytics\nset xlabel 'robots n'\nset yrange [0:" << FormatDouble(ymax * 1.12) << "]\n";
+  for (std::size_t k = 0; k < shown.size(); ++k) {
+    s << (k == 0 ? "set ylabel 'wire bytes per query'\n" : "unset ylabel\n") << RolePanel(dir, t, v, shown[k], roles, k == 0);
+  }
+  return FigureScript{s.str() + "unset multiplot\n", static_cast<int>(std::max<std::size_t>(2, shown.size())) * 600, 620};
+}
+
+namespace {
+
+// Rows of one run of `csv` (protocol sim, variant v, n, run 0) for `strategy`.
+std::vector<const std::vector<std::string>*> RunRows(const CsvTable& csv, const std::string& strategy, int v, int n) {
+  std::vector<const std::vector<std::string>*> out;
+  if (csv.header.empty()) return out;
+  const std::size_t p = csv.Column("protocol"), s = csv.Column("strategy"), r = csv.Column("robots"),
+                    run = csv.Column("run"), net = csv.Column("network_variant");
+  for (const auto& row : csv.rows) {
+    if (row.size() != csv.header.size()) continue;
+    if (row[p] == "sim" && row[s] == strategy && row[r] == std::to_string(n) && row[run] == "0" &&
+        row[net] == std::to_string(v)) {
+      out.push_back(&row);
+    }
+  }
+  return out;
+}
+
+// The strategy shown beside the paper's method in figure 3: the first that is neither it nor
+// broadcast (whose every robot searches every query, balanced by construction).
+std::string BalancedStrategy(const TrafficTable& t, const CsvTable& per_robot, int v, int n) {
+  for (const std::string& s : t.strategies) {
+    if (s != "decentralized" && s != "broadcast" && !RunRows(per_robot, s, v, n).empty()) return s;
+  }
+  return "";
+}
+
+std::string LoadPanel(const fs::path& dir, const TrafficTable& t, const CsvTable& per_robot, const std::string& s,
+                      int v, int n) {
+  const std::size_t robot = per_robot.Column("robot"), served = per_robot.Column("queries_received");
+  std::string dat;
+  double sum = 0, most = -1;
+  std::string busiest;
+  for (const auto* row : RunRows(per_robot, s, v, n)) {
+    const double q = std::stod((*row)[served]);
+    dat += (*row)[robot] + " " + (*row)[served] + "\n";
+    sum += q;
+    if (q > most) {
+      most = q;
+      busiest = (*row)[robot];
+    }
+  }
+  const std::string file = "load_" + std::to_string(t.StrategyIndex(s)) + ".dat";
+  WriteFileAtomic(dir / file, dat + "\n\n" + busiest + " " + FormatDouble(most) + "\n");
+  const double fair = sum / n;
+  std::ostringstream p;
+  p << "set title " << Quote(s) << " tc rgb '" << figure_style::StrategyColour(t.StrategyIndex(s)) << "'\n"
+    << "set yrange [0:" << FormatDouble(most * 1.18) << "]\nset label 1 "
+    << Quote("busiest: robot " + busiest + ", " + FormatDouble(most / fair, 1) + " x fair share") << " at "
+    << busiest << ", " << FormatDouble(most) << " center offset 0,1 front\n"
+    << "plot " << Quote(file) << " index 0 using 1:2 with boxes " << Colour(t, s)
+    << " fs solid 0.45 title 'searches served', '' index 1 using 1:2 with boxes " << Colour(t, s)
+    << " fs solid 1.0 border lc rgb '#000000' title 'busiest robot', " << FormatDouble(fair)
+    << " with lines dt 2 lw 2 lc rgb '#000000' title " << Quote("fair share (all searches / n = " +
+                                                                 FormatDouble(fair, 0) + ")")
+    << "\nunset label 1\n";
+  return p.str();
+}
+
+}  // namespace
+
+std::optional<FigureScript> WriteRobotLoadFigure(const fs::path& dir, const TrafficTable& t, const CsvTable& per_robot,
+                                                 std::string& why) {
+  const int v = t.ShownVariant();
+  const int n = t.robots.empty() ? 0 : t.robots.back();
+  if (v < 0 || RunRows(per_robot, "decentralized", v, n).empty()) {
+    why = "needs protocol sim with strategy decentralized";
+    return std::nullopt;
+  }
+  std::vector<std::string> shown = {"decentralized"};
+  if (const std::string b = BalancedStrategy(t, per_robot, v, n); !b.empty()) shown.push_back(b);
+  std::ostringstream s;
+  s << "set multiplot layout 1," << shown.size() << " margins 0.07,0.98,0.2,0.86 spacing 0.06 title "
+    << Quote("Searches served per robot, one run (n = " + std::to_string(n) + ", run 0, " +
+             NetworkName(*t.Network(v)) + ")") << " font ',13'\n"
+    << "set style fill solid 0.5\nset boxwidth 0.8\nset grid ytics\nset xlabel 'robot'\nset ylabel 'searches served'\n"
+    << "set xrange [-0.7:" << n - 0.3 << "]\nset xtics 1\nset key below horizontal\n";
+  for (const std::string& st : shown) s << LoadPanel(dir, t, per_robot, st, v, n);
+  return FigureScript{s.str() + "unset multiplot\n", shown.size() == 1 ? 900 : 1500, 600};
+}
+
+namespace {
+
+// The n x n matrix of kB that `strategy` offered per directed pair, as gnuplot's `matrix` rows.
+double WriteMatrix(const fs::path& file, const CsvTable& links, const std::string& strategy, int v, int n) {
+  std::vector<double> kb(static_cast<std::size_t>(n * n), 0.0);
+  const std::size_t src = links.Column("src"), dst = links.Column("dst"), wire = links.Column("wire_bytes");
+  for (const auto* row : RunRows(links, strategy, v, n)) {
+    kb[static_cast<std::size_t>(std::stoi((*row)[src]) * n + std::stoi((*row)[dst]))] = std::stod((*row)[wire]) / 1e3;
+  }
+  std::string dat;
+  for (int r = 0; r < n; ++r) {
+    for (int c = 0; c < n; ++c) dat += (c ? " " : "") + FormatDouble(kb[static_cast<std::size_t>(r * n + c)]);
+    dat += "\n";
+  }
+  WriteFileAtomic(file, dat);
+  return *std::max_element(kb.begin(), kb.end());
+}
+
+}  // namespace
+
+std::optional<FigureScript> WriteMatrixFigure(const fs::path& dir, const TrafficTable& t, const CsvTable& links,
+                                              std::string& why) {
+  const int v = t.ShownVariant();
+  const int n = t.robots.empty() ? 0 : t.robots.back();
+  std::vector<std::string> shown;
+  for (const char* s : {"decentralized", "broadcast"}) {
+    if (v >= 0 && !RunRows(links, s, v, n).empty()) shown.emplace_back(s);
+  }
+  if (shown.empty()) {
+    why = "needs protocol sim";
+    return std::nullopt;
+  }
+  double top = 0;
+  for (std::size_t i = 0; i < shown.size(); ++i) {
+    top = std::max(top, WriteMatrix(dir / ("matrix_" + std::to_string(i) + ".dat"), links, shown[i], v, n));
+  }
+  std::ostringstream s;
+  s << "set multiplot layout 1," << shown.size() << " title "
+    << Quote("Wire bytes sent, sender x receiver, one run (n = " + std::to_string(n) + ", run 0, " +
+             NetworkName(*t.Network(v)) + ")") << " font ',13'\n"
+    << "set size ratio -1\nunset grid\nunset key\nset xlabel 'receiver'\nset ylabel 'sender'\n"
+    << "set xrange [-0.5:" << n - 0.5 << "]\nset yrange [" << n - 0.5 << ":-0.5]\nset cbrange [0:" << FormatDouble(top)
+    << "]\nset palette defined (0 '#ffffff', 1 '#c6dbef', 2 '#6baed6', 3 '#2171b5', 4 '#08306b')\n"
+    << "set tics out\nset xtics " << std::max(1, n / 10) << "\nset ytics " << std::max(1, n / 10) << "\n";
+  for (std::size_t i = 0; i < shown.size(); ++i) {
+    // One colour bar, beside the last panel: both panels share its range.
+    s << (i + 1 == shown.size() ? "set colorbox\nset cblabel 'kB sent'\n" : "unset colorbox\n") << "set title "
+      << Quote(shown[i]) << " tc rgb '" << figure_style::StrategyColour(t.StrategyIndex(shown[i]))
+      << "'\nplot 'matrix_" << i << ".dat' matrix with image notitle\n";
+  }
+  return FigureScript{s.str() + "unset multiplot\n", shown.size() == 1 ? 800 : 1400, 650};
+}
+
+namespace {
+
+std::vector<std::size_t> SharedMediumVariants(const TrafficTable& t) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < t.networks.size(); ++i) {
+    if (t.networks[i].model == "shared_medium") out.push_back(i);
+  }
+  return out;
+}
+
+std::string OfferedPanel(const fs::path& dir, const TrafficTable& t, const std::vector<std::size_t>& shared) {
+  std::string dat;
+  std::ostringstream plot;
+  plot << "plot x with lines lw 2 dt 2 lc rgb '#777777' title 'delivered = offered'";
+  int block = 0;
+  for (const std::string& s : t.strategies) {
+    for (std::size_t i : shared) {
+      std::vector<std::pair<double, double>> p;
+      for (int n : t.robots) {
+        if (const TrafficCell* c = t.Find(s, t.networks[i].variant, n)) p.emplace_back(c->offered_mbps, c->delivered_mbps);
+      }
+      if (p.empty()) continue;
+      const std::string title = s + ", " + NetworkName(t.networks[i]);
+      dat += Block(title, p);
+      plot << ", \\\n     'offered.dat' index " << block++ << " using 1:2 with linespoints lw 2 " << Colour(t, s)
+           << " dt " << NetworkDash(i) << " pt " << NetworkPoint(i) << " title " << Quote(title);
+    }
+  }
+  WriteFileAtomic(dir / "offered.dat", dat);
+  return "set title 'Offered vs delivered load (points: n = " + std::to_string(t.robots.front()) + " .. " +
+         std::to_string(t.robots.back()) + ")'\nset xlabel 'offered load, every copy sent [Mbit/s]'\n"
+         "set ylabel 'delivered load [Mbit/s]'\nset logscale xy\nset key below maxrows 4\n" +
+         plot.str() + "\n";
+}
+
+std::string LatencyPanel(const fs::path& dir, const TrafficTable& t, const std::vector<std::size_t>& shared) {
+  const int n = t.robots.back();
+  std::string dat, saturated;
+  std::ostringstream plot;
+  plot << "plot ";
+  int block = 0;
+  for (const std::string& s : t.strategies) {
+    std::vector<std::pair<double, double>> p;
+    for (std::size_t i : shared) {
+      const TrafficCell* c = t.Find(s, t.networks[i].variant, n);
+      if (c == nullptr) continue;
+      const double mbps = t.networks[i].bandwidth_bps / 1e6;
+      p.emplace_back(mbps, c->latency_ms);
+      const double fraction = c->delivered_mbps / c->offered_mbps;
+      if (fraction < 0.99) {
+        saturated += FormatDouble(mbps) + " " + FormatDouble(c->latency_ms) + " \"" + FormatDouble(100 * fraction, 0) +
+                     "% delivered\"\n";
+      }
+    }
+    if (p.empty()) continue;
+    dat += Block(s, p);
+    plot << (block ? ", \\\n     " : "") << "'latency.dat' index " << block << " using 1:2 with linespoints lw 2 pt 7 "
+         << Colour(t, s) << " title " << Quote(s);
+    ++block;
+  }
+  WriteFileAtomic(dir / "latency.dat", dat);
+  WriteFileAtomic(dir / "saturated.dat", saturated.empty() ? "# none\n" : saturated);
+  if (!saturated.empty()) {
+    plot << ", \\\n     'saturated.dat' using 1:2 with points pt 6 ps 3 lw 2 lc rgb '#000000' title "
+            "'saturated: under 99% of copies delivered', '' using 1:2:3 with labels left offset 1.5,0.6 font ',9' notitle";
+  }
+  return "set title 'Mean query latency vs bandwidth at n = " + std::to_string(n) +
+         "'\nset xlabel 'bandwidth of the shared medium [Mbit/s]'\nset ylabel 'mean query latency [ms]'\n"
+         "set logscale xy\nset key below maxrows 4\n" + plot.str() + "\n";
+}
+
+}  // namespace
+
+std::optional<FigureScript> WriteSaturationFigure(const fs::path& dir, const TrafficTable& t, std::string& why) {
+  const std::vector<std::size_t> shared = SharedMediumVariants(t);
+  if (shared.empty()) {
+    why = "needs protocol sim on a shared_medium network";
+    return std::nullopt;
+  }
+  const std::string body = "set multiplot layout 1,2 spacing 0.1 title 'Shared medium: where saturation begins' "
+                           "font ',13'\nset grid\n" + OfferedPanel(dir, t, shared) + LatencyPanel(dir, t, shared) +
+                           "unset multiplot\n";
+  return FigureScript{body, 1500, 680};
+}
+
+}  // namespace dvpr

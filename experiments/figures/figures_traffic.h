@@ -1,0 +1,71 @@
+#pragma once
+// The traffic figures of the simulation (issue 16), one message each:
+//   place_recognition_bytes.png  place-recognition bytes per query vs n, decentralized against
+//                                broadcast, the n - 1 law drawn and the measured ratio labelled
+//   traffic_by_role.png          all traffic per query, stacked by message role, per strategy
+//   robot_load.png               searches served per robot in one run, fair share, busiest robot
+//   traffic_matrix.png           sender x receiver bytes of one run
+//   saturation.png               offered vs delivered load and latency vs bandwidth, shared medium
+// Each Write* writes its data files into data_dir and returns the gnuplot commands that draw
+// them (without terminal and output, which DrawFigures puts in front), or nullopt when the
+// results hold nothing to draw (then `why` says what is missing).
+#include <array>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "experiments/results/results.h"
+
+namespace dvpr {
+
+// Means over the runs of one (strategy, network variant, n) of protocol sim.
+struct TrafficCell {
+  int runs = 0;
+  double pr_bytes_per_query = 0;  // PlaceRecognitionBytesPerQuery
+  std::array<double, kMessageRoles> role_bytes_per_query{};  // offered wire bytes of every copy
+  double offered_mbps = 0;        // offered wire bytes of every copy x 8 / duration
+  double delivered_mbps = 0;
+  double latency_ms = 0;
+};
+
+struct TrafficTable {
+  std::vector<std::string> strategies;  // every strategy of runs.csv, in order (its colour)
+  std::vector<NetworkLabel> networks;   // sim variants with bytes by role, by variant index
+  std::vector<int> robots;              // ascending
+  std::map<std::tuple<std::string, int, int>, TrafficCell> cells;
+  const TrafficCell* Find(const std::string& strategy, int variant, int robots) const;
+  std::size_t StrategyIndex(const std::string& strategy) const;
+  int ShownVariant() const;             // -1: no sim rows with bytes by role
+  const NetworkLabel* Network(int variant) const;
+};
+TrafficTable TabulateTraffic(const std::vector<RunResult>& rows);
+
+// A CSV file as strings, for the per-run files (per_robot.csv, links.csv). Empty if unreadable.
+struct CsvTable {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+  std::size_t Column(const std::string& name) const;  // throws if absent
+};
+CsvTable ReadCsvTable(const std::filesystem::path& path);
+
+struct FigureScript {
+  std::string body;
+  int width = 1400;
+  int height = 600;
+};
+
+std::optional<FigureScript> WritePlaceRecognitionFigure(const std::filesystem::path& data_dir, const TrafficTable& t,
+                                                        std::string& why);
+std::optional<FigureScript> WriteRoleFigure(const std::filesystem::path& data_dir, const TrafficTable& t,
+                                            std::string& why);
+std::optional<FigureScript> WriteRobotLoadFigure(const std::filesystem::path& data_dir, const TrafficTable& t,
+                                                 const CsvTable& per_robot, std::string& why);
+std::optional<FigureScript> WriteMatrixFigure(const std::filesystem::path& data_dir, const TrafficTable& t,
+                                              const CsvTable& links, std::string& why);
+std::optional<FigureScript> WriteSaturationFigure(const std::filesystem::path& data_dir, const TrafficTable& t,
+                                                  std::string& why);
+
+}  // namespace dvpr

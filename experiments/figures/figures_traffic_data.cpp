@@ -1,0 +1,115 @@
+// The numbers of the traffic figures (figures_traffic.cpp): runs.csv's bytes by role, and the
+// per_robot.csv and links.csv rows of one run, read by their header names.
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "experiments/figures/figures_traffic.h"
+#include "experiments/results/result_writers.h"
+
+namespace dvpr {
+
+namespace {
+
+bool IsSimWithRoles(const RunResult& r) { return r.key.protocol == "sim" && r.roles.has_value(); }
+
+double Role(const RunResult& r, MessageRole role) {
+  return static_cast<double>(r.roles->copies[static_cast<std::size_t>(role)].wire);
+}
+
+}  // namespace
+
+TrafficTable TabulateTraffic(const std::vector<RunResult>& rows) {
+  TrafficTable t;
+  std::map<int, NetworkLabel> variants;
+  for (const RunResult& r : rows) {
+    if (std::find(t.strategies.begin(), t.strategies.end(), r.key.strategy) == t.strategies.end()) {
+      t.strategies.push_back(r.key.strategy);
+    }
+    if (!IsSimWithRoles(r) || r.queries <= 0) continue;
+    variants.emplace(r.key.network.variant, r.key.network);
+    if (std::find(t.robots.begin(), t.robots.end(), r.key.robots) == t.robots.end()) t.robots.push_back(r.key.robots);
+    TrafficCell& c = t.cells[{r.key.strategy, r.key.network.variant, r.key.robots}];
+    const double q = static_cast<double>(r.queries);
+    ++c.runs;
+    c.pr_bytes_per_query += PlaceRecognitionBytesPerQuery(r);
+    for (int i = 0; i < kMessageRoles; ++i) c.role_bytes_per_query[static_cast<std::size_t>(i)] += Role(r, MessageRole(i)) / q;
+    CopyBytes total;
+    for (const CopyBytes& b : r.roles->copies) total += b;
+    c.offered_mbps += static_cast<double>(total.wire) * 8e-6 / r.duration_s;
+    c.delivered_mbps += static_cast<double>(total.delivered_wire) * 8e-6 / r.duration_s;
+    c.latency_ms += std::isnan(r.mean_latency_ms) ? 0.0 : r.mean_latency_ms;
+  }
+  for (auto& [key, c] : t.cells) {
+    const double n = c.runs;
+    c.pr_bytes_per_query /= n;
+    for (double& b : c.role_bytes_per_query) b /= n;
+    c.offered_mbps /= n;
+    c.delivered_mbps /= n;
+    c.latency_ms /= n;
+  }
+  for (const auto& [index, label] : variants) t.networks.push_back(label);
+  std::sort(t.robots.begin(), t.robots.end());
+  return t;
+}
+
+const TrafficCell* TrafficTable::Find(const std::string& strategy, int variant, int robots) const {
+  const auto it = cells.find({strategy, variant, robots});
+  return it == cells.end() ? nullptr : &it->second;
+}
+
+std::size_t TrafficTable::StrategyIndex(const std::string& strategy) const {
+  return static_cast<std::size_t>(std::find(strategies.begin(), strategies.end(), strategy) - strategies.begin());
+}
+
+// The network the n - 1 law is shown on: point-to-point links at the largest bandwidth (every
+// copy its own transmission, the least queueing), else the largest bandwidth of any model.
+int TrafficTable::ShownVariant() const {
+  const NetworkLabel* best = nullptr;
+  for (const NetworkLabel& n : networks) {
+    const bool p2p = n.model == "point_to_point";
+    const bool best_p2p = best != nullptr && best->model == "point_to_point";
+    if (best == nullptr || (p2p && !best_p2p) ||
+        (p2p == best_p2p && n.bandwidth_bps > best->bandwidth_bps)) {
+      best = &n;
+    }
+  }
+  return best == nullptr ? -1 : best->variant;
+}
+
+const NetworkLabel* TrafficTable::Network(int variant) const {
+  for (const NetworkLabel& n : networks) {
+    if (n.variant == variant) return &n;
+  }
+  return nullptr;
+}
+
+CsvTable ReadCsvTable(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  CsvTable t;
+  if (!in) return t;
+  std::string line;
+  auto split = [](const std::string& l) {
+    std::vector<std::string> f;
+    std::string field;
+    std::istringstream s(l);
+    while (std::getline(s, field, ',')) f.push_back(field);
+    if (!l.empty() && l.back() == ',') f.emplace_back();
+    return f;
+  };
+  if (!std::getline(in, line)) return t;
+  t.header = split(line);
+  while (std::getline(in, line)) t.rows.push_back(split(line));
+  return t;
+}
+
+std::size_t CsvTable::Column(const std::string& name) const {
+  const auto it = std::find(header.begin(), header.end(), name);
+  if (it == header.end()) throw std::runtime_error("no column " + name);
+  return static_cast<std::size_t>(it - header.begin());
+}
+
+}  // namespace dvpr

@@ -1,0 +1,46 @@
+#pragma once
+// Bytes by message role (results.h MessageRole), counted from a Network's hooks: the role of a
+// message is read from its channel (agents/channels.h, agents/recluster/recluster_messages.h),
+// so no agent has to say what it sent, and the network stays the only byte counter.
+//
+// Per directed pair and role: the copies' payload and wire bytes, offered (every copy sent) and
+// delivered; per role: what the messages put on the medium (MediumReport), so the roles sum to
+// the run's wire_bytes also on a shared medium, where a broadcast is one transmission.
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "experiments/results/results.h"
+#include "net_models/network_observer.h"
+
+namespace dvpr {
+
+// The role of a channel; kOther for a channel no role names.
+MessageRole RoleOfChannel(std::string_view channel);
+
+class RoleBytesRecorder : public NetworkObserver {
+ public:
+  explicit RoleBytesRecorder(int nodes);
+  void OnSent(const MessageCopy& copy) override;
+  void OnDelivered(const MessageCopy& copy, SimTime at) override;
+  void OnMedium(const MediumReport& use) override;
+
+  // The pair src -> dst.
+  const RoleCopyBytes& Pair(int src, int dst) const { return pairs_[Index(src, dst)]; }
+  // Summed over every pair, with the medium bytes.
+  RunRoleBytes Run() const;
+
+ private:
+  std::size_t Index(int src, int dst) const {
+    return static_cast<std::size_t>(src) * static_cast<std::size_t>(nodes_) + static_cast<std::size_t>(dst);
+  }
+  // The role of an interned channel, classified once per channel.
+  std::size_t RoleIndex(ChannelId channel, std::string_view name);
+
+  int nodes_;
+  std::vector<RoleCopyBytes> pairs_;
+  std::array<std::int64_t, kMessageRoles> medium_{};
+  std::vector<std::int8_t> roles_;  // by ChannelId; -1: not yet seen
+};
+
+}  // namespace dvpr

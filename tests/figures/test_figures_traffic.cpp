@@ -1,0 +1,136 @@
+// The traffic figures (figures_traffic.h): the numbers they plot, from hand-made runs.csv rows
+// with bytes by role, and which figures are drawn for which configs. Pixels are not tested.
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "experiments/figures/figures.h"
+#include "experiments/figures/figures_traffic.h"
+#include "experiments/results/result_writers.h"
+#include "tests/test_support.h"
+
+namespace dvpr {
+namespace {
+
+using dvpr::testing_support::Slurp;
+namespace fs = std::filesystem;
+
+NetworkLabel Net(int variant, const std::string& model, double bps) {
+  return NetworkLabel{.variant = variant, .model = model, .bandwidth_bps = bps, .latency_ms = 2, .loss = "none"};
+}
+
+// A sim run with `query` and `reply` copy wire bytes, 1000 more of verification requests, 100
+// queries over 10 s, `delivered` of the copies' wire delivered.
+RunResult SimRun(const std::string& strategy, int robots, int run, const NetworkLabel& net, std::int64_t query,
+              std::int64_t reply, double delivered = 1.0) {
+  RunResult r;
+  r.key = RunKey{.protocol = "sim", .strategy = strategy, .robots = robots, .run = run, .network = net};
+  r.queries = 100;
+  r.duration_s = 10;
+  r.mean_latency_ms = 5;
+  RunRoleBytes b;
+  b.copies[0].wire = query;
+  b.copies[1].wire = reply;
+  b.copies[2].wire = 1000;
+  for (CopyBytes& c : b.copies) c.delivered_wire = static_cast<std::int64_t>(static_cast<double>(c.wire) * delivered);
+  r.roles = b;
+  return r;
+}
+
+class TrafficFigures : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(DVPR_TEST_TMP) / "figures_traffic" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "figures" / "data");
+  }
+  // Two networks: point-to-point 10 Mbit/s (variant 0), shared medium 100 Mbit/s (variant 1).
+  static std::vector<RunResult> Rows() {
+    const NetworkLabel p2p = Net(0, "point_to_point", 1e7), shared = Net(1, "shared_medium", 1e8);
+    return {SimRun("decentralized", 4, 0, p2p, 600, 100), SimRun("decentralized", 4, 1, p2p, 500, 100),
+            SimRun("broadcast", 4, 0, p2p, 1800, 300),    SimRun("decentralized", 4, 0, shared, 600, 100, 0.5),
+            SimRun("broadcast", 4, 0, shared, 1800, 300, 0.25)};
+  }
+  fs::path dir_;
+};
+
+TEST_F(TrafficFigures, MeansPerStrategyNetworkAndTeam) {
+  const TrafficTable t = TabulateTraffic(Rows());
+  ASSERT_EQ(t.networks.size(), 2u);
+  EXPECT_EQ(t.strategies, (std::vector<std::string>{"decentralized", "broadcast"}));
+  const TrafficCell* d = t.Find("decentralized", 0, 4);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->runs, 2);
+  // Runs: (600 + 100) / 100 = 7 and (500 + 100) / 100 = 6 bytes per query: mean 6.5.
+  EXPECT_DOUBLE_EQ(d->pr_bytes_per_query, 6.5);
+  EXPECT_DOUBLE_EQ(d->role_bytes_per_query[0], 5.5);
+  EXPECT_DOUBLE_EQ(d->role_bytes_per_query[2], 10.0);
+  // Offered: (700 or 600) + 1000 bytes x 8 / 10 s = 1360 or 1280 bit/s: mean 1.32e-3 Mbit/s.
+  EXPECT_DOUBLE_EQ(d->offered_mbps, 1.32e-3);
+  const TrafficCell* b = t.Find("broadcast", 1, 4);
+  ASSERT_NE(b, nullptr);
+  EXPECT_DOUBLE_EQ(b->delivered_mbps, b->offered_mbps / 4);  // 3100 x 8 / 10 = 2480 bit/s, a quarter delivered
+  // The law is shown on point-to-point links, the largest bandwidth among them.
+  EXPECT_EQ(t.ShownVariant(), 0);
+}
+
+TEST_F(TrafficFigures, PlaceRecognitionRatioOnEveryNetwork) {
+  const TrafficTable t = TabulateTraffic(Rows());
+  std::string why;
+  const auto f = WritePlaceRecognitionFigure(dir_, t, why);
+  ASSERT_TRUE(f.has_value()) << why;
+  // Point-to-point: 21 / 6.5 = 3.230769230769231; shared medium 21 / 7 = 3 (python3 agrees).
+  EXPECT_EQ(Slurp(dir_ / "pr_ratio.dat"),
+            "# point-to-point 10 Mbit/s 2 ms\n4 3.230769230769231\n\n\n"
+            "# shared medium 100 Mbit/s 2 ms\n4 3\n\n\n");
+  EXPECT_EQ(Slurp(dir_ / "pr_bytes.dat"),
+            "# decentralized\n4 6.5\n\n\n# broadcast\n4 21\n\n\n# n - 1 law\n4 19.5\n\n\n");
+  EXPECT_NE(f->body.find("broadcast / decentralized = 3.2"), std::string::npos) << f->body;
+}
+
+TEST_F(TrafficFigures, SaturatedPointsAreMarked) {
+  const TrafficTable t = TabulateTraffic(Rows());
+  std::string why;
+  ASSERT_TRUE(WriteSaturationFigure(dir_, t, why).has_value()) << why;
+  EXPECT_EQ(Slurp(dir_ / "saturated.dat"), "100 5 \"50% delivered\"\n100 5 \"25% delivered\"\n");
+  // Without a shared medium there is nothing to show.
+  std::vector<RunResult> p2p = Rows();
+  p2p.resize(3);
+  EXPECT_FALSE(WriteSaturationFigure(dir_, TabulateTraffic(p2p), why).has_value());
+  EXPECT_EQ(why, "needs protocol sim on a shared_medium network");
+}
+
+TEST_F(TrafficFigures, RobotLoadMarksTheBusiestRobotAndTheFairShare) {
+  CsvTable per_robot;
+  per_robot.header = {"protocol", "strategy", "robots", "run", "robot", "queries_received", "network_variant"};
+  const int served[4] = {10, 70, 10, 10};
+  for (int r = 0; r < 4; ++r) {
+    per_robot.rows.push_back({"sim", "decentralized", "4", "0", std::to_string(r), std::to_string(served[r]), "0"});
+  }
+  per_robot.rows.push_back({"sim", "decentralized", "4", "1", "1", "999", "0"});  // another run: not shown
+  std::string why;
+  const auto f = WriteRobotLoadFigure(dir_, TabulateTraffic(Rows()), per_robot, why);
+  ASSERT_TRUE(f.has_value()) << why;
+  EXPECT_EQ(Slurp(dir_ / "load_0.dat"), "0 10\n1 70\n2 10\n3 10\n\n\n1 70\n");
+  // Fair share 100 / 4 = 25; the busiest serves 70 = 2.8 times it.
+  EXPECT_NE(f->body.find("busiest: robot 1, 2.8 x fair share"), std::string::npos) << f->body;
+  EXPECT_NE(f->body.find("fair share (all searches / n = 25)"), std::string::npos);
+}
+
+TEST_F(TrafficFigures, StrategyFiguresOnlyBeyondThePapersTwo) {
+  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) GTEST_SKIP() << "gnuplot is not installed";
+  WriteRunsCsv(dir_ / "runs.csv", Rows());
+  std::ostringstream log;
+  DrawFigures(dir_, log);
+  EXPECT_NE(log.str().find("strategy_tradeoff.png skipped (only the paper's two strategies are configured)"),
+            std::string::npos) << log.str();
+  EXPECT_TRUE(fs::exists(dir_ / "figures" / "place_recognition_bytes.png")) << log.str();
+  EXPECT_TRUE(fs::exists(dir_ / "figures" / "traffic_by_role.png")) << log.str();
+  EXPECT_TRUE(fs::exists(dir_ / "figures" / "saturation.png")) << log.str();
+  EXPECT_NE(log.str().find("robot_load.png skipped"), std::string::npos);  // no per_robot.csv here
+}
+
+}  // namespace
+}  // namespace dvpr
