@@ -72,16 +72,37 @@ void LcmTransport::DoPublish(const std::string& channel, const char*, std::vecto
   if (on_publish_) on_publish_(channel, bytes);
 }
 
+lcm::Subscription* LcmTransport::Listen(const std::string& channel) {
+  // LCM treats the channel as a regular expression; ours are plain names.
+  lcm::Subscription* s = lcm_.subscribeFunction(channel, &LcmTransport::OnRaw, this);
+  if (s == nullptr) throw std::runtime_error("LCM: cannot subscribe to " + channel);
+  return s;
+}
+
+void LcmTransport::HoldUntilSubscribed(const std::vector<std::string>& channels) {
+  for (const std::string& channel : channels) {
+    ChannelSubscription& sub = channels_[channel];
+    if (sub.subscription == nullptr) sub.subscription = Listen(channel);
+    sub.hold = sub.handlers.empty();
+  }
+}
+
 std::uint64_t LcmTransport::DoSubscribe(const std::string& channel, RawHandler handler) {
   const std::uint64_t id = next_id_++;
   ChannelSubscription& sub = channels_[channel];
-  if (sub.subscription == nullptr) {
-    // LCM treats the channel as a regular expression; ours are plain names.
-    sub.subscription = lcm_.subscribeFunction(channel, &LcmTransport::OnRaw, this);
-    if (sub.subscription == nullptr) throw std::runtime_error("LCM: cannot subscribe to " + channel);
-  }
+  if (sub.subscription == nullptr) sub.subscription = Listen(channel);
   sub.handlers.emplace(id, std::move(handler));
   channel_of_.emplace(id, channel);
+  if (sub.hold) {
+    sub.hold = false;
+    if (!sub.held.empty()) {
+      // Handled from the loop, not from inside Subscribe: the subscriber may not be ready yet.
+      ScheduleAfter(SimTime::Zero(), [this, channel, held = std::move(sub.held)] {
+        for (const auto& bytes : held) Dispatch(channel, bytes);
+      });
+      sub.held.clear();
+    }
+  }
   return id;
 }
 
@@ -103,6 +124,10 @@ void LcmTransport::OnRaw(const lcm::ReceiveBuffer* rbuf, const std::string& chan
 }
 
 void LcmTransport::Dispatch(const std::string& channel, std::span<const std::uint8_t> bytes) {
+  if (const auto held = channels_.find(channel); held != channels_.end() && held->second.hold) {
+    held->second.held.emplace_back(bytes.begin(), bytes.end());  // counted when handled
+    return;
+  }
   ++received_;
   if (on_receive_ && !on_receive_(channel, bytes)) return;
   const auto sub = channels_.find(channel);

@@ -71,6 +71,12 @@ class LcmTransport final : public Transport {
     DoPublish(channel, "", std::vector<std::uint8_t>(bytes.begin(), bytes.end()));
   }
 
+  // Listens on `channels` now and keeps what arrives there until a handler subscribes; then the
+  // kept messages are handled, in arrival order, as soon as the loop runs. A team's agents leave
+  // the start barrier one by one (each when it has heard the others): a teammate that left
+  // first may send before this agent subscribed, and UDP keeps nothing for a channel nobody
+  // listens to, so without this the first queries of a loaded machine's slow agent were lost.
+  void HoldUntilSubscribed(const std::vector<std::string>& channels);
   void SetReceiveFilter(Filter fn) { on_receive_ = std::move(fn); }
   void SetPublishObserver(Observer fn) { on_publish_ = std::move(fn); }
 
@@ -93,7 +99,10 @@ class LcmTransport final : public Transport {
   struct ChannelSubscription {
     lcm::Subscription* subscription = nullptr;
     std::map<std::uint64_t, RawHandler> handlers;
+    bool hold = false;                            // HoldUntilSubscribed, no handler yet
+    std::vector<std::vector<std::uint8_t>> held;  // what arrived meanwhile
   };
+  lcm::Subscription* Listen(const std::string& channel);
 
   void DoPublish(const std::string& channel, const char* type_name, std::vector<std::uint8_t> bytes) override;
   std::uint64_t DoSubscribe(const std::string& channel, RawHandler handler) override;

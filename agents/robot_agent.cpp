@@ -32,6 +32,12 @@ RobotLoad RobotAgent::load() const {
   return load;
 }
 
+std::vector<std::string> RobotAgent::InboxChannels(RobotId id) {
+  return {channels::Query(id),         channels::Probe(id),         channels::Store(id),
+          std::string(channels::kQueryAll), channels::Match(id), channels::VerifyRequest(id),
+          channels::VerifyResult(id)};
+}
+
 void RobotAgent::Start() {
   const auto on_query = [this](QueryRole role) {
     return [this, role](const query_t& q) { OnQuery(q, role); };

@@ -14,6 +14,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "agents/agent_params.h"
@@ -59,6 +60,9 @@ class RobotAgent {
   // Subscribes to the robot's channels, starts its routing component and schedules its first
   // frame at t = 0.
   void Start();
+  // The channels Start() subscribes to (a real agent holds them from before its start barrier:
+  // LcmTransport::HoldUntilSubscribed).
+  static std::vector<std::string> InboxChannels(RobotId id);
   // From now on the robot takes no frames and serves nothing (dropout).
   void GoOffline();
 

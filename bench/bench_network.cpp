@@ -22,7 +22,7 @@ namespace dvpr {
 namespace {
 
 constexpr int kKittiFrames = 4541;  // KITTI 00 at 10 Hz, split among the robots
-constexpr std::size_t kQueryBytes = 536;  // query_t with 128 floats
+constexpr std::size_t kQueryBytes = 544;  // query_t with 128 floats and its capture time
 constexpr std::size_t kMatchBytes = 35;   // match_t
 
 std::unique_ptr<LinkModel> PointToPoint(int nodes) {
@@ -89,7 +89,7 @@ void ScheduleFrames(Simulator& sim, int robots, Publish publish) {
   }
 }
 
-// 100 robots broadcasting 536-byte queries for the 4541 KITTI 00 frames; every
+// 100 robots broadcasting 544-byte queries for the 4541 KITTI 00 frames; every
 // other robot answers with a 35-byte match: 4541 x 99 x 2 = 899 118 messages.
 void BM_Kitti100BroadcastNetwork(benchmark::State& state) {
   const int robots = static_cast<int>(state.range(0));

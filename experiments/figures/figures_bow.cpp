@@ -132,9 +132,10 @@ bool WriteBowComparisonData(const fs::path& out_dir, const fs::path& data_dir, c
 }
 
 std::string BowComparisonScript(const fs::path& data_dir, const fs::path& png) {
-  std::string s = "set terminal pngcairo size 1400,1000 font 'DejaVu Sans,11' noenhanced\nset output '../" +
+  std::string s = "set terminal pngcairo size 1400,1000 font 'DejaVu Sans,11' noenhanced\n"
+                  "set output (exists('dvpr_output') ? dvpr_output : '../" +  // as Preamble (figures.cpp)
                   png.filename().string() +
-                  "'\nset grid lc rgb '#dddddd'\nset key box opaque\nset multiplot layout 2,2\nset xlabel 'robots n'\n";
+                  "')\nset grid lc rgb '#dddddd'\nset key box opaque\nset multiplot layout 2,2\nset xlabel 'robots n'\n";
   const auto lines = [](const std::string& dat, const std::vector<int>& columns) {
     std::string p = "plot ";
     for (int c : columns) {

@@ -119,6 +119,58 @@ TEST(RankMessagesTest, OutputArrivesFieldForFieldAndBitForBit) {
   EXPECT_EQ(o.curves[0].precision, (std::vector<double>{1.0, 0.75, 0.5}));
 }
 
+TEST(RankMessagesTest, RoleBytesFailoverAndBowRowsArrive) {
+  RunOutput sent;
+  RunResult r;
+  RunRoleBytes roles;
+  roles.copies[2] = CopyBytes{100, 200, 90, 180};  // verify_request
+  roles.medium[5] = 77;                            // other
+  r.roles = roles;
+  r.duration_s = 45.5;
+  sent.runs = {r};
+  LinkRow link{Key(), 0, 1, 2, 3, 4, 5};
+  link.roles = RoleCopyBytes{};
+  (*link.roles)[0] = CopyBytes{1, 2, 3, 4};
+  sent.links = {link};
+  MessageRow m{Key(), 10, 20, 0, 1, "DVPR_VREQ_1", "dvpr.verification_request_t", 9, 10, false};
+  m.role = "verify_request";
+  sent.messages = {m};
+  sent.failover = {FailoverRow{Key(), 4, 22700000000, std::nullopt, 661, 12, 35}};
+  BowRow bow;
+  bow.key = Key();
+  bow.partial_queries = 19;
+  bow.mean_part_words = 14.25;
+  bow.vote_not_centralized = 3;
+  sent.bow = {bow};
+  sent.bow_sizes = {BowSizeRow{Key(), 138, 7}};
+
+  const RunOutput o = DecodeOutput(EncodeOutput(0, sent)).output;
+  ASSERT_EQ(o.runs.size(), 1u);
+  ASSERT_TRUE(o.runs[0].roles.has_value());
+  EXPECT_EQ(o.runs[0].roles->copies[2].delivered_wire, 180);
+  EXPECT_EQ(o.runs[0].roles->copies[1].payload, 0);
+  EXPECT_EQ(o.runs[0].roles->medium[5], 77);
+  EXPECT_EQ(o.runs[0].duration_s, 45.5);
+  ASSERT_EQ(o.links.size(), 1u);
+  ASSERT_TRUE(o.links[0].roles.has_value());
+  EXPECT_EQ((*o.links[0].roles)[0].delivered_payload, 3);
+  ASSERT_EQ(o.messages.size(), 1u);
+  EXPECT_EQ(o.messages[0].role, "verify_request");
+  EXPECT_EQ(o.messages[0].delivered_ns, 20);
+  ASSERT_EQ(o.failover.size(), 1u);
+  EXPECT_EQ(o.failover[0].at_ns, 22700000000);
+  EXPECT_FALSE(o.failover[0].detected_ns.has_value());
+  EXPECT_EQ(o.failover[0].kept, 12);
+  EXPECT_EQ(o.failover[0].incomplete_queries, 35);
+  ASSERT_EQ(o.bow.size(), 1u);
+  EXPECT_EQ(o.bow[0].partial_queries, 19);
+  EXPECT_EQ(o.bow[0].mean_part_words, 14.25);
+  EXPECT_EQ(o.bow[0].vote_not_centralized, 3);
+  ASSERT_EQ(o.bow_sizes.size(), 1u);
+  EXPECT_EQ(o.bow_sizes[0].payload_bytes, 138);
+  EXPECT_EQ(o.bow_sizes[0].messages, 7);
+}
+
 TEST(RankMessagesTest, EmptyOutputArrivesEmpty) {
   const IndexedOutput got = DecodeOutput(EncodeOutput(0, RunOutput{}));
   EXPECT_EQ(got.index, 0u);

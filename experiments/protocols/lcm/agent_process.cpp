@@ -334,6 +334,8 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
     transport.Publish(channels::kStatus, s);
   };
 
+  // What teammates that leave the barrier first send us is kept until agent.Start() subscribes.
+  transport.HoldUntilSubscribed(RobotAgent::InboxChannels(RobotId(o.robot)));
   // Start barrier: announce READY until every robot of the team is heard.
   const auto barrier_end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.barrier_timeout_s));
   std::optional<std::int64_t> start;

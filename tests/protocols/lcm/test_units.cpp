@@ -154,5 +154,42 @@ TEST_F(LcmTransportTest, UtimeIsTheEpochPlusAgentTimeOverSpeedup) {
   EXPECT_EQ(t.UtimeAt(SimTime::Micros(-8)), kEpoch - 2);
 }
 
+// A message that arrives on a held channel before anyone subscribed is kept and handled once a
+// handler subscribes (in arrival order, counted once); an unheld channel without a subscriber
+// keeps nothing. This is what lets a slow agent leave the start barrier after a teammate has
+// already sent it its first queries.
+TEST_F(LcmTransportTest, HeldChannelKeepsWhatArrivesBeforeTheSubscriber) {
+  LcmTransport t(Url(7713), 1.0);
+  t.HoldUntilSubscribed({"DVPR_MATCH_0"});
+  // A second transport is the teammate; so the test also waits for the datagrams to arrive.
+  LcmTransport other(Url(7713), 1.0);
+  std::vector<std::int32_t> frames, early;
+  Subscription listen = other.Subscribe<match_t>("DVPR_MATCH_0", [&](const match_t& m) { early.push_back(m.query_frame); });
+  Subscription listen1 = other.Subscribe<match_t>("DVPR_MATCH_1", [&](const match_t& m) { early.push_back(m.query_frame); });
+  for (std::int32_t f : {3, 4}) {
+    match_t m;
+    m.query_frame = f;
+    other.Publish("DVPR_MATCH_0", m);
+  }
+  match_t lost;
+  lost.query_frame = 9;
+  other.Publish("DVPR_MATCH_1", lost);  // nobody in `t` holds or subscribes to it
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (early.size() < 3 && std::chrono::steady_clock::now() < give_up) {
+    other.Run(other.Now() + SimTime::Millis(20));
+    t.Run(t.Now() + SimTime::Millis(20));  // `t` reads the datagrams too, with no handler
+  }
+  ASSERT_EQ(early.size(), 3u);
+  t.Run(t.Now() + SimTime::Millis(50));
+  EXPECT_EQ(t.Received(), 0u);  // kept, not yet handled
+  Subscription sub = t.Subscribe<match_t>("DVPR_MATCH_0", [&](const match_t& m) { frames.push_back(m.query_frame); });
+  Subscription sub1 = t.Subscribe<match_t>("DVPR_MATCH_1", [&](const match_t& m) { frames.push_back(m.query_frame); });
+  EXPECT_TRUE(frames.empty());  // not from inside Subscribe
+  while (frames.size() < 2 && std::chrono::steady_clock::now() < give_up) t.Run(t.Now() + SimTime::Millis(20));
+  t.Run(t.Now() + SimTime::Millis(50));
+  EXPECT_EQ(frames, (std::vector<std::int32_t>{3, 4}));
+  EXPECT_EQ(t.Received(), 2u);
+}
+
 }  // namespace
 }  // namespace dvpr
