@@ -45,15 +45,15 @@ TEST(RoleOfChannel, NamesEveryChannelOfTheProtocols) {
 // re-clustering table to both; robots 1 and 2 reply. d = 128.
 //
 // LCM payloads (8-byte fingerprint included):
-//   query_t          8 + utime 8 + robot 2 + frame 4 + dim 2 + 128 x 4      =   536
+//   query_t          8 + utime 8 + robot 2 + frame 4 + capture_utime 8 + dim 2 + 128 x 4 = 544
 //   match_t          8 + 8 + 2 + 4 + responder 2 + has_match 1 + 2 + 4 + 4  =    35
 //   verify_request_t 8 + 8 + 2 + 4 + 2 + 4 + payload_size 4 + 25000         = 25032
 //   verify_result_t  8 + 8 + 2 + 4 + 2 + 4 + accepted 1 + inliers 4         =    33
 //   centroid_table_t 8 + 8 + epoch 4 + leader 2 + k 2 + dim 2 + 3 x (512 + 2) = 1568
 // Link frames: LCM 8 + channel + NUL + payload, + UDP 8 + IPv4 20 (fragments of 1480 data bytes
 // at MTU 1500, 20 bytes of IP header each), + PPP 2 per IP packet:
-//   query on DVPR_QUERY_1 (12):   8 + 12 + 1 + 536 = 557; + 28 = 585; + 2            =   587
-//   query on DVPR_QUERY_ALL (14): 559; 587; 589                                       =   589
+//   query on DVPR_QUERY_1 (12):   8 + 12 + 1 + 544 = 565; + 28 = 593; + 2            =   595
+//   query on DVPR_QUERY_ALL (14): 567; 595; 597                                       =   597
 //   match on DVPR_MATCH_0 (12):   8 + 12 + 1 + 35 = 56; 84; 86                        =    86
 //   vreq on DVPR_VREQ_1 (11):     8 + 11 + 1 + 25032 = 25052; + UDP 8 = 25060 IP data
 //                                 = 16 x 1480 + 1380: 16 x 1500 + 1400 + 17 x 2       = 25434
@@ -114,10 +114,10 @@ TEST_F(RoleBytesTest, PinsTheHandWorkedBytesOfEachRole) {
   const RunRoleBytes run = recorder_.Run();
   const auto& c = run.copies;
   // Offered: every copy sent; delivered: robot 2 neither receives nor sends.
-  EXPECT_EQ(c[Role(MessageRole::kQuery)].payload, 3 * 536);
-  EXPECT_EQ(c[Role(MessageRole::kQuery)].wire, 587 + 2 * 589);
-  EXPECT_EQ(c[Role(MessageRole::kQuery)].delivered_payload, 2 * 536);
-  EXPECT_EQ(c[Role(MessageRole::kQuery)].delivered_wire, 587 + 589);
+  EXPECT_EQ(c[Role(MessageRole::kQuery)].payload, 3 * 544);
+  EXPECT_EQ(c[Role(MessageRole::kQuery)].wire, 595 + 2 * 597);
+  EXPECT_EQ(c[Role(MessageRole::kQuery)].delivered_payload, 2 * 544);
+  EXPECT_EQ(c[Role(MessageRole::kQuery)].delivered_wire, 595 + 597);
   EXPECT_EQ(c[Role(MessageRole::kReply)].payload, 3 * 35);
   EXPECT_EQ(c[Role(MessageRole::kReply)].wire, 3 * 86);
   EXPECT_EQ(c[Role(MessageRole::kReply)].delivered_payload, 2 * 35);
@@ -133,7 +133,7 @@ TEST_F(RoleBytesTest, PinsTheHandWorkedBytesOfEachRole) {
   EXPECT_EQ(c[Role(MessageRole::kOther)].payload, 10);
   EXPECT_EQ(c[Role(MessageRole::kOther)].wire, 63);
   // The medium carries a shared-medium broadcast once; the offline robot's reply not at all.
-  EXPECT_EQ(run.medium[Role(MessageRole::kQuery)], 587 + 589);
+  EXPECT_EQ(run.medium[Role(MessageRole::kQuery)], 595 + 597);
   EXPECT_EQ(run.medium[Role(MessageRole::kReply)], 2 * 86);
   EXPECT_EQ(run.medium[Role(MessageRole::kVerifyRequest)], 25434);
   EXPECT_EQ(run.medium[Role(MessageRole::kVerifyResult)], 83);
@@ -143,8 +143,8 @@ TEST_F(RoleBytesTest, PinsTheHandWorkedBytesOfEachRole) {
 
 TEST_F(RoleBytesTest, PinsTheBytesOfEachDirectedPair) {
   const auto& to2 = recorder_.Pair(0, 2);
-  EXPECT_EQ(to2[Role(MessageRole::kQuery)].payload, 536);
-  EXPECT_EQ(to2[Role(MessageRole::kQuery)].wire, 589);
+  EXPECT_EQ(to2[Role(MessageRole::kQuery)].payload, 544);
+  EXPECT_EQ(to2[Role(MessageRole::kQuery)].wire, 597);
   EXPECT_EQ(to2[Role(MessageRole::kQuery)].delivered_wire, 0);
   EXPECT_EQ(to2[Role(MessageRole::kRecluster)].wire, 1639);
   EXPECT_EQ(to2[Role(MessageRole::kRecluster)].delivered_payload, 0);
@@ -171,7 +171,7 @@ TEST_F(RoleBytesTest, RolesSumToTheNetworksOwnTotals) {
   std::int64_t sent_on_medium = 0;
   for (int s = 0; s < 3; ++s) sent_on_medium += network_.Sender(NodeId(s)).medium_bytes;
   EXPECT_EQ(medium, sent_on_medium);
-  EXPECT_EQ(medium, 587 + 589 + 2 * 86 + 25434 + 83 + 1639 + 63);
+  EXPECT_EQ(medium, 595 + 597 + 2 * 86 + 25434 + 83 + 1639 + 63);
 }
 
 }  // namespace
