@@ -47,10 +47,10 @@ RunOutput Sample() {
   r.dropped_messages = 42;
   o.runs = {r, RunResult{}};
   o.per_robot = {RobotLoadRow{Key(), 4, 10, 20, 30, 0.125, 6}};
-  o.links = {LinkRow{Key(), 1, 2, 3, 4, 5, 6}};
+  o.links = {LinkRow{Key(), 1, 2, 3, 4, 5, 6, std::nullopt}};
   o.queries = {QueryRow{Key(), 1, 1559, 155900000000, 0, 12, 0.5, 777, true, false},
                QueryRow{Key(), 2, 3, 4, std::nullopt, std::nullopt, kNotApplicable, std::nullopt, false, true}};
-  o.messages = {MessageRow{Key(), 10, std::nullopt, 0, 1, "DVPR_QUERY_1", "dvpr.query_t", 547, 600, true}};
+  o.messages = {MessageRow{Key(), 10, std::nullopt, 0, 1, "DVPR_QUERY_1", "dvpr.query_t", 547, 600, true, ""}};
   o.curves = {PrCurve{std::string("centralized\0\n,", 14), 10, 0, {0.0, 0.5, 1.0}, {1.0, 0.75, 0.5}}};
   return o;
 }
@@ -128,12 +128,10 @@ TEST(RankMessagesTest, RoleBytesFailoverAndBowRowsArrive) {
   r.roles = roles;
   r.duration_s = 45.5;
   sent.runs = {r};
-  LinkRow link{Key(), 0, 1, 2, 3, 4, 5};
-  link.roles = RoleCopyBytes{};
+  LinkRow link{Key(), 0, 1, 2, 3, 4, 5, RoleCopyBytes{}};
   (*link.roles)[0] = CopyBytes{1, 2, 3, 4};
   sent.links = {link};
-  MessageRow m{Key(), 10, 20, 0, 1, "DVPR_VREQ_1", "dvpr.verification_request_t", 9, 10, false};
-  m.role = "verify_request";
+  MessageRow m{Key(), 10, 20, 0, 1, "DVPR_VREQ_1", "dvpr.verification_request_t", 9, 10, false, "verify_request"};
   sent.messages = {m};
   sent.failover = {FailoverRow{Key(), 4, 22700000000, std::nullopt, 661, 12, 35}};
   BowRow bow;
@@ -175,8 +173,9 @@ TEST(RankMessagesTest, EmptyOutputArrivesEmpty) {
   const IndexedOutput got = DecodeOutput(EncodeOutput(0, RunOutput{}));
   EXPECT_EQ(got.index, 0u);
   EXPECT_TRUE(got.output.runs.empty() && got.output.queries.empty() && got.output.curves.empty());
-  // 8 bytes of index and an 8-byte count for each of the 6 row lists.
-  EXPECT_EQ(EncodeOutput(0, RunOutput{}).size(), 8u * 7u);
+  // 8 bytes of index and an 8-byte count for each of the 9 row lists (runs, per_robot, links,
+  // queries, messages, curves, failover, bow, bow_sizes).
+  EXPECT_EQ(EncodeOutput(0, RunOutput{}).size(), 8u * 10u);
 }
 
 TEST(RankMessagesTest, ShortOrLongMessagesAreRefused) {

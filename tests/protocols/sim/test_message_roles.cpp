@@ -81,7 +81,7 @@ class RoleBytesTest : public ::testing::Test {
     table.dim = 128;
     table.centroids.assign(3, std::vector<float>(128, 0.0f));
     table.owners.assign(3, 0);
-    ASSERT_EQ(Encode(q).size(), 536u);
+    ASSERT_EQ(Encode(q).size(), 544u);
     ASSERT_EQ(Encode(m).size(), 35u);
     ASSERT_EQ(Encode(vreq).size(), 25032u);
     ASSERT_EQ(Encode(vres).size(), 33u);
