@@ -330,7 +330,7 @@ std::optional<FigureScript> WriteMatrixFigure(const fs::path& dir, const Traffic
   }
   std::ostringstream s;
   s << "set multiplot layout 1," << shown.size() << " title "
-    << Quote("Wire bytes sent, sender x receiver, one run (n = " + std::to_string(n) + ", run 0, " +
+    << Quote("Wire kB sent, sender x receiver (colour bar in kB), one run (n = " + std::to_string(n) + ", run 0, " +
              NetworkName(*t.Network(v)) + ")") << " font ',13'\n"
     << "set size ratio -1\nunset grid\nunset key\nset xlabel 'receiver'\nset ylabel 'sender'\n"
     << "set xrange [-0.5:" << n - 0.5 << "]\nset yrange [" << n - 0.5 << ":-0.5]\nset cbrange [0:" << FormatDouble(top)
