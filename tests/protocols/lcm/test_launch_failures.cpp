@@ -3,22 +3,15 @@
 // (not even a half-written one); when one strategy's agents all fail, only the teams that ran have
 // rows.
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include "lcm_test_support.h"
+#include "tests/test_support.h"
 
 namespace dvpr {
 namespace {
 
 using namespace lcm_test;
-
-std::string ReadText(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing_support::Slurp;
 
 std::vector<std::string> LaunchArgv(const std::string& lcm_url, const fs::path& out) {
   std::vector<std::string> a{Dvpr(),    "launch",  "--config", ConfigPath(), "--robots", "2", "--speedup", "10",
@@ -45,7 +38,7 @@ TEST(LaunchFailureTest, NoAgentCanOpenLcmPrintsEachCauseWritesNothingAndExits1) 
   const fs::path dir = TestDir();
   const int status = WaitFor(Spawn(LaunchArgv("nosuchprovider://nowhere", dir / "out"), dir / "launch.out"),
                              std::chrono::seconds(240));
-  const std::string printed = ReadText(dir / "launch.out");
+  const std::string printed = Slurp(dir / "launch.out");
   ASSERT_TRUE(WIFEXITED(status)) << printed;
   EXPECT_EQ(WEXITSTATUS(status), 1) << printed;
   // The LCM library's own line is the first error line of each agent's output.
@@ -77,7 +70,7 @@ TEST(LaunchFailureTest, StrategyWhoseAgentsAllFailedHasNoRowsWhileTheOthersDo) {
     argv.push_back(s);
   }
   const int status = WaitFor(Spawn(argv, dir / "launch.out"), std::chrono::seconds(240));
-  const std::string printed = ReadText(dir / "launch.out");
+  const std::string printed = Slurp(dir / "launch.out");
   ASSERT_TRUE(WIFEXITED(status)) << printed;
   EXPECT_EQ(WEXITSTATUS(status), 1) << printed;
   for (const std::string robot : {"0", "1"}) {
@@ -87,11 +80,11 @@ TEST(LaunchFailureTest, StrategyWhoseAgentsAllFailedHasNoRowsWhileTheOthersDo) {
   }
   EXPECT_NE(printed.find("launch: recluster_c2_p50: no agent ran, no rows written\n"), std::string::npos) << printed;
   EXPECT_NE(printed.find("launch: broadcast: 100 queries, 0 with a reply missing"), std::string::npos) << printed;
-  const std::string runs = ReadText(dir / "out" / "runs.csv");
+  const std::string runs = Slurp(dir / "out" / "runs.csv");
   EXPECT_EQ(std::count(runs.begin(), runs.end(), '\n'), 2) << runs;  // header + broadcast
   EXPECT_NE(runs.find(",broadcast,"), std::string::npos) << runs;
   EXPECT_EQ(runs.find(",recluster_c2_p50,"), std::string::npos) << runs;  // no row (the header has recluster_* byte columns)
-  const std::string agents = ReadText(dir / "out" / "agents.csv");
+  const std::string agents = Slurp(dir / "out" / "agents.csv");
   EXPECT_NE(agents.find("recluster_c2_p50,0,exit 1,,,\n"), std::string::npos) << agents;
   EXPECT_NE(agents.find("recluster_c2_p50,1,exit 1,,,\n"), std::string::npos) << agents;
   EXPECT_NE(agents.find("broadcast,0,exit 0,broadcast_robot0.log,50,0\n"), std::string::npos) << agents;

@@ -4,23 +4,16 @@
 // DecodeDvprLog.java) and with the Python types of lcmtypes/python (read by a pure-Python log
 // reader, decode_dvpr_log.py), and encodes back to the same bytes; in the live recording every
 // utime is within a second of the wall clock at which lcm-logger received the message.
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "lcm_test_support.h"
+#include "tests/test_support.h"
 
 namespace dvpr {
 namespace {
 
 using namespace lcm_test;
-
-std::string ReadText(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing_support::Slurp;
 
 // Sets for a quick team: 2 robots of 60 frames each.
 std::vector<std::string> WithSets(std::vector<std::string> argv) {
@@ -56,9 +49,9 @@ std::string DecodeBoth(const fs::path& log, bool live, const fs::path& dir) {
   }
   const fs::path java_out = dir / (log.stem().string() + ".java.out");
   const fs::path python_out = dir / (log.stem().string() + ".python.out");
-  EXPECT_EQ(RunTool(java, java_out), 0) << ReadText(java_out);
-  EXPECT_EQ(RunTool(python, python_out), 0) << ReadText(python_out);
-  return ReadText(java_out) + ReadText(python_out);
+  EXPECT_EQ(RunTool(java, java_out), 0) << Slurp(java_out);
+  EXPECT_EQ(RunTool(python, python_out), 0) << Slurp(python_out);
+  return Slurp(java_out) + Slurp(python_out);
 }
 
 TEST(OtherLanguagesTest, SimulatedAndLiveLogsDecodeWithTheJavaAndPythonTypes) {
@@ -72,7 +65,7 @@ TEST(OtherLanguagesTest, SimulatedAndLiveLogsDecodeWithTheJavaAndPythonTypes) {
       WithSets({Dvpr(), "run", ConfigPath(), "--quiet", "--out", (dir / "sim").string(), "--set", "protocols=[sim]",
                 "--set", "robots=[2]", "--set", "runs=1", "--set", "strategies=[broadcast]", "--set",
                 "outputs.lcm_log=true"});
-  ASSERT_EQ(RunTool(sim, dir / "sim.out"), 0) << ReadText(dir / "sim.out");
+  ASSERT_EQ(RunTool(sim, dir / "sim.out"), 0) << Slurp(dir / "sim.out");
   std::vector<fs::path> sim_logs;
   for (const auto& e : fs::recursive_directory_iterator(dir / "sim")) {
     if (e.path().extension() == ".lcmlog") sim_logs.push_back(e.path());
@@ -89,8 +82,8 @@ TEST(OtherLanguagesTest, SimulatedAndLiveLogsDecodeWithTheJavaAndPythonTypes) {
   const int launched = RunTool(launch, dir / "launch.out");
   kill(logger, SIGINT);  // lcm-logger closes its file on SIGINT
   const int logged = WaitFor(logger, std::chrono::seconds(30));
-  ASSERT_EQ(launched, 0) << ReadText(dir / "launch.out");
-  ASSERT_TRUE(WIFEXITED(logged)) << ReadText(dir / "logger.out");
+  ASSERT_EQ(launched, 0) << Slurp(dir / "launch.out");
+  ASSERT_TRUE(WIFEXITED(logged)) << Slurp(dir / "logger.out");
 
   std::vector<std::pair<fs::path, bool>> logs{{dir / "live.lcmlog", true}};
   for (const fs::path& log : sim_logs) logs.emplace_back(log, false);
