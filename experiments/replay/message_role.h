@@ -5,17 +5,16 @@
 // queue from the requests it got and the answers it sent.
 #include <string_view>
 
+#include "experiments/results/results.h"
+
 namespace dvpr::replay {
 
-enum class MessageRole {
-  kQuery,          // DVPR_QUERY_*, DVPR_PROBE_*, DVPR_STORE_*, DVPR_QUERY_ALL
-  kReply,          // DVPR_MATCH_*
-  kVerifyRequest,  // DVPR_VREQ_*
-  kVerifyResult,   // DVPR_VRES_*
-  kRecluster,      // DVPR_SAMPLE_*, DVPR_TABLE, DVPR_MIGRATE_*
-  kOther,          // any other channel (a later protocol's), drawn grey
-};
-inline constexpr int kMessageRoles = 6;
+// The roles are the result files' own (results.h, MessageRole): query = DVPR_QUERY_*,
+// DVPR_PROBE_*, DVPR_STORE_*, DVPR_QUERY_ALL; reply = DVPR_MATCH_*; verify request =
+// DVPR_VREQ_*; verify result = DVPR_VRES_*; recluster = DVPR_SAMPLE_*, DVPR_TABLE,
+// DVPR_MIGRATE_*; other = any other channel (a later protocol's), drawn grey.
+using dvpr::kMessageRoles;
+using dvpr::MessageRole;
 
 // How a message moves its receiver's queue: a request waits there until the
 // receiver sends its answer (a store-only query and re-clustering are neither).
