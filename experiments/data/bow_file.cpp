@@ -1,6 +1,9 @@
 #include "experiments/data/bow_file.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <iterator>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -65,9 +68,89 @@ BowVector ParseLine(const fs::path& path, std::size_t line, std::string_view tex
   return L1Normalised(std::move(v));
 }
 
-}  // namespace
+// One 12-byte triple, read little-endian whatever the host's byte order.
+struct Triple {
+  std::int32_t frame;
+  std::int32_t word;
+  float weight;
+};
 
-BowData LoadBowFile(const fs::path& path) {
+std::uint32_t LittleEndian32(const unsigned char* p) {
+  return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
+         static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
+}
+
+constexpr std::size_t kTripleBytes = 12;
+
+[[noreturn]] void FailTriple(const fs::path& path, std::size_t i, const std::string& what) {
+  throw std::runtime_error(path.string() + ": triple " + std::to_string(i) + " (byte " +
+                           std::to_string(i * kTripleBytes) + "): " + what);
+}
+
+Triple ParseTriple(const fs::path& path, std::size_t i, const unsigned char* p) {
+  const auto frame = static_cast<std::int32_t>(LittleEndian32(p));
+  const auto word = static_cast<std::int32_t>(LittleEndian32(p + 4));
+  const float weight = std::bit_cast<float>(LittleEndian32(p + 8));
+  if (frame < 0 || frame >= kMaxBowFrame) {
+    FailTriple(path, i, "frame " + std::to_string(frame) + ": expected a whole number in [0, 10000000)");
+  }
+  if (word < 0 || word >= kMaxBowWord) {
+    FailTriple(path, i, "word " + std::to_string(word) + ": expected a whole number in [0, 10000000)");
+  }
+  if (!std::isfinite(weight) || weight < 0.0f || weight > 1e30f) {
+    FailTriple(path, i, "weight " + std::to_string(weight) + ": expected a number in [0, 1e30]");
+  }
+  return {frame, word, weight};
+}
+
+std::vector<unsigned char> ReadBytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path.string() + ": cannot open for reading");
+  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw std::runtime_error(path.string() + ": read error");
+  return bytes;
+}
+
+// The triples grouped by frame (in file order within a frame), then each frame sorted by word;
+// the record index rides along so that a repeated word names its second triple.
+BowData LoadBowTriples(const fs::path& path) {
+  const std::vector<unsigned char> bytes = ReadBytes(path);
+  if (bytes.empty()) throw std::runtime_error(path.string() + ": file is empty (expected 12-byte triples)");
+  if (bytes.size() % kTripleBytes != 0) {
+    throw std::runtime_error(path.string() + ": " + std::to_string(bytes.size()) +
+                             " bytes is not a whole number of 12-byte (frame, word, weight) triples");
+  }
+  const std::size_t count = bytes.size() / kTripleBytes;
+  std::vector<Triple> triples(count);
+  std::int32_t last_frame = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    triples[i] = ParseTriple(path, i, bytes.data() + i * kTripleBytes);
+    last_frame = std::max(last_frame, triples[i].frame);
+  }
+  std::vector<std::vector<std::size_t>> by_frame(static_cast<std::size_t>(last_frame) + 1);
+  for (std::size_t i = 0; i < count; ++i) by_frame[static_cast<std::size_t>(triples[i].frame)].push_back(i);
+  BowData data;
+  data.frames.resize(by_frame.size());
+  for (std::size_t f = 0; f < by_frame.size(); ++f) {
+    std::vector<std::size_t>& ids = by_frame[f];
+    std::stable_sort(ids.begin(), ids.end(), [&](std::size_t a, std::size_t b) { return triples[a].word < triples[b].word; });
+    for (std::size_t k = 1; k < ids.size(); ++k) {
+      if (triples[ids[k]].word == triples[ids[k - 1]].word) {
+        FailTriple(path, ids[k], "frame " + std::to_string(f) + ", word " + std::to_string(triples[ids[k]].word) +
+                                     " appears twice (first in triple " + std::to_string(ids[k - 1]) + ")");
+      }
+    }
+    BowVector v;
+    for (std::size_t i : ids) {
+      if (triples[i].weight > 0.0f) v.push_back({triples[i].word, triples[i].weight});
+    }
+    for (const BowEntry& e : v) data.vocabulary = std::max(data.vocabulary, e.word + 1);
+    data.frames[f] = L1Normalised(std::move(v));
+  }
+  return data;
+}
+
+BowData LoadBowText(const fs::path& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path.string() + ": cannot open for reading");
   std::vector<std::string> lines;
@@ -83,6 +166,12 @@ BowData LoadBowFile(const fs::path& path) {
   }
   if (data.frames.empty()) throw std::runtime_error(path.string() + ": file is empty (expected one frame per line)");
   return data;
+}
+
+}  // namespace
+
+BowData LoadBowFile(const fs::path& path) {
+  return path.extension() == ".bin" ? LoadBowTriples(path) : LoadBowText(path);
 }
 
 }  // namespace dvpr

@@ -8,14 +8,22 @@
 //
 // A pair may appear in any order; a word twice on one line is an error. The vocabulary is the
 // largest word + 1. Errors are std::runtime_error "<file>: line <n>: <problem>".
+//
+// A file whose name ends in .bin holds (frame, word, weight) triples instead, 12 bytes each,
+// little-endian: int32 frame in [0, 10000000), int32 word in [0, 10000000), float32 weight,
+// finite, in [0, 1e30]. Triples may come in any order; the frames are 0 .. largest frame. A
+// weight of 0 adds no word: it only makes its frame exist (a trailing frame without words).
+// A (frame, word) twice is an error. Errors are "<file>: triple <i> (byte <offset>): <problem>".
 #include <filesystem>
 
 #include "experiments/data/bow_data.h"
 
 namespace dvpr {
 
-inline constexpr int kMaxBowWord = 10000000;  // words are below this (DBoW2 vocabularies: 10^6)
+inline constexpr int kMaxBowWord = 10000000;   // words are below this (DBoW2 vocabularies: 10^6)
+inline constexpr int kMaxBowFrame = 10000000;  // binary triples' frames are below this
 
+// The text format, or the binary triples when the name ends in .bin.
 BowData LoadBowFile(const std::filesystem::path& path);
 
 }  // namespace dvpr

@@ -87,7 +87,7 @@ BowData LoadBow(const ExperimentConfig& c, const std::string& origin, const Data
   const auto lines = static_cast<Eigen::Index>(bow.frames.size());
   if (lines < ds.size() || (!d.frames && lines != ds.size())) {
     throw ConfigError(origin + ": dataset.bow: " + d.bow->string() + " has " + std::to_string(lines) +
-                      " frames (lines), the dataset " + std::to_string(ds.size()));
+                      " frames, the dataset " + std::to_string(ds.size()));
   }
   bow.frames.resize(static_cast<std::size_t>(ds.size()));
   return bow;

@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstdint>
+#include <limits>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -146,6 +149,87 @@ TEST_F(BowFileTest, MalformedLinesNameFileAndLine) {
   ExpectError("5:nan\n", {"line 1"});
   ExpectError("5\n", {"line 1", "WORD:WEIGHT"});
   ExpectError("", {"empty"});
+}
+
+// The binary triples (frame, word, weight), 12 bytes each, little-endian, in a .bin file.
+class BowTriplesTest : public ::testing::Test {
+ protected:
+  struct T {
+    std::int32_t frame, word;
+    float weight;
+  };
+  static void Put32(std::string& out, std::uint32_t v) {
+    for (int b = 0; b < 4; ++b) out.push_back(static_cast<char>((v >> (8 * b)) & 0xffu));
+  }
+  static std::string Bytes(std::initializer_list<T> triples) {
+    std::string out;
+    for (const T& t : triples) {
+      Put32(out, static_cast<std::uint32_t>(t.frame));
+      Put32(out, static_cast<std::uint32_t>(t.word));
+      Put32(out, std::bit_cast<std::uint32_t>(t.weight));
+    }
+    return out;
+  }
+  fs::path Bin(const std::string& bytes) const {
+    const fs::path dir = fs::path(DVPR_TEST_TMP) / "bow_triples";
+    fs::create_directories(dir);
+    const fs::path p = dir / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".bin");
+    std::ofstream(p, std::ios::binary) << bytes;
+    return p;
+  }
+  void ExpectError(const std::string& bytes, std::initializer_list<std::string> needles) const {
+    const fs::path p = Bin(bytes);
+    try {
+      LoadBowFile(p);
+      ADD_FAILURE() << "no exception";
+    } catch (const std::runtime_error& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(p.string()), std::string::npos) << what;
+      for (const auto& n : needles) EXPECT_NE(what.find(n), std::string::npos) << what;
+    }
+  }
+};
+
+// One triple written out byte by byte: frame 1, word 3, weight 0.5f (IEEE 754: 0x3F000000).
+// Frame 0 exists without words (frames run 0 .. largest), frame 1 is {3: 1} after L1.
+TEST_F(BowTriplesTest, ReadsLittleEndianTriples) {
+  const std::string bytes("\x01\x00\x00\x00\x03\x00\x00\x00\x00\x00\x00\x3f", 12);
+  const BowData d = LoadBowFile(Bin(bytes));
+  ASSERT_EQ(d.frames.size(), 2u);
+  EXPECT_TRUE(d.frames[0].empty());
+  EXPECT_EQ(d.frames[1], (BowVector{{3, 1.0f}}));
+  EXPECT_EQ(d.vocabulary, 4);
+}
+
+// The text test's three frames as triples in a scrambled order give the same vectors:
+// {1: 0.75, 3: 0.25}, {}, {2: 1}.
+TEST_F(BowTriplesTest, SameVectorsAsTheTextFormatInAnyOrder) {
+  const BowData d = LoadBowFile(Bin(Bytes({{0, 3, 0.5f}, {2, 2, 4.0f}, {0, 1, 1.5f}})));
+  EXPECT_EQ(d.vocabulary, 4);
+  ASSERT_EQ(d.frames.size(), 3u);
+  EXPECT_EQ(d.frames[0], (BowVector{{1, 0.75f}, {3, 0.25f}}));
+  EXPECT_TRUE(d.frames[1].empty());
+  EXPECT_EQ(d.frames[2], (BowVector{{2, 1.0f}}));
+}
+
+// A weight of 0 adds no word; it only makes frame 3 exist, so the file has 4 frames.
+TEST_F(BowTriplesTest, ZeroWeightDeclaresATrailingFrameWithoutWords) {
+  const BowData d = LoadBowFile(Bin(Bytes({{0, 1, 2.0f}, {3, 9, 0.0f}})));
+  ASSERT_EQ(d.frames.size(), 4u);
+  EXPECT_EQ(d.frames[0], (BowVector{{1, 1.0f}}));
+  EXPECT_TRUE(d.frames[3].empty());
+  EXPECT_EQ(d.vocabulary, 2);
+}
+
+TEST_F(BowTriplesTest, BadTriplesNameFileTripleAndByte) {
+  ExpectError(Bytes({{0, 1, 1.0f}}) + "x", {"13 bytes", "12-byte"});
+  ExpectError("", {"empty"});
+  ExpectError(Bytes({{0, 1, 1.0f}, {-1, 1, 1.0f}}), {"triple 1 (byte 12)", "frame -1", "[0, 10000000)"});
+  ExpectError(Bytes({{0, 10000000, 1.0f}}), {"triple 0 (byte 0)", "word 10000000"});
+  ExpectError(Bytes({{0, 1, std::numeric_limits<float>::quiet_NaN()}}), {"triple 0", "weight", "[0, 1e30]"});
+  ExpectError(Bytes({{0, 1, -1.0f}}), {"triple 0", "weight"});
+  ExpectError(Bytes({{0, 1, 1.0f}, {1, 1, 1.0f}, {0, 1, 2.0f}}),
+              {"triple 2 (byte 24)", "frame 0, word 1 appears twice", "first in triple 0"});
 }
 
 }  // namespace
