@@ -74,7 +74,7 @@ std::string PrBytesPanel(const fs::path& dir, const TrafficTable& t, int v, cons
   s << "set title " << DQuote("Place-recognition bytes per query (query + reply, every copy)\\n" +
                               NetworkName(*t.Network(v)) + ", mean over runs")
     << "\nset xlabel 'robots n'\nset ylabel 'wire bytes per query'\nset logscale y\n"
-    << Xtics(t.robots) << "set key below horizontal\n"
+    << Xtics(t.robots) << "set key at graph 0.02, graph 0.84 left top\n"
     << "set label 1 " << DQuote("measured at n = " + std::to_string(n) + ": broadcast / decentralized = " +
                                 FormatDouble(ratio, 1) + "\\n(n - 1 = " + std::to_string(n - 1) + ")")
     << " at graph 0.03, graph 0.93 left front\n"
@@ -105,8 +105,9 @@ std::string PrRatioPanel(const fs::path& dir, const TrafficTable& t) {
   for (int n : t.robots) band += std::to_string(n) + " " + std::to_string(n - 1) + " " + std::to_string(n + 1) + "\n";
   WriteFileAtomic(dir / "pr_ratio.dat", dat);
   WriteFileAtomic(dir / "pr_band.dat", band);
+  // The ratio rises from bottom left to top right: the key sits in the empty top left.
   return "set title 'Broadcast / decentralized place-recognition bytes, every network'\nset ylabel 'ratio'\n"
-         "set key below maxrows 4\n" + plot.str() + "\n";
+         "set key top left\n" + plot.str() + "\n";
 }
 
 }  // namespace
@@ -376,7 +377,7 @@ std::string OfferedPanel(const fs::path& dir, const TrafficTable& t, const std::
   WriteFileAtomic(dir / "offered.dat", dat);
   return "set title 'Offered vs delivered load (points: n = " + std::to_string(t.robots.front()) + " .. " +
          std::to_string(t.robots.back()) + ")'\nset xlabel 'offered load, every copy sent [Mbit/s]'\n"
-         "set ylabel 'delivered load [Mbit/s]'\nset logscale xy\nset key below maxrows 4\n" +
+         "set ylabel 'delivered load [Mbit/s]'\nset logscale xy\nset key top left\n" +  // delivered <= offered: empty
          plot.str() + "\n";
 }
 
@@ -413,7 +414,7 @@ std::string LatencyPanel(const fs::path& dir, const TrafficTable& t, const std::
   }
   return "set title 'Mean query latency vs bandwidth at n = " + std::to_string(n) +
          "'\nset xlabel 'bandwidth of the shared medium [Mbit/s]'\nset ylabel 'mean query latency [ms]'\n"
-         "set logscale xy\nset key below maxrows 4\n" + plot.str() + "\n";
+         "set logscale xy\nset key bottom left\n" + plot.str() + "\n";  // latency falls with bandwidth
 }
 
 }  // namespace
