@@ -3,8 +3,10 @@
 // found before `dvpr run` writes anything: exit 1, the one line below (worked out from the file
 // names and the shapes written here), and no result folder (issue 12).
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 
@@ -154,6 +156,52 @@ TEST_F(CliChecksTest, ALinkOverrideOutsideATeamIsRefusedBeforeTheRuns) {
   ExpectExactly(RunConfig(Yaml("network: {links: [{src: 0, dst: 2, latency: 1ms}]}\n")), 1,
                 Error("network.links[0]: 0->2 is not a link between two of the 2 robots (robots: 2, 3; every team "
                       "of the sweep runs the same network section)"));
+}
+
+// Users' own BoW vectors (docs/bow.md): the same 40 frames as text lines and as binary triples
+// give the same run, byte for byte; a file with a frame too few names the key and both counts.
+class CliBowFileTest : public CliChecksTest {
+ protected:
+  // Frame i has words i mod 7 and 10 + i mod 5 with weights 1 and 2 (so frames 0 and 35 share
+  // both words, frames 0 and 5 one: revisits for the static protocol's ranking).
+  void WriteText(const path& p, int frames) const {
+    std::ofstream out(p);
+    for (int i = 0; i < frames; ++i) out << i % 7 << ":1 " << 10 + i % 5 << ":2\n";
+  }
+  void WriteTriples(const path& p, int frames) const {
+    std::ofstream out(p, std::ios::binary);
+    const auto put = [&](std::uint32_t v) {
+      for (int b = 0; b < 4; ++b) out.put(static_cast<char>((v >> (8 * b)) & 0xffu));
+    };
+    for (int i = frames - 1; i >= 0; --i) {  // last frame first: the order must not matter
+      put(static_cast<std::uint32_t>(i)), put(static_cast<std::uint32_t>(10 + i % 5)), put(0x40000000u);  // 2.0f
+      put(static_cast<std::uint32_t>(i)), put(static_cast<std::uint32_t>(i % 7)), put(0x3f800000u);       // 1.0f
+    }
+  }
+  std::string RunsCsv(const path& bow) {
+    const Result r = RunConfig(Yaml("strategies: [bow_decentralized, bow_centralized]\n"),
+                               "--set dataset.bow='" + bow.string() + "'");
+    EXPECT_EQ(r.status, 0) << r.err;
+    std::ifstream in(Out() / "runs.csv");
+    std::string csv((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::filesystem::remove_all(Out());
+    return csv;
+  }
+};
+
+TEST_F(CliBowFileTest, TextLinesAndBinaryTriplesGiveTheSameRun) {
+  WriteText(dir_ / "bow.txt", 40);
+  WriteTriples(dir_ / "bow.bin", 40);
+  const std::string text = RunsCsv(dir_ / "bow.txt");
+  EXPECT_NE(text.find("bow_decentralized"), std::string::npos);
+  EXPECT_EQ(RunsCsv(dir_ / "bow.bin"), text);
+}
+
+TEST_F(CliBowFileTest, ABinaryFileWithAFrameTooFewNamesTheKeyAndTheCounts) {
+  WriteTriples(dir_ / "bow.bin", 39);
+  const path bow = dir_ / "bow.bin";
+  ExpectExactly(RunConfig(Yaml("strategies: [bow_decentralized]\n"), "--set dataset.bow='" + bow.string() + "'"), 1,
+                Error("dataset.bow: " + bow.string() + " has 39 frames, the dataset 40"));
 }
 
 }  // namespace
