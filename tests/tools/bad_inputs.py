@@ -60,6 +60,7 @@ CATEGORIES = {
     "d": "robots",
     "e": "command line",
     "f": "result folders",
+    "g": "later keys (start_time, failover, BoW files)",
 }
 TIMEOUT_S = 60
 SANITIZER = re.compile(

@@ -443,6 +443,47 @@ def result_folder_cases():
     ]
 
 
+def triples(rows):
+    """Binary BoW triples (frame int32, word int32, weight float32), little-endian (docs/bow.md)."""
+    return b"".join(struct.pack("<iif", f, w, x) for f, w, x in rows)
+
+
+def bow_lines(n):
+    return "".join("%d:1 %d:2\n" % (i % 7, 10 + i % 5) for i in range(n))
+
+
+BOW = ("protocols=[paper]", "strategies=[bow_decentralized]")
+
+
+def later_keys_cases():
+    """Keys added after the catalogue was first written: start_time, failover, dataset.bow."""
+    return [
+        Case("g01", "start_time without its time zone", ("start_time",), sets=S("start_time=2011-10-03T12:00:00")),
+        Case("g02", "start_time before 1970", ("start_time",), sets=S("start_time=1969-12-31T23:59:59Z")),
+        Case("g03", "failover.timeout shorter than its heartbeat period", ("failover.timeout",),
+             sets=S("failover.enabled=true", "failover.heartbeat_period=500ms", "failover.timeout=100ms")),
+        Case("g04", "failover.heartbeat_period = 0", ("failover.heartbeat_period",),
+             sets=S("failover.enabled=true", "failover.heartbeat_period=0s")),
+        Case("g05", "dataset.bow text file with a bad pair on line 3", ("bow.txt", "line 3"),
+             sets=S(*BOW, "dataset.bow=bow.txt"),
+             files=spoil("bow.txt", bow_lines(2) + "3:x\n" + bow_lines(297))),
+        Case("g06", "dataset.bow text file with 299 lines for 300 frames", ("dataset.bow", "299"),
+             sets=S(*BOW, "dataset.bow=bow.txt"), files=spoil("bow.txt", bow_lines(299))),
+        Case("g07", "dataset.bow binary file of 13 bytes", ("bow.bin", "13 bytes"),
+             sets=S(*BOW, "dataset.bow=bow.bin"), files=spoil("bow.bin", triples([(0, 1, 1.0)]) + b"x")),
+        Case("g08", "dataset.bow binary triple with word 10^7", ("bow.bin", "triple 1"),
+             sets=S(*BOW, "dataset.bow=bow.bin"),
+             files=spoil("bow.bin", triples([(299, 1, 1.0), (0, 10000000, 1.0)]))),
+        Case("g09", "dataset.bow binary triple with a NaN weight", ("bow.bin", "weight"),
+             sets=S(*BOW, "dataset.bow=bow.bin"),
+             files=spoil("bow.bin", triples([(299, 1, 1.0), (3, 2, float("nan"))]))),
+        Case("g10", "dataset.bow that does not exist", ("dataset.bow", "nope.bin"),
+             sets=S(*BOW, "dataset.bow=nope.bin")),
+        Case("g11", "dataset.synthetic_bow.features = 0", ("dataset.synthetic_bow.features",),
+             sets=S(*BOW, "dataset.synthetic_bow.features=0")),
+    ]
+
+
 def catalogue():
     return quantities() + yaml_structure() + files_cases() + robots_cases() + cli_cases() + \
-        result_folder_cases()
+        result_folder_cases() + later_keys_cases()
