@@ -21,6 +21,7 @@ Simulator::~Simulator() {
 
 void Simulator::AddChunk() {
   static_assert(sizeof(Slot) << kChunkBits == kChunkBytes);
+  chunks_.reserve(chunks_.size() + 1);  // so that push_back below cannot throw and leak the chunk
   void* chunk = std::aligned_alloc(kChunkBytes, kChunkBytes);
   if (chunk == nullptr) throw std::bad_alloc();
   // Advice only: without huge pages the chunk works the same, with 512 times the page faults.
