@@ -1,11 +1,33 @@
 #include "sim/simulator.h"
 
+#include <sys/mman.h>
+
+#include <cstdlib>
+#include <new>
 #include <stdexcept>
 #include <string>
 
 namespace dvpr {
+namespace {
+constexpr std::size_t kChunkBytes = std::size_t{64} << 15;  // sizeof(Slot) << kChunkBits
+}  // namespace
+
 Simulator::Simulator() = default;
-Simulator::~Simulator() = default;
+
+Simulator::~Simulator() {
+  for (std::uint64_t slot = 0; slot < slots_used_; ++slot) SlotAt(slot).~Slot();
+  for (Slot* chunk : chunks_) std::free(chunk);
+}
+
+void Simulator::AddChunk() {
+  static_assert(sizeof(Slot) << kChunkBits == kChunkBytes);
+  chunks_.reserve(chunks_.size() + 1);  // so that push_back below cannot throw and leak the chunk
+  void* chunk = std::aligned_alloc(kChunkBytes, kChunkBytes);
+  if (chunk == nullptr) throw std::bad_alloc();
+  // Advice only: without huge pages the chunk works the same, with 512 times the page faults.
+  static_cast<void>(madvise(chunk, kChunkBytes, MADV_HUGEPAGE));
+  chunks_.push_back(static_cast<Slot*>(chunk));
+}
 
 std::pair<std::uint64_t, std::uint64_t> Simulator::AllocateSlot() {
   std::uint64_t slot;
@@ -15,9 +37,8 @@ std::pair<std::uint64_t, std::uint64_t> Simulator::AllocateSlot() {
   } else {
     slot = slots_used_++;
     if (slot > kSlotMask) throw std::length_error("Simulator: more than 2^24 events pending at once");
-    if ((slot >> kChunkBits) >= chunks_.size()) {
-      chunks_.push_back(std::make_unique<Slot[]>(std::size_t{1} << kChunkBits));
-    }
+    if ((slot >> kChunkBits) >= chunks_.size()) AddChunk();
+    ::new (static_cast<void*>(&SlotAt(slot))) Slot();
   }
   const std::uint64_t key = (next_seq_++ << kSlotBits) | slot;
   SlotAt(slot).key = key;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <random>
 #include <set>
 #include <utility>
@@ -101,6 +102,97 @@ TEST(RadixEventQueueTest, LargeTimesUseTheHighBuckets) {
   EXPECT_EQ(q.Pop().time, big - 1);
   EXPECT_EQ(q.Pop().time, big);
   EXPECT_TRUE(q.empty());
+}
+
+TEST(RadixEventQueueTest, ManyPendingEntriesAcrossAllLevelsMatchASortedReference) {
+  // 20 000 pending entries, delays from 0 (same time as the popped one) to 2^40 ns, so entries
+  // sit on every level of the wheel and in near_, with many equal times from the small delays.
+  std::mt19937_64 rng(11);
+  RadixEventQueue q;
+  Ref ref;
+  std::uint64_t key = 1;
+  auto delay = [&rng]() -> std::int64_t {
+    const int bits = static_cast<int>(rng() % 41);  // 0..40: log-uniform magnitudes
+    return static_cast<std::int64_t>(rng() & ((std::uint64_t{1} << bits) - 1));
+  };
+  for (int i = 0; i < 20000; ++i, ++key) {
+    const std::int64_t t = delay();
+    q.Push({t, key});
+    ref.insert({t, key});
+  }
+  for (int i = 0; i < 200000; ++i, ++key) {
+    const Entry e = PopBoth(q, ref);
+    const std::int64_t t = e.time + delay();
+    q.Push({t, key});
+    ref.insert({t, key});
+  }
+  while (!q.empty()) PopBoth(q, ref);
+  EXPECT_TRUE(ref.empty());
+}
+
+TEST(RadixEventQueueTest, ABlockOfManyEqualAndNearTimesKeepsKeyOrder) {
+  // 5000 entries in one 256 ns block (counting sort) and 10 in another (insertion sort), with
+  // pushes into the block being drained and before it after a peek: (time, key) order throughout.
+  RadixEventQueue q;
+  Ref ref;
+  std::uint64_t key = 1;
+  std::mt19937_64 rng(5);
+  for (int i = 0; i < 5000; ++i, ++key) {
+    const std::int64_t t = 1024 + static_cast<std::int64_t>(rng() % 7) * 30;
+    q.Push({t, key});
+    ref.insert({t, key});
+  }
+  for (int i = 0; i < 10; ++i, ++key) {
+    q.Push({4096 + 200 - 20 * i, key});
+    ref.insert({4096 + 200 - 20 * i, key});
+  }
+  for (int i = 0; i < 2000; ++i) PopBoth(q, ref);
+  for (int i = 0; i < 100; ++i, ++key) {  // into the block being drained, at and after its head
+    const std::int64_t t = q.Top().time + static_cast<std::int64_t>(rng() % 3) * 30;
+    q.Push({t, key});
+    ref.insert({t, key});
+  }
+  while (!q.empty()) PopBoth(q, ref);
+  EXPECT_TRUE(ref.empty());
+}
+
+TEST(SimulatorQueueTest, HoldModelWithCancelsAndRunUntilMatchesASortedReference) {
+  // Every event reschedules one or two at random delays (many equal times) and cancels a random
+  // pending one now and then; the run is cut by Run(until) at random points, after which events
+  // are scheduled before the already-peeked next one. The reference is a std::set of
+  // (time, sequence) pending pairs: each event that runs must be its first element.
+  Simulator sim;
+  std::mt19937_64 rng(3);
+  std::set<std::pair<std::int64_t, int>> pending;
+  std::vector<std::pair<EventId, std::pair<std::int64_t, int>>> ids;
+  int seq = 0;
+  int ran = 0;
+  std::function<void(std::int64_t)> schedule = [&](std::int64_t t) {
+    const int s = seq++;
+    const EventId id = sim.ScheduleAt(SimTime::Nanos(t), [&, t, s] {
+      ASSERT_FALSE(pending.empty());
+      EXPECT_EQ(*pending.begin(), std::make_pair(t, s));
+      pending.erase(pending.begin());
+      ++ran;
+      if (seq < 60000) {
+        for (int k = 0; k < 1 + static_cast<int>(rng() % 2); ++k) schedule(t + static_cast<std::int64_t>(rng() % 4) * static_cast<std::int64_t>(rng() % 3000));
+      }
+      if (rng() % 8 == 0 && !ids.empty()) {
+        const auto [victim, when] = ids[rng() % ids.size()];
+        EXPECT_EQ(sim.Cancel(victim), pending.erase(when) == 1);
+      }
+    });
+    pending.insert({t, s});
+    ids.emplace_back(id, std::make_pair(t, s));
+  };
+  for (int i = 0; i < 500; ++i) schedule(static_cast<std::int64_t>(rng() % 100000));
+  while (sim.PendingEvents() > 0) {
+    sim.Run(sim.Now() + SimTime::Nanos(static_cast<std::int64_t>(rng() % 20000)));
+    if (rng() % 2 == 0) schedule(sim.Now().ns() + static_cast<std::int64_t>(rng() % 50));
+    EXPECT_EQ(sim.PendingEvents(), pending.size());
+  }
+  EXPECT_TRUE(pending.empty());
+  EXPECT_GT(ran, 50000);
 }
 
 TEST(SimulatorQueueTest, ScheduleAfterRunUntilBeforeAPeekedEventRunsInOrder) {
