@@ -242,7 +242,7 @@ void BowRobotAgent::RecordAnswer(FrameId frame, RobotId responder, const std::op
 
 void BowRobotAgent::MaybeVerify(int k) {
   QueryRecord& o = outcomes_[static_cast<std::size_t>(k)];
-  if (!o.best || o.best->distance > static_cast<float>(params_.verification.max_distance)) return;
+  if (!o.best || o.best->distance > static_cast<float>(params_.verification.bow_max_distance)) return;
   o.verify_requested = true;
   if (o.best->robot == id_) {
     Task task;

@@ -11,7 +11,8 @@
 // With every reply in, the querying robot votes (Vote, agents/bow_words.h; the answers in
 // responder order, so the sum of the scores does not depend on arrival order), records the voted
 // frame with distance 1 - the voters' summed partial scores, and verifies it as RobotAgent does
-// when that distance is at most verification.max_distance.
+// when that distance is at most verification.bow_max_distance (1 - a score has another scale
+// than max_distance's squared L2).
 //
 // bow_broadcast (BowTeamPlan::words null): the full vector to every other robot on
 // channels::BowProbe; each scores it against its own frames and keeps nothing; the querying robot

@@ -115,8 +115,8 @@ struct SentLog final : NetworkObserver {
 // Three robots, words w mod 3 (robot 0: w0 w3 w6, robot 1: w1 w4 w7, robot 2: w2 w5 w8), one
 // frame a second (robot r takes frames 2r at 0 s and 2r + 1 at 1 s), window 0, 1 ms per search
 // and per verification, no cost per posting, an ideal network (delivery at the instant of
-// sending), verification of matches at distance <= 0.6 with 100-byte requests; the verifier
-// accepts only frame 4. Vectors (frames of one instant share no word, so the order of events
+// sending), verification of matches at distance <= 0.6 (bow_max_distance) with 100-byte
+// requests; the verifier accepts only frame 4. Vectors (frames of one instant share no word, so the order of events
 // within an instant cannot change an answer):
 //   F0 (r0) {w0 .5, w1 .25, w2 .25}  parts r0 {w0}, r1 {w1}, r2 {w2}: queries to r1, r2
 //   F2 (r1) {w4 .5, w7 .5}           all robot 1's: no message
@@ -147,7 +147,8 @@ class ThreeRobotBowTeam : public ::testing::Test {
     params.suppression_frames = 0;
     params.service.fixed = SimTime::Millis(1);
     params.service.per_comparison = SimTime::Zero();
-    params.verification.max_distance = 0.6;
+    params.verification.max_distance = 0.0;  // the descriptors' threshold: not the one BoW uses
+    params.verification.bow_max_distance = 0.6;
     params.verification.request_bytes = Bytes(100);
     const GeometricVerifier verifier = [](FrameId, FrameId match) { return VerifyVerdict{match == FrameId(4), 0}; };
     for (int r = 0; r < 3; ++r) {

@@ -50,7 +50,7 @@ class SimBowSweepTest : public ::testing::Test {
         "dataset: {source: synthetic, poses: poses.txt, bow: bow.txt, dim: 16}\n"
         "training: {synthetic: {samples: 300}}\n"
         "robots: [3]\nruns: 1\nprotocols: [sim]\nstrategies: " + strategies + "\n"
-        "network: {model: ideal}\nverification: {max_distance: 0}\n"
+        "network: {model: ideal}\nverification: {max_distance: 0, bow_max_distance: 0}\n"
         "evaluation: {gt_radius_m: 5, suppression_frames: 25}\noutputs: {figures: false}\n",
         dir_, {}, "sim_bow.yaml");
     SharedInputs inputs = LoadSharedInputs(config, "sim_bow.yaml");
@@ -109,7 +109,7 @@ TEST_F(SimBowSweepTest, RunsWithHandCountedQueryAndReplyBytes) {
     EXPECT_EQ(copies[Role(MessageRole::kQuery)].payload, bytes);
     EXPECT_EQ(copies[Role(MessageRole::kReply)].payload, 39 * messages);
     EXPECT_EQ(copies[Role(MessageRole::kQuery)].delivered_payload, bytes);
-    EXPECT_EQ(row.messages, 2 * messages);  // no verification (max_distance 0), so queries and replies
+    EXPECT_EQ(row.messages, 2 * messages);  // no verification (bow_max_distance 0): queries and replies
     EXPECT_EQ(row.dropped_messages, 0);
   }
 }

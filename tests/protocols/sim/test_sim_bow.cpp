@@ -72,7 +72,7 @@ TEST_F(TwoLapsTest, SimulatedDistributedIndexMatchesTheStaticProtocolWhereCausal
   params.agent.suppression_frames = 1;
   params.agent.service.fixed = SimTime::Micros(10);
   params.agent.service.per_comparison = SimTime::Nanos(1);
-  params.agent.verification.max_distance = 0.0;  // no verification traffic
+  params.agent.verification.bow_max_distance = 0.0;  // no verification traffic
   const SimRunLog log = RunBowSimulation(data_, bow_.frames, BowTeamPlan{kRobots, owners}, params);
   ASSERT_EQ(log.queries.size(), static_cast<std::size_t>(kFrames));
 
