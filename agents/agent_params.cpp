@@ -26,6 +26,9 @@ void VerificationParams::Validate() const {
   if (!(max_distance <= kMaxDistance)) {
     InvalidParam("max_distance", RangeProblem("0", FormatNumber(kMaxDistance), FormatNumber(max_distance)));
   }
+  if (!(bow_max_distance >= 0.0 && bow_max_distance <= 1.0)) {
+    InvalidParam("bow_max_distance", RangeProblem("0", "1", FormatNumber(bow_max_distance)));
+  }
 }
 
 void AgentParams::Validate() const {

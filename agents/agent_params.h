@@ -35,6 +35,9 @@ struct VerificationParams {
   Bytes request_bytes{25000};  // payload of the request: keypoints + local descriptors stand-in
   // Verify a match at most this far (squared L2). Compared as float, as the distances are.
   double max_distance = 0.6;
+  // The bag-of-words strategies' counterpart (agents/bow_robot_agent.h, docs/bow.md): verify a
+  // voted match at most this far, the distance being 1 - the voters' summed L1 score, in [0, 1].
+  double bow_max_distance = 0.95;
   void Validate() const;
   bool operator==(const VerificationParams&) const = default;
 };

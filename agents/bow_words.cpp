@@ -23,6 +23,17 @@ WordOwners WordOwners::Modulo(int vocabulary, int robots) {
   return WordOwners(std::move(owner), robots);
 }
 
+WordOwners WordOwners::Server(int vocabulary, int robots, RobotId server) {
+  CheckRobots(robots);
+  if (server.value < 0 || server.value >= robots) {
+    throw std::invalid_argument("server: robot " + std::to_string(server.value) + " is not in a team of " +
+                                std::to_string(robots));
+  }
+  return WordOwners(std::vector<std::int16_t>(static_cast<std::size_t>(vocabulary),
+                                              static_cast<std::int16_t>(server.value)),
+                    robots);
+}
+
 WordOwners WordOwners::ByDocumentFrequency(std::span<const std::int64_t> document_frequency, int robots) {
   CheckRobots(robots);
   std::vector<std::int32_t> order(document_frequency.size());

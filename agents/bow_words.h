@@ -23,6 +23,9 @@ class WordOwners {
   // document frequency is the number of partial queries and stored entries it causes, so this
   // evens out what each robot receives and stores.
   static WordOwners ByDocumentFrequency(std::span<const std::int64_t> document_frequency, int robots);
+  // Every word to `server`: a team's centralized index (bow_centralized in a simulated or real
+  // team, docs/bow.md), where one robot scores and keeps every frame's whole vector.
+  static WordOwners Server(int vocabulary, int robots, RobotId server);
 
   int robots() const { return robots_; }
   int vocabulary() const { return static_cast<int>(owner_.size()); }

@@ -39,6 +39,13 @@ inline const std::string kQueryAll = "DVPR_QUERY_ALL";
 inline std::string Match(RobotId dst) { return "DVPR_MATCH_" + std::to_string(dst.value); }
 inline std::string VerifyRequest(RobotId dst) { return "DVPR_VREQ_" + std::to_string(dst.value); }
 inline std::string VerifyResult(RobotId dst) { return "DVPR_VRES_" + std::to_string(dst.value); }
+// The bag-of-words strategies (docs/bow.md, agents/bow_robot_agent.h): a partial query (bow_query_t)
+// its receiver scores and then stores (the distributed inverted index, the centralized server),
+// one it only scores (bow_broadcast: every robot keeps its own frames), and the reply
+// (bow_match_t). Prefixes of one length, like the descriptor queries'.
+inline std::string BowQuery(RobotId dst) { return "DVPR_BOWQ_" + std::to_string(dst.value); }
+inline std::string BowProbe(RobotId dst) { return "DVPR_BOWP_" + std::to_string(dst.value); }
+inline std::string BowMatch(RobotId dst) { return "DVPR_BOWM_" + std::to_string(dst.value); }
 
 }  // namespace channels
 }  // namespace dvpr

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include <dvpr/bow_match_t.hpp>
 #include <dvpr/bow_query_t.hpp>
 #include <dvpr/centroid_table_t.hpp>
 #include <dvpr/descriptor_batch_t.hpp>

@@ -23,33 +23,17 @@
 #include "agents/descriptor_index.h"
 #include "agents/descriptors.h"
 #include "agents/frame_stream.h"
+#include "agents/geometric_verifier.h"
 #include "agents/ids.h"
 #include "agents/query_record.h"
+#include "agents/robot_load.h"
+#include "agents/team_agent.h"
 #include "agents/transport.h"
 #include "sim/sim_time.h"
 
 namespace dvpr {
 
-// Load a robot carried while serving (DESIGN.md section 3, per-robot load).
-struct RobotLoad {
-  std::int64_t searches = 0;               // queries served: remote and its own local ones
-  std::int64_t remote_queries = 0;         // of which arrived over the network
-  std::int64_t comparisons = 0;
-  std::int64_t stored = 0;                 // descriptors in the robot's store when read
-  std::int64_t verifications = 0;
-  SimTime busy;                            // total service time
-  std::int64_t max_queue = 0;              // longest wait line seen (the task in service excluded)
-};
-
-struct VerifyVerdict {
-  bool accepted = false;
-  int inliers = 0;
-};
-// Geometric verification as the robot that saw `match` runs it against the
-// query's keypoints. The simulation supplies one that checks the poses.
-using GeometricVerifier = std::function<VerifyVerdict(FrameId query, FrameId match)>;
-
-class RobotAgent {
+class RobotAgent final : public TeamAgent {
  public:
   // `routing` is this robot's component (TeamRouting::MakeAgentRouting).
   RobotAgent(RobotId id, const AgentParams& params, Transport& transport, std::unique_ptr<AgentRouting> routing,
@@ -59,18 +43,20 @@ class RobotAgent {
 
   // Subscribes to the robot's channels, starts its routing component and schedules its first
   // frame at t = 0.
-  void Start();
+  void Start() override;
   // The channels Start() subscribes to (a real agent holds them from before its start barrier:
   // LcmTransport::HoldUntilSubscribed).
   static std::vector<std::string> InboxChannels(RobotId id);
+  std::vector<std::string> Inbox() const override { return InboxChannels(id_); }
   // From now on the robot takes no frames and serves nothing (dropout).
-  void GoOffline();
+  void GoOffline() override;
 
-  RobotId id() const { return id_; }
+  RobotId id() const override { return id_; }
   // One record per frame of the stream, in order; a frame never taken (the robot went offline
   // first) is not Taken().
-  const std::vector<QueryRecord>& outcomes() const { return outcomes_; }
-  RobotLoad load() const;
+  const std::vector<QueryRecord>& outcomes() const override { return outcomes_; }
+  RobotLoad load() const override;
+  std::vector<LostRobot> Lost() const override { return routing_->Lost(); }
   const IncrementalIndex& index() const { return index_; }
   const AgentRouting& routing() const { return *routing_; }
 

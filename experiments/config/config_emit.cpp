@@ -1,5 +1,7 @@
-// ExperimentConfig -> YAML: every key written, in the order of DESIGN.md section 7, numbers in
+// ExperimentConfig -> YAML: every key written (verification.bow_max_distance only where it can
+// matter or was changed, EmitRest), in the order of DESIGN.md section 7, numbers in
 // their shortest round-trip form, so the file parses back to an equal config.
+#include <algorithm>
 #include <charconv>
 #include <string>
 #include <string_view>
@@ -137,8 +139,15 @@ void EmitRest(YAML::Emitter& out, const ExperimentConfig& c) {
   const VerificationParams& v = c.agent.verification;
   out << YAML::Key << "verification" << YAML::Value << YAML::Flow << YAML::BeginMap
       << YAML::Key << "request_bytes" << YAML::Value << v.request_bytes.value()
-      << YAML::Key << "max_distance" << YAML::Value << Num(v.max_distance)
-      << YAML::EndMap;
+      << YAML::Key << "max_distance" << YAML::Value << Num(v.max_distance);
+  // Written only where it can matter or was changed: configs without bow_ strategies (the
+  // default experiment's, the golden files') keep their text.
+  const bool bow = std::any_of(c.sweep.strategies.begin(), c.sweep.strategies.end(),
+                               [](const StrategySpec& s) { return s.bag_of_words(); });
+  if (bow || v.bow_max_distance != VerificationParams{}.bow_max_distance) {
+    out << YAML::Key << "bow_max_distance" << YAML::Value << Num(v.bow_max_distance);
+  }
+  out << YAML::EndMap;
   const ServiceParams& s = c.agent.service;
   out << YAML::Key << "service" << YAML::Value << YAML::Flow << YAML::BeginMap
       << YAML::Key << "fixed" << YAML::Value << FormatDuration(s.fixed)

@@ -115,13 +115,14 @@ NetworkConfig ReadNetwork(const Field& f) {
 VerificationParams ReadVerification(const Field& f) {
   VerificationParams v;
   if (!f.present()) return v;
-  f.ExpectMap({"request_bytes", "max_distance"});
+  f.ExpectMap({"request_bytes", "max_distance", "bow_max_distance"});
   if (auto c = f.Child("request_bytes"); c.present()) {
     v.request_bytes = c.Size(Bytes(0), VerificationParams::kMaxRequestBytes, /*plain_integer_is_bytes=*/true);
   }
   if (auto c = f.Child("max_distance"); c.present()) {
     v.max_distance = c.Double(0.0, VerificationParams::kMaxDistance);
   }
+  if (auto c = f.Child("bow_max_distance"); c.present()) v.bow_max_distance = c.Double(0.0, 1.0);
   f.Validate(v);
   return v;
 }

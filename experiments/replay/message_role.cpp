@@ -10,7 +10,9 @@ bool Starts(std::string_view s, std::string_view prefix) { return s.substr(0, pr
 
 MessageRole RoleOfChannel(std::string_view c) {
   if (Starts(c, "DVPR_QUERY_") || Starts(c, "DVPR_PROBE_") || Starts(c, "DVPR_STORE_")) return MessageRole::kQuery;
-  if (Starts(c, "DVPR_MATCH_")) return MessageRole::kReply;
+  // The bag-of-words strategies' partial queries and replies (agents/channels.h, docs/bow.md).
+  if (Starts(c, "DVPR_BOWQ_") || Starts(c, "DVPR_BOWP_")) return MessageRole::kQuery;
+  if (Starts(c, "DVPR_MATCH_") || Starts(c, "DVPR_BOWM_")) return MessageRole::kReply;
   if (Starts(c, "DVPR_VREQ_")) return MessageRole::kVerifyRequest;
   if (Starts(c, "DVPR_VRES_")) return MessageRole::kVerifyResult;
   if (Starts(c, "DVPR_SAMPLE_") || Starts(c, "DVPR_MIGRATE_") || c == "DVPR_TABLE") return MessageRole::kRecluster;

@@ -139,6 +139,10 @@ RunRouting BowRouting(const StrategySpec& spec, const StrategyInputs& in, int ro
     r.words = std::make_shared<const WordOwners>(
         WordOwners::ByDocumentFrequency(DocumentFrequency(in.bow->frames, in.bow->vocabulary), robots));
   }
+  r.bow_team = BowTeamPlan{robots, r.words};
+  if (spec.bow == StrategySpec::Bow::kCentralized) {
+    r.bow_team->words = std::make_shared<const WordOwners>(WordOwners::Server(in.bow->vocabulary, robots, RobotId(0)));
+  }
   return r;
 }
 

@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 
+#include "agents/bow_robot_agent.h"
 #include "agents/bow_words.h"
 #include "agents/centroid_table.h"
 #include "agents/agent_routing.h"
@@ -55,6 +56,10 @@ struct RunRouting {
   // other bow_ strategies and the descriptor strategies leave it null, and bow_ ones set no
   // table nor team.
   std::shared_ptr<const WordOwners> words;
+  // bow_ strategies: how a team of BoW agents (simulated or real) sends its queries. The
+  // distributed index as `words`; bow_broadcast the whole vector to every robot (no owners);
+  // bow_centralized one server, robot 0, that owns every word (docs/bow.md).
+  std::optional<BowTeamPlan> bow_team;
 };
 
 // What a strategy's table takes from the training side, so a sweep can check it before any run

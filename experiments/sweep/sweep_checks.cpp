@@ -94,15 +94,17 @@ void CheckStrategies(const SharedInputs& in, const std::string& origin) {
   if (!c.training.run_centroids.centroids_pattern.empty()) CheckCentroidFilesOf(in, centroid_readers, origin);
 }
 
-// The bag-of-words strategies run in the static protocol only (docs/bow.md).
+// The bag-of-words strategies run in the static protocol and the simulation (docs/bow.md); a
+// protocol registered besides them would not know them.
 void CheckBowProtocols(const ExperimentConfig& c, const std::string& origin) {
   const auto& protocols = c.sweep.protocols;
-  const bool other = std::any_of(protocols.begin(), protocols.end(), [](const std::string& p) { return p != "paper"; });
-  for (std::size_t i = 0; i < c.sweep.strategies.size(); ++i) {
+  const auto other = std::find_if(protocols.begin(), protocols.end(),
+                                  [](const std::string& p) { return p != "paper" && p != "sim"; });
+  for (std::size_t i = 0; i < c.sweep.strategies.size() && other != protocols.end(); ++i) {
     const StrategySpec& s = c.sweep.strategies[i];
-    if (s.bag_of_words() && other) {
-      throw ConfigError(origin + ": strategies[" + std::to_string(i) + "]: '" + s.name +
-                        "' runs only in the paper protocol (protocols: [paper]); see docs/bow.md");
+    if (s.bag_of_words()) {
+      throw ConfigError(origin + ": strategies[" + std::to_string(i) + "]: '" + s.name + "' runs in the paper and " +
+                        "sim protocols only, not in '" + *other + "'; see docs/bow.md");
     }
   }
 }

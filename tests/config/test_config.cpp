@@ -196,6 +196,23 @@ TEST_F(ConfigTest, BagOfWordsKeys) {
   EXPECT_EQ(ErrorOf("dataset: {bow: no_such_file.txt}\n").rfind("test.yaml: dataset.bow: ", 0), 0u);
 }
 
+// verification.bow_max_distance (docs/config.md): 0.95 unless set, in [0, 1]; written back only
+// for a config with a bow_ strategy or a value of its own, so other configs' text is unchanged.
+TEST_F(ConfigTest, BowVerificationThresholdIsCheckedAndWrittenWhereItMatters) {
+  const ExperimentConfig plain = Parse("name: x\n");
+  EXPECT_EQ(plain.agent.verification.bow_max_distance, 0.95);
+  EXPECT_EQ(EmitConfig(plain).find("bow_max_distance"), std::string::npos) << EmitConfig(plain);
+  const ExperimentConfig bow = Parse("strategies: [bow_decentralized]\n");
+  EXPECT_NE(EmitConfig(bow).find("max_distance: 0.6, bow_max_distance: 0.95}"), std::string::npos) << EmitConfig(bow);
+  const ExperimentConfig set = Parse("verification: {bow_max_distance: 0.5}\n");
+  EXPECT_EQ(set.agent.verification.bow_max_distance, 0.5);
+  EXPECT_EQ(ParseConfig(EmitConfig(set), "/nonexistent", {}, "config.yaml"), set);
+  EXPECT_EQ(ErrorOf("verification: {bow_max_distance: 1.5}\n"),
+            "test.yaml: verification.bow_max_distance: must be in [0, 1], got 1.5");
+  EXPECT_EQ(ErrorOf("verification: {bow_max_distance: -0.1}\n"),
+            "test.yaml: verification.bow_max_distance: must be in [0, 1], got -0.1");
+}
+
 // One YAML value that several params structs hold is in each of them.
 TEST_F(ConfigTest, SharedValuesReachEveryParamsStruct) {
   const ExperimentConfig c =

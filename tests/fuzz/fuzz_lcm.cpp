@@ -38,5 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   DecodeAs<dvpr::descriptor_batch_t>(datagram);
   DecodeAs<dvpr::centroid_table_t>(datagram);
   DecodeAs<dvpr::agent_status_t>(datagram);
+  DecodeAs<dvpr::bow_query_t>(datagram);
+  DecodeAs<dvpr::bow_match_t>(datagram);
   return 0;
 }

@@ -143,6 +143,11 @@ def lcm_seed_messages(t):
                                             centroids=[[1, 0, 0], [0, 1, 0]], owners=[0, 1]))
     write("lcm", "agent_status.bin", make(t.agent_status_t, utime=10, robot=1, robots=4, team_key=77,
                                           state=1, ready_utime=9, frames_taken=3))
+    bow_query = make(t.bow_query_t, utime=11, robot=1, frame=5, count=2, words=[3, 17], weights=[0.5, 0.5])
+    write("lcm", "bow_query.bin", bow_query)
+    write("lcm", "bow_query_count_claims_2e9.bin", bow_query[:22] + struct.pack(">i", 2000000000) + bow_query[26:])
+    write("lcm", "bow_match.bin", make(t.bow_match_t, utime=12, query_robot=1, query_frame=5, responder=2,
+                                       has_match=True, match_robot=0, match_frame=3, score=0.375))
 
 
 if __name__ == "__main__":

@@ -23,6 +23,9 @@ TEST(MessageRoleTest, EveryChannelOfTheProtocols) {
       {"DVPR_PROBE_0", MessageRole::kQuery, QueueEffect::kRequest, "query"},
       {"DVPR_STORE_12", MessageRole::kQuery, QueueEffect::kNone, "query"},  // kept, never answered
       {"DVPR_MATCH_1", MessageRole::kReply, QueueEffect::kAnswer, "reply"},
+      {"DVPR_BOWQ_2", MessageRole::kQuery, QueueEffect::kRequest, "query"},  // bag-of-words part
+      {"DVPR_BOWP_0", MessageRole::kQuery, QueueEffect::kRequest, "query"},  // bow_broadcast
+      {"DVPR_BOWM_5", MessageRole::kReply, QueueEffect::kAnswer, "reply"},
       {"DVPR_VREQ_0", MessageRole::kVerifyRequest, QueueEffect::kRequest, "verify request"},
       {"DVPR_VRES_4", MessageRole::kVerifyResult, QueueEffect::kAnswer, "verify result"},
       {"DVPR_SAMPLE_0", MessageRole::kRecluster, QueueEffect::kNone, "re-clustering"},

@@ -262,5 +262,29 @@ TEST_F(RunRoutingTest, BagOfWordsStrategiesAssignWords) {
   EXPECT_THROW(Build("bow_decentralized", 2), std::invalid_argument);
 }
 
+// What a team of BoW agents sends by (BowTeamPlan): the distributed index its word owners,
+// broadcast none (the whole vector to every robot), centralized one server, robot 0, owning
+// every word of the vocabulary.
+TEST_F(RunRoutingTest, BagOfWordsStrategiesGiveTheirTeamPlan) {
+  BowData bow;
+  bow.vocabulary = 3;
+  bow.frames = {{{0, .5f}, {1, .5f}}, {{0, 1.f}}, {{2, 1.f}}};
+  inputs_.bow = &bow;
+  const RunRouting modulo = Build("bow_decentralized", 3);
+  ASSERT_TRUE(modulo.bow_team);
+  EXPECT_EQ(modulo.bow_team->robots, 3);
+  ASSERT_TRUE(modulo.bow_team->words);
+  EXPECT_EQ(modulo.bow_team->words->OwnerOf(2), RobotId(2));
+  const RunRouting broadcast = Build("bow_broadcast", 3);
+  ASSERT_TRUE(broadcast.bow_team);
+  EXPECT_TRUE(broadcast.bow_team->broadcast());
+  const RunRouting central = Build("bow_centralized", 3);
+  ASSERT_TRUE(central.bow_team);
+  EXPECT_FALSE(central.words);  // the static protocol's reference keeps its own index
+  ASSERT_TRUE(central.bow_team->words);
+  for (const int w : {0, 1, 2}) EXPECT_EQ(central.bow_team->words->OwnerOf(w), RobotId(0)) << w;
+  EXPECT_FALSE(Build("broadcast", 3).bow_team);
+}
+
 }  // namespace
 }  // namespace dvpr

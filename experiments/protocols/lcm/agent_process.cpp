@@ -8,6 +8,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "agents/bow_robot_agent.h"
 #include "agents/channels.h"
 #include "agents/lcm_transport.h"
 #include "agents/robot_agent.h"
@@ -72,7 +73,7 @@ std::int64_t WallUtime() {
 // Everything the agents of one team must agree on, hashed: if one process has
 // other data, centroids or parameters, it routes differently and must not join.
 // Broadcast has no table: its robots need no centroids in common.
-std::int64_t TeamKey(const ExperimentConfig& c, const Dataset& data, const CentroidTable* table,
+std::int64_t TeamKey(const ExperimentConfig& c, const Dataset& data, const CentroidTable* table, const BowData* bow,
                      const std::string& strategy, int robots, int run) {
   Fnv1a h;
   h.AddValue(robots);
@@ -83,6 +84,17 @@ std::int64_t TeamKey(const ExperimentConfig& c, const Dataset& data, const Centr
     h.Add(centroids.data(), static_cast<std::size_t>(centroids.size()) * sizeof(float));
   }
   h.Add(data.descriptors.data(), static_cast<std::size_t>(data.descriptors.size()) * sizeof(float));
+  if (bow != nullptr) {  // a bow_ team matches on these, so every robot must have the same
+    h.AddValue(c.agent.verification.bow_max_distance);
+    h.AddValue(bow->vocabulary);
+    for (const BowVector& v : bow->frames) {
+      h.AddValue(static_cast<std::int64_t>(v.size()));
+      for (const BowEntry& e : v) {
+        h.AddValue(e.word);
+        h.AddValue(e.weight);
+      }
+    }
+  }
   h.AddValue(data.fps);
   h.AddValue(c.evaluation.suppression_frames);
   h.AddValue(c.agent.service.fixed.ns());
@@ -120,6 +132,14 @@ std::optional<int> SourceOf(const std::string& channel, std::span<const std::uin
     if (auto q = Decode<query_t>(bytes)) return check(robot(q->robot, false) && frame(q->frame, false), q->robot);
   } else if (starts("DVPR_MATCH_")) {
     if (auto m = Decode<match_t>(bytes)) {
+      return check(robot(m->responder, false) && robot(m->query_robot, false) && frame(m->query_frame, false) &&
+                       robot(m->match_robot, !m->has_match) && frame(m->match_frame, !m->has_match),
+                   m->responder);
+    }
+  } else if (starts("DVPR_BOWQ_") || starts("DVPR_BOWP_")) {
+    if (auto q = Decode<bow_query_t>(bytes)) return check(robot(q->robot, false) && frame(q->frame, false), q->robot);
+  } else if (starts("DVPR_BOWM_")) {
+    if (auto m = Decode<bow_match_t>(bytes)) {
       return check(robot(m->responder, false) && robot(m->query_robot, false) && frame(m->query_frame, false) &&
                        robot(m->match_robot, !m->has_match) && frame(m->match_frame, !m->has_match),
                    m->responder);
@@ -185,7 +205,7 @@ struct OwnProgress {
   bool all_answered = false;  // every frame taken, every reply and verification in
 };
 
-OwnProgress Progress(const RobotAgent& agent) {
+OwnProgress Progress(const TeamAgent& agent) {
   OwnProgress p;
   bool answered = true;
   for (const QueryRecord& o : agent.outcomes()) {
@@ -232,10 +252,11 @@ Team LoadTeam(const AgentProcessOptions& o) {
                                 "' re-clusters during the run, which dvpr agent does not implement; run it in the "
                                 "simulation (dvpr run)");
   }
-  if (t.strategy.bag_of_words()) {
-    throw std::invalid_argument("--strategy: '" + t.strategy.name +
-                                "' is a bag-of-words strategy, which only the static protocol implements "
-                                "(docs/bow.md); run it with dvpr run and protocols: [paper]");
+  // The BoW vectors are loaded only for a config that runs a bow_ strategy: --strategy may name
+  // one the config's list lacks.
+  const auto& listed = t.config.sweep.strategies;
+  if (t.strategy.bag_of_words() && std::find(listed.begin(), listed.end(), t.strategy) == listed.end()) {
+    t.config.sweep.strategies.push_back(t.strategy);
   }
   t.inputs = LoadSharedInputs(t.config, o.config.string());
   t.inputs.config = &t.config;
@@ -248,7 +269,8 @@ Team LoadTeam(const AgentProcessOptions& o) {
   if (o.robot >= t.robots) throw std::invalid_argument("--robot " + std::to_string(o.robot) + " is not in a team of " + std::to_string(t.robots));
   // Built by every process from the same inputs, so the whole team routes alike.
   t.routing = BuildRunRouting(t.strategy, StrategyInputsOf(t.inputs), t.robots, o.run);
-  t.key = TeamKey(t.config, t.inputs.deployment, t.routing.table.get(), t.strategy.name, t.robots, o.run);
+  t.key = TeamKey(t.config, t.inputs.deployment, t.routing.table.get(), t.routing.bow_team ? &t.inputs.bow : nullptr,
+                  t.strategy.name, t.robots, o.run);
   // The process announces the heartbeats (DVPR_STATUS, every kAnnouncePeriod); failover listens.
   if (t.routing.failover != nullptr) t.routing.failover->UseProcessHeartbeats(t.key);
   return t;
@@ -263,7 +285,7 @@ SimTime LastFrameTime(const SequenceSplit& split, double fps) {
   return last;
 }
 
-AgentLog MakeLog(const AgentProcessOptions& o, const Team& t, const RobotAgent& agent, const LcmTransport& transport,
+AgentLog MakeLog(const AgentProcessOptions& o, const Team& t, const TeamAgent& agent, const LcmTransport& transport,
                  const TeamSync& sync, const TrafficCounters& traffic, std::int64_t start_utime,
                  const std::string& end_reason) {
   AgentLog l;
@@ -285,7 +307,7 @@ AgentLog MakeLog(const AgentProcessOptions& o, const Team& t, const RobotAgent& 
   l.load = agent.load();
   l.sent = traffic.sent;
   l.received_from = traffic.received_from;
-  l.lost = agent.routing().Lost();
+  l.lost = agent.Lost();
   for (QueryRecord q : agent.outcomes()) {
     if (!q.Taken()) continue;
     // Latency as the network delivered it: the wall clock, not agent time.
@@ -293,6 +315,20 @@ AgentLog MakeLog(const AgentProcessOptions& o, const Team& t, const RobotAgent& 
     l.queries.push_back(q);
   }
   return l;
+}
+
+// The robot's agent: a BoW agent for the bow_ strategies (docs/bow.md), else a RobotAgent.
+std::unique_ptr<TeamAgent> MakeAgent(const AgentProcessOptions& o, const Team& t, Transport& transport,
+                                     const FrameRange& range) {
+  const Dataset& data = t.inputs.deployment;
+  const FrameStream frames{&data.descriptors, range.begin, range.size(), data.fps};
+  GeometricVerifier verifier = PoseOracle(data.trajectory.positions, t.config.evaluation.radius_m);
+  if (t.routing.bow_team) {
+    return std::make_unique<BowRobotAgent>(RobotId(o.robot), t.config.agent, transport, *t.routing.bow_team, frames,
+                                           t.inputs.bow.frames, std::move(verifier));
+  }
+  return std::make_unique<RobotAgent>(RobotId(o.robot), t.config.agent, transport, t.routing.team->MakeAgentRouting(),
+                                      frames, std::move(verifier));
 }
 
 // `dropout:` in a real team: the robot's process kills itself at that agent time, as the
@@ -323,9 +359,8 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   transport.SetReceiveFilter([&](const std::string& c, std::span<const std::uint8_t> b) { return traffic.OnReceive(c, b); });
   TeamSync sync(RobotId(o.robot), t.robots, t.key);
   Subscription status = transport.Subscribe<agent_status_t>(channels::kStatus, [&](const agent_status_t& s) { sync.OnStatus(s); });
-  RobotAgent agent(RobotId(o.robot), t.config.agent, transport, t.routing.team->MakeAgentRouting(),
-                   FrameStream{&data.descriptors, range.begin, range.size(), data.fps},
-                   PoseOracle(data.trajectory.positions, t.config.evaluation.radius_m));
+  const std::unique_ptr<TeamAgent> agent_owner = MakeAgent(o, t, transport, range);
+  TeamAgent& agent = *agent_owner;
 
   const std::int64_t ready_utime = WallUtime();
   auto announce = [&](std::int8_t state) {
@@ -335,7 +370,7 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   };
 
   // What teammates that leave the barrier first send us is kept until agent.Start() subscribes.
-  transport.HoldUntilSubscribed(RobotAgent::InboxChannels(RobotId(o.robot)));
+  transport.HoldUntilSubscribed(agent.Inbox());
   // Start barrier: announce READY until every robot of the team is heard.
   const auto barrier_end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.barrier_timeout_s));
   std::optional<std::int64_t> start;

@@ -5,7 +5,8 @@
 // It loads the same inputs as `dvpr run` and computes the same centroids
 // (same config and seed), builds the routing strategy, joins the start
 // barrier on DVPR_STATUS (experiments agree on a wall-clock start instant),
-// drives a RobotAgent over LcmTransport, and ends when every robot announced
+// drives a RobotAgent (a BowRobotAgent for the bow_ strategies, docs/bow.md) over
+// LcmTransport, and ends when every robot announced
 // done or at its deadline (the team's last frame + grace), then writes its
 // log (experiments/protocols/lcm/agent_log.h).
 #include <filesystem>

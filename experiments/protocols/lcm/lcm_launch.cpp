@@ -309,6 +309,9 @@ TeamLogs CollectTeam(const ExperimentConfig& config, const Team& team, int robot
   return t;
 }
 
+// A team whose AUC is the reference of the others' relative AUC.
+bool IsReference(const StrategySpec& s) { return s.broadcast() || s.bow == StrategySpec::Bow::kCentralized; }
+
 void Append(RunOutput& all, const RunOutput& rows) {
   all.runs.insert(all.runs.end(), rows.runs.begin(), rows.runs.end());
   all.per_robot.insert(all.per_robot.end(), rows.per_robot.begin(), rows.per_robot.end());
@@ -337,20 +340,15 @@ void WriteLaunchFiles(const std::filesystem::path& dir, const ExperimentConfig& 
 int RunLaunch(const LaunchOptions& o, std::ostream& out) {
   o.Validate();
   const ExperimentConfig config = LoadConfig(o.config, o.overrides);
-  for (const StrategySpec& s : config.sweep.strategies) {
-    if (s.bag_of_words()) {  // before any agent starts (docs/bow.md)
-      throw std::invalid_argument("strategies: '" + s.name + "' is a bag-of-words strategy, which dvpr launch does "
-                                  "not run (only the static protocol implements it; docs/bow.md)");
-    }
-  }
   const auto target = o.out.empty() ? std::filesystem::path("results") / (config.name + "_lcm") : o.out;
   // Agents write into the temporary folder; the target appears only if some team ran.
   ResultFolder folder(target);
   const std::filesystem::path dir = folder.dir();
   CreateOutputDir(dir / "agents");
-  // Broadcast first: its AUC is every strategy's reference.
+  // The references first: broadcast's AUC is every descriptor strategy's reference, the BoW
+  // server's (bow_centralized) every bow_ strategy's (docs/bow.md).
   std::vector<StrategySpec> strategies = config.sweep.strategies;
-  std::stable_partition(strategies.begin(), strategies.end(), [](const StrategySpec& s) { return s.broadcast(); });
+  std::stable_partition(strategies.begin(), strategies.end(), [](const StrategySpec& s) { return IsReference(s); });
   std::vector<Team> teams;
   for (const StrategySpec& spec : strategies) teams.push_back(RunTeam(o, config, spec.name, dir, out));
 
@@ -359,7 +357,7 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
   RunOutput all;
   std::ostringstream agents_csv;
   agents_csv << "strategy,robot,exit,log,queries,incomplete\n";
-  double reference_auc = kNotApplicable;
+  double reference_auc = kNotApplicable, bow_reference_auc = kNotApplicable;
   bool clean = true;
   for (const Team& team : teams) {
     const TeamLogs t = CollectTeam(config, team, o.robots, dir, agents_csv, out);
@@ -368,9 +366,11 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
       out << "launch: " << team.strategy << ": no agent ran, no rows written\n";
       continue;
     }
-    GatheredRun g = GatherTeam(config, inputs, team.strategy, o.robots, o.run, t.logs, reference_auc);
-    if (team.strategy == "broadcast") {
-      reference_auc = g.auc;
+    const StrategySpec spec = ParseStrategy(team.strategy);
+    double& reference = spec.bag_of_words() ? bow_reference_auc : reference_auc;
+    GatheredRun g = GatherTeam(config, inputs, team.strategy, o.robots, o.run, t.logs, reference);
+    if (IsReference(spec)) {
+      reference = g.auc;
       g.rows.runs.front().auc_reference = g.auc;
       g.rows.runs.front().relative_auc = 1.0;
     }

@@ -5,7 +5,8 @@
 //
 // Each configured strategy runs in turn as its own team (broadcast first when
 // configured: it is the reference of the relative AUC, as in the simulation;
-// without it auc_reference stays empty). Rows are made by the simulation's
+// without it auc_reference stays empty; for the bow_ strategies bow_centralized
+// is, docs/bow.md). Rows are made by the simulation's
 // own functions (SummarizeSimRun, MakeRow, AppendRows), so the columns mean
 // the same, with these differences: latency is wall-clock; links.csv counts
 // what senders published and `dropped` = published minus what the destination

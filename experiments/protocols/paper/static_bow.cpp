@@ -150,6 +150,7 @@ BowRunResult BowEvaluator::Evaluate(const WordOwners& owners, const std::string&
   }
   PrResult pr = EvaluatePr(matches, paper_.deployment().trajectory.positions, paper_.evaluation().radius_m,
                            paper_.relevant());
+  out.matches = std::move(matches);
   paper_.FillResult(name, std::move(pr), searches, comparisons, stored, keep_curve, out.paper);
   out.paper.row.auc_reference = centralized_.auc;
   out.paper.row.relative_auc = RelativeAuc(out.paper.row.auc, centralized_.auc);

@@ -31,6 +31,7 @@ struct BowRunResult {
   PaperRunResult paper;               // row (messages, payload_bytes set), per_robot, curve
   BowRow bow;                         // bow.csv
   std::map<std::int64_t, std::int64_t> part_sizes;  // encoded partial-query bytes -> messages
+  std::vector<MatchOutcome> matches;  // Evaluate: per query, the voted frame and 1 - its score
 };
 
 // The query traffic of a descriptor strategy in the same terms, for the BoW comparison: every

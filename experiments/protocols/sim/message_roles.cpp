@@ -30,10 +30,14 @@ MessageRole RoleOfChannel(std::string_view channel) {
   static const std::string vres = PrefixOf(channels::VerifyResult(r0));
   static const std::string sample = PrefixOf(channels::Sample(r0));
   static const std::string migrate = PrefixOf(channels::Migrate(r0));
-  if (StartsWith(channel, query) || StartsWith(channel, probe) || StartsWith(channel, store)) {
+  static const std::string bow_query = PrefixOf(channels::BowQuery(r0));
+  static const std::string bow_probe = PrefixOf(channels::BowProbe(r0));
+  static const std::string bow_match = PrefixOf(channels::BowMatch(r0));
+  if (StartsWith(channel, query) || StartsWith(channel, probe) || StartsWith(channel, store) ||
+      StartsWith(channel, bow_query) || StartsWith(channel, bow_probe)) {
     return MessageRole::kQuery;
   }
-  if (StartsWith(channel, match)) return MessageRole::kReply;
+  if (StartsWith(channel, match) || StartsWith(channel, bow_match)) return MessageRole::kReply;
   if (StartsWith(channel, vreq)) return MessageRole::kVerifyRequest;
   if (StartsWith(channel, vres)) return MessageRole::kVerifyResult;
   if (StartsWith(channel, sample) || StartsWith(channel, migrate) || channel == channels::kTable) {

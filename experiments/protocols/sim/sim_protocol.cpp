@@ -132,13 +132,14 @@ RunResult MakeRow(const RunSpec& spec, const std::string& strategy, const SimRun
 RunFunction MakeSimRun(const SharedInputs& in) {
   const ExperimentConfig* config = in.config;
   const Dataset* data = &in.deployment;
+  const BowData* bow = &in.bow;
   std::filesystem::path log_dir;
   if (config->outputs.lcm_log) {
     log_dir = in.out_dir / "lcm";
     std::filesystem::create_directories(log_dir);
   }
   const StrategyInputs strategy_inputs = StrategyInputsOf(in);
-  return [config, data, log_dir, strategy_inputs](const RunSpec& spec) {
+  return [config, data, bow, log_dir, strategy_inputs](const RunSpec& spec) {
     SimRunParams params = ToSimParams(*config, spec);
     RunCentroidCache centroids;  // the run's strategies on the paper's table cluster once
     StrategyInputs run_inputs = strategy_inputs;
@@ -146,22 +147,35 @@ RunFunction MakeSimRun(const SharedInputs& in) {
     const auto run_one = [&](const StrategySpec& strategy) {
       params.lcm_log = log_dir.empty() ? std::filesystem::path() : log_dir / LogName(spec, strategy.name);
       const RunRouting routing = BuildRunRouting(strategy, run_inputs, spec.robots, spec.run);
-      SimRunLog log = RunSimulation(*data, *routing.team, params);
+      SimRunLog log = routing.bow_team ? RunBowSimulation(*data, bow->frames, *routing.bow_team, params)
+                                       : RunSimulation(*data, *routing.team, params);
       SimRunSummary summary = SummarizeSimRun(log, data->trajectory.positions, config->evaluation.radius_m,
                                               config->evaluation.suppression_frames);
       return std::make_pair(std::move(log), std::move(summary));
     };
-    // Broadcast first: it is the reference of every strategy's relative AUC.
+    // The references first: broadcast for the descriptor strategies' relative AUC, the BoW team's
+    // centralized server (bow_centralized, docs/bow.md) for the bow_ strategies'. Each runs only
+    // when a strategy of its kind does.
+    using Team = std::pair<SimRunLog, SimRunSummary>;
+    const auto any = [&](bool bag_of_words) {
+      return std::any_of(spec.strategies.begin(), spec.strategies.end(),
+                         [&](const StrategySpec& s) { return s.bag_of_words() == bag_of_words; });
+    };
+    std::optional<Team> broadcast, bow_reference;
+    if (any(false)) broadcast = run_one(ParseStrategy("broadcast"));
+    if (any(true)) bow_reference = run_one(ParseStrategy("bow_centralized"));
     RunOutput out;
-    auto [broadcast_log, broadcast] = run_one(ParseStrategy("broadcast"));
     for (const StrategySpec& strategy : spec.strategies) {
-      if (strategy.broadcast()) {
-        out.runs.push_back(WithRoles(MakeRow(spec, strategy.name, broadcast, broadcast.auc), broadcast_log, data->fps));
-        AppendRows(spec, strategy.name, broadcast_log, broadcast, *config, out);
+      const Team& reference = strategy.bag_of_words() ? *bow_reference : *broadcast;
+      const double reference_auc = reference.second.auc;
+      if (strategy.broadcast() || strategy.bow == StrategySpec::Bow::kCentralized) {
+        out.runs.push_back(WithRoles(MakeRow(spec, strategy.name, reference.second, reference_auc), reference.first,
+                                     data->fps));
+        AppendRows(spec, strategy.name, reference.first, reference.second, *config, out);
         continue;
       }
       auto [log, summary] = run_one(strategy);
-      out.runs.push_back(WithRoles(MakeRow(spec, strategy.name, summary, broadcast.auc), log, data->fps));
+      out.runs.push_back(WithRoles(MakeRow(spec, strategy.name, summary, reference_auc), log, data->fps));
       AppendRows(spec, strategy.name, log, summary, *config, out);
     }
     return out;

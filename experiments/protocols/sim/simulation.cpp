@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <set>
 #include <stdexcept>
@@ -66,26 +67,35 @@ bool IsDropped(const SimRunParams& params, int robot) {
   return false;
 }
 
+// The (robot that saw it, frame) of every descriptor an agent stores; a BoW agent keeps parts of
+// vectors, none of which another robot holds a copy of (no replication): none listed.
+std::vector<std::pair<int, int>> StoredCopies(const TeamAgent& agent) {
+  std::vector<std::pair<int, int>> out;
+  if (const auto* robot = dynamic_cast<const RobotAgent*>(&agent)) {
+    for (const IndexEntry& e : robot->index().entries()) out.emplace_back(e.robot.value, e.frame.value);
+  }
+  return out;
+}
+
 // Per dropout: what its store held, how much of it a robot that stayed keeps a copy of, and
 // when the last robot that stayed declared it lost.
 std::vector<DropoutOutcome> DropoutOutcomes(const SimRunParams& params,
-                                            const std::vector<std::unique_ptr<RobotAgent>>& agents) {
+                                            const std::vector<std::unique_ptr<TeamAgent>>& agents) {
   std::set<std::pair<int, int>> live_copies;  // (robot that saw it, frame)
   for (std::size_t r = 0; r < agents.size(); ++r) {
     if (IsDropped(params, static_cast<int>(r))) continue;
-    for (const IndexEntry& e : agents[r]->index().entries()) live_copies.insert({e.robot.value, e.frame.value});
+    for (const auto& copy : StoredCopies(*agents[r])) live_copies.insert(copy);
   }
   std::vector<DropoutOutcome> out;
   for (const auto& d : params.dropouts) {
     DropoutOutcome o{d.robot, d.at, std::nullopt, 0, 0};
-    for (const IndexEntry& e : agents[static_cast<std::size_t>(d.robot.value)]->index().entries()) {
-      ++o.stored;
-      o.kept += live_copies.count({e.robot.value, e.frame.value}) > 0 ? 1 : 0;
-    }
+    const TeamAgent& dropped = *agents[static_cast<std::size_t>(d.robot.value)];
+    o.stored = dropped.load().stored;
+    for (const auto& copy : StoredCopies(dropped)) o.kept += live_copies.count(copy) > 0 ? 1 : 0;
     bool all = true;
     for (std::size_t r = 0; r < agents.size() && all; ++r) {
       if (IsDropped(params, static_cast<int>(r))) continue;
-      const auto lost = agents[r]->routing().Lost();
+      const auto lost = agents[r]->Lost();
       const auto it = std::find_if(lost.begin(), lost.end(), [&](const LostRobot& l) { return l.robot == d.robot; });
       if (it == lost.end()) all = false;
       else if (!o.detected || it->detected > *o.detected) o.detected = it->detected;
@@ -96,14 +106,12 @@ std::vector<DropoutOutcome> DropoutOutcomes(const SimRunParams& params,
   return out;
 }
 
-}  // namespace
+// What makes robot r's agent, talking through its transport.
+using AgentMaker = std::function<std::unique_ptr<TeamAgent>(RobotId, Transport&, const FrameStream&,
+                                                            const GeometricVerifier&)>;
 
-SimRunLog RunSimulation(const Dataset& data, const TeamRouting& routing, const SimRunParams& params) {
+SimRunLog RunTeam(const Dataset& data, const SimRunParams& params, const AgentMaker& make_agent) {
   params.Validate(data);
-  if (routing.num_robots() != params.robots) {
-    throw std::invalid_argument("routing strategy built for " + std::to_string(routing.num_robots()) +
-                                " robots, run has " + std::to_string(params.robots));
-  }
   const int n = params.robots;
   Simulator sim;
   Network network(sim, n, MakeLinkModel(params.network, n, params.seed), params.network.wire);
@@ -112,7 +120,7 @@ SimRunLog RunSimulation(const Dataset& data, const TeamRouting& routing, const S
   const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), n);
   const GeometricVerifier verifier = PoseOracle(data.trajectory.positions, params.gt_radius_m);
   std::vector<std::unique_ptr<SimTransport>> transports;
-  std::vector<std::unique_ptr<RobotAgent>> agents;
+  std::vector<std::unique_ptr<TeamAgent>> agents;
   SimRunLog log;
   log.robots = n;
   log.capture_time.resize(static_cast<std::size_t>(data.size()));
@@ -121,13 +129,12 @@ SimRunLog RunSimulation(const Dataset& data, const TeamRouting& routing, const S
     FrameStream frames{&data.descriptors, range.begin, range.size(), data.fps};
     for (int k = 0; k < range.size(); ++k) log.capture_time[static_cast<std::size_t>(range.begin.value + k)] = frames.TimeOf(k);
     transports.push_back(std::make_unique<SimTransport>(network, NodeId(r), params.start_utime));
-    agents.push_back(std::make_unique<RobotAgent>(RobotId(r), params.agent, *transports.back(),
-                                                  routing.MakeAgentRouting(), frames, verifier));
+    agents.push_back(make_agent(RobotId(r), *transports.back(), frames, verifier));
   }
   for (auto& agent : agents) agent->Start();
   for (const auto& d : params.dropouts) {
     network.SetOffline(NodeId(d.robot.value), d.at);
-    RobotAgent* agent = agents[static_cast<std::size_t>(d.robot.value)].get();
+    TeamAgent* agent = agents[static_cast<std::size_t>(d.robot.value)].get();
     sim.ScheduleAt(d.at, [agent] { agent->GoOffline(); });
   }
   sim.Run();
@@ -155,6 +162,37 @@ SimRunLog RunSimulation(const Dataset& data, const TeamRouting& routing, const S
   log.dropouts = DropoutOutcomes(params, agents);
   if (recorders.event_log_file) recorders.event_log_file->Close();
   return log;
+}
+
+}  // namespace
+
+SimRunLog RunSimulation(const Dataset& data, const TeamRouting& routing, const SimRunParams& params) {
+  params.Validate(data);
+  if (routing.num_robots() != params.robots) {
+    throw std::invalid_argument("routing strategy built for " + std::to_string(routing.num_robots()) +
+                                " robots, run has " + std::to_string(params.robots));
+  }
+  return RunTeam(data, params, [&](RobotId r, Transport& transport, const FrameStream& frames,
+                                   const GeometricVerifier& verifier) -> std::unique_ptr<TeamAgent> {
+    return std::make_unique<RobotAgent>(r, params.agent, transport, routing.MakeAgentRouting(), frames, verifier);
+  });
+}
+
+SimRunLog RunBowSimulation(const Dataset& data, const std::vector<BowVector>& vectors, const BowTeamPlan& plan,
+                           const SimRunParams& params) {
+  params.Validate(data);
+  if (plan.robots != params.robots) {
+    throw std::invalid_argument("bag-of-words plan built for " + std::to_string(plan.robots) + " robots, run has " +
+                                std::to_string(params.robots));
+  }
+  if (static_cast<Eigen::Index>(vectors.size()) != data.size()) {
+    throw std::invalid_argument(std::to_string(vectors.size()) + " BoW vectors for " + std::to_string(data.size()) +
+                                " frames");
+  }
+  return RunTeam(data, params, [&](RobotId r, Transport& transport, const FrameStream& frames,
+                                   const GeometricVerifier& verifier) -> std::unique_ptr<TeamAgent> {
+    return std::make_unique<BowRobotAgent>(r, params.agent, transport, plan, frames, vectors, verifier);
+  });
 }
 
 SimRunSummary SummarizeSimRun(const SimRunLog& log, const Positions& positions, double radius_m, int window) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "agents/agent_routing.h"
+#include "agents/bow_robot_agent.h"
 #include "agents/robot_agent.h"
 #include "experiments/data/dataset.h"
 #include "experiments/results/results.h"
@@ -65,6 +66,10 @@ struct SimRunLog {
 // Every robot routes through its own component made by `routing` (a stateless strategy or one
 // with per-robot state, such as re-clustering).
 SimRunLog RunSimulation(const Dataset& data, const TeamRouting& routing, const SimRunParams& params);
+// A team of bag-of-words agents (agents/bow_robot_agent.h, docs/bow.md): `vectors` holds one
+// BoW vector per frame of `data` (its descriptors are not used), `plan` how the team splits them.
+SimRunLog RunBowSimulation(const Dataset& data, const std::vector<BowVector>& vectors, const BowTeamPlan& plan,
+                           const SimRunParams& params);
 
 struct SimRunSummary {
   double auc = 0.0;

@@ -11,6 +11,8 @@
 #include <map>
 #include <sstream>
 
+#include "agents/bow_vector.h"
+#include "agents/bow_words.h"
 #include "agents/centroid_table.h"
 #include "agents/failure_detector.h"
 #include "agents/team_sync.h"
@@ -248,6 +250,143 @@ TEST_F(LcmTeamTest, LaunchedTeamMatchesTheIdealSimulation) {
     EXPECT_FALSE(r.at("auc_reference").empty());
     EXPECT_EQ(r.at("dropped_messages"), "0");
   }
+}
+
+// The bag-of-words counterpart of References: query f's parts (words w mod n) go to their
+// owners, each scores its part against the parts of the frames it stored (the sum over shared
+// words of min weights, agents/bow_vector.h) and returns its best; the querying robot votes
+// (agents/bow_words.h). A responder's answer is certain when its best among the frames surely
+// stored beats every open frame's partial score (an open frame scoring as much could win or tie);
+// the query's answer is unambiguous when every responder's is.
+std::vector<Reference> BowReferences(const BowData& bow, int robots, int window, const Order& order) {
+  const WordOwners owners = WordOwners::Modulo(bow.vocabulary, robots);
+  const SequenceSplit split = SplitSequence(static_cast<int>(bow.frames.size()), robots);
+  std::vector<std::vector<BowVector>> parts;
+  for (const BowVector& v : bow.frames) parts.push_back(owners.Split(v));
+  const int n = static_cast<int>(bow.frames.size());
+  std::vector<Reference> refs(static_cast<std::size_t>(n));
+  for (int f = 0; f < n; ++f) {
+    bool unambiguous = true;
+    std::vector<PartialMatch> answers;
+    for (int r = 0; r < robots; ++r) {
+      const BowVector& part = parts[static_cast<std::size_t>(f)][static_cast<std::size_t>(r)];
+      if (part.empty()) continue;
+      double certain = 0.0, open = 0.0;
+      int best = -1;
+      for (int g = 0; g < n; ++g) {
+        const int o = std::abs(f - g) <= window ? -1 : order(f, g);
+        if (o < 0) continue;
+        const double s = SharedMinimum(part, parts[static_cast<std::size_t>(g)][static_cast<std::size_t>(r)]);
+        if (s == 0.0) continue;
+        if (o == 0) open = std::max(open, s);
+        else if (s > certain) certain = s, best = g;  // g ascending: ties keep the lower frame
+      }
+      if (open > 0.0 && open >= certain) unambiguous = false;
+      if (best >= 0) answers.push_back({RobotId(r), split.owner[static_cast<std::size_t>(best)], FrameId(best), certain});
+    }
+    const std::optional<VotedMatch> voted = Vote(answers);
+    refs[static_cast<std::size_t>(f)] = {unambiguous, voted ? voted->frame.value : -1};
+  }
+  return refs;
+}
+
+// A launched bow_decentralized team (BoW agents, agents/bow_robot_agent.h) against the ideal
+// simulation of the same team, as LaunchedTeamMatchesTheIdealSimulation does for the
+// descriptors: each run is checked against the answers its own order makes certain, and the two
+// must agree (frame, robot, distance) wherever both orders leave one answer.
+TEST_F(LcmTeamTest, LaunchedBowTeamMatchesTheIdealSimulation) {
+  constexpr int kRobots = 4;
+  constexpr double kSpeedup = 5;
+  std::vector<std::string> sets = SmallConfigSets();
+  sets.emplace_back("strategies=[bow_decentralized]");
+  std::vector<std::string> launch{Dvpr(), "launch", "--config", ConfigPath(), "--robots", std::to_string(kRobots),
+                                  "--speedup", "5", "--lcm", Url(7705), "--out", (dir_ / "lcm").string(),
+                                  "--timeout", "240", "--grace", "60"};
+  std::vector<std::string> sim{Dvpr(), "run", ConfigPath(), "--quiet", "--out", (dir_ / "sim").string(),
+                               "--set", "protocols=[sim]", "--set", "robots=[4]", "--set", "runs=1",
+                               "--set", "network.model=ideal"};
+  for (const auto& s : sets) {
+    for (auto* argv : {&launch, &sim}) {
+      argv->push_back("--set");
+      argv->push_back(s);
+    }
+  }
+  const int launched = WaitFor(Spawn(launch, dir_ / "launch.out"), std::chrono::seconds(300));
+  ASSERT_TRUE(WIFEXITED(launched) && WEXITSTATUS(launched) == 0) << "see " << (dir_ / "launch.out");
+  const int simulated = WaitFor(Spawn(sim, dir_ / "sim.out"), std::chrono::seconds(300));
+  ASSERT_TRUE(WIFEXITED(simulated) && WEXITSTATUS(simulated) == 0) << "see " << (dir_ / "sim.out");
+
+  std::vector<ConfigOverride> overrides;
+  for (const auto& s : sets) overrides.push_back(ParseOverride(s));
+  const ExperimentConfig config = LoadConfig(ConfigPath(), overrides);
+  const SharedInputs inputs = LoadSharedInputs(config, ConfigPath());
+  const Dataset& data = inputs.deployment;
+  ASSERT_EQ(inputs.bow.frames.size(), data.size());
+  std::map<int, Row> sim_rows, lcm_rows;
+  for (const Row& r : ReadCsv(dir_ / "sim" / "queries.csv")) {
+    if (r.at("strategy") == "bow_decentralized") sim_rows[std::stoi(r.at("frame"))] = r;
+  }
+  for (const Row& r : ReadCsv(dir_ / "lcm" / "queries.csv")) lcm_rows[std::stoi(r.at("frame"))] = r;
+  ASSERT_EQ(lcm_rows.size(), data.size());
+  ASSERT_EQ(sim_rows.size(), data.size());
+
+  std::vector<Logged> times(data.size());
+  for (const auto& [frame, r] : lcm_rows) {
+    EXPECT_EQ(r.at("strategy"), "bow_decentralized");
+    EXPECT_FALSE(r.at("latency_ns").empty()) << "frame " << frame << ": a reply is missing";
+    Logged& t = times[static_cast<std::size_t>(frame)];
+    t.sent = std::stoll(r.at("sent_ns"));
+    if (!r.at("latency_ns").empty()) t.done = t.sent + std::llround(std::stod(r.at("latency_ns")) * kSpeedup);
+  }
+  constexpr std::int64_t kMargin = 1'000'000;  // as LoggedReferences: the agents' clock offsets
+  const std::vector<Reference> logged = BowReferences(inputs.bow, kRobots, 20, [&](int f, int g) {
+    const Logged& q = times[static_cast<std::size_t>(f)];
+    const Logged& c = times[static_cast<std::size_t>(g)];
+    if (c.done < std::numeric_limits<std::int64_t>::max() - kMargin && c.done + kMargin < q.sent) return 1;
+    if (q.done < std::numeric_limits<std::int64_t>::max() - kMargin && c.sent > q.done + kMargin) return -1;
+    return 0;
+  });
+  const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), kRobots);
+  std::vector<int> step(data.size());
+  for (const FrameRange& r : split.ranges)
+    for (int k = 0; k < r.size(); ++k) step[static_cast<std::size_t>(r.begin.value + k)] = k;
+  const std::vector<Reference> timed = BowReferences(inputs.bow, kRobots, 20, [&](int f, int g) {
+    const int dk = step[static_cast<std::size_t>(f)] - step[static_cast<std::size_t>(g)];
+    return dk > 1 ? 1 : dk < -1 ? -1 : 0;
+  });
+  int checked = 0, compared = 0, late = 0;
+  const auto name = [](int g) { return g < 0 ? std::string() : std::to_string(g); };
+  for (int f = 0; f < static_cast<int>(data.size()); ++f) {
+    const Row& l = lcm_rows.at(f);
+    const Row& s = sim_rows.at(f);
+    const Reference& lr = logged[static_cast<std::size_t>(f)];
+    const Reference& sr = timed[static_cast<std::size_t>(f)];
+    if (lr.unambiguous) {
+      ++checked;
+      EXPECT_EQ(l.at("match_frame"), name(lr.frame)) << "frame " << f << ": the real team's answer";
+    }
+    if (sr.unambiguous) {
+      EXPECT_EQ(s.at("match_frame"), name(sr.frame)) << "frame " << f << ": the simulation's answer";
+    }
+    if (sr.unambiguous && l.at("match_frame") != s.at("match_frame")) ++late;
+    if (lr.unambiguous && sr.unambiguous && lr.frame == sr.frame) {
+      ++compared;
+      EXPECT_TRUE(l.at("match_robot") == s.at("match_robot") && l.at("match_frame") == s.at("match_frame") &&
+                  l.at("distance") == s.at("distance"))
+          << "frame " << f << ": lcm " << l.at("match_frame") << " " << l.at("distance") << ", sim "
+          << s.at("match_frame") << " " << s.at("distance");
+    }
+  }
+  std::cout << "bow_decentralized: " << checked << " of " << data.size()
+            << " queries with one possible answer in the real run's own order are right; " << compared
+            << " of them are also unambiguous in the simulation and equal it; " << late
+            << " differ from the simulation where only its virtual-time order is certain (late processes)\n";
+  EXPECT_GT(checked, 150);
+  EXPECT_GT(compared, 100);
+  const std::vector<Row> runs = ReadCsv(dir_ / "lcm" / "runs.csv");
+  ASSERT_EQ(runs.size(), 1u);
+  EXPECT_EQ(runs[0].at("protocol"), "lcm");
+  EXPECT_EQ(runs[0].at("dropped_messages"), "0");
 }
 
 // Starts a broadcast team of 4 (every query is searched by every robot, so

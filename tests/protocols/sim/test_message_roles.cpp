@@ -30,6 +30,11 @@ TEST(RoleOfChannel, NamesEveryChannelOfTheProtocols) {
   EXPECT_EQ(RoleOfChannel(channels::Store(RobotId(0))), MessageRole::kQuery);
   EXPECT_EQ(RoleOfChannel(channels::kQueryAll), MessageRole::kQuery);
   EXPECT_EQ(RoleOfChannel(channels::Match(RobotId(1))), MessageRole::kReply);
+  EXPECT_EQ(RoleOfChannel("DVPR_BOWQ_2"), MessageRole::kQuery);  // bag-of-words partial query
+  EXPECT_EQ(RoleOfChannel(channels::BowQuery(RobotId(7))), MessageRole::kQuery);
+  EXPECT_EQ(RoleOfChannel(channels::BowProbe(RobotId(0))), MessageRole::kQuery);
+  EXPECT_EQ(RoleOfChannel(channels::BowMatch(RobotId(3))), MessageRole::kReply);
+  EXPECT_EQ(RoleOfChannel("DVPR_BOWM_11"), MessageRole::kReply);
   EXPECT_EQ(RoleOfChannel(channels::VerifyRequest(RobotId(1))), MessageRole::kVerifyRequest);
   EXPECT_EQ(RoleOfChannel(channels::VerifyResult(RobotId(19))), MessageRole::kVerifyResult);
   EXPECT_EQ(RoleOfChannel(channels::Sample(RobotId(0))), MessageRole::kRecluster);

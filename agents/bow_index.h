@@ -1,0 +1,57 @@
+#pragma once
+// What one robot of a bag-of-words team keeps and searches (docs/bow.md, step 3 of the
+// distributed inverted index): the parts of frames' BoW vectors it was sent, as an inverted
+// index (word -> the stored frames containing it, with their weights).
+//
+// A search scores a part of a query against every stored frame sharing one of its words: the sum
+// over the shared words of min(query, stored) weight, which for L1-normalised vectors is the
+// share of DBoW2's L1 score these words contribute (agents/bow_vector.h, SharedMinimum). The
+// best is the highest score, ties to the lower frame id, never a frame within `window` of the
+// query: the same rule and the same summation order (the query's words ascending) as the static
+// protocol's (experiments/protocols/paper/static_bow.h), so both compute identical scores.
+#include <cstdint>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+#include "agents/bow_vector.h"
+#include "agents/ids.h"
+
+namespace dvpr {
+
+struct BowIndexMatch {
+  RobotId robot;  // the robot that observed the frame
+  FrameId frame;
+  double score = 0.0;
+};
+
+struct BowSearchResult {
+  std::optional<BowIndexMatch> best;
+  std::int64_t comparisons = 0;  // postings visited outside the window: what the search cost
+};
+
+class BowIndex {
+ public:
+  // Keeps `part` of `frame`, observed by `robot`. A frame already stored is kept once (a
+  // duplicated message on a real network adds nothing).
+  void Add(RobotId robot, FrameId frame, const BowVector& part);
+  BowSearchResult Search(const BowVector& part, FrameId query, int window) const;
+
+  std::int64_t parts() const { return static_cast<std::int64_t>(observer_.size()); }
+  std::int64_t postings() const { return postings_count_; }
+
+ private:
+  struct Posting {
+    std::int32_t frame;
+    float weight;
+  };
+  std::unordered_map<std::int32_t, std::vector<Posting>> postings_;  // by word
+  std::unordered_map<std::int32_t, RobotId> observer_;               // by stored frame
+  std::int64_t postings_count_ = 0;
+  // A search's running sums, by frame id (sized to the largest stored frame), and the frames it
+  // touched: reset after each search, so a search costs the postings it visits.
+  mutable std::vector<double> sums_;
+  mutable std::vector<std::int32_t> touched_;
+};
+
+}  // namespace dvpr
