@@ -39,6 +39,8 @@ class CentroidTable {
 
  private:
   CentroidMatrix centroids_;
+  Eigen::VectorXf centroid_norms_;  // squared norms, for NearestCentroidOf's float screen
+  float max_centroid_norm_ = 0.0f;
   std::vector<RobotId> owners_;
   std::vector<std::vector<int>> by_robot_;
   int num_robots_;

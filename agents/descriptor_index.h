@@ -3,9 +3,20 @@
 // time as queries arrive, exact L2 search that skips the suppression window.
 //
 // Layout: one contiguous row-major float buffer (FAISS IndexFlatL2 style),
-// grown geometrically, with squared norms cached so a search is one
+// grown geometrically, with squared norms cached. The model's search is one
 // matrix-vector product: ||x - q||^2 = ||x||^2 - 2 x.q + ||q||^2, the same
-// expansion the static protocol's batched distances use.
+// expansion the static protocol's batched distances use (SearchFullScan).
+// Search gives the same entry and the same float distance, bit for bit, but
+// reads most rows only in part: the squared difference over a row's leading
+// dimensions is a lower bound of its distance (the descriptors' variance sits
+// in the leading dimensions, as after PCA), so a row whose bound exceeds the
+// best distance so far by more than float rounding can explain is dropped
+// after reading 32 or 64 of its values; the few rows that pass every bound get
+// the full product's own value (agents/gemv_row.h). The leading values are
+// kept a second time in a layout for the bounds (tiles of 8 rows), so a search
+// streams through them instead of touching one cache line in eight of the
+// row-major store. docs/performance.md.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -44,8 +55,11 @@ class IncrementalIndex {
 
   // Best stored entry whose frame is more than `window` frames from
   // query_frame; ties go to the entry added first. Every stored entry counts
-  // as a comparison.
+  // as a comparison (the model's cost, however few rows the search reads).
   IndexSearchResult Search(const float* query, FrameId query_frame, int window) const;
+  // The same answer from the full matrix-vector product over every row: the
+  // definition Search is tested against, and the benchmarks' baseline.
+  IndexSearchResult SearchFullScan(const float* query, FrameId query_frame, int window) const;
 
   const std::vector<IndexEntry>& entries() const { return entries_; }
   // The stored descriptor of entry i (dim() floats), valid until the next Add or RemoveIf.
@@ -57,11 +71,35 @@ class IncrementalIndex {
   void RemoveIf(const std::function<bool(std::size_t)>& remove);
 
  private:
+  // Row i's distance to the query as SearchFullScan computes it, bit for bit.
+  float ModelDistance(std::size_t i, const float* query, float q_norm) const;
+  IndexMatch Match(std::size_t i, float distance) const;
+
+  // Where the partial sums are tested: after 32 and 64 values (those below dim) and at dim.
+  static constexpr int kMaxStages = 3;
+  static constexpr std::size_t kTileRows = 8;
+  std::array<int, kMaxStages> stage_end_{};
+  int stages_ = 0;
+  void AppendLead(std::size_t i, const float* row);  // row i's copy in tiles_ and lead_
+  // Stages 1.. of row i, given its partial sum of stage 0.
+  bool RestWithinLimits(std::size_t i, float partial, const float* query,
+                        const std::array<float, kMaxStages>& limits) const;
+
   int dim_;
   std::vector<float> data_;   // size() x dim, row-major
+  // The leading values again, laid out for the bounds: stage 0's (the first 32) in tiles of 8
+  // rows, value-major (value j of row i at tile i / 8, j * 8 + i % 8; the last tile padded with
+  // zeros), so 8 rows' partial sums are one vector; lead_[s] for the middle stage (values
+  // 32..63), row-major. The last stage reads data_. 256 bytes a row at dim 128.
+  std::vector<float> tiles_;
+  std::array<std::vector<float>, kMaxStages - 1> lead_;
   std::vector<float> norms_;  // squared norms of the rows
+  float max_norm_ = 0.0f;     // max of norms_: scales the rounding margin of the bounds
   std::vector<IndexEntry> entries_;
   mutable std::vector<float> scratch_;
+  // The previous search's winner: consecutive queries to one robot are usually neighbouring
+  // frames, so its distance is a tight first bound. Only a hint: any value gives the same result.
+  mutable std::size_t hint_ = 0;
 };
 
 }  // namespace dvpr

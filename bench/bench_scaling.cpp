@@ -2,7 +2,7 @@
 // on a synthetic trajectory (KITTI 00 tiled, bench/sim_inputs.h), point-to-point links. Each
 // configuration should run in a process of its own, so that peak_rss_MiB is its own:
 //   bench/run_scaling.sh   (all of them, 3 runs each, then docs/figures/performance_scaling.png)
-//   build/release/bench/bench_scaling --benchmark_filter='BM_Scaling/1000000/1000$'
+//   build/release/bench/bench_scaling --benchmark_filter='BM_Scaling/1000000/1000/'
 // Time is the simulation alone (wall and CPU); the peak memory includes the inputs.
 #include <benchmark/benchmark.h>
 

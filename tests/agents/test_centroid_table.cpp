@@ -1,4 +1,6 @@
 // The centroid-to-robot table and the batched exact L2 it routes with.
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
@@ -88,6 +90,36 @@ TEST(NearestRows, EqualsBruteForceInDouble) {
       if (dd < best_d) best_d = dd, best = j;
     }
     ASSERT_EQ(got[static_cast<std::size_t>(i)], best) << "query " << i;
+  }
+}
+
+// The nearest centroid by a plain scan in double, ties to the lowest index (written here).
+int NearestByDoubleScan(const DescriptorMatrix& centroids, const float* x) {
+  int best = 0;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (int c = 0; c < centroids.rows(); ++c) {
+    double d = 0.0;
+    for (int j = 0; j < centroids.cols(); ++j) d += std::pow(double{centroids(c, j)} - double{x[j]}, 2);
+    if (d < best_d) best_d = d, best = c;
+  }
+  return best;
+}
+
+TEST(CentroidTable, ScreenedNearestCentroidEqualsTheDoubleScan) {
+  // Random values (widths with and without a tail of 8) and small integers (exact, full of
+  // ties: the lowest index must win), 1000 centroids as in the large benchmarks.
+  for (int dim : {3, 13, 128, 130}) {
+    DescriptorMatrix random = Uniform(1000, dim, 7 + static_cast<std::uint64_t>(dim));
+    DescriptorMatrix ints = (Uniform(1000, dim, 9) * 2.0f).array().round();
+    for (const DescriptorMatrix* centroids : {&random, &ints}) {
+      const CentroidTable t = CentroidTable::RoundRobin(*centroids, 10);
+      const DescriptorMatrix queries = centroids == &ints ? DescriptorMatrix((Uniform(200, dim, 3) * 2.0f).array().round())
+                                                          : Uniform(200, dim, 3);
+      for (int i = 0; i < queries.rows(); ++i) {
+        ASSERT_EQ(t.NearestCentroidOf(queries.row(i).data()), NearestByDoubleScan(*centroids, queries.row(i).data()))
+            << "dim " << dim << " query " << i;
+      }
+    }
   }
 }
 

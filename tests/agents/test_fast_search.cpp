@@ -1,0 +1,233 @@
+// The pruned search (IncrementalIndex::Search) against two references: a brute force in double
+// written here (independent of the index's code), and the model's full matrix-vector product
+// (SearchFullScan, the definition of the simulated distances): same entry, same float bits.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "agents/descriptor_index.h"
+#include "agents/gemv_row.h"
+
+namespace dvpr {
+namespace {
+
+struct Stored {
+  int dim = 0;
+  std::vector<float> rows;  // row-major
+  std::vector<int> frames;
+};
+
+// Index of the nearest row outside the window in double arithmetic, ties to the lowest index.
+std::optional<std::size_t> BruteForce(const Stored& s, const float* q, int query_frame, int window) {
+  std::optional<std::size_t> best;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < s.frames.size(); ++i) {
+    if (std::abs(s.frames[i] - query_frame) <= window) continue;
+    double d = 0.0;
+    for (int j = 0; j < s.dim; ++j) {
+      const double diff = static_cast<double>(s.rows[i * s.dim + j]) - static_cast<double>(q[j]);
+      d += diff * diff;
+    }
+    if (d < best_d) best_d = d, best = i;
+  }
+  return best;
+}
+
+// Descriptors with the model's shape: variance of dimension j falls as 1 / (j + 1).
+std::vector<float> Gaussian(std::mt19937& rng, int count, int dim) {
+  std::normal_distribution<float> normal(0.0f, 1.0f);
+  std::vector<float> v(static_cast<std::size_t>(count) * dim);
+  for (int i = 0; i < count; ++i) {
+    for (int j = 0; j < dim; ++j) v[i * dim + j] = normal(rng) / std::sqrt(static_cast<float>(j + 1));
+  }
+  return v;
+}
+
+// Small integers: every float product and sum is exact, so the float search must pick exactly
+// the double brute force's row, and distances tie often.
+std::vector<float> Integers(std::mt19937& rng, int count, int dim, int range) {
+  std::uniform_int_distribution<int> value(-range, range);
+  std::vector<float> v(static_cast<std::size_t>(count) * dim);
+  for (auto& x : v) x = static_cast<float>(value(rng));
+  return v;
+}
+
+Stored Fill(IncrementalIndex& index, const std::vector<float>& rows, int dim) {
+  Stored s{dim, rows, {}};
+  for (std::size_t i = 0; i < rows.size() / dim; ++i) {
+    s.frames.push_back(static_cast<int>(i) * 3);  // frames 3 apart, windows cut out runs of rows
+    index.Add(RobotId(static_cast<std::int32_t>(i % 7)), FrameId(s.frames.back()), &rows[i * dim]);
+  }
+  return s;
+}
+
+// The pruned search equals the full scan bit for bit (entry and distance).
+void ExpectSameAsFullScan(const IncrementalIndex& index, const float* q, int frame, int window) {
+  const IndexSearchResult fast = index.Search(q, FrameId(frame), window);
+  const IndexSearchResult full = index.SearchFullScan(q, FrameId(frame), window);
+  EXPECT_EQ(fast.comparisons, full.comparisons);
+  ASSERT_EQ(fast.best.has_value(), full.best.has_value());
+  if (!full.best) return;
+  EXPECT_EQ(fast.best->frame, full.best->frame);
+  EXPECT_EQ(fast.best->robot, full.best->robot);
+  EXPECT_EQ(std::bit_cast<std::uint32_t>(fast.best->distance), std::bit_cast<std::uint32_t>(full.best->distance));
+}
+
+class FastSearchByWidth : public ::testing::TestWithParam<int> {};
+
+TEST_P(FastSearchByWidth, GemvRowEqualsTheFullProductBitForBit) {
+  const int dim = GetParam();
+  std::mt19937 rng(11);
+  const std::vector<float> q = Gaussian(rng, 1, dim);
+  for (int rows : {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 23, 100, 257}) {
+    const std::vector<float> data = Gaussian(rng, rows, dim);
+    using RowMajor = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    Eigen::VectorXf full(rows);
+    full.noalias() = Eigen::Map<const RowMajor>(data.data(), rows, dim) * Eigen::Map<const Eigen::VectorXf>(q.data(), dim);
+    for (int i = 0; i < rows; ++i) {
+      const float one = GemvRowAsInFullProduct(data.data(), rows, dim, i, q.data());
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(one), std::bit_cast<std::uint32_t>(full[i]))
+          << "rows " << rows << " row " << i;
+    }
+  }
+}
+
+TEST_P(FastSearchByWidth, RandomDataMatchesFullScanAndBruteForce) {
+  const int dim = GetParam();
+  std::mt19937 rng(static_cast<unsigned>(dim));
+  IncrementalIndex index(dim);
+  const Stored s = Fill(index, Gaussian(rng, 601, dim), dim);
+  const std::vector<float> queries = Gaussian(rng, 40, dim);
+  for (int k = 0; k < 40; ++k) {
+    const float* q = &queries[static_cast<std::size_t>(k) * dim];
+    for (int window : {0, 30, 900, 2000}) {
+      const int frame = k * 45;
+      ExpectSameAsFullScan(index, q, frame, window);
+      const auto expected = BruteForce(s, q, frame, window);
+      const auto r = index.Search(q, FrameId(frame), window);
+      ASSERT_EQ(r.best.has_value(), expected.has_value());
+      // Random floats: no two rows are within float rounding of each other here.
+      if (expected) {
+        EXPECT_EQ(r.best->frame, FrameId(s.frames[*expected]));
+      }
+    }
+  }
+}
+
+TEST_P(FastSearchByWidth, IntegerDataFullOfTiesMatchesBruteForceExactly) {
+  const int dim = GetParam();
+  std::mt19937 rng(static_cast<unsigned>(100 + dim));
+  IncrementalIndex index(dim);
+  const Stored s = Fill(index, Integers(rng, 500, dim, 1), dim);
+  const std::vector<float> queries = Integers(rng, 60, dim, 1);
+  for (int k = 0; k < 60; ++k) {
+    const float* q = &queries[static_cast<std::size_t>(k) * dim];
+    for (int window : {0, 10, 300}) {
+      const int frame = k * 25;
+      const auto expected = BruteForce(s, q, frame, window);
+      const auto r = index.Search(q, FrameId(frame), window);
+      ASSERT_TRUE(expected.has_value());
+      ASSERT_TRUE(r.best.has_value());
+      EXPECT_EQ(r.best->frame, FrameId(s.frames[*expected])) << "query " << k << " window " << window;
+      double d = 0.0;  // integers: the float distance is exact
+      for (int j = 0; j < dim; ++j) d += std::pow(s.rows[*expected * dim + j] - q[j], 2);
+      EXPECT_EQ(static_cast<double>(r.best->distance), d);
+      ExpectSameAsFullScan(index, q, frame, window);
+    }
+  }
+}
+
+TEST_P(FastSearchByWidth, NearTiesWithinFloatRoundingResolveAsTheFullScan) {
+  // Copies of one row, each nudged by one unit in the last place in a few values: their model
+  // distances are equal or a few ulps apart, and float rounding of the expansion decides.
+  const int dim = GetParam();
+  std::mt19937 rng(static_cast<unsigned>(7 + dim));
+  const std::vector<float> base = Gaussian(rng, 1, dim);
+  std::vector<float> rows;
+  std::uniform_int_distribution<int> pick(0, dim - 1), coin(0, 1);
+  for (int i = 0; i < 300; ++i) {
+    std::vector<float> r = base;
+    for (int t = 0; t < 3; ++t) {
+      float& x = r[static_cast<std::size_t>(pick(rng))];
+      x = std::nextafter(x, coin(rng) ? 1e9f : -1e9f);
+    }
+    rows.insert(rows.end(), r.begin(), r.end());
+  }
+  IncrementalIndex index(dim);
+  Fill(index, rows, dim);
+  for (int k = 0; k < 30; ++k) {
+    std::vector<float> q = base;
+    q[static_cast<std::size_t>(pick(rng))] += 1e-3f * static_cast<float>(k);
+    for (int window : {0, 20, 400}) ExpectSameAsFullScan(index, q.data(), k * 30, window);
+  }
+}
+
+TEST_P(FastSearchByWidth, RemovalsKeepOrderAndAnswers) {
+  const int dim = GetParam();
+  std::mt19937 rng(static_cast<unsigned>(55 + dim));
+  IncrementalIndex index(dim);
+  Stored s = Fill(index, Integers(rng, 400, dim, 2), dim);
+  const std::vector<float> queries = Integers(rng, 20, dim, 2);
+  for (int k = 0; k < 10; ++k) index.Search(&queries[static_cast<std::size_t>(k) * dim], FrameId(k), 5);  // set hints
+  index.RemoveIf([](std::size_t i) { return i % 3 == 1; });
+  Stored kept{dim, {}, {}};
+  for (std::size_t i = 0; i < s.frames.size(); ++i) {
+    if (i % 3 == 1) continue;
+    kept.frames.push_back(s.frames[i]);
+    kept.rows.insert(kept.rows.end(), s.rows.begin() + static_cast<std::ptrdiff_t>(i * dim),
+                     s.rows.begin() + static_cast<std::ptrdiff_t>((i + 1) * dim));
+  }
+  ASSERT_EQ(index.size(), kept.frames.size());
+  for (int k = 0; k < 20; ++k) {
+    const float* q = &queries[static_cast<std::size_t>(k) * dim];
+    const auto expected = BruteForce(kept, q, k * 50, 12);
+    const auto r = index.Search(q, FrameId(k * 50), 12);
+    ASSERT_TRUE(r.best.has_value());
+    EXPECT_EQ(r.best->frame, FrameId(kept.frames[*expected]));
+    ExpectSameAsFullScan(index, q, k * 50, 12);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Widths, FastSearchByWidth, ::testing::Values(1, 3, 13, 16, 128, 130));
+
+TEST(FastSearch, APreviousWinnerLaterInTheStoreLosesATieToAnEarlierEntry) {
+  // Rows 0 and 2 are the same point. The first query cannot see row 0 (window), so row 2 wins
+  // and becomes the search's first guess; the second query sees both: the tie goes to row 0.
+  IncrementalIndex index(2);
+  const float a[2] = {1.0f, 2.0f}, far[2] = {50.0f, 50.0f};
+  index.Add(RobotId(0), FrameId(0), a);
+  index.Add(RobotId(1), FrameId(100), far);
+  index.Add(RobotId(2), FrameId(200), a);
+  const float q[2] = {1.5f, 2.0f};
+  auto r = index.Search(q, FrameId(10), 20);
+  ASSERT_TRUE(r.best.has_value());
+  EXPECT_EQ(r.best->frame, FrameId(200));
+  r = index.Search(q, FrameId(1000), 20);
+  ASSERT_TRUE(r.best.has_value());
+  EXPECT_EQ(r.best->frame, FrameId(0));
+  EXPECT_EQ(r.best->distance, 0.25f);
+}
+
+TEST(FastSearch, APreviousWinnerInsideTheNextWindowIsNotReturned) {
+  IncrementalIndex index(1);
+  const float x0 = 0.0f, x1 = 10.0f;
+  index.Add(RobotId(0), FrameId(0), &x0);
+  index.Add(RobotId(1), FrameId(500), &x1);
+  const float q = 0.0f;
+  EXPECT_EQ(index.Search(&q, FrameId(1000), 10).best->frame, FrameId(0));
+  const auto r = index.Search(&q, FrameId(5), 10);  // frame 0 now suppressed
+  ASSERT_TRUE(r.best.has_value());
+  EXPECT_EQ(r.best->frame, FrameId(500));
+  EXPECT_EQ(r.best->distance, 100.0f);
+}
+
+}  // namespace
+}  // namespace dvpr
