@@ -164,6 +164,10 @@ IndexSearchResult IncrementalIndex::Search(const float* query, FrameId query_fra
   result.comparisons = static_cast<std::int64_t>(n);
   if (n == 0) return result;
   const float q_norm = Eigen::Map<const Eigen::VectorXf>(query, dim_).squaredNorm();
+  if (n <= kReadEveryRow && GemvRowKernelMatches(static_cast<Eigen::Index>(n), dim_)) {
+    result.best = SearchEveryRow(query, query_frame, window, q_norm);
+    return result;
+  }
   const double margin = GemmErrorBound(max_norm_, q_norm, dim_);
   std::size_t best = n;
   float best_distance = 0.0f;
@@ -194,9 +198,40 @@ IndexSearchResult IncrementalIndex::Search(const float* query, FrameId query_fra
   return result;
 }
 
+// Every row's model distance, 8 rows at a time with the product's own kernel (gemv_row.h): the
+// full scan's answer without an Eigen call or a bound.
+std::optional<IndexMatch> IncrementalIndex::SearchEveryRow(const float* query, FrameId query_frame, int window,
+                                                           float q_norm) const {
+#if DVPR_GEMV_ROW_KERNEL
+  const std::size_t n = entries_.size();
+  scratch_.resize(n + kTileRows);
+  for (std::size_t first = 0; first < n; first += kTileRows) {
+    const float* rows[kTileRows];
+    for (std::size_t r = 0; r < kTileRows; ++r) rows[r] = Descriptor(std::min(first + r, n - 1));
+    GemvEightRows(rows, query, dim_, scratch_.data() + first);
+  }
+  std::size_t best = n;
+  float best_distance = 0.0f;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (InWindow(entries_[i].frame, query_frame, window)) continue;
+    const float d = ExpandedDistance(norms_[i], scratch_[i], q_norm);
+    if (best == n || d < best_distance) best = i, best_distance = d;
+  }
+  if (best == n) return std::nullopt;
+  hint_ = best;
+  return Match(best, best_distance);
+#else
+  (void)query, (void)query_frame, (void)window, (void)q_norm;
+  throw std::logic_error("IncrementalIndex::SearchEveryRow: no row kernel in this build");
+#endif
+}
+
 float IncrementalIndex::ModelDistance(std::size_t i, const float* query, float q_norm) const {
-  const float dot = GemvRowAsInFullProduct(data_.data(), static_cast<Eigen::Index>(entries_.size()), dim_,
-                                           static_cast<Eigen::Index>(i), query);
+  const auto n = static_cast<Eigen::Index>(entries_.size());
+#if DVPR_GEMV_ROW_KERNEL
+  if (GemvRowKernelMatches(n, dim_)) return ExpandedDistance(norms_[i], GemvOneRow(Descriptor(i), query, dim_), q_norm);
+#endif
+  const float dot = GemvRowAsInFullProduct(data_.data(), n, dim_, static_cast<Eigen::Index>(i), query);
   return ExpandedDistance(norms_[i], dot, q_norm);
 }
 

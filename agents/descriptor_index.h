@@ -75,6 +75,13 @@ class IncrementalIndex {
   float ModelDistance(std::size_t i, const float* query, float q_norm) const;
   IndexMatch Match(std::size_t i, float distance) const;
 
+  // Stores of at most this many rows are searched by SearchEveryRow where the build has the
+  // product's row kernel (gemv_row.h): in a store this small the staged bounds prune too little
+  // to pay for their bookkeeping (KITTI 00 broadcast, 100 robots: about 45 rows a robot;
+  // docs/performance.md).
+  static constexpr std::size_t kReadEveryRow = 64;
+  std::optional<IndexMatch> SearchEveryRow(const float* query, FrameId query_frame, int window, float q_norm) const;
+
   // Where the partial sums are tested: after 32 and 64 values (those below dim) and at dim.
   static constexpr int kMaxStages = 3;
   static constexpr std::size_t kTileRows = 8;

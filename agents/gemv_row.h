@@ -12,6 +12,13 @@
 // product for widths with and without a tail.
 #include <Eigen/Core>
 
+#if defined(EIGEN_VECTORIZE_AVX) && defined(EIGEN_VECTORIZE_FMA) && !defined(EIGEN_VECTORIZE_AVX512)
+#include <immintrin.h>
+#define DVPR_GEMV_ROW_KERNEL 1
+#else
+#define DVPR_GEMV_ROW_KERNEL 0
+#endif
+
 namespace dvpr {
 
 // Row `i` of (data as rows x dim, row-major) * query, as the full product computes it.
@@ -51,5 +58,55 @@ inline float GemvRowAsInFullProduct(const float* data, Eigen::Index rows, int di
   out.noalias() = block * q;
   return out[at];
 }
+
+// Eigen's kernel itself, for the case where every row takes one path: with AVX and FMA (and no
+// AVX-512: x86-64-v3) a float row-major product of at least 2 rows and a width that is a multiple
+// of 8 computes each row as one chain of fused multiply-adds over packets of 8 values, in order,
+// then adds the packet's lanes as predux<Packet8f> does, ((l0 + l4) + (l2 + l6)) + ((l1 + l5) +
+// (l3 + l7)); the blocks of 8, 4, 2 and 1 rows differ only in how many chains run side by side.
+// Where that holds, the kernel below gives 8 rows at a time for the cost of reading them once,
+// with no Eigen call; tests check it against the full product bit for bit.
+inline bool GemvRowKernelMatches(Eigen::Index rows, int dim) {
+  return DVPR_GEMV_ROW_KERNEL != 0 && rows >= 2 && dim > 0 && dim % 8 == 0;
+}
+
+#if DVPR_GEMV_ROW_KERNEL
+namespace gemv_detail {
+// Lane r of the result: predux<Packet8f>(c[r]), as Eigen adds the lanes (additions commute exactly).
+inline __m256 PreduxEight(const __m256 (&c)[8]) {
+  __m256 p[4];  // rows r and r + 4: their low and high halves added, l_k + l_(k+4)
+  for (int r = 0; r < 4; ++r) {
+    p[r] = _mm256_add_ps(_mm256_permute2f128_ps(c[r], c[r + 4], 0x20), _mm256_permute2f128_ps(c[r], c[r + 4], 0x31));
+  }
+  // Per 128-bit lane, rows (0, 1) and (2, 3): (a0 + a2, a1 + a3) of each row.
+  const __m256 t01 = _mm256_add_ps(_mm256_shuffle_ps(p[0], p[1], 0x44), _mm256_shuffle_ps(p[0], p[1], 0xEE));
+  const __m256 t23 = _mm256_add_ps(_mm256_shuffle_ps(p[2], p[3], 0x44), _mm256_shuffle_ps(p[2], p[3], 0xEE));
+  // (a0 + a2) + (a1 + a3), rows 0..3 in the low lane, 4..7 in the high one.
+  return _mm256_add_ps(_mm256_shuffle_ps(t01, t23, 0x88), _mm256_shuffle_ps(t01, t23, 0xDD));
+}
+}  // namespace gemv_detail
+
+// rows[r] . query for r = 0..7 (each `dim` floats, dim a multiple of 8) into out[0..7], as the
+// product computes them where GemvRowKernelMatches.
+inline void GemvEightRows(const float* const* rows, const float* query, int dim, float* out) {
+  __m256 c[8];
+  for (auto& x : c) x = _mm256_setzero_ps();
+  for (int j = 0; j < dim; j += 8) {
+    const __m256 b = _mm256_loadu_ps(query + j);
+    for (int r = 0; r < 8; ++r) c[r] = _mm256_fmadd_ps(_mm256_loadu_ps(rows[r] + j), b, c[r]);
+  }
+  // The product adds each row's sum to a zeroed result: + 0.0f turns a -0 into +0 as it does.
+  _mm256_storeu_ps(out, _mm256_add_ps(gemv_detail::PreduxEight(c), _mm256_setzero_ps()));
+}
+
+// row . query alone, as GemvEightRows gives it.
+inline float GemvOneRow(const float* row, const float* query, int dim) {
+  __m256 c = _mm256_setzero_ps();
+  for (int j = 0; j < dim; j += 8) c = _mm256_fmadd_ps(_mm256_loadu_ps(row + j), _mm256_loadu_ps(query + j), c);
+  const __m128 a = _mm_add_ps(_mm256_castps256_ps128(c), _mm256_extractf128_ps(c, 1));
+  const __m128 t = _mm_add_ps(a, _mm_movehl_ps(a, a));
+  return _mm_cvtss_f32(_mm_add_ss(t, _mm_shuffle_ps(t, t, 1))) + 0.0f;
+}
+#endif
 
 }  // namespace dvpr

@@ -3,6 +3,7 @@
 // (SearchFullScan, the definition of the simulated distances): same entry, same float bits.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -197,6 +198,91 @@ TEST_P(FastSearchByWidth, RemovalsKeepOrderAndAnswers) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Widths, FastSearchByWidth, ::testing::Values(1, 3, 13, 16, 128, 130));
+
+// The product's own row kernel (gemv_row.h), where this build has it: every row of products of
+// 2 to 65 rows, 8 rows at a time and one at a time, equals Eigen's product bit for bit.
+TEST(GemvRowKernel, EightRowsAndOneRowEqualTheFullProductBitForBit) {
+  if (!GemvRowKernelMatches(2, 8)) GTEST_SKIP() << "no row kernel in this build (it needs AVX and FMA, no AVX-512)";
+#if DVPR_GEMV_ROW_KERNEL
+  std::mt19937 rng(5);
+  for (int dim : {8, 16, 128, 256}) {
+    const std::vector<float> q = Gaussian(rng, 1, dim);
+    for (int rows : {2, 3, 5, 7, 8, 9, 15, 16, 17, 45, 64, 65}) {
+      const std::vector<float> data = Gaussian(rng, rows, dim);
+      using RowMajor = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+      Eigen::VectorXf full(rows);
+      full.noalias() = Eigen::Map<const RowMajor>(data.data(), rows, dim) * Eigen::Map<const Eigen::VectorXf>(q.data(), dim);
+      for (int first = 0; first < rows; first += 8) {
+        const float* block[8];
+        for (int r = 0; r < 8; ++r) block[r] = &data[static_cast<std::size_t>(std::min(first + r, rows - 1)) * dim];
+        float eight[8];
+        GemvEightRows(block, q.data(), dim, eight);
+        for (int r = 0; r < 8 && first + r < rows; ++r) {
+          const int i = first + r;
+          ASSERT_EQ(std::bit_cast<std::uint32_t>(eight[r]), std::bit_cast<std::uint32_t>(full[i]))
+              << "dim " << dim << " rows " << rows << " row " << i;
+          ASSERT_EQ(std::bit_cast<std::uint32_t>(GemvOneRow(&data[static_cast<std::size_t>(i) * dim], q.data(), dim)),
+                    std::bit_cast<std::uint32_t>(full[i]));
+        }
+      }
+    }
+  }
+#endif
+}
+
+TEST(GemvRowKernel, AddsALanesSumsInThePacketReductionsOrder) {
+  // One packet of 8 products 2^24, 0, -2^24, 0, 1, 0, 1, 0 (query of ones). Eigen's reduction
+  // adds (l0 + l4) + (l2 + l6) first: 2^24 + 1 rounds to 2^24 (ties to even), -2^24 + 1 is
+  // exact, their sum is 1; the other lanes add 0. Left to right the sum would be 2.
+  if (!GemvRowKernelMatches(2, 8)) GTEST_SKIP() << "no row kernel in this build";
+#if DVPR_GEMV_ROW_KERNEL
+  const float big = 16777216.0f;
+  const std::vector<float> rows = {big, 0, -big, 0, 1, 0, 1, 0, big, 0, -big, 0, 1, 0, 1, 0};
+  const std::vector<float> q(8, 1.0f);
+  EXPECT_EQ(GemvOneRow(rows.data(), q.data(), 8), 1.0f);
+  EXPECT_EQ(GemvRowAsInFullProduct(rows.data(), 2, 8, 1, q.data()), 1.0f);
+#endif
+  EXPECT_FALSE(GemvRowKernelMatches(1, 128));  // a 1-row product is Eigen's dot product
+  EXPECT_FALSE(GemvRowKernelMatches(2, 130));  // a width's tail takes other paths
+}
+
+// Stores of up to 64 rows are searched by reading every row (SearchEveryRow) where the build has
+// the row kernel: the same answers as the full scan, bit for bit, at every store size, with
+// ties, near ties and windows; widths without the kernel take the staged search.
+class SmallStoreSearch : public ::testing::TestWithParam<int> {};
+
+TEST_P(SmallStoreSearch, EveryStoreSizeUpTo70MatchesFullScanAndBruteForce) {
+  const int dim = GetParam();
+  std::mt19937 rng(static_cast<unsigned>(300 + dim));
+  const std::vector<float> gaussian = Gaussian(rng, 70, dim), integers = Integers(rng, 70, dim, 1);
+  const std::vector<float> queries = Gaussian(rng, 8, dim), int_queries = Integers(rng, 8, dim, 1);
+  for (const auto* rows : {&gaussian, &integers}) {
+    IncrementalIndex index(dim);
+    Stored s{dim, {}, {}};
+    for (int n = 1; n <= 70; ++n) {
+      s.rows.insert(s.rows.end(), rows->begin() + static_cast<std::ptrdiff_t>((n - 1) * dim),
+                    rows->begin() + static_cast<std::ptrdiff_t>(n * dim));
+      s.frames.push_back((n - 1) * 3);
+      index.Add(RobotId(n % 7), FrameId(s.frames.back()), &(*rows)[static_cast<std::size_t>((n - 1) * dim)]);
+      const auto& qs = rows == &integers ? int_queries : queries;
+      for (int k = 0; k < 8; ++k) {
+        const float* q = &qs[static_cast<std::size_t>(k) * dim];
+        for (int window : {0, 10, 500}) {
+          const int frame = k * 25;
+          ExpectSameAsFullScan(index, q, frame, window);
+          const auto expected = BruteForce(s, q, frame, window);
+          const auto r = index.Search(q, FrameId(frame), window);
+          ASSERT_EQ(r.best.has_value(), expected.has_value()) << "n " << n << " query " << k;
+          if (rows == &integers && expected) {  // exact arithmetic: the same row, ties to the first
+            EXPECT_EQ(r.best->frame, FrameId(s.frames[*expected])) << "n " << n << " query " << k;
+          }
+        }
+      }
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Widths, SmallStoreSearch, ::testing::Values(8, 13, 128));
 
 TEST(FastSearch, APreviousWinnerLaterInTheStoreLosesATieToAnEarlierEntry) {
   // Rows 0 and 2 are the same point. The first query cannot see row 0 (window), so row 2 wins
