@@ -148,6 +148,13 @@ constexpr std::array<UnitEntry, 7> kByteUnits = {{
 
 SimTime DataRate::TxTime(Bytes n) const {
   if (bps_ <= 0) throw std::domain_error("DataRate::TxTime on a non-positive rate");
+  // Every message's frames come here: up to 2^30 bytes the 64-bit division gives the same
+  // quotient as the 128-bit one below (n x 8e9 + bps < 2^64), at a fraction of its cost.
+  if (n.value() >= 0 && n.value() <= (std::int64_t{1} << 30)) {
+    const auto bits_ns = static_cast<std::uint64_t>(n.value()) * 8 * 1000000000;
+    const auto bps = static_cast<std::uint64_t>(bps_);
+    return SimTime::Nanos(static_cast<std::int64_t>((bits_ns + bps - 1) / bps));
+  }
   // |n| < 2^63, so n x 8e9 < 2^96 fits; only the result may exceed int64.
   const Wide bits_ns = static_cast<Wide>(n.value()) * 8 * 1000000000;
   const Wide ns = (bits_ns + bps_ - 1) / bps_;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -142,6 +143,19 @@ TEST(DataRateLimits, TxTimeBeyondTheLargestSimTimeThrows) {
   // bit/s = 8'589'934.592 s.
   EXPECT_THROW(DataRate::BitsPerSecond(1).TxTime(Bytes(std::int64_t{1} << 60)), std::domain_error);
   EXPECT_EQ(DataRate::Kbps(1).TxTime(Bytes(std::int64_t{1} << 30)), SimTime::Nanos(8'589'934'592'000'000));
+}
+
+TEST(DataRateLimits, TxTimeIsTheSameOnEitherSideOfItsFastPath) {
+  // Up to 2^30 bytes the quotient is taken in 64 bits, beyond in 128. At the largest rate,
+  // 2^63 - 1 bit/s, 2^30 bytes = 2^33 bits take 2^33 x 1e9 / (2^63 - 1) = 0.93 ns: 1 ns rounded
+  // up, and so do 2^30 + 1 bytes. At 3 bit/s, 2^30 bytes take 2^33 / 3 s = 2'863'311'530.667 s
+  // and 2^30 + 1 bytes 8 bits = 2.667 s more, both rounded up to the next ns.
+  const DataRate fastest = DataRate::BitsPerSecond(std::numeric_limits<std::int64_t>::max());
+  EXPECT_EQ(fastest.TxTime(Bytes(std::int64_t{1} << 30)), SimTime::Nanos(1));
+  EXPECT_EQ(fastest.TxTime(Bytes((std::int64_t{1} << 30) + 1)), SimTime::Nanos(1));
+  const DataRate three = DataRate::BitsPerSecond(3);
+  EXPECT_EQ(three.TxTime(Bytes(std::int64_t{1} << 30)), SimTime::Nanos(2'863'311'530'666'666'667));
+  EXPECT_EQ(three.TxTime(Bytes((std::int64_t{1} << 30) + 1)), SimTime::Nanos(2'863'311'533'333'333'334));
 }
 
 }  // namespace
