@@ -25,14 +25,22 @@
 
 namespace dvpr {
 
+// Encodes msg over `buf`, resized to the encoding's size (a buffer reused from an earlier
+// message keeps its allocation).
 template <typename Msg>
-std::vector<std::uint8_t> Encode(const Msg& msg) {
-  std::vector<std::uint8_t> buf(static_cast<std::size_t>(msg.getEncodedSize()));
+void EncodeInto(const Msg& msg, std::vector<std::uint8_t>& buf) {
+  buf.resize(static_cast<std::size_t>(msg.getEncodedSize()));
   const int n = msg.encode(buf.data(), 0, static_cast<int>(buf.size()));
   if (n != static_cast<int>(buf.size())) {
     throw std::runtime_error(std::string("LCM encoding of ") + Msg::getTypeName() +
                              " failed (a length field disagrees with its array?)");
   }
+}
+
+template <typename Msg>
+std::vector<std::uint8_t> Encode(const Msg& msg) {
+  std::vector<std::uint8_t> buf;
+  EncodeInto(msg, buf);
   return buf;
 }
 
@@ -101,20 +109,57 @@ inline bool LengthFieldFits<bow_query_t>(std::span<const std::uint8_t> buf) {
 }
 }  // namespace codec_detail
 
-// Decodes a whole buffer into Msg. Empty when the buffer is truncated, too
-// long, of another type (fingerprint mismatch) or inconsistent.
+namespace codec_detail {
+// What decoding into a message decoded before takes. Generated decoders resize an array only
+// when its length is not zero, so an array left from the last message would survive an empty
+// one: the types with arrays on a hot path empty it afterwards when the length is 0 (and keep
+// their capacity, a same-sized array is not even refilled with zeros first); every other type
+// starts afresh.
 template <typename Msg>
-std::optional<Msg> Decode(std::span<const std::uint8_t> buf) {
-  if (buf.size() > static_cast<std::size_t>(INT32_MAX)) return std::nullopt;
-  if (!codec_detail::LengthFieldFits<Msg>(buf)) return std::nullopt;
-  Msg msg;
+struct ReuseForDecode {
+  static void Before(Msg& msg) { msg = Msg(); }
+  static void After(Msg&) {}
+};
+template <>
+struct ReuseForDecode<query_t> {
+  static void Before(query_t&) {}
+  static void After(query_t& msg) {
+    if (msg.dim == 0) msg.descriptor.clear();
+  }
+};
+template <>
+struct ReuseForDecode<verify_request_t> {
+  static void Before(verify_request_t&) {}
+  static void After(verify_request_t& msg) {
+    if (msg.payload_size == 0) msg.payload.clear();
+  }
+};
+}  // namespace codec_detail
+
+// Decodes a whole buffer into `msg`, reusing what it holds (its arrays' capacity): no
+// allocation per message once warm. False when the buffer is truncated, too long, of another
+// type (fingerprint mismatch) or inconsistent; `msg` is then unspecified.
+template <typename Msg>
+bool DecodeInto(std::span<const std::uint8_t> buf, Msg& msg) {
+  if (buf.size() > static_cast<std::size_t>(INT32_MAX)) return false;
+  if (!codec_detail::LengthFieldFits<Msg>(buf)) return false;
+  codec_detail::ReuseForDecode<Msg>::Before(msg);
   int n = -1;
   try {
     n = msg.decode(buf.data(), 0, static_cast<int>(buf.size()));
   } catch (const std::exception&) {
-    return std::nullopt;
+    return false;
   }
-  if (n != static_cast<int>(buf.size())) return std::nullopt;
+  if (n != static_cast<int>(buf.size())) return false;
+  codec_detail::ReuseForDecode<Msg>::After(msg);
+  return true;
+}
+
+// Decodes a whole buffer into a new Msg. Empty when DecodeInto fails.
+template <typename Msg>
+std::optional<Msg> Decode(std::span<const std::uint8_t> buf) {
+  Msg msg;
+  if (!DecodeInto(buf, msg)) return std::nullopt;
   return msg;
 }
 

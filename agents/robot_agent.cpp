@@ -87,12 +87,7 @@ void RobotAgent::TakeFrame(int k) {
 
   PublishQuery(k, plan);
   if (plan.search_here) {
-    Task task;
-    task.querier = id_;
-    task.frame = frame;
-    task.descriptor.assign(descriptor, descriptor + frames_.descriptors->cols());
-    task.store = plan.store_here;
-    Enqueue(std::move(task));
+    Enqueue(SearchTask(id_, frame, descriptor, plan.store_here));
   } else if (plan.store_here) {
     routing_->Store(id_, frame, descriptor);
   }
@@ -113,6 +108,19 @@ void RobotAgent::PublishQuery(int k, const QueryPlan& plan) {
   for (const std::string& channel : plan.channels) transport_.Publish(channel, q);
 }
 
+RobotAgent::Task RobotAgent::SearchTask(RobotId querier, FrameId frame, const float* descriptor, bool store) {
+  Task task;
+  task.querier = querier;
+  task.frame = frame;
+  task.store = store;
+  if (!spare_descriptors_.empty()) {
+    task.descriptor = std::move(spare_descriptors_.back());
+    spare_descriptors_.pop_back();
+  }
+  task.descriptor.assign(descriptor, descriptor + frames_.descriptors->cols());
+  return task;
+}
+
 void RobotAgent::Enqueue(Task task) {
   if (!online_) return;
   queue_.push_back(std::move(task));
@@ -125,69 +133,95 @@ void RobotAgent::Enqueue(Task task) {
 void RobotAgent::StartNextTask() {
   if (busy_ || queue_.empty() || !online_) return;
   busy_ = true;
-  Task task = std::move(queue_.front());
+  in_service_ = std::move(queue_.front());
   queue_.pop_front();
-  if (task.kind == Task::Kind::kSearch) {
-    ServeSearch(std::move(task));
+  if (in_service_.kind == Task::Kind::kSearch) {
+    ServeSearch();
   } else {
-    ServeVerify(std::move(task));
+    ServeVerify();
   }
 }
 
 // The search runs on what is stored when service starts; its result is
 // delivered when the service time has elapsed.
-void RobotAgent::ServeSearch(Task task) {
-  IndexSearchResult result = index_.Search(task.descriptor.data(), task.frame, params_.suppression_frames);
+void RobotAgent::ServeSearch() {
+  const Task& task = in_service_;
+  const IndexSearchResult result = index_.Search(task.descriptor.data(), task.frame, params_.suppression_frames);
   const SimTime duration = params_.service.fixed + params_.service.per_comparison * result.comparisons;
   ++load_.searches;
   if (task.querier != id_) ++load_.remote_queries;
   load_.comparisons += result.comparisons;
   load_.busy += duration;
-
-  transport_.ScheduleAfter(duration, [this, task = std::move(task), best = result.best] {
-    if (!online_) return;
-    if (task.store) routing_->Store(task.querier, task.frame, task.descriptor.data());
-    if (task.querier == id_) {
-      RecordReply(task.frame, best);
-    } else {
-      match_t m;
-      m.utime = transport_.Utime();
-      m.query_robot = static_cast<std::int16_t>(task.querier.value);
-      m.query_frame = task.frame.value;
-      m.responder = static_cast<std::int16_t>(id_.value);
-      m.has_match = best.has_value();
-      m.match_robot = best ? static_cast<std::int16_t>(best->robot.value) : std::int16_t{-1};
-      m.match_frame = best ? best->frame.value : -1;
-      m.distance = best ? best->distance : 0.0f;
-      transport_.Publish(channels::Match(task.querier), m);
-    }
-    busy_ = false;
-    StartNextTask();
-  });
+  service_best_ = result.best;
+  transport_.ScheduleAfter(duration, [this] { FinishSearch(); });
 }
 
-void RobotAgent::ServeVerify(Task task) {
+void RobotAgent::FinishSearch() {
+  if (!online_) return;
+  const Task& task = in_service_;
+  const std::optional<IndexMatch>& best = service_best_;
+  if (task.store) routing_->Store(task.querier, task.frame, task.descriptor.data());
+  if (task.querier == id_) {
+    RecordReply(task.frame, best);
+  } else {
+    match_t m;
+    m.utime = transport_.Utime();
+    m.query_robot = static_cast<std::int16_t>(task.querier.value);
+    m.query_frame = task.frame.value;
+    m.responder = static_cast<std::int16_t>(id_.value);
+    m.has_match = best.has_value();
+    m.match_robot = best ? static_cast<std::int16_t>(best->robot.value) : std::int16_t{-1};
+    m.match_frame = best ? best->frame.value : -1;
+    m.distance = best ? best->distance : 0.0f;
+    transport_.Publish(MatchChannel(task.querier), m);
+  }
+  EndService();
+}
+
+void RobotAgent::ServeVerify() {
   ++load_.verifications;
   load_.busy += params_.service.fixed;
-  transport_.ScheduleAfter(params_.service.fixed, [this, task = std::move(task)] {
-    if (!online_) return;
-    const VerifyVerdict verdict = verifier_(task.frame, task.match_frame);
-    if (task.querier == id_) {
-      outcomes_[static_cast<std::size_t>(LocalIndexOf(task.frame))].verify_accepted = verdict.accepted;
-    } else {
-      verify_result_t v;
-      v.utime = transport_.Utime();
-      v.query_robot = static_cast<std::int16_t>(task.querier.value);
-      v.query_frame = task.frame.value;
-      v.match_robot = static_cast<std::int16_t>(id_.value);
-      v.match_frame = task.match_frame.value;
-      v.accepted = verdict.accepted;
-      v.inliers = verdict.inliers;
-      transport_.Publish(channels::VerifyResult(task.querier), v);
-    }
-    busy_ = false;
-    StartNextTask();
-  });
+  transport_.ScheduleAfter(params_.service.fixed, [this] { FinishVerify(); });
+}
+
+void RobotAgent::FinishVerify() {
+  if (!online_) return;
+  const Task& task = in_service_;
+  const VerifyVerdict verdict = verifier_(task.frame, task.match_frame);
+  if (task.querier == id_) {
+    outcomes_[static_cast<std::size_t>(LocalIndexOf(task.frame))].verify_accepted = verdict.accepted;
+  } else {
+    verify_result_t v;
+    v.utime = transport_.Utime();
+    v.query_robot = static_cast<std::int16_t>(task.querier.value);
+    v.query_frame = task.frame.value;
+    v.match_robot = static_cast<std::int16_t>(id_.value);
+    v.match_frame = task.match_frame.value;
+    v.accepted = verdict.accepted;
+    v.inliers = verdict.inliers;
+    transport_.Publish(channels::VerifyResult(task.querier), v);
+  }
+  EndService();
+}
+
+// The task's buffer goes back to the spares before the next task starts (which may take it).
+void RobotAgent::EndService() {
+  if (in_service_.descriptor.capacity() > 0) {
+    spare_descriptors_.push_back(std::move(in_service_.descriptor));
+    in_service_.descriptor = {};
+  }
+  busy_ = false;
+  StartNextTask();
+}
+
+// Made once per querier instead of once per reply. Ids come from int16 fields of the wire, so
+// the table stays below 32768 entries; a negative one (garbage) is not kept.
+const std::string& RobotAgent::MatchChannel(RobotId querier) {
+  if (querier.value < 0) return other_channel_ = channels::Match(querier);
+  const auto i = static_cast<std::size_t>(querier.value);
+  if (i >= match_channels_.size()) match_channels_.resize(i + 1);
+  if (match_channels_[i].empty()) match_channels_[i] = channels::Match(querier);
+  return match_channels_[i];
 }
 
 // The channel the query came on says what to do with it: a robot asked to
@@ -199,12 +233,7 @@ void RobotAgent::OnQuery(const query_t& q, QueryRole role) {
     routing_->Store(RobotId(q.robot), FrameId(q.frame), q.descriptor.data());
     return;
   }
-  Task task;
-  task.querier = RobotId(q.robot);
-  task.frame = FrameId(q.frame);
-  task.descriptor = q.descriptor;
-  task.store = role == QueryRole::kSearchAndStore;
-  Enqueue(std::move(task));
+  Enqueue(SearchTask(RobotId(q.robot), FrameId(q.frame), q.descriptor.data(), role == QueryRole::kSearchAndStore));
 }
 
 void RobotAgent::OnMatch(const match_t& m) {
@@ -242,16 +271,17 @@ void RobotAgent::MaybeVerify(int k) {
     Enqueue(std::move(task));
     return;
   }
-  verify_request_t r;
+  verify_request_t& r = verify_request_;  // reused: its payload buffer is refilled, not reallocated
   r.utime = transport_.Utime();
   r.query_robot = static_cast<std::int16_t>(id_.value);
   r.query_frame = o.frame.value;
   r.match_robot = static_cast<std::int16_t>(o.best->robot.value);
   r.match_frame = o.best->frame.value;
   r.payload_size = static_cast<std::int32_t>(params_.verification.request_bytes.value());
+  r.payload.resize(static_cast<std::size_t>(r.payload_size));
   const auto dim = static_cast<std::size_t>(frames_.descriptors->cols());
-  r.payload = VerificationPayload(o.frame, std::span<const float>(frames_.descriptors->row(o.frame.value).data(), dim),
-                                  static_cast<std::size_t>(r.payload_size));
+  FillVerificationPayload(o.frame, std::span<const float>(frames_.descriptors->row(o.frame.value).data(), dim),
+                          r.payload);
   transport_.Publish(channels::VerifyRequest(o.best->robot), r);
 }
 

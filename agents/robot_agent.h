@@ -65,7 +65,7 @@ class RobotAgent final : public TeamAgent {
     enum class Kind { kSearch, kVerify } kind = Kind::kSearch;
     RobotId querier;
     FrameId frame;
-    std::vector<float> descriptor;  // kSearch
+    std::vector<float> descriptor;  // kSearch; its buffer goes back to spare_descriptors_ when done
     bool store = false;             // kSearch: keep the descriptor after searching
     FrameId match_frame;            // kVerify
     RobotId match_robot;
@@ -73,10 +73,18 @@ class RobotAgent final : public TeamAgent {
 
   void TakeFrame(int k);
   void PublishQuery(int k, const QueryPlan& plan);
+  // A search task for `descriptor`, in a buffer of an earlier task's (no allocation once warm).
+  Task SearchTask(RobotId querier, FrameId frame, const float* descriptor, bool store);
   void Enqueue(Task task);
   void StartNextTask();
-  void ServeSearch(Task task);
-  void ServeVerify(Task task);
+  // Service of in_service_: starts now, ends (Finish...) when its service time has elapsed. The
+  // timer holds only the agent, so scheduling it does not allocate.
+  void ServeSearch();
+  void FinishSearch();
+  void ServeVerify();
+  void FinishVerify();
+  void EndService();
+  const std::string& MatchChannel(RobotId querier);
   void OnQuery(const query_t& q, QueryRole role);
   void OnMatch(const match_t& m);
   void OnVerifyRequest(const verify_request_t& r);
@@ -96,6 +104,12 @@ class RobotAgent final : public TeamAgent {
   RobotLoad load_;
   std::deque<Task> queue_;
   bool busy_ = false;
+  Task in_service_;                         // when busy_
+  std::optional<IndexMatch> service_best_;  // its search's result, sent when the service ends
+  std::vector<std::vector<float>> spare_descriptors_;
+  std::vector<std::string> match_channels_;  // by querier, made on first use
+  std::string other_channel_;
+  verify_request_t verify_request_;
   bool online_ = true;
   std::vector<Subscription> subscriptions_;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include "agents/channels.h"
 #include "agents/stateless_routing.h"
@@ -22,8 +23,19 @@ QueryPlan PlanOf(const RoutingDecision& decision, RobotId self, bool broadcast) 
   plan.store_here = Contains(decision.store_at, self);
   plan.searches = static_cast<int>(decision.search_at.size());
   std::vector<RobotId> remote;
+  std::int32_t max_id = self.value;
+  for (const auto* robots : {&decision.search_at, &decision.store_at}) {
+    for (RobotId r : *robots) {
+      if (r.value < 0) throw std::logic_error("a routing decision named robot " + std::to_string(r.value));
+      max_id = std::max(max_id, r.value);
+    }
+  }
+  // By robot id: a robot named twice gets the query once (a bit per robot, not a search of
+  // `remote`, which made a broadcast frame cost robots^2 / 2 comparisons).
+  std::vector<bool> sent(static_cast<std::size_t>(max_id) + 1);
   const auto send = [&](RobotId r, QueryRole role) {
-    if (r == self || Contains(remote, r)) return;
+    if (r == self || sent[static_cast<std::size_t>(r.value)]) return;
+    sent[static_cast<std::size_t>(r.value)] = true;
     remote.push_back(r);
     if (!broadcast) {
       plan.channels.push_back(channels::QueryTo(r, role));

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "agents/lcm_codec.h"
+#include "net_models/payload_buffers.h"
 #include "sim/sim_time.h"
 
 namespace dvpr {
@@ -47,24 +48,26 @@ class Transport {
   // Encodes msg and publishes it; returns the payload size in bytes.
   template <typename Msg>
   std::size_t Publish(const std::string& channel, const Msg& msg) {
-    std::vector<std::uint8_t> bytes = Encode(msg);
+    std::vector<std::uint8_t> bytes;
+    if (buffers_ != nullptr) bytes = buffers_->Take(static_cast<std::size_t>(msg.getEncodedSize()));
+    EncodeInto(msg, bytes);
     const std::size_t n = bytes.size();
     DoPublish(channel, Msg::getTypeName(), std::move(bytes));
     return n;
   }
 
+  // From now on messages are encoded into buffers taken from `buffers` (the simulated network's,
+  // Network::payload_buffers(), which gets them back when delivered) instead of new ones. It
+  // must outlive the transport; null: a new buffer per message.
+  void UseBuffers(PayloadBuffers* buffers) { buffers_ = buffers; }
+
   // Calls handler with each message of type Msg received on channel. A buffer
   // that does not decode as Msg is counted in MalformedCount() and dropped.
+  // Each subscription decodes into one message of its own, reused from delivery to delivery
+  // (no allocation per message); the handler's reference is valid during the call only.
   template <typename Msg>
   [[nodiscard]] Subscription Subscribe(const std::string& channel, std::function<void(const Msg&)> handler) {
-    return Subscription(this, DoSubscribe(channel, [this, h = std::move(handler)](
-                                                       const std::string&, std::span<const std::uint8_t> b) {
-      if (auto msg = Decode<Msg>(b)) {
-        h(*msg);
-      } else {
-        ++malformed_;
-      }
-    }));
+    return Subscription(this, DoSubscribe(channel, ReusingDecoder<Msg>{this, std::move(handler)}));
   }
 
   // The agent's clock: virtual time in simulation, time since start when real.
@@ -85,7 +88,44 @@ class Transport {
 
  private:
   friend class Subscription;
+
+  // A subscription's raw handler: decodes into its own message. A handler that is called again
+  // while the message is in use (a transport that delivers from inside a handler) decodes into a
+  // message of that call's own.
+  template <typename Msg>
+  struct ReusingDecoder {
+    struct Reused {
+      Msg msg;
+      bool in_use = false;
+    };
+    Transport* transport;
+    std::function<void(const Msg&)> handler;
+    std::shared_ptr<Reused> reused = std::make_shared<Reused>();  // shared: RawHandler copies the decoder
+
+    void operator()(const std::string&, std::span<const std::uint8_t> bytes) const {
+      if (reused->in_use) {
+        Msg own;
+        Deliver(bytes, own);
+        return;
+      }
+      reused->in_use = true;
+      struct Release {
+        bool& in_use;
+        ~Release() { in_use = false; }
+      } release{reused->in_use};
+      Deliver(bytes, reused->msg);
+    }
+    void Deliver(std::span<const std::uint8_t> bytes, Msg& into) const {
+      if (DecodeInto(bytes, into)) {
+        handler(into);
+      } else {
+        ++transport->malformed_;
+      }
+    }
+  };
+
   std::uint64_t malformed_ = 0;
+  PayloadBuffers* buffers_ = nullptr;
 };
 
 inline void Subscription::Reset() {

@@ -1,6 +1,5 @@
 #include "agents/verification_payload.h"
 
-#include <algorithm>
 #include <bit>
 #include <cstring>
 
@@ -12,17 +11,27 @@ namespace dvpr {
 static_assert(std::endian::native == std::endian::little, "the payload's bytes are defined little-endian");
 
 std::vector<std::uint8_t> VerificationPayload(FrameId frame, std::span<const float> descriptor, std::size_t size) {
+  std::vector<std::uint8_t> bytes(size);
+  FillVerificationPayload(frame, descriptor, bytes);
+  return bytes;
+}
+
+void FillVerificationPayload(FrameId frame, std::span<const float> descriptor, std::span<std::uint8_t> out) {
   Fnv1a hash;
   const std::int32_t id = frame.value;
   hash.AddValue(id);
   hash.Add(descriptor.data(), descriptor.size_bytes());
   std::uint64_t state = static_cast<std::uint64_t>(hash.value());
-  std::vector<std::uint8_t> bytes(size);
-  for (std::size_t i = 0; i < size; i += 8) {
+  const std::size_t size = out.size();
+  std::size_t i = 0;
+  for (; i + 8 <= size; i += 8) {  // whole words: a fixed-size copy is one store
     const std::uint64_t word = SplitMix64(state);
-    std::memcpy(bytes.data() + i, &word, std::min<std::size_t>(8, size - i));
+    std::memcpy(out.data() + i, &word, 8);
   }
-  return bytes;
+  if (i < size) {
+    const std::uint64_t word = SplitMix64(state);
+    std::memcpy(out.data() + i, &word, size - i);
+  }
 }
 
 }  // namespace dvpr

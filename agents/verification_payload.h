@@ -18,5 +18,8 @@
 namespace dvpr {
 
 std::vector<std::uint8_t> VerificationPayload(FrameId frame, std::span<const float> descriptor, std::size_t size);
+// The same bytes written over `out` (its size is the payload's): a robot fills the request it
+// reuses, without a new buffer or zeroing one first.
+void FillVerificationPayload(FrameId frame, std::span<const float> descriptor, std::span<std::uint8_t> out);
 
 }  // namespace dvpr

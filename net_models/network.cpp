@@ -245,7 +245,8 @@ std::uint32_t Network::AllocatePayload(std::vector<std::uint8_t>&& bytes) {
 void Network::ReleasePayload(std::uint32_t slot) {
   Payload& p = payloads_[slot];
   if (p.refs > 0 && --p.refs > 0) return;
-  p.bytes = std::vector<std::uint8_t>();  // free now: a slot may stay idle for long
+  buffers_.Give(std::move(p.bytes));  // kept for the next message, or freed: a slot may stay idle for long
+  p.bytes = std::vector<std::uint8_t>();
   free_payloads_.push_back(slot);
 }
 

@@ -28,6 +28,7 @@
 #include "net_models/link_model.h"
 #include "net_models/network_observer.h"
 #include "net_models/node_id.h"
+#include "net_models/payload_buffers.h"
 #include "net_models/units.h"
 #include "net_models/wire_format.h"
 #include "sim/sim_time.h"
@@ -127,6 +128,10 @@ class Network {
   void SendTo(NodeId src, std::span<const NodeId> dsts, ChannelId channel, MessageTypeId type,
               std::vector<std::uint8_t> payload);
 
+  // Where each payload's buffer goes when its last copy is delivered or dropped: a transport
+  // encodes into these (Transport::UseBuffers), so sending allocates nothing once warm.
+  PayloadBuffers& payload_buffers() { return buffers_; }
+
   // --- accounting ---------------------------------------------------------
   const LinkCounters& Counters(NodeId src, NodeId dst) const { return pairs_[PairIndex(src, dst)]; }
   LinkCounters Totals() const;
@@ -197,6 +202,7 @@ class Network {
 
   std::vector<Payload> payloads_;
   std::vector<std::uint32_t> free_payloads_;
+  PayloadBuffers buffers_;
 
   std::vector<LinkCounters> pairs_;
   std::vector<NodeCounters> senders_;

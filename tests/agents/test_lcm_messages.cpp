@@ -188,6 +188,33 @@ TEST(MessageRoundTrip, VerifyResult) {
   EXPECT_EQ(out.query_frame, 2);
 }
 
+// DecodeInto reuses the message it is given: a later message leaves nothing of an earlier one,
+// also where the generated decoder skips an empty array (dim 0, payload_size 0).
+TEST(MessageDecodeInto, ALaterMessageReplacesAllOfAnEarlierOne) {
+  query_t q;
+  ASSERT_TRUE(DecodeInto(Encode(MakeQuery(3)), q));
+  EXPECT_EQ(q.descriptor, (std::vector<float>{-3.0f, -2.75f, -2.5f}));
+  query_t empty = MakeQuery(0);
+  empty.frame = 12;
+  ASSERT_TRUE(DecodeInto(Encode(empty), q));
+  EXPECT_EQ(q.dim, 0);
+  EXPECT_TRUE(q.descriptor.empty());
+  EXPECT_EQ(q.frame, 12);
+  ASSERT_TRUE(DecodeInto(Encode(MakeQuery(2)), q));
+  EXPECT_EQ(q.descriptor, (std::vector<float>{-3.0f, -2.75f}));
+
+  verify_request_t r;
+  ASSERT_TRUE(DecodeInto(Encode(MakeVerifyRequest(4)), r));
+  EXPECT_EQ(r.payload, (std::vector<std::uint8_t>{0, 31, 62, 93}));
+  ASSERT_TRUE(DecodeInto(Encode(MakeVerifyRequest(0)), r));
+  EXPECT_TRUE(r.payload.empty());
+
+  match_t m;
+  ASSERT_TRUE(DecodeInto(Encode(MakeMatch()), m));
+  EXPECT_EQ(m.query_frame, 100000);
+  EXPECT_FALSE(DecodeInto(Encode(MakeVerifyResult()), m));  // another type: rejected
+}
+
 template <typename Msg>
 void ExpectEveryTruncationFails(const Msg& msg) {
   const auto bytes = Encode(msg);

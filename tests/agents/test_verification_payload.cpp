@@ -37,5 +37,17 @@ TEST(VerificationPayload, HasTheRequestedSizeAndALongerOneExtendsAShorter) {
   EXPECT_LT(std::count(longer.begin(), longer.end(), 0), 200);
 }
 
+TEST(VerificationPayload, FillWritesTheSameBytesOverABufferOfAnySize) {
+  const std::array<float, 2> d{1.0f, 2.0f};
+  std::vector<std::uint8_t> out(12, 0xee);  // 12 bytes: a whole word and a part of one
+  FillVerificationPayload(FrameId(3), d, out);
+  EXPECT_EQ(out, (Bytes12{0x5d, 0x09, 0xd1, 0x99, 0xea, 0x69, 0x0a, 0xaa, 0xb7, 0xe0, 0xc0, 0xce}));
+  for (std::size_t size : {0u, 1u, 7u, 8u, 9u, 16u, 25000u}) {
+    std::vector<std::uint8_t> filled(size, 0xee);
+    FillVerificationPayload(FrameId(3), d, filled);
+    EXPECT_EQ(filled, VerificationPayload(FrameId(3), d, size)) << size;
+  }
+}
+
 }  // namespace
 }  // namespace dvpr

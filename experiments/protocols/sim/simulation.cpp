@@ -129,6 +129,7 @@ SimRunLog RunTeam(const Dataset& data, const SimRunParams& params, const AgentMa
     FrameStream frames{&data.descriptors, range.begin, range.size(), data.fps};
     for (int k = 0; k < range.size(); ++k) log.capture_time[static_cast<std::size_t>(range.begin.value + k)] = frames.TimeOf(k);
     transports.push_back(std::make_unique<SimTransport>(network, NodeId(r), params.start_utime));
+    transports.back()->UseBuffers(&network.payload_buffers());
     agents.push_back(make_agent(RobotId(r), *transports.back(), frames, verifier));
   }
   for (auto& agent : agents) agent->Start();

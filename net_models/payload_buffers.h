@@ -1,0 +1,36 @@
+#pragma once
+// Byte buffers for message payloads, recycled. The network gives each payload's buffer back
+// here once its last copy is delivered or dropped, and a transport that publishes into the
+// network encodes its next message into one of them (Transport::UseBuffers), so a run in its
+// steady state allocates no payload memory. Without it every reply costs an allocation, and a
+// verification request's 25 kB a fresh block of heap that is zeroed and faulted in each time.
+//
+// Buffers are kept by size class (capacity in [2^k, 2^(k+1))), at most kPerClass a class and
+// none above kMaxKept bytes, so what the pool holds stays bounded whatever the run sends.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace dvpr {
+
+class PayloadBuffers {
+ public:
+  static constexpr std::size_t kMaxKept = std::size_t{1} << 20;
+  static constexpr std::size_t kPerClass = 64;
+
+  // A kept buffer with capacity for at least `size` bytes (its contents and size unspecified),
+  // taken from the smallest class that has one within four classes; else an empty buffer.
+  std::vector<std::uint8_t> Take(std::size_t size);
+  // Keeps `bytes` for a later Take, or frees it (empty, larger than kMaxKept, class full).
+  void Give(std::vector<std::uint8_t>&& bytes);
+  // Buffers kept now.
+  std::size_t Kept() const;
+
+ private:
+  static constexpr int kClasses = 21;  // capacities 1 .. 2^21 - 1
+  static int ClassOf(std::size_t capacity);  // floor(log2(capacity))
+  std::array<std::vector<std::vector<std::uint8_t>>, kClasses> kept_;
+};
+
+}  // namespace dvpr

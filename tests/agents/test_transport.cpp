@@ -1,0 +1,89 @@
+// Transport's typed subscriptions (agents/transport.h), on a loopback transport written here that
+// calls the handlers from inside Publish: the hardest case for the message each subscription
+// decodes into and reuses.
+#include "agents/transport.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace dvpr {
+namespace {
+
+class LoopbackTransport final : public Transport {
+ public:
+  SimTime Now() const override { return SimTime::Zero(); }
+  std::int64_t UtimeAt(SimTime t) const override { return t.us(); }
+  void ScheduleAfter(SimTime, Callback fn) override { fn(); }
+  void Inject(const std::string& channel, const std::vector<std::uint8_t>& bytes) { Deliver(channel, bytes); }
+
+ private:
+  void DoPublish(const std::string& channel, const char*, std::vector<std::uint8_t> bytes) override {
+    Deliver(channel, bytes);
+  }
+  std::uint64_t DoSubscribe(const std::string& channel, RawHandler handler) override {
+    handlers_.emplace(next_id_, std::pair(channel, std::move(handler)));
+    return next_id_++;
+  }
+  void DoUnsubscribe(std::uint64_t id) override { handlers_.erase(id); }
+  void Deliver(const std::string& channel, const std::vector<std::uint8_t>& bytes) {
+    for (const auto& [id, entry] : handlers_) {
+      if (entry.first == channel) entry.second(channel, bytes);
+    }
+  }
+  std::map<std::uint64_t, std::pair<std::string, RawHandler>> handlers_;
+  std::uint64_t next_id_ = 1;
+};
+
+query_t Query(std::int32_t frame, std::vector<float> descriptor) {
+  query_t q{};
+  q.frame = frame;
+  q.dim = static_cast<std::int16_t>(descriptor.size());
+  q.descriptor = std::move(descriptor);
+  return q;
+}
+
+TEST(TransportSubscribe, EachMessageIsDecodedWholeIntoTheReusedOne) {
+  LoopbackTransport t;
+  std::vector<std::pair<std::int32_t, std::vector<float>>> seen;
+  const Subscription sub = t.Subscribe<query_t>("Q", [&](const query_t& q) { seen.emplace_back(q.frame, q.descriptor); });
+  t.Publish("Q", Query(1, {1.0f, 2.0f, 3.0f}));
+  t.Publish("Q", Query(2, {}));  // the generated decoder leaves an empty array alone
+  t.Publish("Q", Query(3, {4.0f}));
+  using Seen = std::vector<std::pair<std::int32_t, std::vector<float>>>;
+  EXPECT_EQ(seen, (Seen{{1, {1.0f, 2.0f, 3.0f}}, {2, {}}, {3, {4.0f}}}));
+}
+
+TEST(TransportSubscribe, AHandlerThatPublishesToItselfSeesBothMessagesIntact) {
+  LoopbackTransport t;
+  std::vector<std::string> log;
+  Subscription sub;
+  sub = t.Subscribe<query_t>("Q", [&](const query_t& q) {
+    log.push_back("in " + std::to_string(q.frame) + " " + std::to_string(q.descriptor.size()));
+    if (q.frame == 1) t.Publish("Q", Query(2, {7.0f}));  // delivered from inside this call
+    log.push_back("out " + std::to_string(q.frame) + " " + std::to_string(q.descriptor.size()));
+  });
+  t.Publish("Q", Query(1, {1.0f, 2.0f}));
+  EXPECT_EQ(log, (std::vector<std::string>{"in 1 2", "in 2 1", "out 2 1", "out 1 2"}));
+  t.Publish("Q", Query(3, {}));  // after the nested call, the reused message is free again
+  EXPECT_EQ(log.back(), "out 3 0");
+}
+
+TEST(TransportSubscribe, ABufferThatIsNotTheTypeIsCountedAndDropped) {
+  LoopbackTransport t;
+  int calls = 0;
+  const Subscription sub = t.Subscribe<match_t>("M", [&](const match_t&) { ++calls; });
+  t.Inject("M", Encode(Query(1, {1.0f})));
+  t.Inject("M", {1, 2, 3});
+  EXPECT_EQ(calls, 0);
+  EXPECT_EQ(t.MalformedCount(), 2u);
+  match_t m{};
+  t.Publish("M", m);
+  EXPECT_EQ(calls, 1);
+}
+
+}  // namespace
+}  // namespace dvpr

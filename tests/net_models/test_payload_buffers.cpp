@@ -1,0 +1,65 @@
+// Recycled payload buffers (net_models/payload_buffers.h): by size class, bounded, and given
+// back by the network when a payload's last copy is delivered or dropped.
+#include "net_models/payload_buffers.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <vector>
+
+#include "net_models/ideal_link.h"
+#include "net_models/network.h"
+#include "sim/simulator.h"
+
+namespace dvpr {
+namespace {
+
+std::vector<std::uint8_t> Buffer(std::size_t capacity) {
+  std::vector<std::uint8_t> b;
+  b.reserve(capacity);
+  return b;
+}
+
+TEST(PayloadBuffers, TakesAKeptBufferLargeEnoughOrNone) {
+  PayloadBuffers pool;
+  EXPECT_EQ(pool.Take(35).capacity(), 0u);  // nothing kept yet
+  pool.Give(Buffer(40));                     // class [32, 64)
+  pool.Give(Buffer(544));                    // class [512, 1024)
+  EXPECT_EQ(pool.Kept(), 2u);
+  EXPECT_EQ(pool.Take(50).capacity(), 0u);     // 40 is too small; 544 is more than 4 classes up
+  EXPECT_EQ(pool.Take(600).capacity(), 0u);    // [512, 1024) holds only 544 < 600
+  EXPECT_EQ(pool.Take(300).capacity(), 544u);  // two classes up
+  EXPECT_EQ(pool.Take(35).capacity(), 40u);    // its own class, large enough
+  EXPECT_EQ(pool.Kept(), 0u);
+}
+
+TEST(PayloadBuffers, KeepsAtMostItsBoundsAndNoEmptyBuffer) {
+  PayloadBuffers pool;
+  pool.Give(std::vector<std::uint8_t>());
+  pool.Give(Buffer(PayloadBuffers::kMaxKept + 1));
+  EXPECT_EQ(pool.Kept(), 0u);
+  pool.Give(Buffer(PayloadBuffers::kMaxKept));
+  EXPECT_EQ(pool.Kept(), 1u);
+  for (std::size_t i = 0; i < PayloadBuffers::kPerClass + 5; ++i) pool.Give(Buffer(100));
+  EXPECT_EQ(pool.Kept(), 1u + PayloadBuffers::kPerClass);
+  EXPECT_EQ(pool.Take(0).capacity(), 0u);
+  EXPECT_EQ(pool.Take(PayloadBuffers::kMaxKept + 1).capacity(), 0u);
+}
+
+TEST(PayloadBuffers, TheNetworkGivesAPayloadBackAfterItsLastCopy) {
+  Simulator sim;
+  Network net(sim, 3, std::make_unique<IdealLink>());
+  const ChannelId all = net.InternChannel("ALL");
+  const MessageTypeId type = net.InternType("t");
+  for (int n = 0; n < 3; ++n) net.Join(NodeId(n), all);
+  std::vector<std::uint8_t> payload(100, 7);
+  const std::uint8_t* data = payload.data();
+  EXPECT_EQ(net.Send(NodeId(0), all, type, std::move(payload)), 2u);
+  sim.Run();  // both copies delivered: the one buffer is kept
+  EXPECT_EQ(net.payload_buffers().Kept(), 1u);
+  const std::vector<std::uint8_t> again = net.payload_buffers().Take(100);
+  EXPECT_EQ(again.data(), data);
+}
+
+}  // namespace
+}  // namespace dvpr
