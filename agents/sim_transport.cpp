@@ -12,8 +12,8 @@ SimTransport::SimTransport(Network& network, NodeId node, std::int64_t start_uti
 }
 
 SimTransport::~SimTransport() {
-  for (std::size_t c = 0; c < by_channel_.size(); ++c) {
-    if (!by_channel_[c].handlers.empty()) network_.Leave(node_, ChannelId{static_cast<std::uint32_t>(c)});
+  for (const auto& [channel, index] : by_channel_) {
+    if (!channels_[index].handlers.empty()) network_.Leave(node_, channel);
   }
   network_.Attach(node_, nullptr);
 }
@@ -39,11 +39,24 @@ void SimTransport::DoPublish(const std::string& channel, const char* type_name, 
   network_.Send(node_, network_.InternChannel(channel), TypeOf(type_name), std::move(bytes));
 }
 
+SimTransport::ChannelHandlers* SimTransport::Find(ChannelId channel) {
+  const auto at = std::lower_bound(by_channel_.begin(), by_channel_.end(), channel,
+                                   [](const auto& e, ChannelId c) { return e.first < c; });
+  if (at == by_channel_.end() || at->first != channel) return nullptr;
+  return &channels_[at->second];
+}
+
 std::uint64_t SimTransport::DoSubscribe(const std::string& channel, RawHandler handler) {
   const ChannelId ch = network_.InternChannel(channel);
-  const auto index = static_cast<std::size_t>(ch);
-  if (index >= by_channel_.size()) by_channel_.resize(index + 1);
-  ChannelHandlers& entry = by_channel_[index];
+  ChannelHandlers* found = Find(ch);
+  if (found == nullptr) {
+    const auto at = std::lower_bound(by_channel_.begin(), by_channel_.end(), ch,
+                                     [](const auto& e, ChannelId c) { return e.first < c; });
+    by_channel_.insert(at, {ch, static_cast<std::uint32_t>(channels_.size())});
+    found = &channels_.emplace_back();
+    found->channel = ch;
+  }
+  ChannelHandlers& entry = *found;
   if (entry.handlers.empty()) {
     entry.name = channel;
     network_.Join(node_, ch);
@@ -59,16 +72,15 @@ void SimTransport::DoUnsubscribe(std::uint64_t id) {
   if (it == subscriptions_.end()) return;
   const ChannelId ch = it->second;
   subscriptions_.erase(it);
-  auto& handlers = by_channel_[static_cast<std::size_t>(ch)].handlers;
+  auto& handlers = Find(ch)->handlers;
   std::erase_if(handlers, [id](const Handler& h) { return h.id == id; });
   if (handlers.empty()) network_.Leave(node_, ch);
 }
 
 void SimTransport::OnReceive(const ReceivedMessage& message) {
-  const auto index = static_cast<std::size_t>(message.channel);
-  if (index >= by_channel_.size()) return;
-  ChannelHandlers& entry = by_channel_[index];  // deque: stays put if handlers subscribe elsewhere
-  if (entry.handlers.empty()) return;
+  ChannelHandlers* found = Find(message.channel);
+  if (found == nullptr || found->handlers.empty()) return;
+  ChannelHandlers& entry = *found;  // deque: stays put if handlers subscribe elsewhere
   // Handlers may subscribe or unsubscribe while we dispatch. Ids grow in
   // subscription order, so walk by id: each step finds the next handler
   // after the one just called, and those added during dispatch are skipped.

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "agents/ids.h"
@@ -39,6 +40,7 @@ class SimTransport final : public Transport, private NetworkEndpoint {
     std::shared_ptr<RawHandler> fn;  // shared: a handler may unsubscribe itself while running
   };
   struct ChannelHandlers {
+    ChannelId channel{};
     std::string name;
     std::vector<Handler> handlers;
   };
@@ -48,11 +50,16 @@ class SimTransport final : public Transport, private NetworkEndpoint {
   void DoUnsubscribe(std::uint64_t id) override;
   void OnReceive(const ReceivedMessage& message) override;
   MessageTypeId TypeOf(const char* type_name);
+  // The channel's entry; null if this robot never subscribed to it.
+  ChannelHandlers* Find(ChannelId channel);
 
   Network& network_;
   NodeId node_;
   std::int64_t start_utime_;
-  std::deque<ChannelHandlers> by_channel_;  // indexed by ChannelId; deque: references stay valid
+  // The channels this robot subscribed to (a handful), not a slot per channel id of the network:
+  // 1000 robots intern thousands of channels. Deque: entries stay put while handlers subscribe.
+  std::deque<ChannelHandlers> channels_;
+  std::vector<std::pair<ChannelId, std::uint32_t>> by_channel_;  // sorted: channel -> channels_ index
   std::unordered_map<std::uint64_t, ChannelId> subscriptions_;  // id -> channel
   std::vector<std::pair<const char*, MessageTypeId>> types_;  // getTypeName() pointers seen
   std::uint64_t next_id_ = 1;

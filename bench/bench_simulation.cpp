@@ -23,7 +23,7 @@ using bench::Table;
 
 void Report(benchmark::State& state, const SimRunLog& log) {
   std::int64_t messages = 0;
-  for (const auto& l : log.links) messages += static_cast<std::int64_t>(l.messages);
+  for (const auto& l : log.links) messages += static_cast<std::int64_t>(l.counters.messages);
   state.counters["messages"] = static_cast<double>(messages);
   state.counters["events"] = static_cast<double>(log.events);
   state.counters["peak_rss_MiB"] = PeakRssMiB();

@@ -45,14 +45,21 @@ inline Dataset Tiled(Eigen::Index frames) {
   return d;
 }
 
-inline std::shared_ptr<const CentroidTable> Table(int robots, int iterations) {
+// Where the routing centroids are learnt: kDiverse, many other environments (the paper's setting:
+// the deployment, one environment, falls into a few clusters, a few robots store most frames);
+// kDeployment, the deployment's own environment at other places (stores of similar size).
+enum class Training { kDiverse, kDeployment };
+
+inline std::shared_ptr<const CentroidTable> Table(int robots, int iterations, Training training = Training::kDiverse) {
   KMeansParams p;
   p.k = robots;
   p.seed = 3;
   p.max_iterations = iterations;
-  const DescriptorMatrix training =
-      SyntheticTrainingDiverse(SyntheticParams{}, SyntheticTrainingParams{.samples = 20000}, 2);
-  return std::make_shared<CentroidTable>(CentroidTable::RoundRobin(KMeans(training, p), robots));
+  const SyntheticTrainingParams samples{.samples = 20000};
+  const DescriptorMatrix descriptors = training == Training::kDiverse
+                                           ? SyntheticTrainingDiverse(SyntheticParams{}, samples, 2)
+                                           : SyntheticTrainingDeploymentLike(SyntheticParams{}, samples, 1);
+  return std::make_shared<CentroidTable>(CentroidTable::RoundRobin(KMeans(descriptors, p), robots));
 }
 
 inline SimRunParams PointToPoint(int robots) {

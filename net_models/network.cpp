@@ -27,7 +27,7 @@ void ObserverSubscription::Reset() {
 }
 
 Network::Network(Simulator& sim, int nodes, std::unique_ptr<LinkModel> link, WireParams wire)
-    : sim_(sim), nodes_(nodes), link_(std::move(link)), wire_(wire) {
+    : sim_(sim), nodes_(nodes), link_(std::move(link)), wire_(wire), pairs_(std::max(nodes, 1)) {
   if (nodes <= 0) throw std::invalid_argument("robots = " + std::to_string(nodes) + ": need at least one node");
   if (!link_) throw std::invalid_argument("Network: no link model");
   wire_.Validate();
@@ -35,7 +35,6 @@ Network::Network(Simulator& sim, int nodes, std::unique_ptr<LinkModel> link, Wir
   endpoints_.assign(n, nullptr);
   offline_from_.assign(n, SimTime::Max());
   offline_until_.assign(n, SimTime::Max());
-  pairs_.assign(n * n, LinkCounters{});
   senders_.assign(n, NodeCounters{});
 }
 
@@ -165,7 +164,7 @@ void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::v
   for (std::size_t i = 0; i < dsts_.size(); ++i) {
     const NodeId dst = dsts_[i];
     const std::uint64_t copy = copies_++;
-    LinkCounters& c = pairs_[PairIndex(src, dst)];
+    LinkCounters& c = pairs_.At(src, dst);
     ++c.messages;
     c.payload_bytes += payload_bytes;
     c.wire_bytes += p.wire_bytes;
@@ -253,7 +252,7 @@ void Network::ReleasePayload(std::uint32_t slot) {
 void Network::Deliver(std::uint32_t slot, NodeId dst, std::uint64_t copy) {
   const SimTime now = sim_.Now();
   Payload& p = payloads_[slot];
-  LinkCounters& c = pairs_[PairIndex(p.src, dst)];
+  LinkCounters& c = pairs_.At(p.src, dst);
   const bool online = IsOnline(dst, now);
   ++(online ? c.delivered : c.dropped);
   if (!observers_.empty()) {
@@ -279,14 +278,20 @@ void Network::Deliver(std::uint32_t slot, NodeId dst, std::uint64_t copy) {
 
 LinkCounters Network::Totals() const {
   LinkCounters t;
-  for (const LinkCounters& c : pairs_) {
+  pairs_.ForEach([&t](const LinkCounters& c) {
     t.messages += c.messages;
     t.payload_bytes += c.payload_bytes;
     t.wire_bytes += c.wire_bytes;
     t.delivered += c.delivered;
     t.dropped += c.dropped;
-  }
+  });
   return t;
+}
+
+const LinkCounters& Network::Counters(NodeId src, NodeId dst) const {
+  static const LinkCounters kNone;
+  const LinkCounters* c = pairs_.Find(src, dst);
+  return c != nullptr ? *c : kNone;
 }
 
 }  // namespace dvpr

@@ -28,6 +28,7 @@
 #include "net_models/link_model.h"
 #include "net_models/network_observer.h"
 #include "net_models/node_id.h"
+#include "net_models/pair_map.h"
 #include "net_models/payload_buffers.h"
 #include "net_models/units.h"
 #include "net_models/wire_format.h"
@@ -133,7 +134,13 @@ class Network {
   PayloadBuffers& payload_buffers() { return buffers_; }
 
   // --- accounting ---------------------------------------------------------
-  const LinkCounters& Counters(NodeId src, NodeId dst) const { return pairs_[PairIndex(src, dst)]; }
+  // The pair's counters (all zero for a pair that carried nothing).
+  const LinkCounters& Counters(NodeId src, NodeId dst) const;
+  // Calls f(src, dst, counters) for every pair that carried a message, by source, then destination.
+  template <class F>
+  void ForEachPair(F&& f) const {
+    pairs_.ForEachSorted(f);
+  }
   LinkCounters Totals() const;
   const NodeCounters& Sender(NodeId src) const { return senders_[static_cast<std::size_t>(src.value)]; }
 
@@ -168,10 +175,6 @@ class Network {
   };
   using NameMap = std::unordered_map<std::string, std::uint32_t, StringHash, std::equal_to<>>;
 
-  std::size_t PairIndex(NodeId src, NodeId dst) const {
-    return static_cast<std::size_t>(src.value) * static_cast<std::size_t>(nodes_) +
-           static_cast<std::size_t>(dst.value);
-  }
   void CheckNode(NodeId node, const char* what) const;
   void CheckNames(ChannelId channel, MessageTypeId type) const;
   void Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::vector<std::uint8_t>&& payload);
@@ -204,7 +207,7 @@ class Network {
   std::vector<std::uint32_t> free_payloads_;
   PayloadBuffers buffers_;
 
-  std::vector<LinkCounters> pairs_;
+  PairMap<LinkCounters> pairs_;  // only the pairs that carried a message (1000 robots: 10^6 pairs)
   std::vector<NodeCounters> senders_;
   std::uint64_t messages_ = 0;  // Send/SendTo calls so far: the next MessageCopy::message
   std::uint64_t copies_ = 0;    // copies sent so far: the next MessageCopy::copy

@@ -24,22 +24,35 @@ void PointToPointParams::Validate(int nodes) const {
   }
 }
 
-PointToPointLink::PointToPointLink(const PointToPointParams& params, int nodes) : nodes_(nodes) {
+namespace {
+
+int CheckedNodes(int nodes) {
   if (nodes <= 0) InvalidParam("nodes", "a network needs at least one node, got " + std::to_string(nodes));
+  return nodes;
+}
+
+}  // namespace
+
+PointToPointLink::PointToPointLink(const PointToPointParams& params, int nodes)
+    : unused_{params.rate, params.latency, SimTime::Zero(), FifoTransmitter(params.queue_packets)},
+      links_(CheckedNodes(nodes)) {
   params.Validate(nodes);
-  links_.assign(static_cast<std::size_t>(nodes) * static_cast<std::size_t>(nodes),
-                Link{params.rate, params.latency, SimTime::Zero(), FifoTransmitter(params.queue_packets)});
   for (const auto& o : params.overrides) {
-    Link& link = links_[Index(o.src, o.dst)];
+    Link& link = links_.At(o.src, o.dst, unused_);
     if (o.rate) link.rate = *o.rate;
     if (o.latency) link.latency = *o.latency;
   }
 }
 
+const PointToPointLink::Link& PointToPointLink::Peek(NodeId src, NodeId dst) const {
+  const Link* link = links_.Find(src, dst);
+  return link != nullptr ? *link : unused_;
+}
+
 LinkModel::MediumUse PointToPointLink::DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) {
   MediumUse use;
   for (std::size_t i = 0; i < t.dsts.size(); ++i) {
-    Link& link = links_[Index(t.src, t.dsts[i])];
+    Link& link = links_.At(t.src, t.dsts[i], unused_);
     const FifoTransmitter::Result r = link.tx.Send(t.frames, t.now, link.rate, link.busy_until);
     use.transmissions += 1;
     use.bytes += r.bytes_sent;

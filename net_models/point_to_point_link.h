@@ -9,6 +9,7 @@
 
 #include "net_models/fifo_transmitter.h"
 #include "net_models/link_model.h"
+#include "net_models/pair_map.h"
 
 namespace dvpr {
 
@@ -35,8 +36,8 @@ class PointToPointLink final : public LinkModel {
  public:
   PointToPointLink(const PointToPointParams& params, int nodes);
 
-  DataRate RateOf(NodeId src, NodeId dst) const { return links_[Index(src, dst)].rate; }
-  SimTime LatencyOf(NodeId src, NodeId dst) const { return links_[Index(src, dst)].latency; }
+  DataRate RateOf(NodeId src, NodeId dst) const { return Peek(src, dst).rate; }
+  SimTime LatencyOf(NodeId src, NodeId dst) const { return Peek(src, dst).latency; }
 
  private:
   struct Link {
@@ -46,15 +47,13 @@ class PointToPointLink final : public LinkModel {
     FifoTransmitter tx;
   };
 
-  std::size_t Index(NodeId src, NodeId dst) const {
-    return static_cast<std::size_t>(src.value) * static_cast<std::size_t>(nodes_) +
-           static_cast<std::size_t>(dst.value);
-  }
+  // A pair's link, as configured if it never carried anything.
+  const Link& Peek(NodeId src, NodeId dst) const;
   MediumUse DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) override;
   std::string_view DoName() const override { return "point_to_point"; }
 
-  int nodes_;
-  std::vector<Link> links_;  // nodes x nodes, row = source
+  Link unused_;           // an idle link at the default rate and latency
+  PairMap<Link> links_;   // the links used so far and the overridden ones
 };
 
 }  // namespace dvpr

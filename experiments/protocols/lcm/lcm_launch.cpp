@@ -156,7 +156,6 @@ SimRunLog ToRunLog(const Dataset& data, int robots, const std::vector<std::optio
   const auto n = static_cast<std::size_t>(robots);
   log.loads.resize(n);
   log.senders.resize(n);
-  log.links.resize(n * n);
   const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), robots);
   log.capture_time.resize(static_cast<std::size_t>(data.size()));
   for (const FrameRange& r : split.ranges) {
@@ -176,8 +175,12 @@ SimRunLog ToRunLog(const Dataset& data, int robots, const std::vector<std::optio
     }
     for (std::size_t d = 0; d < n; ++d) {
       if (d == s) continue;
-      LinkCounters& c = log.links[s * n + d];
       const AgentLinkCount& sent = l.sent[d];
+      if (sent.messages == 0) continue;
+      PairTraffic& pair = log.links.emplace_back();
+      pair.src = static_cast<int>(s);
+      pair.dst = static_cast<int>(d);
+      LinkCounters& c = pair.counters;
       c.messages = static_cast<std::uint64_t>(sent.messages);
       c.payload_bytes = sent.payload_bytes;
       c.wire_bytes = sent.wire_bytes;

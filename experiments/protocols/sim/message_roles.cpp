@@ -46,8 +46,13 @@ MessageRole RoleOfChannel(std::string_view channel) {
   return MessageRole::kOther;
 }
 
-RoleBytesRecorder::RoleBytesRecorder(int nodes)
-    : nodes_(nodes), pairs_(static_cast<std::size_t>(nodes) * static_cast<std::size_t>(nodes)) {}
+RoleBytesRecorder::RoleBytesRecorder(int nodes) : pairs_(nodes) {}
+
+const RoleCopyBytes& RoleBytesRecorder::Pair(int src, int dst) const {
+  static const RoleCopyBytes kNone{};
+  const RoleCopyBytes* bytes = pairs_.Find(NodeId(src), NodeId(dst));
+  return bytes != nullptr ? *bytes : kNone;
+}
 
 std::size_t RoleBytesRecorder::RoleIndex(ChannelId channel, std::string_view name) {
   const auto id = static_cast<std::size_t>(channel);
@@ -57,13 +62,13 @@ std::size_t RoleBytesRecorder::RoleIndex(ChannelId channel, std::string_view nam
 }
 
 void RoleBytesRecorder::OnSent(const MessageCopy& copy) {
-  CopyBytes& c = pairs_[Index(copy.src.value, copy.dst.value)][RoleIndex(copy.channel, copy.channel_name)];
+  CopyBytes& c = pairs_.At(copy.src, copy.dst)[RoleIndex(copy.channel, copy.channel_name)];
   c.payload += static_cast<std::int64_t>(copy.payload.size());
   c.wire += copy.wire_bytes;
 }
 
 void RoleBytesRecorder::OnDelivered(const MessageCopy& copy, SimTime) {
-  CopyBytes& c = pairs_[Index(copy.src.value, copy.dst.value)][RoleIndex(copy.channel, copy.channel_name)];
+  CopyBytes& c = pairs_.At(copy.src, copy.dst)[RoleIndex(copy.channel, copy.channel_name)];
   c.delivered_payload += static_cast<std::int64_t>(copy.payload.size());
   c.delivered_wire += copy.wire_bytes;
 }
@@ -75,9 +80,9 @@ void RoleBytesRecorder::OnMedium(const MediumReport& use) {
 RunRoleBytes RoleBytesRecorder::Run() const {
   RunRoleBytes run;
   run.medium = medium_;
-  for (const RoleCopyBytes& pair : pairs_) {
+  pairs_.ForEach([&run](const RoleCopyBytes& pair) {
     for (std::size_t r = 0; r < pair.size(); ++r) run.copies[r] += pair[r];
-  }
+  });
   return run;
 }
 

@@ -12,6 +12,7 @@
 
 #include "experiments/results/results.h"
 #include "net_models/network_observer.h"
+#include "net_models/pair_map.h"
 
 namespace dvpr {
 
@@ -25,20 +26,21 @@ class RoleBytesRecorder : public NetworkObserver {
   void OnDelivered(const MessageCopy& copy, SimTime at) override;
   void OnMedium(const MediumReport& use) override;
 
-  // The pair src -> dst.
-  const RoleCopyBytes& Pair(int src, int dst) const { return pairs_[Index(src, dst)]; }
+  // The pair src -> dst (all zero for a pair that carried nothing).
+  const RoleCopyBytes& Pair(int src, int dst) const;
+  // Calls f(src, dst, bytes) for every pair that carried a message, by source, then destination.
+  template <class F>
+  void ForEachPair(F&& f) const {
+    pairs_.ForEachSorted(f);
+  }
   // Summed over every pair, with the medium bytes.
   RunRoleBytes Run() const;
 
  private:
-  std::size_t Index(int src, int dst) const {
-    return static_cast<std::size_t>(src) * static_cast<std::size_t>(nodes_) + static_cast<std::size_t>(dst);
-  }
   // The role of an interned channel, classified once per channel.
   std::size_t RoleIndex(ChannelId channel, std::string_view name);
 
-  int nodes_;
-  std::vector<RoleCopyBytes> pairs_;
+  PairMap<RoleCopyBytes> pairs_;  // only the pairs that carried a message
   std::array<std::int64_t, kMessageRoles> medium_{};
   std::vector<std::int8_t> roles_;  // by ChannelId; -1: not yet seen
 };

@@ -36,16 +36,11 @@ SimRunParams ToSimParams(const ExperimentConfig& c, const RunSpec& spec) {
 // The simulated network counted bytes by role; real agents' logs (lcm protocol) have none.
 // Also how long the robots drove: the last frame's capture time plus one frame period.
 RunResult WithRoles(RunResult row, const SimRunLog& log, double fps) {
-  if (!log.link_roles.empty()) row.roles = log.roles;
+  if (log.has_roles) row.roles = log.roles;
   SimTime last = SimTime::Zero();
   for (const SimTime t : log.capture_time) last = std::max(last, t);
   row.duration_s = static_cast<double>(last.ns()) * 1e-9 + 1.0 / fps;
   return row;
-}
-
-std::optional<RoleCopyBytes> RolesOf(const SimRunLog& log, int src, int dst) {
-  if (log.link_roles.empty()) return std::nullopt;
-  return log.link_roles[static_cast<std::size_t>(src * log.robots + dst)];
 }
 
 std::string LogName(const RunSpec& spec, const std::string& strategy) {
@@ -58,6 +53,7 @@ std::string LogName(const RunSpec& spec, const std::string& strategy) {
 void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLog& log, const SimRunSummary& s,
                 const ExperimentConfig& c, RunOutput& out) {
   const RunKey key = spec.Key(strategy);
+  std::size_t next_link = 0;  // log.links is sorted by source
   for (int r = 0; r < log.robots; ++r) {
     const RobotLoad& l = log.loads[static_cast<std::size_t>(r)];
     RobotLoadRow row;
@@ -69,12 +65,13 @@ void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLo
     row.busy_fraction = log.end.ns() > 0 ? static_cast<double>(l.busy.ns()) / static_cast<double>(log.end.ns()) : 0.0;
     row.max_queue = l.max_queue;
     out.per_robot.push_back(row);
-    for (int d = 0; d < log.robots; ++d) {
-      const LinkCounters& lc = log.links[static_cast<std::size_t>(r * log.robots + d)];
+    for (; next_link < log.links.size() && log.links[next_link].src == r; ++next_link) {
+      const PairTraffic& pair = log.links[next_link];
+      const LinkCounters& lc = pair.counters;
       if (lc.messages == 0) continue;
-      out.links.push_back(LinkRow{key, r, d, static_cast<std::int64_t>(lc.messages), lc.payload_bytes, lc.wire_bytes,
-                                  static_cast<std::int64_t>(lc.dropped),
-                                  RolesOf(log, r, d)});
+      out.links.push_back(LinkRow{key, r, pair.dst, static_cast<std::int64_t>(lc.messages), lc.payload_bytes,
+                                  lc.wire_bytes, static_cast<std::int64_t>(lc.dropped),
+                                  log.has_roles ? std::optional<RoleCopyBytes>(pair.roles) : std::nullopt});
     }
   }
   if (c.outputs.queries) {

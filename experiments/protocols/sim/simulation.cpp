@@ -151,14 +151,12 @@ SimRunLog RunTeam(const Dataset& data, const SimRunParams& params, const AgentMa
       log.queries.push_back(q);
     }
   }
-  log.links.reserve(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
-  for (int s = 0; s < n; ++s)
-    for (int d = 0; d < n; ++d) log.links.push_back(s == d ? LinkCounters{} : network.Counters(NodeId(s), NodeId(d)));
+  network.ForEachPair([&](NodeId src, NodeId dst, const LinkCounters& c) {
+    log.links.push_back(PairTraffic{src.value, dst.value, c, recorders.roles.Pair(src.value, dst.value)});
+  });
   for (int s = 0; s < n; ++s) log.senders.push_back(network.Sender(NodeId(s)));
   log.roles = recorders.roles.Run();
-  log.link_roles.reserve(log.links.size());
-  for (int s = 0; s < n; ++s)
-    for (int d = 0; d < n; ++d) log.link_roles.push_back(recorders.roles.Pair(s, d));
+  log.has_roles = true;
   log.messages = recorders.rows.Rows();
   log.dropouts = DropoutOutcomes(params, agents);
   if (recorders.event_log_file) recorders.event_log_file->Close();
@@ -216,7 +214,8 @@ SimRunSummary SummarizeSimRun(const SimRunLog& log, const Positions& positions, 
   s.precision = pr.precision;
   s.recall = pr.recall;
   s.queries = static_cast<std::int64_t>(log.queries.size());
-  for (const auto& c : log.links) {
+  for (const PairTraffic& pair : log.links) {
+    const LinkCounters& c = pair.counters;
     s.messages += static_cast<std::int64_t>(c.messages);
     s.payload_bytes += c.payload_bytes;
     s.wire_bytes += c.wire_bytes;

@@ -46,14 +46,22 @@ struct DropoutOutcome {
   std::int64_t kept = 0;            // of which a live robot's store holds a copy (replication)
 };
 
+// What one directed pair of robots carried.
+struct PairTraffic {
+  int src = 0;
+  int dst = 0;
+  LinkCounters counters;
+  RoleCopyBytes roles{};  // by message role; all zero when the log has no roles (SimRunLog::has_roles)
+};
+
 struct SimRunLog {
   int robots = 0;
   std::vector<QueryRecord> queries;       // robot by robot, frames in order
   std::vector<RobotLoad> loads;           // per robot
-  std::vector<LinkCounters> links;        // robots x robots, row = source
+  std::vector<PairTraffic> links;         // the pairs that carried a message, by source, then destination
   std::vector<NodeCounters> senders;      // per robot: transmissions it put on the medium
   RunRoleBytes roles;                     // the run's bytes by message role
-  std::vector<RoleCopyBytes> link_roles;  // robots x robots, row = source: by role
+  bool has_roles = false;                 // roles and links[].roles were counted (simulated networks)
   std::vector<MessageRow> messages;       // when record_messages
   std::vector<SimTime> capture_time;      // per frame of the sequence
   std::int64_t verify_requested = 0;
