@@ -23,12 +23,12 @@ std::vector<std::uint8_t> Buffer(std::size_t capacity) {
 TEST(PayloadBuffers, TakesAKeptBufferLargeEnoughOrNone) {
   PayloadBuffers pool;
   EXPECT_EQ(pool.Take(35).capacity(), 0u);  // nothing kept yet
-  pool.Give(Buffer(40));                     // class [32, 64)
-  pool.Give(Buffer(544));                    // class [512, 1024)
+  pool.Give(Buffer(544));                    // class 9: [512, 1024)
+  EXPECT_EQ(pool.Take(17).capacity(), 0u);   // class 4: 5..8 are empty, 9 is more than 4 up
+  pool.Give(Buffer(40));                     // class 5: [32, 64)
   EXPECT_EQ(pool.Kept(), 2u);
-  EXPECT_EQ(pool.Take(50).capacity(), 0u);     // 40 is too small; 544 is more than 4 classes up
-  EXPECT_EQ(pool.Take(600).capacity(), 0u);    // [512, 1024) holds only 544 < 600
-  EXPECT_EQ(pool.Take(300).capacity(), 544u);  // two classes up
+  EXPECT_EQ(pool.Take(600).capacity(), 0u);    // class 9 holds only 544 < 600, 10..13 are empty
+  EXPECT_EQ(pool.Take(50).capacity(), 544u);   // class 5 holds only 40 < 50; 9 is 4 classes up
   EXPECT_EQ(pool.Take(35).capacity(), 40u);    // its own class, large enough
   EXPECT_EQ(pool.Kept(), 0u);
 }
