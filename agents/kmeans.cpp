@@ -249,10 +249,44 @@ void ReassignGathered(const Points& p, const CentroidMatrix& centers, const Eige
 
 // Scratch space of the bounded passes, kept across iterations.
 struct BoundsWork {
-  std::vector<Index> suspects;  // points whose stale bounds allow a change
+  std::vector<Index> suspects;  // points whose stale bounds allow a change (first ones in use)
   Gathered gathered;
   DistanceMatrix dots;
 };
+
+// How far the centroids moved, as Hamerly's bounds need it: a point's upper bound grows by its
+// own centroid's move, its lower bound shrinks by the largest move of any other centroid.
+struct Moves {
+  std::vector<double> own;    // per centroid
+  std::vector<double> other;  // per centroid: the largest move among the others
+};
+
+Moves BoundMoves(const std::vector<double>& moved) {
+  std::size_t far = 0;
+  for (std::size_t c = 1; c < moved.size(); ++c) far = moved[c] > moved[far] ? c : far;
+  double second = 0;
+  for (std::size_t c = 0; c < moved.size(); ++c) second = c == far ? second : std::max(second, moved[c]);
+  Moves m{moved, std::vector<double>(moved.size(), moved[far])};
+  m.other[far] = second;
+  return m;
+}
+
+// Loosens the bounds by the moves and lists the points they no longer clear (upper bound above
+// both the half gap of their centroid and the lower bound), in index order, in one pass; returns
+// how many. `out` holds a slot for every point.
+std::size_t Suspects(const Moves& moves, const std::vector<double>& gap, Assignment& a, std::vector<Index>& out) {
+  const auto n = a.labels.size();
+  out.resize(n);
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto own = static_cast<std::size_t>(a.labels[i]);
+    const double upper = a.upper[i] += moves.own[own];
+    const double lower = a.lower[i] -= moves.other[own];
+    out[count] = static_cast<Index>(i);
+    count += upper > std::max(gap[own], lower);  // no branch: a suspect is a coin flip
+  }
+  return count;
+}
 
 // Asks the memory for the rows of point `i` ahead of their use: the points to re-measure are
 // scattered over the 20 000 x 512-byte rows, and their loads, one after the other, were most
@@ -267,20 +301,17 @@ void PrefetchRow(const DescriptorMatrix& x, Index i) {
 // and the sums follow the points that move. First the stale bounds pick the suspects; then
 // each suspect's own distance is measured exactly (rows prefetched a few suspects ahead) and,
 // if that does not clear it, its row, still in cache, joins the block to re-measure.
-void AssignWithBounds(const Points& p, const CentroidMatrix& centers, Assignment& a, BoundsWork& w) {
+void AssignWithBounds(const Points& p, const CentroidMatrix& centers, const Moves& moves, Assignment& a,
+                      BoundsWork& w) {
   constexpr std::size_t kAhead = 4;  // suspects prefetched ahead of the one measured
   const std::vector<double> gap = HalfGaps(centers);
   const Eigen::VectorXf cn = SquaredNorms(centers);
   a.changed = 0;
-  w.suspects.clear();
-  for (Index i = 0; i < p.x.rows(); ++i) {
-    const auto ui = static_cast<std::size_t>(i);
-    if (a.upper[ui] > std::max(gap[static_cast<std::size_t>(a.labels[ui])], a.lower[ui])) w.suspects.push_back(i);
-  }
+  const std::size_t suspects = Suspects(moves, gap, a, w.suspects);
   Gathered& g = w.gathered;
   if (g.rows.rows() != kBlockRows) g.rows.resize(kBlockRows, p.x.cols()), g.index.resize(kBlockRows);
-  for (std::size_t s = 0; s < w.suspects.size(); ++s) {
-    if (s + kAhead < w.suspects.size()) PrefetchRow(p.x, w.suspects[s + kAhead]);
+  for (std::size_t s = 0; s < suspects; ++s) {
+    if (s + kAhead < suspects) PrefetchRow(p.x, w.suspects[s + kAhead]);
     const Index i = w.suspects[s];
     const auto ui = static_cast<std::size_t>(i);
     const int own = a.labels[ui];
@@ -293,19 +324,6 @@ void AssignWithBounds(const Points& p, const CentroidMatrix& centers, Assignment
     if (g.size == kBlockRows) ReassignGathered(p, centers, cn, g, w.dots, a);
   }
   if (g.size > 0) ReassignGathered(p, centers, cn, g, w.dots, a);
-}
-
-// Loosens the bounds by how far the centroids moved.
-void MoveBounds(const std::vector<double>& moved, Assignment& a) {
-  std::size_t far = 0;
-  for (std::size_t c = 1; c < moved.size(); ++c) far = moved[c] > moved[far] ? c : far;
-  double second = 0;
-  for (std::size_t c = 0; c < moved.size(); ++c) second = c == far ? second : std::max(second, moved[c]);
-  for (std::size_t i = 0; i < a.labels.size(); ++i) {
-    const auto own = static_cast<std::size_t>(a.labels[i]);
-    a.upper[i] += moved[own];
-    a.lower[i] -= own == far ? second : moved[far];
-  }
 }
 
 // Exact squared distance of every point to its own centroid (for the empty-cluster re-seed).
@@ -336,7 +354,7 @@ KMeansResult Lloyd(const Points& p, const KMeansParams& params, std::uint64_t se
     if (full) {
       Assign(p, result.centroids, a);
     } else {
-      AssignWithBounds(p, result.centroids, a, work);
+      AssignWithBounds(p, result.centroids, BoundMoves(moved), a, work);
     }
     result.iterations = it + 1;
     if (it > 0 && a.changed == 0) {  // same labels, same centroids: a fixed point
@@ -363,7 +381,6 @@ KMeansResult Lloyd(const Points& p, const KMeansParams& params, std::uint64_t se
       result.converged = true;
       break;
     }
-    if (!full) MoveBounds(moved, a);
   }
   Assign(p, result.centroids, a);  // labels and inertia of the final centroids
   result.labels = std::move(a.labels);
