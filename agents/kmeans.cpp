@@ -238,8 +238,8 @@ void ReassignGathered(const Points& p, const CentroidMatrix& centers, const Eige
     const int own = a.labels[ui];
     if (best == own) continue;
     ++a.changed;
-    a.sums.row(own) -= p.x.row(i).cast<double>();
-    a.sums.row(best) += p.x.row(i).cast<double>();
+    a.sums.row(own) -= g.rows.row(r).cast<double>();  // the point's row, still in cache
+    a.sums.row(best) += g.rows.row(r).cast<double>();
     --a.counts[static_cast<std::size_t>(own)];
     ++a.counts[static_cast<std::size_t>(best)];
     a.labels[ui] = best;
@@ -317,9 +317,11 @@ void AssignWithBounds(const Points& p, const CentroidMatrix& centers, const Move
     const int own = a.labels[ui];
     const double limit = std::max(gap[static_cast<std::size_t>(own)], a.lower[ui]);
     a.upper[ui] = std::sqrt(static_cast<double>((p.x.row(i) - centers.row(own)).squaredNorm()));
-    if (a.upper[ui] <= limit) continue;
+    // The row goes into the next free slot, which only a point still in doubt keeps: copying a
+    // row in cache costs less than the mispredicted branch on a coin flip.
     g.rows.row(g.size) = p.x.row(i);
-    g.index[static_cast<std::size_t>(g.size++)] = i;
+    g.index[static_cast<std::size_t>(g.size)] = i;
+    g.size += a.upper[ui] > limit;
     // Re-measuring a block moves only points before the next suspect: its test is unchanged.
     if (g.size == kBlockRows) ReassignGathered(p, centers, cn, g, w.dots, a);
   }
