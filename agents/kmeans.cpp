@@ -194,78 +194,138 @@ std::vector<double> HalfGaps(const CentroidMatrix& centers) {
   return gap;
 }
 
-// Nearest and second-nearest centroid of the points `todo` (gathered in blocks for GEMM); moves
-// the points that change cluster, with their sums.
-void ReassignGathered(const Points& p, const CentroidMatrix& centers, const std::vector<Index>& todo,
-                      Assignment& a) {
+// The lowest score (its first index: ties go to the lower centroid) and the second lowest (equal
+// to the lowest when two tie) of a row of centroid scores, without a branch per centroid.
+struct NearestPair {
+  int best;
+  float best_score;
+  float second_score;
+};
+NearestPair NearestTwo(Eigen::RowVectorXf& scores) {
+  const float low = scores.minCoeff();  // exact: the minimum does not depend on the order
+  int best = 0;
+  while (!(scores[best] == low)) ++best;
+  const float best_score = scores[best];
+  scores[best] = std::numeric_limits<float>::infinity();
+  return {best, best_score, scores.minCoeff()};
+}
+
+// Rows gathered for one GEMM of the bounded pass. The blocks are exactly those the pass has
+// always multiplied (the points to re-measure, in index order, cut every kBlockRows), so each
+// product and its rounding are unchanged: Eigen's GEMM sums a row differently depending on where
+// it falls in its block (agents/gemv_row.h), and one such row decides a label in the paper sweep.
+struct Gathered {
+  DescriptorMatrix rows;      // kBlockRows x d; the first `size` rows are in use
+  std::vector<Index> index;   // the point of each row
+  Index size = 0;
+};
+
+// Nearest and second-nearest centroid of the gathered points; moves the points that change
+// cluster, with their sums.
+void ReassignGathered(const Points& p, const CentroidMatrix& centers, const Eigen::VectorXf& cn,
+                      Gathered& g, DistanceMatrix& dots, Assignment& a) {
   const Index k = centers.rows();
-  const Eigen::VectorXf cn = SquaredNorms(centers);
-  DescriptorMatrix block;
-  DistanceMatrix dots;
-  for (std::size_t first = 0; first < todo.size(); first += kBlockRows) {
-    const auto rows = static_cast<Index>(std::min<std::size_t>(kBlockRows, todo.size() - first));
-    block.resize(rows, p.x.cols());
-    for (Index r = 0; r < rows; ++r) block.row(r) = p.x.row(todo[first + static_cast<std::size_t>(r)]);
-    dots.resize(rows, k);
-    dots.noalias() = block * centers.transpose();
-    for (Index r = 0; r < rows; ++r) {
-      const Index i = todo[first + static_cast<std::size_t>(r)];
-      const auto ui = static_cast<std::size_t>(i);
-      int best = 0;
-      float best_score = std::numeric_limits<float>::infinity();
-      float second_score = best_score;
-      for (Index c = 0; c < k; ++c) {
-        const float score = cn[c] - 2.0f * dots(r, c);
-        if (score < best_score) {
-          second_score = best_score, best_score = score, best = static_cast<int>(c);
-        } else if (score < second_score) {
-          second_score = score;
-        }
-      }
-      a.upper[ui] = std::sqrt(static_cast<double>(std::max(0.0f, p.norms[i] + best_score)));
-      a.lower[ui] = std::sqrt(static_cast<double>(std::max(0.0f, p.norms[i] + second_score)));
-      const int own = a.labels[ui];
-      if (best == own) continue;
-      ++a.changed;
-      a.sums.row(own) -= p.x.row(i).cast<double>();
-      a.sums.row(best) += p.x.row(i).cast<double>();
-      --a.counts[static_cast<std::size_t>(own)];
-      ++a.counts[static_cast<std::size_t>(best)];
-      a.labels[ui] = best;
-    }
-  }
-}
-
-// One Hamerly assignment pass: only points whose bounds cannot exclude a change are measured,
-// and the sums follow the points that move.
-void AssignWithBounds(const Points& p, const CentroidMatrix& centers, Assignment& a,
-                      std::vector<Index>& todo) {
-  const std::vector<double> gap = HalfGaps(centers);
-  a.changed = 0;
-  todo.clear();
-  for (Index i = 0; i < p.x.rows(); ++i) {
+  dots.resize(g.size, k);
+  dots.noalias() = g.rows.topRows(g.size) * centers.transpose();
+  Eigen::RowVectorXf scores(k);
+  for (Index r = 0; r < g.size; ++r) {
+    const Index i = g.index[static_cast<std::size_t>(r)];
     const auto ui = static_cast<std::size_t>(i);
+    scores = cn.transpose() - 2.0f * dots.row(r);
+    const auto [best, best_score, second_score] = NearestTwo(scores);
+    a.upper[ui] = std::sqrt(static_cast<double>(std::max(0.0f, p.norms[i] + best_score)));
+    a.lower[ui] = std::sqrt(static_cast<double>(std::max(0.0f, p.norms[i] + second_score)));
     const int own = a.labels[ui];
-    const double limit = std::max(gap[static_cast<std::size_t>(own)], a.lower[ui]);
-    if (a.upper[ui] <= limit) continue;
-    a.upper[ui] = std::sqrt(static_cast<double>((p.x.row(i) - centers.row(own)).squaredNorm()));
-    if (a.upper[ui] <= limit) continue;
-    todo.push_back(i);
+    if (best == own) continue;
+    ++a.changed;
+    a.sums.row(own) -= g.rows.row(r).cast<double>();  // the point's row, still in cache
+    a.sums.row(best) += g.rows.row(r).cast<double>();
+    --a.counts[static_cast<std::size_t>(own)];
+    ++a.counts[static_cast<std::size_t>(best)];
+    a.labels[ui] = best;
   }
-  ReassignGathered(p, centers, todo, a);
+  g.size = 0;
 }
 
-// Loosens the bounds by how far the centroids moved.
-void MoveBounds(const std::vector<double>& moved, Assignment& a) {
+// Scratch space of the bounded passes, kept across iterations.
+struct BoundsWork {
+  std::vector<Index> suspects;  // points whose stale bounds allow a change (first ones in use)
+  Gathered gathered;
+  DistanceMatrix dots;
+};
+
+// How far the centroids moved, as Hamerly's bounds need it: a point's upper bound grows by its
+// own centroid's move, its lower bound shrinks by the largest move of any other centroid.
+struct Moves {
+  std::vector<double> own;    // per centroid
+  std::vector<double> other;  // per centroid: the largest move among the others
+};
+
+Moves BoundMoves(const std::vector<double>& moved) {
   std::size_t far = 0;
   for (std::size_t c = 1; c < moved.size(); ++c) far = moved[c] > moved[far] ? c : far;
   double second = 0;
   for (std::size_t c = 0; c < moved.size(); ++c) second = c == far ? second : std::max(second, moved[c]);
-  for (std::size_t i = 0; i < a.labels.size(); ++i) {
+  Moves m{moved, std::vector<double>(moved.size(), moved[far])};
+  m.other[far] = second;
+  return m;
+}
+
+// Loosens the bounds by the moves and lists the points they no longer clear (upper bound above
+// both the half gap of their centroid and the lower bound), in index order, in one pass; returns
+// how many. `out` holds a slot for every point.
+std::size_t Suspects(const Moves& moves, const std::vector<double>& gap, Assignment& a, std::vector<Index>& out) {
+  const auto n = a.labels.size();
+  out.resize(n);
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < n; ++i) {
     const auto own = static_cast<std::size_t>(a.labels[i]);
-    a.upper[i] += moved[own];
-    a.lower[i] -= own == far ? second : moved[far];
+    const double upper = a.upper[i] += moves.own[own];
+    const double lower = a.lower[i] -= moves.other[own];
+    out[count] = static_cast<Index>(i);
+    count += upper > std::max(gap[own], lower);  // no branch: a suspect is a coin flip
   }
+  return count;
+}
+
+// Asks the memory for the rows of point `i` ahead of their use: the points to re-measure are
+// scattered over the 20 000 x 512-byte rows, and their loads, one after the other, were most
+// of the pass's time.
+void PrefetchRow(const DescriptorMatrix& x, Index i) {
+  const char* row = reinterpret_cast<const char*>(x.data() + i * x.cols());
+  const Index bytes = x.cols() * static_cast<Index>(sizeof(float));
+  for (Index b = 0; b < bytes; b += 64) __builtin_prefetch(row + b);
+}
+
+// One Hamerly assignment pass: only points whose bounds cannot exclude a change are measured,
+// and the sums follow the points that move. First the stale bounds pick the suspects; then
+// each suspect's own distance is measured exactly (rows prefetched a few suspects ahead) and,
+// if that does not clear it, its row, still in cache, joins the block to re-measure.
+void AssignWithBounds(const Points& p, const CentroidMatrix& centers, const Moves& moves, Assignment& a,
+                      BoundsWork& w) {
+  constexpr std::size_t kAhead = 4;  // suspects prefetched ahead of the one measured
+  const std::vector<double> gap = HalfGaps(centers);
+  const Eigen::VectorXf cn = SquaredNorms(centers);
+  a.changed = 0;
+  const std::size_t suspects = Suspects(moves, gap, a, w.suspects);
+  Gathered& g = w.gathered;
+  if (g.rows.rows() != kBlockRows) g.rows.resize(kBlockRows, p.x.cols()), g.index.resize(kBlockRows);
+  for (std::size_t s = 0; s < suspects; ++s) {
+    if (s + kAhead < suspects) PrefetchRow(p.x, w.suspects[s + kAhead]);
+    const Index i = w.suspects[s];
+    const auto ui = static_cast<std::size_t>(i);
+    const int own = a.labels[ui];
+    const double limit = std::max(gap[static_cast<std::size_t>(own)], a.lower[ui]);
+    a.upper[ui] = std::sqrt(static_cast<double>((p.x.row(i) - centers.row(own)).squaredNorm()));
+    // The row goes into the next free slot, which only a point still in doubt keeps: copying a
+    // row in cache costs less than the mispredicted branch on a coin flip.
+    g.rows.row(g.size) = p.x.row(i);
+    g.index[static_cast<std::size_t>(g.size)] = i;
+    g.size += a.upper[ui] > limit;
+    // Re-measuring a block moves only points before the next suspect: its test is unchanged.
+    if (g.size == kBlockRows) ReassignGathered(p, centers, cn, g, w.dots, a);
+  }
+  if (g.size > 0) ReassignGathered(p, centers, cn, g, w.dots, a);
 }
 
 // Exact squared distance of every point to its own centroid (for the empty-cluster re-seed).
@@ -291,12 +351,12 @@ KMeansResult Lloyd(const Points& p, const KMeansParams& params, std::uint64_t se
   a.lower.assign(n, 0.0);
   bool full = true;  // first pass, and after a re-seed: measure everything with GEMM
   std::vector<double> moved(static_cast<std::size_t>(params.k));
-  std::vector<Index> todo;
+  BoundsWork work;
   for (int it = 0; it < params.max_iterations; ++it) {
     if (full) {
       Assign(p, result.centroids, a);
     } else {
-      AssignWithBounds(p, result.centroids, a, todo);
+      AssignWithBounds(p, result.centroids, BoundMoves(moved), a, work);
     }
     result.iterations = it + 1;
     if (it > 0 && a.changed == 0) {  // same labels, same centroids: a fixed point
@@ -323,7 +383,6 @@ KMeansResult Lloyd(const Points& p, const KMeansParams& params, std::uint64_t se
       result.converged = true;
       break;
     }
-    if (!full) MoveBounds(moved, a);
   }
   Assign(p, result.centroids, a);  // labels and inertia of the final centroids
   result.labels = std::move(a.labels);

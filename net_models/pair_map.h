@@ -4,7 +4,8 @@
 // before the first event although a run may never use most of them (docs/performance.md). Open
 // addressing with linear probing on the pair's index src * nodes + dst, Fibonacci hashing, at most
 // half full: a lookup is one probe in the common case, as cheap as a dense index once the entry
-// is in cache.
+// is in cache. Small teams (at most kDenseNodes nodes) get the dense table itself: a slot per pair,
+// the slot's index is the pair's, no probing and no rehashing.
 //
 // References returned by At() stay valid until the next At() that inserts a pair.
 #include <algorithm>
@@ -23,9 +24,16 @@ namespace dvpr {
 template <class T>
 class PairMap {
  public:
-  explicit PairMap(int nodes) : nodes_(static_cast<std::uint64_t>(nodes)) {
+  static constexpr int kDenseNodes = 256;  // 65 536 pairs
+
+  explicit PairMap(int nodes) : nodes_(static_cast<std::uint64_t>(nodes)), dense_(nodes <= kDenseNodes) {
     if (nodes <= 0) throw std::invalid_argument("PairMap: need at least one node, got " + std::to_string(nodes));
-    Rehash(kMinCapacity);
+    if (dense_) {
+      keys_.assign(nodes_ * nodes_, kEmpty);
+      values_.resize(nodes_ * nodes_);
+    } else {
+      Rehash(kMinCapacity);
+    }
   }
 
   int nodes() const { return static_cast<int>(nodes_); }
@@ -39,7 +47,7 @@ class PairMap {
     for (; keys_[i] != kEmpty; i = (i + 1) & mask_) {
       if (keys_[i] == key) return values_[i];
     }
-    if (2 * (size_ + 1) > keys_.size()) {
+    if (!dense_ && 2 * (size_ + 1) > keys_.size()) {
       Rehash(2 * keys_.size());
       for (i = Home(key); keys_[i] != kEmpty; i = (i + 1) & mask_) {
       }
@@ -97,6 +105,7 @@ class PairMap {
   }
   // Fibonacci hashing: consecutive pair indices land far apart.
   std::size_t Home(std::uint64_t key) const {
+    if (dense_) return static_cast<std::size_t>(key);
     return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift_);
   }
   void Rehash(std::size_t capacity) {
@@ -116,6 +125,7 @@ class PairMap {
   }
 
   std::uint64_t nodes_;
+  bool dense_;  // a slot per pair, at index src * nodes + dst
   std::vector<std::uint64_t> keys_;  // capacity a power of two; kEmpty: free
   std::vector<T> values_;
   std::size_t mask_ = 0;

@@ -6,6 +6,7 @@
 #include <map>
 #include <random>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -34,17 +35,20 @@ TEST(PairMapTest, InsertsTheInitialValueOnceAndKeepsUpdates) {
   EXPECT_EQ(m.size(), 1u);
 }
 
-// 1000 nodes, 30 000 random increments on 1 000 000 possible pairs: the table rehashes from 16 to
-// 65 536 slots; every count and the visiting order must equal std::map's.
-TEST(PairMapTest, MatchesAnOrderedMapThroughRehashes) {
-  constexpr int kNodes = 1000;
-  PairMap<std::int64_t> m(kNodes);
+// 30 000 random increments: with 1000 nodes (hashed: 10^6 possible pairs, the table rehashes from
+// 16 to 65 536 slots) and with 100 (dense: a slot per pair). Every count and the visiting order
+// must equal std::map's.
+class PairMapVsMapTest : public ::testing::TestWithParam<int> {};
+
+TEST_P(PairMapVsMapTest, MatchesAnOrderedMap) {
+  const int nodes = GetParam();
+  PairMap<std::int64_t> m(nodes);
   std::map<std::pair<int, int>, std::int64_t> reference;
   std::mt19937 rng(11);
-  std::uniform_int_distribution<int> node(0, kNodes - 1);
+  std::uniform_int_distribution<int> node(0, nodes - 1);
   for (int i = 0; i < 30000; ++i) {
     const int s = node(rng);
-    const int d = i % 3 == 0 ? (s + 1) % kNodes : node(rng);  // many repeats of some pairs
+    const int d = i % 3 == 0 ? (s + 1) % nodes : node(rng);  // many repeats of some pairs
     m.At(NodeId(s), NodeId(d)) += i;
     reference[{s, d}] += i;
   }
@@ -62,6 +66,9 @@ TEST(PairMapTest, MatchesAnOrderedMapThroughRehashes) {
     EXPECT_EQ(*found, v);
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Layouts, PairMapVsMapTest, ::testing::Values(100, 1000),
+                         [](const auto& info) { return std::to_string(info.param) + "Nodes"; });
 
 TEST(PairMapTest, ReportsPairsOutsideTheTeam) {
   PairMap<int> m(3);
