@@ -1,7 +1,7 @@
 // The whole paper sweep (DESIGN.md section 2): n = 2..20 robots x 10 runs, k-means (k = n) on
 // 20 000 training descriptors, N = 4541 frames of KITTI 00, d = 128, synthetic descriptors
 // (diverse training, as in the paper). A numpy/scikit-learn implementation takes about 180 s.
-//   build/algo-rel/bench/bench_paper_sweep --benchmark_filter=PaperSweep/2
+//   build/release/bench/bench_paper_sweep --benchmark_filter=PaperSweep/2
 //       --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 // The sweep goes through RunSweep, the driver `dvpr run` uses (the executor with the built-in
 // paper protocol), on inputs made here instead of loaded from a config's files.
@@ -30,8 +30,8 @@ const SweepData& Data() {
   static const SweepData data = [] {
     SweepData d;
     d.deployment.name = "kitti00_synthetic";
-    // CMake passes absolute source paths, so the repository is two levels above this file.
-    const auto repo = std::filesystem::path(__FILE__).parent_path().parent_path();
+    // The source tree from CMake (absolute), so the benchmark runs from any directory.
+    const std::filesystem::path repo(DVPR_SOURCE_DIR);
     d.deployment.trajectory = LoadKittiPoses(repo / "data/kitti/00_poses.txt");
     const SyntheticParams params;  // d = 128
     d.deployment.descriptors = SyntheticDeployment(d.deployment.trajectory, params, 1);
