@@ -16,6 +16,7 @@ std::vector<std::uint8_t> PayloadBuffers::Take(std::size_t size) {
   if (!same.empty() && same.back().capacity() >= size) {
     std::vector<std::uint8_t> bytes = std::move(same.back());
     same.pop_back();
+    kept_bytes_ -= bytes.capacity();
     return bytes;
   }
   for (int c = own + 1; c < kClasses && c <= own + 4; ++c) {
@@ -23,6 +24,7 @@ std::vector<std::uint8_t> PayloadBuffers::Take(std::size_t size) {
     if (bin.empty()) continue;
     std::vector<std::uint8_t> bytes = std::move(bin.back());
     bin.pop_back();
+    kept_bytes_ -= bytes.capacity();
     return bytes;
   }
   return {};
@@ -32,7 +34,8 @@ void PayloadBuffers::Give(std::vector<std::uint8_t>&& bytes) {
   const std::size_t capacity = bytes.capacity();
   if (capacity == 0 || capacity > kMaxKept) return;
   auto& bin = kept_[static_cast<std::size_t>(ClassOf(capacity))];
-  if (bin.size() >= kPerClass) return;
+  if (bin.size() >= kPerClass || kept_bytes_ + capacity > kMaxKeptBytes) return;
+  kept_bytes_ += capacity;
   bin.push_back(std::move(bytes));
 }
 

@@ -46,6 +46,21 @@ TEST(PayloadBuffers, KeepsAtMostItsBoundsAndNoEmptyBuffer) {
   EXPECT_EQ(pool.Take(PayloadBuffers::kMaxKept + 1).capacity(), 0u);
 }
 
+// 64 MiB in all: 64 buffers of 1 MiB (class 20) fill it, a 65th is freed, and a small buffer no
+// longer fits either until one is taken out again.
+TEST(PayloadBuffers, KeepsAtMostItsByteBudget) {
+  static_assert(PayloadBuffers::kMaxKeptBytes == std::size_t{64} << 20);
+  PayloadBuffers pool;
+  for (int i = 0; i < 65; ++i) pool.Give(Buffer(std::size_t{1} << 20));
+  EXPECT_EQ(pool.Kept(), 64u);
+  pool.Give(Buffer(100));
+  EXPECT_EQ(pool.Kept(), 64u);
+  EXPECT_EQ(pool.Take(std::size_t{1} << 20).capacity(), std::size_t{1} << 20);
+  pool.Give(Buffer(100));  // 63 MiB + 100 bytes
+  EXPECT_EQ(pool.Kept(), 64u);
+  EXPECT_EQ(pool.Take(100).capacity(), 100u);
+}
+
 TEST(PayloadBuffers, TheNetworkGivesAPayloadBackAfterItsLastCopy) {
   Simulator sim;
   Network net(sim, 3, std::make_unique<IdealLink>());
