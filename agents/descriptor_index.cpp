@@ -1,7 +1,6 @@
 #include "agents/descriptor_index.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <cstdlib>
@@ -10,6 +9,10 @@
 #include <string>
 
 #include <Eigen/Core>
+
+#if defined(__AVX__)
+#include <immintrin.h>
+#endif
 
 #include "agents/gemv_row.h"
 #include "agents/l2.h"
@@ -24,86 +27,87 @@ bool InWindow(FrameId stored, FrameId query, int window) {
 // The model's distance from a row's dot product: the one expression both searches round alike.
 float ExpandedDistance(float norm, float dot, float q_norm) { return norm - 2.0f * dot + q_norm; }
 
-// sum over [0, to) of (x - q)^2, in float, eight independent sums (vectorised).
-float PartialSquaredL2(const float* x, const float* q, int to) {
-  constexpr int kLanes = 8;
-  float acc[kLanes] = {};
-  int j = 0;
-  for (; j + kLanes <= to; j += kLanes) {
-    for (int l = 0; l < kLanes; ++l) {
-      const float diff = x[j + l] - q[j + l];
-      acc[l] += diff * diff;
-    }
-  }
-  float sum = ((acc[0] + acc[1]) + (acc[2] + acc[3])) + ((acc[4] + acc[5]) + (acc[6] + acc[7]));
-  for (; j < to; ++j) sum += (x[j] - q[j]) * (x[j] - q[j]);
-  return sum;
+// Eight rows side by side: a GNU vector of 8 floats (one AVX register, two SSE ones).
+using Lanes = float __attribute__((vector_size(8 * sizeof(float))));
+
+// acc += (the 8 halves at `halves`, as floats, - q)^2, lane by lane.
+inline void AddSquaredDiffs(Lanes& acc, const _Float16* halves, float q) {
+  Lanes x;
+#if defined(__F16C__) && defined(__AVX__)
+  // One instruction for 8 values (GCC 12 converts a _Float16 vector value by value).
+  const __m256 wide = _mm256_cvtph_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(halves)));
+  std::memcpy(&x, &wide, sizeof x);
+#else
+  for (int l = 0; l < 8; ++l) x[l] = static_cast<float>(halves[l]);
+#endif
+  const Lanes diff = x - q;
+  acc += diff * diff;
 }
 
-// For the 8 rows of a tile (value j of row l at tile[j * 8 + l]), the sum over [0, width) of
-// (x - q)^2, in float: one vector of 8 sums, one row a lane, in the order of the values.
-void TilePartialSquaredL2(const float* tile, const float* q, int width, float* out) {
-  // A GNU vector of 8 floats (one AVX register, two SSE ones): the compiler left to itself
-  // reduces across the values of a row instead of summing 8 rows side by side.
-  using Lanes = float __attribute__((vector_size(8 * sizeof(float))));
-  Lanes acc = {};
-  for (int j = 0; j < width; ++j) {
-    Lanes x;
-    std::memcpy(&x, tile + static_cast<std::ptrdiff_t>(j) * 8, sizeof x);
-    const Lanes diff = x - q[j];
-    acc += diff * diff;
-  }
-  std::memcpy(out, &acc, sizeof acc);
-}
-
-// The largest float partial sum over `terms` values that a row can have and still reach a model
-// distance <= best: the model's distance is within `margin` of the exact one (GemmErrorBound),
-// the exact distance is at least the exact partial sum, and a float sum of `terms` squared
-// differences exceeds the exact one by at most (terms + 2) units of 2^-24 relative (4 x that here).
-float PruneLimit(float best, double margin, int terms) {
+// The largest float partial sum over `terms` values of the screen that a row can have and still
+// reach a model distance <= best. Its exact distance is then at most best + margin (the model's
+// distance is within margin of the exact one: GemmErrorBound), so the exact partial sum of its
+// half-precision copy is at most (sqrt(best + margin) + screen error)^2 (triangle inequality),
+// and a float sum of `terms` squared differences exceeds the exact one by at most (terms + 2)
+// units of 2^-24 relative (4 x that here).
+float ScreenLimit(float best, double margin, double screen_error, int terms) {
   const double exact = std::max(0.0, static_cast<double>(best) + margin);
-  const double limit = exact * (1.0 + 4.0 * (terms + 3) * 0x1.0p-24);
+  const double root = std::sqrt(exact) * (1.0 + 0x1.0p-50) + screen_error;
+  const double limit = root * root * (1.0 + 4.0 * (terms + 3) * 0x1.0p-24);
   return std::nextafter(static_cast<float>(limit), std::numeric_limits<float>::infinity());
+}
+
+// Bit l set where lane l of `sums` is not above `limit` (NaN is not above: such a row is kept).
+unsigned NotAbove(const Lanes& sums, float limit) {
+#if defined(__AVX__)
+  __m256 wide;
+  std::memcpy(&wide, &sums, sizeof wide);
+  return ~static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(wide, _mm256_set1_ps(limit), _CMP_GT_OQ))) & 0xFFu;
+#endif
+  const auto above = sums > limit;
+  unsigned mask = 0;
+  for (unsigned l = 0; l < 8; ++l) mask |= (above[l] == 0 ? 1u : 0u) << l;
+  return mask;
 }
 
 }  // namespace
 
 IncrementalIndex::IncrementalIndex(int dim) : dim_(dim) {
   if (dim <= 0) throw std::invalid_argument("IncrementalIndex: dim must be positive, got " + std::to_string(dim));
-  for (int end : {32, 64}) {
-    if (end < dim) stage_end_[static_cast<std::size_t>(stages_++)] = end;
-  }
-  stage_end_[static_cast<std::size_t>(stages_++)] = dim;
+  for (int end = kFirstCheck; end < dim; end += kCheckEvery) checks_.push_back(end);
+  checks_.push_back(dim);
+  limits_.resize(checks_.size());
+  screen_.resize(checks_.size());
 }
 
-void IncrementalIndex::AppendLead(std::size_t i, const float* row) {
-  const auto width = static_cast<std::size_t>(stage_end_[0]);
-  if (i % kTileRows == 0) tiles_.resize(tiles_.size() + width * kTileRows, 0.0f);
-  float* tile = tiles_.data() + i / kTileRows * width * kTileRows;
-  for (std::size_t j = 0; j < width; ++j) tile[j * kTileRows + i % kTileRows] = row[j];
-  for (std::size_t s = 1; s + 1 < static_cast<std::size_t>(stages_); ++s) {
-    lead_[s].insert(lead_[s].end(), row + stage_end_[s - 1], row + stage_end_[s]);
+void IncrementalIndex::AppendScreen(std::size_t i, const float* row) {
+  std::size_t from = 0;
+  for (std::size_t k = 0; k < checks_.size(); ++k) {
+    const auto width = static_cast<std::size_t>(checks_[k]) - from;
+    std::vector<_Float16>& band = screen_[k];
+    if (i % kTileRows == 0) band.resize(band.size() + width * kTileRows, _Float16{});
+    _Float16* tile = band.data() + i / kTileRows * width * kTileRows;
+    for (std::size_t j = 0; j < width; ++j) tile[j * kTileRows + i % kTileRows] = static_cast<_Float16>(row[from + j]);
+    from += width;
   }
-}
-
-bool IncrementalIndex::RestWithinLimits(std::size_t i, float partial, const float* query,
-                                        const std::array<float, kMaxStages>& limits) const {
-  for (std::size_t s = 1; s < static_cast<std::size_t>(stages_); ++s) {
-    const int from = stage_end_[s - 1];
-    const int width = stage_end_[s] - from;
-    const bool lead = s + 1 < static_cast<std::size_t>(stages_);
-    const float* x = lead ? lead_[s].data() + i * static_cast<std::size_t>(width) : Descriptor(i) + from;
-    partial += PartialSquaredL2(x, query + from, width);
-    if (partial > limits[s]) return false;
+  double error = 0.0;  // ||row - half(row)||^2: each difference of a float and a half is exact in double
+  for (std::size_t j = 0; j < static_cast<std::size_t>(dim_); ++j) {
+    const _Float16 half = static_cast<_Float16>(row[j]);  // round to nearest, as stored above
+    const double diff = static_cast<double>(row[j]) - static_cast<double>(static_cast<float>(half));
+    error += diff * diff;
   }
-  return true;
+  // The double sum's own rounding (dim terms) is far below the 2^-30 added; an overflowed or
+  // NaN value leaves the screen without a bound for this store (every row is then computed).
+  const double bound = std::sqrt(error) * (1.0 + 0x1.0p-30);
+  const float rounded_up = std::nextafter(static_cast<float>(bound), std::numeric_limits<float>::infinity());
+  screen_error_ = std::isfinite(bound) ? std::max(screen_error_, rounded_up) : std::numeric_limits<float>::infinity();
 }
 
 void IncrementalIndex::Add(RobotId robot, FrameId frame, const float* descriptor) {
   data_.insert(data_.end(), descriptor, descriptor + dim_);
   norms_.push_back(Eigen::Map<const Eigen::VectorXf>(descriptor, dim_).squaredNorm());
   max_norm_ = std::max(max_norm_, norms_.back());
-  AppendLead(entries_.size(), descriptor);
+  AppendScreen(entries_.size(), descriptor);
   entries_.push_back({robot, frame});
 }
 
@@ -123,9 +127,9 @@ void IncrementalIndex::RemoveIf(const std::function<bool(std::size_t)>& remove) 
   entries_.resize(kept);
   norms_.resize(kept);
   data_.resize(kept * dim);
-  tiles_.clear();
-  for (auto& lead : lead_) lead.clear();
-  for (std::size_t i = 0; i < kept; ++i) AppendLead(i, Descriptor(i));
+  for (auto& band : screen_) band.clear();
+  screen_error_ = 0.0f;
+  for (std::size_t i = 0; i < kept; ++i) AppendScreen(i, Descriptor(i));
   max_norm_ = norms_.empty() ? 0.0f : *std::max_element(norms_.begin(), norms_.end());
   hint_ = 0;
 }
@@ -171,23 +175,18 @@ IndexSearchResult IncrementalIndex::Search(const float* query, FrameId query_fra
   const double margin = GemmErrorBound(max_norm_, q_norm, dim_);
   std::size_t best = n;
   float best_distance = 0.0f;
-  std::array<float, kMaxStages> limits{};
   const auto take = [&](std::size_t i, float d) {
     best = i, best_distance = d;
-    for (std::size_t s = 0; s < static_cast<std::size_t>(stages_); ++s) limits[s] = PruneLimit(d, margin, stage_end_[s]);
+    SetLimits(d, margin);
   };
   if (hint_ < n && !InWindow(entries_[hint_].frame, query_frame, window)) {
     take(hint_, ModelDistance(hint_, query, q_norm));
   }
-  const auto width = static_cast<std::size_t>(stage_end_[0]);
   for (std::size_t first = 0; first < n; first += kTileRows) {
-    float partial[kTileRows];
-    TilePartialSquaredL2(tiles_.data() + first * width, query, stage_end_[0], partial);
+    const unsigned survivors = best < n ? ScreenTile(first, query) : (1u << kTileRows) - 1;
     for (std::size_t i = first; i < std::min(n, first + kTileRows); ++i) {
-      const float p = partial[i - first];
-      if (best < n && p > limits[0]) continue;
-      if (i == best || InWindow(entries_[i].frame, query_frame, window)) continue;
-      if (best < n && !RestWithinLimits(i, p, query, limits)) continue;
+      if ((survivors >> (i - first) & 1u) == 0 || i == best) continue;
+      if (InWindow(entries_[i].frame, query_frame, window)) continue;
       const float d = ModelDistance(i, query, q_norm);
       if (best == n || d < best_distance || (d == best_distance && i < best)) take(i, d);
     }
@@ -196,6 +195,34 @@ IndexSearchResult IncrementalIndex::Search(const float* query, FrameId query_fra
   hint_ = best;
   result.best = Match(best, best_distance);
   return result;
+}
+
+void IncrementalIndex::SetLimits(float best, double margin) const {
+  for (std::size_t k = 0; k < checks_.size(); ++k) limits_[k] = ScreenLimit(best, margin, screen_error_, checks_[k]);
+}
+
+// The rows of the tile starting at `first` that no check of the screen rules out. Four sums a
+// lane, so that the adds do not wait on each other; any order of a float sum obeys the limit's
+// error bound.
+unsigned IncrementalIndex::ScreenTile(std::size_t first, const float* query) const {
+  Lanes acc[4] = {};
+  unsigned alive = (1u << kTileRows) - 1;
+  std::size_t from = 0;
+  for (std::size_t k = 0; k < checks_.size(); ++k) {
+    const auto end = static_cast<std::size_t>(checks_[k]);
+    const _Float16* tile = screen_[k].data() + first * (end - from);  // first is a multiple of kTileRows
+    const float* q = query + from;
+    std::size_t j = 0;
+    for (; j + 4 <= end - from; j += 4) {
+      for (std::size_t a = 0; a < 4; ++a) AddSquaredDiffs(acc[a], tile + (j + a) * kTileRows, q[j + a]);
+    }
+    for (; j < end - from; ++j) AddSquaredDiffs(acc[0], tile + j * kTileRows, q[j]);
+    const Lanes sums = (acc[0] + acc[1]) + (acc[2] + acc[3]);
+    alive &= NotAbove(sums, limits_[k]);
+    if (alive == 0) return 0;
+    from = end;
+  }
+  return alive;
 }
 
 // Every row's model distance, 8 rows at a time with the product's own kernel (gemv_row.h): the

@@ -7,16 +7,17 @@
 // matrix-vector product: ||x - q||^2 = ||x||^2 - 2 x.q + ||q||^2, the same
 // expansion the static protocol's batched distances use (SearchFullScan).
 // Search gives the same entry and the same float distance, bit for bit, but
-// reads most rows only in part: the squared difference over a row's leading
-// dimensions is a lower bound of its distance (the descriptors' variance sits
-// in the leading dimensions, as after PCA), so a row whose bound exceeds the
-// best distance so far by more than float rounding can explain is dropped
-// after reading 32 or 64 of its values; the few rows that pass every bound get
-// the full product's own value (agents/gemv_row.h). The leading values are
-// kept a second time in a layout for the bounds (tiles of 8 rows), so a search
-// streams through them instead of touching one cache line in eight of the
-// row-major store. docs/performance.md.
-#include <array>
+// computes the model's value only for the few rows that could win. Every row
+// is kept a second time in half precision, in tiles of 8 rows (value-major,
+// so 8 rows' partial sums are one vector and a search streams 2 bytes a
+// value). The squared difference over a row's leading values is a lower bound
+// of its distance (the descriptors' variance sits in the leading dimensions,
+// as after PCA); the half-precision copy differs from the row by at most the
+// row's rounding error, measured when it is added, which widens the bound by
+// the triangle inequality. A tile is dropped as soon as none of its rows can
+// beat the best distance so far (after 32 values, then every 16); the rows
+// that pass every bound get the full product's own value (agents/gemv_row.h).
+// docs/performance.md.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -82,24 +83,27 @@ class IncrementalIndex {
   static constexpr std::size_t kReadEveryRow = 64;
   std::optional<IndexMatch> SearchEveryRow(const float* query, FrameId query_frame, int window, float q_norm) const;
 
-  // Where the partial sums are tested: after 32 and 64 values (those below dim) and at dim.
-  static constexpr int kMaxStages = 3;
+  // The screen: where the bound is tested (after 32 values, then every 16, and at dim), each
+  // point's limit for the current best, and one tile's surviving rows (bit r: row first + r).
+  static constexpr int kFirstCheck = 32;
+  static constexpr int kCheckEvery = 16;
   static constexpr std::size_t kTileRows = 8;
-  std::array<int, kMaxStages> stage_end_{};
-  int stages_ = 0;
-  void AppendLead(std::size_t i, const float* row);  // row i's copy in tiles_ and lead_
-  // Stages 1.. of row i, given its partial sum of stage 0.
-  bool RestWithinLimits(std::size_t i, float partial, const float* query,
-                        const std::array<float, kMaxStages>& limits) const;
+  std::vector<int> checks_;
+  void AppendScreen(std::size_t i, const float* row);  // row i's half-precision copy in the bands
+  void SetLimits(float best, double margin) const;
+  unsigned ScreenTile(std::size_t first, const float* query) const;
 
   int dim_;
   std::vector<float> data_;   // size() x dim, row-major
-  // The leading values again, laid out for the bounds: stage 0's (the first 32) in tiles of 8
-  // rows, value-major (value j of row i at tile i / 8, j * 8 + i % 8; the last tile padded with
-  // zeros), so 8 rows' partial sums are one vector; lead_[s] for the middle stage (values
-  // 32..63), row-major. The last stage reads data_. 256 bytes a row at dim 128.
-  std::vector<float> tiles_;
-  std::array<std::vector<float>, kMaxStages - 1> lead_;
+  // Every value again in half precision, one band a check (values [checks_[k - 1], checks_[k])),
+  // each in tiles of 8 rows, value-major (value j of row i at tile i / 8, j * 8 + i % 8; the
+  // last tile padded with zeros): 256 bytes a row at dim 128. A band of its own for each check
+  // means a search that stops early in most tiles does not stream the values it skips.
+  std::vector<std::vector<_Float16>> screen_;
+  // The largest ||row - half(row)|| over the store, rounded up (+inf if a value has no finite
+  // half): how far a partial distance from the screen can lie below the row's own.
+  float screen_error_ = 0.0f;
+  mutable std::vector<float> limits_;  // per check: the largest partial sum that can still win
   std::vector<float> norms_;  // squared norms of the rows
   float max_norm_ = 0.0f;     // max of norms_: scales the rounding margin of the bounds
   std::vector<IndexEntry> entries_;

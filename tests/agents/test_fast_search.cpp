@@ -197,6 +197,90 @@ TEST_P(FastSearchByWidth, RemovalsKeepOrderAndAnswers) {
   }
 }
 
+// The screen keeps every row in half precision (2^-11 relative rounding, 5e-4 at magnitude 1):
+// rows that differ from each other by less than that look alike to it, and only the bound's
+// allowance for each row's rounding error keeps the winner from being screened out.
+TEST_P(FastSearchByWidth, RowsAlikeInHalfPrecisionResolveAsTheFullScan) {
+  const int dim = GetParam();
+  std::mt19937 rng(static_cast<unsigned>(300 + dim));
+  const std::vector<float> base = Gaussian(rng, 1, dim);
+  std::vector<float> rows = Gaussian(rng, 150, dim);  // far rows first: they set a loose best
+  std::uniform_real_distribution<float> nudge(-3e-4f, 3e-4f);
+  for (int i = 0; i < 250; ++i) {
+    for (float x : base) rows.push_back(x + nudge(rng));
+  }
+  IncrementalIndex index(dim);
+  const Stored s = Fill(index, rows, dim);
+  for (int k = 0; k < 40; ++k) {
+    std::vector<float> q = base;
+    for (float& x : q) x += nudge(rng);
+    for (int window : {0, 60, 500}) {
+      ExpectSameAsFullScan(index, q.data(), k * 25, window);
+      const auto expected = BruteForce(s, q.data(), k * 25, window);
+      const auto r = index.Search(q.data(), FrameId(k * 25), window);
+      ASSERT_TRUE(expected.has_value() && r.best.has_value());
+      // The double brute force may differ from the float model only between rows whose
+      // distances are within the model's rounding (dim units of 2^-24 of the squared norms,
+      // for each of the two rows) of each other.
+      const auto row = [&](std::size_t i) { return &s.rows[i * static_cast<std::size_t>(dim)]; };
+      const auto squared = [&](const float* a, const float* b) {
+        double sum = 0.0;
+        for (int j = 0; j < dim; ++j) sum += std::pow(double{a[j]} - (b ? double{b[j]} : 0.0), 2);
+        return sum;
+      };
+      const float* found = row(static_cast<std::size_t>(r.best->frame.value / 3));
+      const double rounding = 2.0 * dim * 0x1.0p-24 * (squared(found, nullptr) + squared(q.data(), nullptr));
+      EXPECT_LE(squared(found, q.data()) - squared(row(*expected), q.data()), rounding)
+          << "query " << k << " window " << window;
+    }
+  }
+}
+
+// Values a half cannot hold: above its largest finite value (65504) the copy is infinite, below
+// 6.1e-5 it is subnormal or zero (large relative error). Search still equals the full scan.
+TEST_P(FastSearchByWidth, ValuesOutsideHalfPrecisionsRangeMatchFullScanAndBruteForce) {
+  const int dim = GetParam();
+  for (const float scale : {1e6f, 1e-6f, 1e-30f}) {
+    std::mt19937 rng(static_cast<unsigned>(dim) + 17);
+    std::vector<float> rows = Gaussian(rng, 300, dim);
+    for (float& x : rows) x *= scale;
+    IncrementalIndex index(dim);
+    const Stored s = Fill(index, rows, dim);
+    std::vector<float> queries = Gaussian(rng, 20, dim);
+    for (float& x : queries) x *= scale;
+    for (int k = 0; k < 20; ++k) {
+      const float* q = &queries[static_cast<std::size_t>(k) * dim];
+      ExpectSameAsFullScan(index, q, k * 40, 30);
+      const auto expected = BruteForce(s, q, k * 40, 30);
+      const auto r = index.Search(q, FrameId(k * 40), 30);
+      ASSERT_TRUE(expected.has_value() && r.best.has_value());
+      if (scale > 1e-20f) {  // at 1e-30 the float distances underflow: only the full scan decides
+        EXPECT_EQ(r.best->frame, FrameId(s.frames[*expected])) << "scale " << scale << " query " << k;
+      }
+    }
+  }
+}
+
+// One row with a value beyond the half range among ordinary rows: the store's screen has no
+// finite bound for it and must not drop it when it is the nearest.
+TEST(FastSearch, ARowBeyondHalfRangeIsStillFoundWhenNearest) {
+  const int dim = 128;
+  std::mt19937 rng(5);
+  std::vector<float> rows = Gaussian(rng, 200, dim);
+  std::vector<float> far(static_cast<std::size_t>(dim), 0.0f);
+  far[0] = 70000.0f;  // half(70000) = inf
+  rows.insert(rows.begin() + 100 * dim, far.begin(), far.end());  // row 100
+  IncrementalIndex index(dim);
+  Fill(index, rows, dim);
+  std::vector<float> q = far;
+  q[1] = 1.0f;
+  const auto r = index.Search(q.data(), FrameId(0), 0);
+  ASSERT_TRUE(r.best.has_value());
+  EXPECT_EQ(r.best->frame, FrameId(300));  // row 100, frames are 3 apart (its model distance
+                                           // cancels to 0 in float: norms of 4.9e9)
+  ExpectSameAsFullScan(index, q.data(), 0, 0);
+}
+
 INSTANTIATE_TEST_SUITE_P(Widths, FastSearchByWidth, ::testing::Values(1, 3, 13, 16, 128, 130));
 
 // The product's own row kernel (gemv_row.h), where this build has it: every row of products of
