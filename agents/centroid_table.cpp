@@ -1,5 +1,8 @@
 #include "agents/centroid_table.h"
 
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -7,9 +10,46 @@
 #include "agents/l2.h"
 
 namespace dvpr {
+namespace {
+
+// The index of the smallest of values[0, count), the first of equals; 0 if all are NaN. Eight
+// lanes side by side (GNU vectors), so the compiler need not keep one running minimum.
+std::size_t ArgMin(const float* values, std::size_t count) {
+  using Lanes = float __attribute__((vector_size(8 * sizeof(float))));
+  using Indices = std::int32_t __attribute__((vector_size(8 * sizeof(std::int32_t))));
+  constexpr std::size_t kLanes = 8;
+  const float inf = std::numeric_limits<float>::infinity();
+  Lanes min = {inf, inf, inf, inf, inf, inf, inf, inf};
+  Indices at = {0, 1, 2, 3, 4, 5, 6, 7};
+  Indices next = at;
+  std::size_t i = 0;
+  for (; i + kLanes <= count; i += kLanes) {
+    Lanes v;
+    std::memcpy(&v, values + i, sizeof v);
+    const Indices smaller = v < min;  // strict: a lane keeps its first minimum
+    min = smaller ? v : min;
+    at = smaller ? next : at;
+    next += static_cast<std::int32_t>(kLanes);
+  }
+  std::size_t best = 0;
+  float best_value = inf;
+  for (std::size_t l = 0; l < kLanes; ++l) {
+    const auto index = static_cast<std::size_t>(at[l]);
+    if (min[l] < best_value || (min[l] == best_value && index < best)) best = index, best_value = min[l];
+  }
+  for (; i < count; ++i) {
+    if (values[i] < best_value) best = i, best_value = values[i];
+  }
+  return best;
+}
+
+}  // namespace
 
 CentroidTable::CentroidTable(CentroidMatrix centroids, std::vector<RobotId> owners, int num_robots)
-    : centroids_(std::move(centroids)), owners_(std::move(owners)), num_robots_(num_robots) {
+    : centroids_(std::move(centroids)),
+      screen_(static_cast<int>(centroids_.cols())),
+      owners_(std::move(owners)),
+      num_robots_(num_robots) {
   if (num_robots_ < 1) {
     throw std::invalid_argument("CentroidTable: num_robots must be >= 1, got " +
                                 std::to_string(num_robots_));
@@ -20,8 +60,7 @@ CentroidTable::CentroidTable(CentroidMatrix centroids, std::vector<RobotId> owne
                                 " centroids but " + std::to_string(owners_.size()) + " owners");
   }
   if (!centroids_.allFinite()) throw std::invalid_argument("CentroidTable: non-finite centroid");
-  centroid_norms_ = SquaredNorms(centroids_);
-  max_centroid_norm_ = centroid_norms_.maxCoeff();
+  for (Eigen::Index c = 0; c < centroids_.rows(); ++c) screen_.Append(centroids_.row(c).data());
   by_robot_.resize(static_cast<std::size_t>(num_robots_));
   for (std::size_t c = 0; c < owners_.size(); ++c) {
     const int r = owners_[c].value;
@@ -61,23 +100,36 @@ const std::vector<int>& CentroidTable::CentroidsOf(RobotId robot) const {
 }
 
 int CentroidTable::NearestCentroidOf(const float* descriptor) const {
-  // Float distances screen (one matrix-vector product, as NearestRows); only the centroids
-  // within twice the float error of the float minimum can be the exact nearest, and those are
-  // decided in double: the result is the double scan's over all centroids, at a tenth its cost.
-  const Eigen::Map<const Eigen::VectorXf> q(descriptor, dim());
-  const float q_norm = q.squaredNorm();
-  Eigen::VectorXf screen(num_centroids());
-  screen.noalias() = centroids_ * q;
-  screen = (centroid_norms_ - 2.0f * screen).array() + q_norm;
-  const float limit = screen.minCoeff() + 2.0f * GemmErrorBound(q_norm, max_centroid_norm_, dim());
-  int best = 0;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (int c = 0; c < num_centroids(); ++c) {
-    if (screen[c] > limit) continue;
-    const double d = ExactSquaredL2(descriptor, centroids_.row(c).data(), dim());
-    if (d < best_distance) best_distance = d, best = c;  // strict: ties to the lowest index
+  // Lower bounds from the half-precision screen (agents/half_screen.h) rule out most centroids
+  // from a few leading values; only the others get the exact distance, in double: the result is
+  // the double scan's over all centroids. The first band's sums of every centroid come first, so
+  // that the best exact distance the bounds test against starts at the likeliest winner.
+  const auto k = static_cast<std::size_t>(num_centroids());
+  const auto d = static_cast<int>(dim());
+  std::vector<float> sums((k + HalfScreen::kTileRows - 1) / HalfScreen::kTileRows * HalfScreen::kTileRows);
+  for (std::size_t first = 0; first < k; first += HalfScreen::kTileRows) {
+    screen_.FirstBandSums(first, descriptor, sums.data() + first);
   }
-  return best;
+  const std::size_t seed = ArgMin(sums.data(), k);
+  std::size_t best = seed;
+  double best_distance = ExactSquaredL2(descriptor, centroids_.row(static_cast<Eigen::Index>(seed)).data(), d);
+  std::vector<float> limits(screen_.checks().size());
+  const auto set_limits = [&] {
+    for (std::size_t s = 0; s < limits.size(); ++s) limits[s] = screen_.Limit(best_distance, s);
+  };
+  set_limits();
+  for (std::size_t first = 0; first < k; first += HalfScreen::kTileRows) {
+    const unsigned alive = screen_.Survivors(first, descriptor, limits.data(), sums.data() + first);
+    for (std::size_t c = first; c < std::min(k, first + HalfScreen::kTileRows); ++c) {
+      if ((alive >> (c - first) & 1u) == 0 || c == seed) continue;
+      const double distance = ExactSquaredL2(descriptor, centroids_.row(static_cast<Eigen::Index>(c)).data(), d);
+      if (distance < best_distance || (distance == best_distance && c < best)) {  // ties to the lowest index
+        best = c, best_distance = distance;
+        set_limits();
+      }
+    }
+  }
+  return static_cast<int>(best);
 }
 
 RobotId CentroidTable::RouteOf(DescriptorRow descriptor) const {

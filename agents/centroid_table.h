@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "agents/descriptors.h"
+#include "agents/half_screen.h"
 #include "agents/ids.h"
 
 namespace dvpr {
@@ -39,8 +40,7 @@ class CentroidTable {
 
  private:
   CentroidMatrix centroids_;
-  Eigen::VectorXf centroid_norms_;  // squared norms, for NearestCentroidOf's float screen
-  float max_centroid_norm_ = 0.0f;
+  HalfScreen screen_;  // the centroids in half precision: NearestCentroidOf's lower bounds
   std::vector<RobotId> owners_;
   std::vector<std::vector<int>> by_robot_;
   int num_robots_;

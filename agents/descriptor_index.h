@@ -7,16 +7,10 @@
 // matrix-vector product: ||x - q||^2 = ||x||^2 - 2 x.q + ||q||^2, the same
 // expansion the static protocol's batched distances use (SearchFullScan).
 // Search gives the same entry and the same float distance, bit for bit, but
-// computes the model's value only for the few rows that could win. Every row
-// is kept a second time in half precision, in tiles of 8 rows (value-major,
-// so 8 rows' partial sums are one vector and a search streams 2 bytes a
-// value). The squared difference over a row's leading values is a lower bound
-// of its distance (the descriptors' variance sits in the leading dimensions,
-// as after PCA); the half-precision copy differs from the row by at most the
-// row's rounding error, measured when it is added, which widens the bound by
-// the triangle inequality. A tile is dropped as soon as none of its rows can
-// beat the best distance so far (after 32 values, then every 16); the rows
-// that pass every bound get the full product's own value (agents/gemv_row.h).
+// computes the model's value only for the few rows that could win: a screen
+// keeps every row again in half precision and rules most rows out from lower
+// bounds over their leading values (agents/half_screen.h); the rows that pass
+// every bound get the full product's own value (agents/gemv_row.h).
 // docs/performance.md.
 #include <cstddef>
 #include <cstdint>
@@ -25,6 +19,7 @@
 #include <vector>
 
 #include "agents/descriptors.h"
+#include "agents/half_screen.h"
 #include "agents/ids.h"
 
 namespace dvpr {
@@ -83,27 +78,13 @@ class IncrementalIndex {
   static constexpr std::size_t kReadEveryRow = 64;
   std::optional<IndexMatch> SearchEveryRow(const float* query, FrameId query_frame, int window, float q_norm) const;
 
-  // The screen: where the bound is tested (after 32 values, then every 16, and at dim), each
-  // point's limit for the current best, and one tile's surviving rows (bit r: row first + r).
-  static constexpr int kFirstCheck = 32;
-  static constexpr int kCheckEvery = 16;
-  static constexpr std::size_t kTileRows = 8;
-  std::vector<int> checks_;
-  void AppendScreen(std::size_t i, const float* row);  // row i's half-precision copy in the bands
+  // The screen's limits (one a check) for a best model distance so far.
   void SetLimits(float best, double margin) const;
-  unsigned ScreenTile(std::size_t first, const float* query) const;
 
   int dim_;
   std::vector<float> data_;   // size() x dim, row-major
-  // Every value again in half precision, one band a check (values [checks_[k - 1], checks_[k])),
-  // each in tiles of 8 rows, value-major (value j of row i at tile i / 8, j * 8 + i % 8; the
-  // last tile padded with zeros): 256 bytes a row at dim 128. A band of its own for each check
-  // means a search that stops early in most tiles does not stream the values it skips.
-  std::vector<std::vector<_Float16>> screen_;
-  // The largest ||row - half(row)|| over the store, rounded up (+inf if a value has no finite
-  // half): how far a partial distance from the screen can lie below the row's own.
-  float screen_error_ = 0.0f;
-  mutable std::vector<float> limits_;  // per check: the largest partial sum that can still win
+  HalfScreen screen_;                  // every row again in half precision, for the bounds
+  mutable std::vector<float> limits_;  // per check of the screen: the largest partial sum that can still win
   std::vector<float> norms_;  // squared norms of the rows
   float max_norm_ = 0.0f;     // max of norms_: scales the rounding margin of the bounds
   std::vector<IndexEntry> entries_;

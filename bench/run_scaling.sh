@@ -11,6 +11,10 @@
 # parts (APPEND=1 keeps the lines already there). The expensive corners (10^6 frames with 10 or
 # 100 robots: a few robots store most frames, the search cost grows with their square) take
 # hours on two cores; docs/performance.md says which points were measured.
+# Transparent huge pages for malloc's heap (the kernel's THP mode here is madvise): a 10^6-frame
+# run faults in about 3 GiB, and 4 KiB pages made that a third to a half of its CPU time
+# (docs/performance.md). Set GLIBC_TUNABLES yourself to measure without.
+export GLIBC_TUNABLES=${GLIBC_TUNABLES-glibc.malloc.hugetlb=1}
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${1:-3}

@@ -123,5 +123,26 @@ TEST(CentroidTable, ScreenedNearestCentroidEqualsTheDoubleScan) {
   }
 }
 
+TEST(CentroidTable, CentroidsHalfPrecisionCannotTellApartEqualTheDoubleScan) {
+  // The screen keeps centroids in half precision (5e-4 apart at magnitude 1): centroids nudged
+  // by less than that look alike to it, and values above 65504 (no finite half) or below 6e-5
+  // (subnormal halves) stretch its error bound. The double scan decides every case.
+  const int dim = 128;
+  DescriptorMatrix near = Uniform(1000, dim, 21);
+  for (int c = 500; c < 1000; ++c) near.row(c) = near.row(c % 50).array() + 1e-4f * Uniform(1, dim, 22 + c).row(0).array();
+  const DescriptorMatrix huge = Uniform(1000, dim, 23) * 1e5f;
+  const DescriptorMatrix tiny = Uniform(1000, dim, 24) * 1e-6f;
+  for (const DescriptorMatrix* centroids : std::vector<const DescriptorMatrix*>{&near, &huge, &tiny}) {
+    const CentroidTable t = CentroidTable::RoundRobin(*centroids, 10);
+    const float scale = centroids->cwiseAbs().maxCoeff();
+    DescriptorMatrix queries = centroids->topRows(100) + 3e-4f * scale * Uniform(100, dim, 25);  // next to a centroid
+    queries.bottomRows(50) = Uniform(50, dim, 26) * scale;                                      // anywhere
+    for (int i = 0; i < queries.rows(); ++i) {
+      ASSERT_EQ(t.NearestCentroidOf(queries.row(i).data()), NearestByDoubleScan(*centroids, queries.row(i).data()))
+          << "set " << (centroids == &near ? "near" : centroids == &huge ? "huge" : "tiny") << " query " << i;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace dvpr
