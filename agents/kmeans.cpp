@@ -233,14 +233,19 @@ int RelocateEmpty(const Points& p, Assignment& a) {
   return static_cast<int>(empty.size());
 }
 
-// Mean over dimensions of the per-dimension variance, in one streaming pass (no double copy).
+// Mean over dimensions of the per-dimension variance, in one streaming pass (no double copy, no
+// allocation per row). A float's square is exact in double, so the sums do not depend on how
+// the square is formed.
 double MeanVariance(const DescriptorMatrix& x) {
   Eigen::RowVectorXd sum = Eigen::RowVectorXd::Zero(x.cols());
   Eigen::RowVectorXd sum_sq = Eigen::RowVectorXd::Zero(x.cols());
   for (Index i = 0; i < x.rows(); ++i) {
-    const Eigen::RowVectorXd row = x.row(i).cast<double>();
-    sum += row;
-    sum_sq += row.cwiseProduct(row);
+    const float* row = x.row(i).data();
+    for (Index j = 0; j < x.cols(); ++j) {
+      const double v = row[j];
+      sum[j] += v;
+      sum_sq[j] += v * v;
+    }
   }
   const double n = static_cast<double>(x.rows());
   return (sum_sq / n - (sum / n).cwiseProduct(sum / n)).mean();
