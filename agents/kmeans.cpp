@@ -392,8 +392,9 @@ void OwnDistances(const Points& p, const CentroidMatrix& centers, Assignment& a)
 
 // Lloyd's iterations, accelerated with Hamerly's bounds: the same fixed points as plain Lloyd
 // (up to float rounding), but late iterations measure only the few points near a boundary.
+// `final_pass`: label the points by the final centroids (and sum the inertia), one more full pass.
 KMeansResult Lloyd(const Points& p, const KMeansParams& params, std::uint64_t seed,
-                   double abs_tolerance) {
+                   double abs_tolerance, bool final_pass) {
   Xoshiro256 rng(seed);
   KMeansResult result;
   result.centroids = SeedPlusPlus(p, params.k, rng);
@@ -438,15 +439,16 @@ KMeansResult Lloyd(const Points& p, const KMeansParams& params, std::uint64_t se
       break;
     }
   }
+  if (!final_pass) return result;
   Assign(p, result.centroids, a);  // labels and inertia of the final centroids
   result.labels = std::move(a.labels);
   result.inertia = a.inertia;
   return result;
 }
 
-}  // namespace
-
-KMeansResult KMeansDetailed(const DescriptorMatrix& points, const KMeansParams& params) {
+// KMeansDetailed; without `final_pass` (only the centroids wanted, one restart) the labels and
+// inertia stay empty, which saves a full pass over the points.
+KMeansResult Fit(const DescriptorMatrix& points, const KMeansParams& params, bool final_pass) {
   params.Validate();
   if (points.rows() < params.k) {
     throw std::invalid_argument("KMeans: " + std::to_string(points.rows()) +
@@ -458,14 +460,20 @@ KMeansResult KMeansDetailed(const DescriptorMatrix& points, const KMeansParams& 
   KMeansResult best;
   for (int r = 0; r < params.restarts; ++r) {
     KMeansResult run = Lloyd(p, params, MixSeed(params.seed, static_cast<std::uint64_t>(r)),
-                             abs_tolerance);
+                             abs_tolerance, final_pass || params.restarts > 1);
     if (r == 0 || run.inertia < best.inertia) best = std::move(run);
   }
   return best;
 }
 
+}  // namespace
+
+KMeansResult KMeansDetailed(const DescriptorMatrix& points, const KMeansParams& params) {
+  return Fit(points, params, true);
+}
+
 CentroidMatrix KMeans(const DescriptorMatrix& points, const KMeansParams& params) {
-  return KMeansDetailed(points, params).centroids;
+  return Fit(points, params, false).centroids;  // the restarts' inertia still picks the winner
 }
 
 std::vector<int> NearestCentroid(const DescriptorMatrix& points, const CentroidMatrix& centroids) {
