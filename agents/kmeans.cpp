@@ -2,10 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <string>
+
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
 
 #include "agents/l2.h"
 #include "sim/random_bits.h"
@@ -93,6 +98,78 @@ struct Assignment {
   Index changed = 0;            // points whose label differs from the previous assignment
 };
 
+// The lowest score (its first index: ties go to the lower centroid) and the second lowest (equal
+// to the lowest when two tie) of the centroid scores cn[c] - 2 dots[c] (2 dots is exact, so a
+// fused multiply-add gives the same score). No branch on the data: which centroid is nearest is
+// a coin flip for the points near a boundary, the very points measured here, and a mispredicted
+// search loop cost more than the scan.
+struct NearestPair {
+  int best;
+  float best_score;
+  float second_score;
+};
+
+NearestPair NearestTwoScalar(const float* cn, const float* dots, Index k) {
+  NearestPair n{0, std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity()};
+  for (Index c = 0; c < k; ++c) {
+    const float score = cn[c] - 2.0f * dots[c];
+    const bool better = score < n.best_score;  // strict: an equal score keeps the lower index
+    n.second_score = better ? n.best_score : std::min(n.second_score, score);
+    n.best = better ? static_cast<int>(c) : n.best;
+    n.best_score = better ? score : n.best_score;
+  }
+  return n;
+}
+
+#if defined(__AVX2__)
+constexpr Index kVectorNearestMax = 64;  // centroids the vector scan takes (8 registers of 8)
+
+float LowestLane(__m256 v) {
+  __m128 m = _mm_min_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+  m = _mm_min_ps(m, _mm_movehl_ps(m, m));
+  return _mm_cvtss_f32(_mm_min_ss(m, _mm_shuffle_ps(m, m, 1)));
+}
+
+// The same pair with 8 scores a step: the minimum of a set does not depend on the order it is
+// taken in (up to the sign of a zero, which no later sum can tell), and the first index holding
+// it is the lowest set bit of the equality mask.
+NearestPair NearestTwo(const float* cn, const float* dots, Index k) {
+  if (k > kVectorNearestMax) return NearestTwoScalar(cn, dots, k);
+  alignas(32) float scores[kVectorNearestMax];
+  const __m256 inf = _mm256_set1_ps(std::numeric_limits<float>::infinity());
+  const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  const Index chunks = (k + 7) / 8;
+  __m256 low = inf;
+  for (Index j = 0; j < chunks; ++j) {
+    const __m256i in = _mm256_cmpgt_epi32(_mm256_set1_epi32(static_cast<int>(k - 8 * j)), lane);
+    const __m256 d = _mm256_maskload_ps(dots + 8 * j, in);
+    const __m256 score = _mm256_sub_ps(_mm256_maskload_ps(cn + 8 * j, in), _mm256_add_ps(d, d));
+    const __m256 kept = _mm256_blendv_ps(inf, score, _mm256_castsi256_ps(in));
+    _mm256_store_ps(scores + 8 * j, kept);
+    low = _mm256_min_ps(low, kept);
+  }
+  const __m256 lowest = _mm256_set1_ps(LowestLane(low));
+  std::uint64_t at = 0;
+  for (Index j = 0; j < chunks; ++j) {
+    const __m256 equal = _mm256_cmp_ps(_mm256_load_ps(scores + 8 * j), lowest, _CMP_EQ_OQ);
+    at |= static_cast<std::uint64_t>(static_cast<unsigned>(_mm256_movemask_ps(equal))) << (8 * j);
+  }
+  NearestPair n{__builtin_ctzll(at), 0, 0};
+  n.best_score = scores[n.best];
+  const __m256i best = _mm256_set1_epi32(n.best);
+  __m256 second = inf;
+  for (Index j = 0; j < chunks; ++j) {  // every score but the best's
+    const __m256i index = _mm256_add_epi32(lane, _mm256_set1_epi32(static_cast<int>(8 * j)));
+    const __m256 is_best = _mm256_castsi256_ps(_mm256_cmpeq_epi32(index, best));
+    second = _mm256_min_ps(second, _mm256_blendv_ps(_mm256_load_ps(scores + 8 * j), inf, is_best));
+  }
+  n.second_score = LowestLane(second);
+  return n;
+}
+#else
+NearestPair NearestTwo(const float* cn, const float* dots, Index k) { return NearestTwoScalar(cn, dots, k); }
+#endif
+
 // Nearest centroid of every point (ties to the lowest index) and the per-cluster sums, in one
 // pass over the points: GEMM on a block of rows, then reduce it while it is in cache.
 void Assign(const Points& p, const CentroidMatrix& centers, Assignment& a) {
@@ -110,17 +187,7 @@ void Assign(const Points& p, const CentroidMatrix& centers, Assignment& a) {
     dots.noalias() = p.x.middleRows(first, rows) * centers.transpose();
     for (Index r = 0; r < rows; ++r) {
       const Index i = first + r;
-      int best = 0;
-      float best_score = cn[0] - 2.0f * dots(r, 0);
-      float second_score = std::numeric_limits<float>::infinity();
-      for (Index c = 1; c < k; ++c) {
-        const float score = cn[c] - 2.0f * dots(r, c);
-        if (score < best_score) {
-          second_score = best_score, best_score = score, best = static_cast<int>(c);
-        } else if (score < second_score) {
-          second_score = score;
-        }
-      }
+      const auto [best, best_score, second_score] = NearestTwo(cn.data(), dots.row(r).data(), k);
       auto& label = a.labels[static_cast<std::size_t>(i)];
       a.changed += (label != best);
       label = best;
@@ -166,14 +233,19 @@ int RelocateEmpty(const Points& p, Assignment& a) {
   return static_cast<int>(empty.size());
 }
 
-// Mean over dimensions of the per-dimension variance, in one streaming pass (no double copy).
+// Mean over dimensions of the per-dimension variance, in one streaming pass (no double copy, no
+// allocation per row). A float's square is exact in double, so the sums do not depend on how
+// the square is formed.
 double MeanVariance(const DescriptorMatrix& x) {
   Eigen::RowVectorXd sum = Eigen::RowVectorXd::Zero(x.cols());
   Eigen::RowVectorXd sum_sq = Eigen::RowVectorXd::Zero(x.cols());
   for (Index i = 0; i < x.rows(); ++i) {
-    const Eigen::RowVectorXd row = x.row(i).cast<double>();
-    sum += row;
-    sum_sq += row.cwiseProduct(row);
+    const float* row = x.row(i).data();
+    for (Index j = 0; j < x.cols(); ++j) {
+      const double v = row[j];
+      sum[j] += v;
+      sum_sq[j] += v * v;
+    }
   }
   const double n = static_cast<double>(x.rows());
   return (sum_sq / n - (sum / n).cwiseProduct(sum / n)).mean();
@@ -194,22 +266,6 @@ std::vector<double> HalfGaps(const CentroidMatrix& centers) {
   return gap;
 }
 
-// The lowest score (its first index: ties go to the lower centroid) and the second lowest (equal
-// to the lowest when two tie) of a row of centroid scores, without a branch per centroid.
-struct NearestPair {
-  int best;
-  float best_score;
-  float second_score;
-};
-NearestPair NearestTwo(Eigen::RowVectorXf& scores) {
-  const float low = scores.minCoeff();  // exact: the minimum does not depend on the order
-  int best = 0;
-  while (!(scores[best] == low)) ++best;
-  const float best_score = scores[best];
-  scores[best] = std::numeric_limits<float>::infinity();
-  return {best, best_score, scores.minCoeff()};
-}
-
 // Rows gathered for one GEMM of the bounded pass. The blocks are exactly those the pass has
 // always multiplied (the points to re-measure, in index order, cut every kBlockRows), so each
 // product and its rounding are unchanged: Eigen's GEMM sums a row differently depending on where
@@ -227,12 +283,10 @@ void ReassignGathered(const Points& p, const CentroidMatrix& centers, const Eige
   const Index k = centers.rows();
   dots.resize(g.size, k);
   dots.noalias() = g.rows.topRows(g.size) * centers.transpose();
-  Eigen::RowVectorXf scores(k);
   for (Index r = 0; r < g.size; ++r) {
     const Index i = g.index[static_cast<std::size_t>(r)];
     const auto ui = static_cast<std::size_t>(i);
-    scores = cn.transpose() - 2.0f * dots.row(r);
-    const auto [best, best_score, second_score] = NearestTwo(scores);
+    const auto [best, best_score, second_score] = NearestTwo(cn.data(), dots.row(r).data(), k);
     a.upper[ui] = std::sqrt(static_cast<double>(std::max(0.0f, p.norms[i] + best_score)));
     a.lower[ui] = std::sqrt(static_cast<double>(std::max(0.0f, p.norms[i] + second_score)));
     const int own = a.labels[ui];
@@ -338,8 +392,9 @@ void OwnDistances(const Points& p, const CentroidMatrix& centers, Assignment& a)
 
 // Lloyd's iterations, accelerated with Hamerly's bounds: the same fixed points as plain Lloyd
 // (up to float rounding), but late iterations measure only the few points near a boundary.
+// `final_pass`: label the points by the final centroids (and sum the inertia), one more full pass.
 KMeansResult Lloyd(const Points& p, const KMeansParams& params, std::uint64_t seed,
-                   double abs_tolerance) {
+                   double abs_tolerance, bool final_pass) {
   Xoshiro256 rng(seed);
   KMeansResult result;
   result.centroids = SeedPlusPlus(p, params.k, rng);
@@ -384,15 +439,16 @@ KMeansResult Lloyd(const Points& p, const KMeansParams& params, std::uint64_t se
       break;
     }
   }
+  if (!final_pass) return result;
   Assign(p, result.centroids, a);  // labels and inertia of the final centroids
   result.labels = std::move(a.labels);
   result.inertia = a.inertia;
   return result;
 }
 
-}  // namespace
-
-KMeansResult KMeansDetailed(const DescriptorMatrix& points, const KMeansParams& params) {
+// KMeansDetailed; without `final_pass` (only the centroids wanted, one restart) the labels and
+// inertia stay empty, which saves a full pass over the points.
+KMeansResult Fit(const DescriptorMatrix& points, const KMeansParams& params, bool final_pass) {
   params.Validate();
   if (points.rows() < params.k) {
     throw std::invalid_argument("KMeans: " + std::to_string(points.rows()) +
@@ -404,14 +460,20 @@ KMeansResult KMeansDetailed(const DescriptorMatrix& points, const KMeansParams& 
   KMeansResult best;
   for (int r = 0; r < params.restarts; ++r) {
     KMeansResult run = Lloyd(p, params, MixSeed(params.seed, static_cast<std::uint64_t>(r)),
-                             abs_tolerance);
+                             abs_tolerance, final_pass || params.restarts > 1);
     if (r == 0 || run.inertia < best.inertia) best = std::move(run);
   }
   return best;
 }
 
+}  // namespace
+
+KMeansResult KMeansDetailed(const DescriptorMatrix& points, const KMeansParams& params) {
+  return Fit(points, params, true);
+}
+
 CentroidMatrix KMeans(const DescriptorMatrix& points, const KMeansParams& params) {
-  return KMeansDetailed(points, params).centroids;
+  return Fit(points, params, false).centroids;  // the restarts' inertia still picks the winner
 }
 
 std::vector<int> NearestCentroid(const DescriptorMatrix& points, const CentroidMatrix& centroids) {

@@ -43,7 +43,7 @@ struct KMeansResult {
 // Throws std::invalid_argument on invalid params, fewer than k points, or non-finite values.
 KMeansResult KMeansDetailed(const DescriptorMatrix& points, const KMeansParams& params);
 
-// The centroids of KMeansDetailed.
+// The centroids of KMeansDetailed, bit for bit, without its final pass that labels every point.
 CentroidMatrix KMeans(const DescriptorMatrix& points, const KMeansParams& params);
 
 // Index of the nearest centroid of every row of `points`, exact (ties to the lowest index); see

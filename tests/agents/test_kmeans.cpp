@@ -47,6 +47,20 @@ TEST(KMeans, FindsWellSeparatedBlobs) {
   }
 }
 
+// KMeans skips the final labelling pass that KMeansDetailed makes; its centroids must not
+// change, with one restart or several (whose inertia picks the winner).
+TEST(KMeans, CentroidsAreThoseOfKMeansDetailed) {
+  const DescriptorMatrix x = Blobs(4, 60, 16, 13) + DescriptorMatrix::Constant(240, 16, 0.25f);
+  for (const int restarts : {1, 3}) {
+    const KMeansParams p{.k = 9, .restarts = restarts, .seed = 5};
+    const CentroidMatrix a = KMeans(x, p);
+    const CentroidMatrix b = KMeansDetailed(x, p).centroids;
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_EQ(0, std::memcmp(a.data(), b.data(), sizeof(float) * static_cast<std::size_t>(a.size())))
+        << "restarts " << restarts;
+  }
+}
+
 TEST(KMeans, SameSeedGivesIdenticalBytes) {
   const DescriptorMatrix x = Blobs(3, 100, 16, 11) + DescriptorMatrix::Constant(300, 16, 0.5f);
   const KMeansParams p{.k = 7, .seed = 42};  // more clusters than blobs: the seed matters
