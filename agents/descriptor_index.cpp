@@ -204,8 +204,16 @@ std::optional<IndexMatch> IncrementalIndex::SearchEveryRow(const float* query, F
                                                            float q_norm) const {
 #if DVPR_GEMV_ROW_KERNEL
   const std::size_t n = entries_.size();
-  scratch_.resize(n + kTileRows);
-  for (std::size_t first = 0; first < n; first += kTileRows) {
+  scratch_.resize(n + 2 * kTileRows);
+  std::size_t first = 0;
+  if (HasGemvSixteenRows()) {  // the same values, 16 rows at a time where the CPU has AVX-512
+    for (; first + kTileRows < n; first += 2 * kTileRows) {
+      const float* rows[2 * kTileRows];
+      for (std::size_t r = 0; r < 2 * kTileRows; ++r) rows[r] = Descriptor(std::min(first + r, n - 1));
+      GemvSixteenRows(rows, query, dim_, scratch_.data() + first);
+    }
+  }
+  for (; first < n; first += kTileRows) {
     const float* rows[kTileRows];
     for (std::size_t r = 0; r < kTileRows; ++r) rows[r] = Descriptor(std::min(first + r, n - 1));
     GemvEightRows(rows, query, dim_, scratch_.data() + first);
