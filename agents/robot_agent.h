@@ -65,7 +65,7 @@ class RobotAgent final : public TeamAgent {
     enum class Kind { kSearch, kVerify } kind = Kind::kSearch;
     RobotId querier;
     FrameId frame;
-    std::vector<float> descriptor;  // kSearch; the buffer stays with the queue's slot for later tasks
+    std::vector<float> descriptor;  // kSearch; its buffer goes back to spare_descriptors_ when done
     bool store = false;             // kSearch: keep the descriptor after searching
     FrameId match_frame;            // kVerify
     RobotId match_robot;
@@ -73,8 +73,8 @@ class RobotAgent final : public TeamAgent {
 
   void TakeFrame(int k);
   void PublishQuery(int k, const QueryPlan& plan);
-  // Queues a search of `descriptor` (copied into a buffer an earlier task left in the queue's
-  // slot: no allocation once warm) or a verification; nothing while offline.
+  // Queues a search of `descriptor` (copied into a buffer of an earlier task's: no allocation
+  // once warm) or a verification; nothing while offline.
   void EnqueueSearch(RobotId querier, FrameId frame, const float* descriptor, bool store);
   void EnqueueVerify(RobotId querier, FrameId frame, FrameId match_frame);
   Task& PushTask(Task::Kind kind, RobotId querier, FrameId frame);
@@ -109,6 +109,7 @@ class RobotAgent final : public TeamAgent {
   ReuseQueue<Task> queue_;
   bool busy_ = false;
   Task in_service_;                         // when busy_ (swapped with the queue's front slot)
+  std::vector<std::vector<float>> spare_descriptors_;  // buffers of finished tasks, last given first taken
   std::optional<IndexMatch> service_best_;  // its search's result, sent when the service ends
   // Reply and verification channels by robot id (kNoChannel until first used).
   static constexpr std::uint32_t kNoChannel = ~std::uint32_t{0};
