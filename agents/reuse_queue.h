@@ -1,10 +1,9 @@
 #pragma once
 // A first-in-first-out queue whose slots keep their objects from one element to the next: Push
 // hands out the slot with whatever an earlier element left in it, and Pop swaps the front into
-// the caller's object, so buffers inside the elements (a search task's descriptor) keep their
-// capacity and a queue in its steady state allocates nothing. A robot of the 100-robot broadcast
-// queues 99 searches per frame; std::deque freed and allocated a 512-byte block each time its
-// elements moved through one, and the task's descriptor buffer was a separate spare list.
+// the caller's object, so buffers inside the elements keep their capacity and a queue in its
+// steady state allocates nothing. A robot of the 100-robot broadcast queues 99 searches per
+// frame; std::deque freed and allocated a 512-byte block each time its elements moved through one.
 #include <algorithm>
 #include <cstddef>
 #include <utility>
