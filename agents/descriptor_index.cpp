@@ -134,8 +134,16 @@ std::optional<IndexMatch> IncrementalIndex::SearchEveryRow(const float* query, F
 #if DVPR_GEMV_ROW_KERNEL
   const std::size_t n = entries_.size();
   constexpr std::size_t kKernelRows = 8;  // GemvEightRows
-  scratch_.resize(n + kKernelRows);
-  for (std::size_t first = 0; first < n; first += kKernelRows) {
+  scratch_.resize(n + 2 * kKernelRows);
+  std::size_t first = 0;
+  if (HasGemvSixteenRows()) {  // the same values, 16 rows at a time where the CPU has AVX-512
+    for (; first + kKernelRows < n; first += 2 * kKernelRows) {
+      const float* rows[2 * kKernelRows];
+      for (std::size_t r = 0; r < 2 * kKernelRows; ++r) rows[r] = Descriptor(std::min(first + r, n - 1));
+      GemvSixteenRows(rows, query, dim_, scratch_.data() + first);
+    }
+  }
+  for (; first < n; first += kKernelRows) {
     const float* rows[kKernelRows];
     for (std::size_t r = 0; r < kKernelRows; ++r) rows[r] = Descriptor(std::min(first + r, n - 1));
     GemvEightRows(rows, query, dim_, scratch_.data() + first);

@@ -99,6 +99,43 @@ inline void GemvEightRows(const float* const* rows, const float* query, int dim,
   _mm256_storeu_ps(out, _mm256_add_ps(gemv_detail::PreduxEight(c), _mm256_setzero_ps()));
 }
 
+// Whether this CPU runs GemvSixteenRows (AVX-512 F and DQ), asked once. The build targets
+// x86-64-v3; the wider kernel is compiled for AVX-512 on its own and only called where it runs.
+inline bool HasGemvSixteenRows() {
+  static const bool has = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq");
+  return has;
+}
+
+// GemvEightRows for 16 rows, bit for bit: each 512-bit register holds the 8-lane chains of rows
+// r (low half) and r + 8 (high half), with the query's packet in both halves, so every lane sees
+// the same fused multiply-adds in the same order as in GemvEightRows; the lanes are then added
+// with the same reduction. Half the multiply-add instructions for the same rows.
+__attribute__((target("avx512f,avx512dq"))) inline void GemvSixteenRows(const float* const* rows, const float* query,
+                                                                       int dim, float* out) {
+  // Halves joined and split with __builtin_shufflevector: GCC 12's AVX-512 intrinsics for that
+  // (broadcast, cast, extract) trip its own -Wuninitialized on their undefined pass-through.
+  __m512 c[8];
+  for (auto& x : c) x = _mm512_setzero_ps();
+  for (int j = 0; j < dim; j += 8) {
+    const __m256 q = _mm256_loadu_ps(query + j);
+    const __m512 b = __builtin_shufflevector(q, q, 0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7);
+    for (int r = 0; r < 8; ++r) {
+      const __m256 low = _mm256_loadu_ps(rows[r] + j);
+      const __m256 high = _mm256_loadu_ps(rows[r + 8] + j);
+      const __m512 x = __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+      c[r] = _mm512_fmadd_ps(x, b, c[r]);
+    }
+  }
+  __m256 low[8];
+  __m256 high[8];
+  for (int r = 0; r < 8; ++r) {
+    low[r] = __builtin_shufflevector(c[r], c[r], 0, 1, 2, 3, 4, 5, 6, 7);
+    high[r] = __builtin_shufflevector(c[r], c[r], 8, 9, 10, 11, 12, 13, 14, 15);
+  }
+  _mm256_storeu_ps(out, _mm256_add_ps(gemv_detail::PreduxEight(low), _mm256_setzero_ps()));
+  _mm256_storeu_ps(out + 8, _mm256_add_ps(gemv_detail::PreduxEight(high), _mm256_setzero_ps()));
+}
+
 // row . query alone, as GemvEightRows gives it.
 inline float GemvOneRow(const float* row, const float* query, int dim) {
   __m256 c = _mm256_setzero_ps();

@@ -10,7 +10,6 @@
 // frames go and how it keeps what it stores is its routing component's
 // (AgentRouting), which may keep per-robot state and messages of its own.
 #include <cstdint>
-#include <deque>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -26,6 +25,7 @@
 #include "agents/geometric_verifier.h"
 #include "agents/ids.h"
 #include "agents/query_record.h"
+#include "agents/reuse_queue.h"
 #include "agents/robot_load.h"
 #include "agents/team_agent.h"
 #include "agents/transport.h"
@@ -73,9 +73,12 @@ class RobotAgent final : public TeamAgent {
 
   void TakeFrame(int k);
   void PublishQuery(int k, const QueryPlan& plan);
-  // A search task for `descriptor`, in a buffer of an earlier task's (no allocation once warm).
-  Task SearchTask(RobotId querier, FrameId frame, const float* descriptor, bool store);
-  void Enqueue(Task task);
+  // Queues a search of `descriptor` (copied into a buffer of an earlier task's: no allocation
+  // once warm) or a verification; nothing while offline.
+  void EnqueueSearch(RobotId querier, FrameId frame, const float* descriptor, bool store);
+  void EnqueueVerify(RobotId querier, FrameId frame, FrameId match_frame);
+  Task& PushTask(Task::Kind kind, RobotId querier, FrameId frame);
+  void Enqueued();
   void StartNextTask();
   // Service of in_service_: starts now, ends (Finish...) when its service time has elapsed. The
   // timer holds only the agent, so scheduling it does not allocate.
@@ -84,7 +87,8 @@ class RobotAgent final : public TeamAgent {
   void ServeVerify();
   void FinishVerify();
   void EndService();
-  const std::string& MatchChannel(RobotId querier);
+  // The channel name(robot) interned in `by_robot` (a slot per robot id, made on first use).
+  PublishChannel ChannelOf(std::vector<std::uint32_t>& by_robot, RobotId robot, std::string (*name)(RobotId));
   void OnQuery(const query_t& q, QueryRole role);
   void OnMatch(const match_t& m);
   void OnVerifyRequest(const verify_request_t& r);
@@ -102,13 +106,16 @@ class RobotAgent final : public TeamAgent {
   std::unique_ptr<AgentRouting> routing_;
   std::vector<QueryRecord> outcomes_;
   RobotLoad load_;
-  std::deque<Task> queue_;
+  ReuseQueue<Task> queue_;
   bool busy_ = false;
-  Task in_service_;                         // when busy_
+  Task in_service_;                         // when busy_ (swapped with the queue's front slot)
+  std::vector<std::vector<float>> spare_descriptors_;  // buffers of finished tasks, last given first taken
   std::optional<IndexMatch> service_best_;  // its search's result, sent when the service ends
-  std::vector<std::vector<float>> spare_descriptors_;
-  std::vector<std::string> match_channels_;  // by querier, made on first use
-  std::string other_channel_;
+  // Reply and verification channels by robot id (kNoChannel until first used).
+  static constexpr std::uint32_t kNoChannel = ~std::uint32_t{0};
+  std::vector<std::uint32_t> match_channels_;
+  std::vector<std::uint32_t> verify_request_channels_;
+  std::vector<std::uint32_t> verify_result_channels_;
   verify_request_t verify_request_;
   bool online_ = true;
   std::vector<Subscription> subscriptions_;

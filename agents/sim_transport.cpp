@@ -39,6 +39,15 @@ void SimTransport::DoPublish(const std::string& channel, const char* type_name, 
   network_.Send(node_, network_.InternChannel(channel), TypeOf(type_name), std::move(bytes));
 }
 
+void SimTransport::DoPublishInterned(PublishChannel channel, const char* type_name, std::vector<std::uint8_t> bytes) {
+  const auto i = static_cast<std::size_t>(channel);
+  if (i >= network_channels_.size()) network_channels_.resize(i + 1, kUnresolved);
+  if (network_channels_[i] == kUnresolved) {
+    network_channels_[i] = static_cast<std::uint32_t>(network_.InternChannel(NameOf(channel)));
+  }
+  network_.Send(node_, ChannelId{network_channels_[i]}, TypeOf(type_name), std::move(bytes));
+}
+
 SimTransport::ChannelHandlers* SimTransport::Find(ChannelId channel) {
   const auto at = std::lower_bound(by_channel_.begin(), by_channel_.end(), channel,
                                    [](const auto& e, ChannelId c) { return e.first < c; });

@@ -9,7 +9,10 @@
 #include "bench/bench_main.h"
 #include "bench/sim_inputs.h"
 
+#include <cstdint>
+#include <cstring>
 #include <memory>
+#include <type_traits>
 
 #include "agents/decentralized_routing.h"
 
@@ -21,12 +24,54 @@ using bench::PeakRssMiB;
 using bench::PointToPoint;
 using bench::Table;
 
+// FNV-1a over every output of the run a change of speed must leave alone: each query record,
+// each robot's load, each pair's counters and role bytes, the senders' medium, the role totals,
+// the events and the end time. 48 bits, so the counter (a double) holds it exactly; compare it
+// between builds with --benchmark_format=json.
+class Checksum {
+ public:
+  template <class T>
+  void Add(const T& value) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    unsigned char bytes[sizeof(T)];
+    std::memcpy(bytes, &value, sizeof(T));
+    for (const unsigned char b : bytes) h_ = (h_ ^ b) * 0x100000001b3ull;
+  }
+  double Value() const { return static_cast<double>(h_ >> 16); }
+
+ private:
+  std::uint64_t h_ = 0xcbf29ce484222325ull;
+};
+
+double OutputChecksum(const SimRunLog& log) {
+  Checksum c;
+  for (const QueryRecord& q : log.queries) {
+    c.Add(q.robot.value), c.Add(q.frame.value), c.Add(q.sent.ns()), c.Add(q.expected_replies);
+    c.Add(q.received_replies), c.Add(q.best.has_value()), c.Add(q.latency ? q.latency->ns() : -1);
+    if (q.best) c.Add(q.best->robot.value), c.Add(q.best->frame.value), c.Add(q.best->distance);
+    c.Add(q.verify_requested), c.Add(q.verify_accepted ? int{*q.verify_accepted} : -1);
+  }
+  for (const RobotLoad& l : log.loads) {
+    c.Add(l.searches), c.Add(l.remote_queries), c.Add(l.comparisons), c.Add(l.stored);
+    c.Add(l.verifications), c.Add(l.busy.ns()), c.Add(l.max_queue);
+  }
+  for (const PairTraffic& p : log.links) {
+    c.Add(p.src), c.Add(p.dst), c.Add(p.counters.messages), c.Add(p.counters.payload_bytes);
+    c.Add(p.counters.wire_bytes), c.Add(p.counters.delivered), c.Add(p.counters.dropped);
+    c.Add(p.roles);
+  }
+  for (const NodeCounters& s : log.senders) c.Add(s.published), c.Add(s.transmissions), c.Add(s.medium_bytes);
+  c.Add(log.roles), c.Add(log.verify_requested), c.Add(log.verify_accepted), c.Add(log.events), c.Add(log.end.ns());
+  return c.Value();
+}
+
 void Report(benchmark::State& state, const SimRunLog& log) {
   std::int64_t messages = 0;
   for (const auto& l : log.links) messages += static_cast<std::int64_t>(l.counters.messages);
   state.counters["messages"] = static_cast<double>(messages);
   state.counters["events"] = static_cast<double>(log.events);
   state.counters["peak_rss_MiB"] = PeakRssMiB();
+  state.counters["checksum"] = OutputChecksum(log);
 }
 
 void BM_Kitti00_100Robots(benchmark::State& state, const char* strategy) {

@@ -1,11 +1,14 @@
 #include "net_models/payload_buffers.h"
 
+#include <algorithm>
 #include <bit>
 #include <utility>
 
 namespace dvpr {
 
 int PayloadBuffers::ClassOf(std::size_t capacity) { return std::bit_width(capacity) - 1; }
+
+std::size_t PayloadBuffers::LimitOf(int size_class) { return std::max(kPerClass, kClassBytes >> size_class); }
 
 std::vector<std::uint8_t> PayloadBuffers::Take(std::size_t size) {
   if (size == 0 || size > kMaxKept) return {};
@@ -33,8 +36,9 @@ std::vector<std::uint8_t> PayloadBuffers::Take(std::size_t size) {
 void PayloadBuffers::Give(std::vector<std::uint8_t>&& bytes) {
   const std::size_t capacity = bytes.capacity();
   if (capacity == 0 || capacity > kMaxKept) return;
-  auto& bin = kept_[static_cast<std::size_t>(ClassOf(capacity))];
-  if (bin.size() >= kPerClass || kept_bytes_ + capacity > kMaxKeptBytes) return;
+  const int size_class = ClassOf(capacity);
+  auto& bin = kept_[static_cast<std::size_t>(size_class)];
+  if (bin.size() >= LimitOf(size_class) || kept_bytes_ + capacity > kMaxKeptBytes) return;
   kept_bytes_ += capacity;
   bin.push_back(std::move(bytes));
 }

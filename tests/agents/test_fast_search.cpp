@@ -314,6 +314,46 @@ TEST(GemvRowKernel, EightRowsAndOneRowEqualTheFullProductBitForBit) {
 #endif
 }
 
+// The 16-row kernel (AVX-512, where the CPU has it): every row of products of 2 to 65 rows,
+// 16 rows at a time, equals Eigen's product of the x86-64-v3 build bit for bit, and so the
+// 8-row kernel's value.
+TEST(GemvRowKernel, SixteenRowsEqualTheFullProductBitForBit) {
+  if (!GemvRowKernelMatches(2, 8)) GTEST_SKIP() << "no row kernel in this build";
+#if DVPR_GEMV_ROW_KERNEL
+  if (!HasGemvSixteenRows()) GTEST_SKIP() << "this CPU has no AVX-512";
+  std::mt19937 rng(6);
+  for (int dim : {8, 16, 128, 256}) {
+    const std::vector<float> q = Gaussian(rng, 1, dim);
+    for (int rows : {2, 3, 9, 15, 16, 17, 31, 33, 45, 64, 65}) {
+      const std::vector<float> data = Gaussian(rng, rows, dim);
+      using RowMajor = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+      Eigen::VectorXf full(rows);
+      full.noalias() = Eigen::Map<const RowMajor>(data.data(), rows, dim) * Eigen::Map<const Eigen::VectorXf>(q.data(), dim);
+      for (int first = 0; first < rows; first += 16) {
+        const float* block[16];
+        for (int r = 0; r < 16; ++r) block[r] = &data[static_cast<std::size_t>(std::min(first + r, rows - 1)) * dim];
+        float sixteen[16];
+        GemvSixteenRows(block, q.data(), dim, sixteen);
+        for (int r = 0; r < 16 && first + r < rows; ++r) {
+          ASSERT_EQ(std::bit_cast<std::uint32_t>(sixteen[r]), std::bit_cast<std::uint32_t>(full[first + r]))
+              << "dim " << dim << " rows " << rows << " row " << first + r;
+        }
+      }
+    }
+  }
+  // The reduction's order in both halves: 2^24 + 1 rounds away in (l0 + l4) first (see below),
+  // so each row of ones-weighted lanes {2^24, 0, -2^24, 0, 1, 0, 1, 0} sums to 1, not 2.
+  const float big = 16777216.0f;
+  const std::vector<float> row = {big, 0, -big, 0, 1, 0, 1, 0};
+  const std::vector<float> ones(8, 1.0f);
+  const float* block[16];
+  for (auto& b : block) b = row.data();
+  float sixteen[16];
+  GemvSixteenRows(block, ones.data(), 8, sixteen);
+  for (const float v : sixteen) EXPECT_EQ(v, 1.0f);
+#endif
+}
+
 TEST(GemvRowKernel, AddsALanesSumsInThePacketReductionsOrder) {
   // One packet of 8 products 2^24, 0, -2^24, 0, 1, 0, 1, 0 (query of ones). Eigen's reduction
   // adds (l0 + l4) + (l2 + l6) first: 2^24 + 1 rounds to 2^24 (ties to even), -2^24 + 1 is

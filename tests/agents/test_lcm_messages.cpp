@@ -5,7 +5,9 @@
 // padding, their length taken from an earlier field.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "agents/lcm_codec.h"
@@ -253,6 +255,65 @@ TEST(MessageDecode, GarbageLengthFieldDoesNotAllocate) {
   auto q = Encode(MakeQuery(4));
   q[30] = 0x80;  // dim (after fingerprint 8, utime 8, robot 2, frame 4, capture_utime 8) negative
   EXPECT_FALSE(Decode<query_t>(q).has_value());
+}
+
+// DecodeInto<query_t> has a decoder of its own (lcm_codec.h); LCM's generated decoder, called
+// here directly on a fresh message, is the reference: for every buffer both accept or both
+// reject, and what they accept decodes to the same fields and the same float bits (NaNs,
+// negative zero and denormals included). Buffers: encodings of several dims, each truncated at
+// every length, with a trailing byte, with each byte of the fingerprint flipped, and with the
+// dim field set to values that claim more or fewer floats than the buffer holds.
+TEST(MessageDecodeInto, QueryDecoderAgreesWithTheGeneratedOneOnEveryBuffer) {
+  std::vector<std::vector<std::uint8_t>> buffers;
+  for (int dim : {0, 1, 3, 8, 128}) {
+    query_t q = MakeQuery(dim);
+    if (dim >= 3) {
+      q.descriptor[0] = std::bit_cast<float>(0x7fc00001u);  // a NaN with a payload
+      q.descriptor[1] = -0.0f;
+      q.descriptor[2] = std::bit_cast<float>(0x00000001u);  // the smallest denormal
+    }
+    q.robot = -2;
+    q.frame = -70000;
+    const auto bytes = Encode(q);
+    for (std::size_t len = 0; len <= bytes.size(); ++len) buffers.emplace_back(bytes.begin(), bytes.begin() + len);
+    buffers.push_back(bytes);
+    buffers.back().push_back(0);
+    for (std::size_t i = 0; i < 8; ++i) {
+      buffers.push_back(bytes);
+      buffers.back()[i] ^= 0x01;
+    }
+    for (const std::uint16_t claimed : {0, 1, 2, 127, 129, 0x7fff, 0x8000, 0xffff}) {
+      buffers.push_back(bytes);
+      buffers.back()[30] = static_cast<std::uint8_t>(claimed >> 8);
+      buffers.back()[31] = static_cast<std::uint8_t>(claimed & 0xff);
+    }
+  }
+  int accepted = 0;
+  for (const auto& buf : buffers) {
+    query_t reference;
+    const auto dim = buf.size() >= 32 ? static_cast<std::int16_t>(buf[30] << 8 | buf[31]) : std::int16_t{0};
+    // The generated decoder resizes before it checks the length: only give it dims >= 0.
+    const bool ok_reference =
+        dim >= 0 && reference.decode(buf.data(), 0, static_cast<int>(buf.size())) == static_cast<int>(buf.size());
+    query_t fast;
+    fast.descriptor.assign(5, 9.0f);  // left from an earlier message
+    const bool ok_fast = DecodeInto(std::span<const std::uint8_t>(buf), fast);
+    ASSERT_EQ(ok_fast, ok_reference) << "buffer of " << buf.size() << " bytes";
+    if (!ok_fast) continue;
+    ++accepted;
+    EXPECT_EQ(fast.utime, reference.utime);
+    EXPECT_EQ(fast.robot, reference.robot);
+    EXPECT_EQ(fast.frame, reference.frame);
+    EXPECT_EQ(fast.capture_utime, reference.capture_utime);
+    ASSERT_EQ(fast.dim, reference.dim);
+    ASSERT_EQ(fast.descriptor.size(), static_cast<std::size_t>(reference.dim));
+    for (std::size_t i = 0; i < fast.descriptor.size(); ++i) {
+      EXPECT_EQ(std::bit_cast<std::uint32_t>(fast.descriptor[i]), std::bit_cast<std::uint32_t>(reference.descriptor[i]));
+    }
+  }
+  // Each dim's whole encoding, and the one whose dim field was set to its own value (0 and 1
+  // for dims 0 and 1; 127 and 129 fit no buffer).
+  EXPECT_EQ(accepted, 5 + 2);
 }
 
 TEST(MessageRoundTrip, DescriptorBatchAndCentroidTable) {

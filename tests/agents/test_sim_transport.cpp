@@ -75,6 +75,33 @@ TEST_F(SimTransportTest, QueryAndRepliesArriveAtHandWorkedTimes) {
   EXPECT_EQ(net.Counters(NodeId(2), NodeId(0)).wire_bytes, 86);
 }
 
+// The same exchange with the query and the replies on interned channels: the same times and
+// bytes (the channel's name, 14 and 12 characters, is still counted on the wire).
+TEST_F(SimTransportTest, InternedChannelsCarryTheSameMessagesAsNamedOnes) {
+  std::vector<Subscription> subs;
+  for (int r = 1; r < kRobots; ++r) {
+    SimTransport* t = robots[r].get();
+    const PublishChannel reply = t->Intern(channels::Match(RobotId(0)));
+    subs.push_back(t->Subscribe<query_t>(channels::kQueryAll, [t, r, reply](const query_t& q) {
+      match_t m{};
+      m.query_robot = q.robot;
+      m.responder = static_cast<std::int16_t>(r);
+      t->Publish(reply, m);
+    }));
+  }
+  std::vector<std::pair<SimTime, int>> matches;
+  subs.push_back(robots[0]->Subscribe<match_t>(channels::Match(RobotId(0)), [&](const match_t& m) {
+    matches.emplace_back(robots[0]->Now(), m.responder);
+  }));
+  const PublishChannel all = robots[0]->Intern(channels::kQueryAll);
+  EXPECT_EQ(robots[0]->Publish(all, Query(0, 17)), 544u);
+  sim.Run();
+  EXPECT_EQ(matches, (std::vector<std::pair<SimTime, int>>{{kMatchArrival, 1}, {kMatchArrival, 2}}));
+  EXPECT_EQ(net.Counters(NodeId(0), NodeId(1)).wire_bytes, 597);
+  EXPECT_EQ(net.Counters(NodeId(2), NodeId(0)).wire_bytes, 86);
+  EXPECT_EQ(net.Counters(NodeId(2), NodeId(0)).delivered, 1u);
+}
+
 TEST_F(SimTransportTest, ClockAndTimersAreVirtual) {
   std::vector<SimTime> fired;
   robots[1]->ScheduleAfter(SimTime::Millis(250), [&] { fired.push_back(robots[1]->Now()); });

@@ -72,6 +72,24 @@ TEST(TransportSubscribe, AHandlerThatPublishesToItselfSeesBothMessagesIntact) {
   EXPECT_EQ(log.back(), "out 3 0");
 }
 
+TEST(TransportIntern, TheSameNameGivesTheSameChannelAndPublishesUnderItsName) {
+  LoopbackTransport t;
+  const PublishChannel a = t.Intern("A");
+  const PublishChannel b = t.Intern("B");
+  EXPECT_NE(a, b);
+  EXPECT_EQ(t.Intern("A"), a);
+  EXPECT_EQ(static_cast<std::uint32_t>(a), 0u);  // numbered from 0 in the order first interned
+  EXPECT_EQ(static_cast<std::uint32_t>(b), 1u);
+  EXPECT_EQ(t.NameOf(b), "B");
+  std::vector<std::string> seen;
+  const Subscription sub_a = t.Subscribe<query_t>("A", [&](const query_t& q) { seen.push_back("A" + std::to_string(q.frame)); });
+  const Subscription sub_b = t.Subscribe<query_t>("B", [&](const query_t& q) { seen.push_back("B" + std::to_string(q.frame)); });
+  const std::size_t interned_bytes = t.Publish(b, Query(1, {1.0f}));
+  EXPECT_EQ(interned_bytes, t.Publish("B", Query(2, {2.0f})));
+  t.Publish(a, Query(3, {}));
+  EXPECT_EQ(seen, (std::vector<std::string>{"B1", "B2", "A3"}));
+}
+
 TEST(TransportSubscribe, ABufferThatIsNotTheTypeIsCountedAndDropped) {
   LoopbackTransport t;
   int calls = 0;

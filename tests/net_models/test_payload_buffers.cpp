@@ -40,8 +40,13 @@ TEST(PayloadBuffers, KeepsAtMostItsBoundsAndNoEmptyBuffer) {
   EXPECT_EQ(pool.Kept(), 0u);
   pool.Give(Buffer(PayloadBuffers::kMaxKept));
   EXPECT_EQ(pool.Kept(), 1u);
-  for (std::size_t i = 0; i < PayloadBuffers::kPerClass + 5; ++i) pool.Give(Buffer(100));
-  EXPECT_EQ(pool.Kept(), 1u + PayloadBuffers::kPerClass);
+  // 100 bytes: class 6 ([64, 128)) keeps 2^20 / 2^6 = 16 384 (more than kPerClass, 1024).
+  static_assert(PayloadBuffers::kPerClass == 1024 && PayloadBuffers::kClassBytes == std::size_t{1} << 20);
+  for (int i = 0; i < 16384 + 5; ++i) pool.Give(Buffer(100));
+  EXPECT_EQ(pool.Kept(), 1u + 16384u);
+  // 5000 bytes: class 12 ([4096, 8192)) keeps kPerClass (2^20 / 2^12 = 256 is fewer).
+  for (int i = 0; i < 1024 + 5; ++i) pool.Give(Buffer(5000));
+  EXPECT_EQ(pool.Kept(), 1u + 16384u + 1024u);
   EXPECT_EQ(pool.Take(0).capacity(), 0u);
   EXPECT_EQ(pool.Take(PayloadBuffers::kMaxKept + 1).capacity(), 0u);
 }

@@ -181,3 +181,69 @@ TEST_F(RoleBytesTest, RolesSumToTheNetworksOwnTotals) {
 
 }  // namespace
 }  // namespace dvpr
+
+namespace dvpr {
+namespace {
+
+// The recorder fed directly, in a team of 300 (beyond PairMap's dense table: each role's pairs
+// in a hash table of their own). Hand-worked: 299 -> 5 sends a query (payload 544, wire 597) and
+// 5 -> 299 a reply (35, 86) twice, the second reply lost; 7 -> 3 a heartbeat (10, 63). The pairs
+// listed are the union over the roles, by source then destination: 5->299, 7->3, 299->5.
+TEST(RoleBytesRecorderTest, ALargeTeamKeepsEachRolesPairsAndListsTheirUnionInOrder) {
+  Simulator sim;
+  Network network(sim, 300, std::make_unique<SharedMediumLink>(SharedMediumParams{}, 300));
+  const ChannelId query = network.InternChannel(channels::kQueryAll);
+  const ChannelId reply = network.InternChannel(channels::Match(RobotId(299)));
+  const ChannelId heartbeat = network.InternChannel("DVPR_HEARTBEAT");
+  const std::vector<std::uint8_t> q(544), m(35), h(10);
+  const auto copy = [&](int src, int dst, ChannelId channel, const std::vector<std::uint8_t>& payload, std::int64_t wire) {
+    MessageCopy c;
+    c.src = NodeId(src);
+    c.dst = NodeId(dst);
+    c.channel = channel;
+    c.channel_name = network.ChannelName(channel);
+    c.payload = payload;
+    c.wire_bytes = wire;
+    return c;
+  };
+  RoleBytesRecorder recorder(300);
+  recorder.OnSent(copy(299, 5, query, q, 597));
+  recorder.OnDelivered(copy(299, 5, query, q, 597), SimTime::Zero());
+  recorder.OnSent(copy(5, 299, reply, m, 86));
+  recorder.OnDelivered(copy(5, 299, reply, m, 86), SimTime::Zero());
+  recorder.OnSent(copy(5, 299, reply, m, 86));
+  recorder.OnSent(copy(7, 3, heartbeat, h, 63));
+  MediumReport medium;
+  medium.channel = reply;
+  medium.channel_name = network.ChannelName(reply);
+  medium.bytes = 86;
+  recorder.OnMedium(medium);
+
+  const RoleCopyBytes to_querier = recorder.Pair(5, 299);
+  EXPECT_EQ(to_querier[Role(MessageRole::kReply)].payload, 70);
+  EXPECT_EQ(to_querier[Role(MessageRole::kReply)].wire, 172);
+  EXPECT_EQ(to_querier[Role(MessageRole::kReply)].delivered_payload, 35);
+  EXPECT_EQ(to_querier[Role(MessageRole::kReply)].delivered_wire, 86);
+  EXPECT_EQ(to_querier[Role(MessageRole::kQuery)].wire, 0);
+  EXPECT_EQ(recorder.Pair(299, 5)[Role(MessageRole::kQuery)].delivered_wire, 597);
+  EXPECT_EQ(recorder.Pair(3, 7)[Role(MessageRole::kOther)].wire, 0);  // the other direction carried nothing
+
+  std::vector<std::pair<int, int>> pairs;
+  std::int64_t wire = 0;
+  recorder.ForEachPair([&](NodeId src, NodeId dst, const RoleCopyBytes& bytes) {
+    pairs.emplace_back(src.value, dst.value);
+    for (const CopyBytes& c : bytes) wire += c.wire;
+  });
+  EXPECT_EQ(pairs, (std::vector<std::pair<int, int>>{{5, 299}, {7, 3}, {299, 5}}));
+  EXPECT_EQ(wire, 597 + 2 * 86 + 63);
+
+  const RunRoleBytes run = recorder.Run();
+  EXPECT_EQ(run.copies[Role(MessageRole::kQuery)].payload, 544);
+  EXPECT_EQ(run.copies[Role(MessageRole::kReply)].delivered_wire, 86);
+  EXPECT_EQ(run.copies[Role(MessageRole::kOther)].payload, 10);
+  EXPECT_EQ(run.medium[Role(MessageRole::kReply)], 86);
+  EXPECT_EQ(run.medium[Role(MessageRole::kQuery)], 0);
+}
+
+}  // namespace
+}  // namespace dvpr
