@@ -206,21 +206,28 @@ std::optional<int> Dispatch(const std::string& cmd, const std::vector<std::strin
 // What the user can fix is a ConfigError, a std::invalid_argument (a parameter struct's
 // Validate) or another std::runtime_error (files, I/O, std::filesystem); any other exception
 // (std::logic_error, std::bad_alloc, ...) is dvpr's own fault and must not look like one of those.
+//
+// The message goes out in one write: std::cerr flushes after every <<, and under mpirun a rank's
+// stderr is forwarded in the chunks it was written in, so mpirun's own MPI_ABORT banner could
+// land between the pieces of a line written piece by piece.
 int ReportError(std::exception_ptr error, std::ostream& err) {
+  std::string line;
+  int status = kExitInternal;
   try {
     std::rethrow_exception(error);
   } catch (const std::invalid_argument& e) {
-    err << "dvpr: error: " << OneLine(e.what()) << "\n";
-    return kExitInput;
+    line = "dvpr: error: " + OneLine(e.what()) + "\n";
+    status = kExitInput;
   } catch (const std::runtime_error& e) {
-    err << "dvpr: error: " << OneLine(e.what()) << "\n";
-    return kExitInput;
+    line = "dvpr: error: " + OneLine(e.what()) + "\n";
+    status = kExitInput;
   } catch (const std::exception& e) {
-    err << "dvpr: internal error: " << OneLine(e.what()) << " (a bug in dvpr; please report it)\n";
+    line = "dvpr: internal error: " + OneLine(e.what()) + " (a bug in dvpr; please report it)\n";
   } catch (...) {
-    err << "dvpr: internal error: an unknown exception (a bug in dvpr; please report it)\n";
+    line = "dvpr: internal error: an unknown exception (a bug in dvpr; please report it)\n";
   }
-  return kExitInternal;
+  err << line << std::flush;
+  return status;
 }
 
 int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
