@@ -21,15 +21,55 @@ constexpr int kCheckEvery = 16;
 // Eight rows side by side: a GNU vector of 8 floats (one AVX register, two SSE ones).
 using Lanes = float __attribute__((vector_size(8 * sizeof(float))));
 
+// The value of IEEE binary16 bits, exactly.
+float HalfToFloat(std::uint16_t h) {
+#if DVPR_HALF_SCREEN_AVX
+  return _cvtsh_ss(h);
+#else
+  const int exponent = (h >> 10) & 0x1F;
+  const auto mantissa = static_cast<float>(h & 0x3FF);
+  float magnitude = 0.0f;
+  if (exponent == 0) {
+    magnitude = std::ldexp(mantissa, -24);  // zero and subnormals: units of 2^-24
+  } else if (exponent == 31) {
+    magnitude = mantissa == 0.0f ? std::numeric_limits<float>::infinity() : std::numeric_limits<float>::quiet_NaN();
+  } else {
+    magnitude = std::ldexp(mantissa + 1024.0f, exponent - 25);  // (1024 + m) x 2^(e - 15 - 10)
+  }
+  return (h & 0x8000u) != 0 ? -magnitude : magnitude;
+#endif
+}
+
+// A float's IEEE binary16 bits, rounded to nearest, ties to even (as F16C's conversion).
+std::uint16_t FloatToHalf(float f) {
+#if DVPR_HALF_SCREEN_AVX
+  return static_cast<std::uint16_t>(_cvtss_sh(f, 0));
+#else
+  const std::uint16_t sign = std::signbit(f) ? 0x8000u : 0u;
+  const float a = std::fabs(f);
+  if (std::isnan(f)) return static_cast<std::uint16_t>(sign | 0x7E00u);
+  if (a >= 65520.0f) return static_cast<std::uint16_t>(sign | 0x7C00u);  // rounds to infinity
+  if (a < 0x1p-14f) {  // subnormal: units of 2^-24 (1024 units is the smallest normal, 0x0400)
+    return static_cast<std::uint16_t>(sign | static_cast<std::uint16_t>(std::nearbyint(a * 0x1p24f)));
+  }
+  int e = 0;
+  std::frexp(a, &e);  // a in [2^(e-1), 2^e)
+  int exponent = e - 1;
+  auto units = static_cast<std::uint32_t>(std::nearbyint(std::ldexp(a, 10 - exponent)));  // 1024..2048
+  if (units == 2048) units = 1024, ++exponent;
+  if (exponent > 15) return static_cast<std::uint16_t>(sign | 0x7C00u);
+  return static_cast<std::uint16_t>(sign | static_cast<std::uint32_t>(exponent + 15) << 10 | (units - 1024));
+#endif
+}
+
 // acc += (the 8 halves at `halves`, as floats, - q)^2, lane by lane.
-inline void AddSquaredDiffs(Lanes& acc, const _Float16* halves, float q) {
+inline void AddSquaredDiffs(Lanes& acc, const std::uint16_t* halves, float q) {
   Lanes x;
 #if DVPR_HALF_SCREEN_AVX
-  // One instruction for 8 values (GCC 12 converts a _Float16 vector value by value).
-  const __m256 wide = _mm256_cvtph_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(halves)));
+  const __m256 wide = _mm256_cvtph_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(halves)));  // 8 at once
   std::memcpy(&x, &wide, sizeof x);
 #else
-  for (int l = 0; l < 8; ++l) x[l] = static_cast<float>(halves[l]);
+  for (int l = 0; l < 8; ++l) x[l] = HalfToFloat(halves[l]);
 #endif
   const Lanes diff = x - q;
   acc += diff * diff;
@@ -38,7 +78,7 @@ inline void AddSquaredDiffs(Lanes& acc, const _Float16* halves, float q) {
 // Adds the squared differences of one band's tile (width values) to the lanes' sums. Four sums
 // a lane, so that the adds do not wait on each other; any order of a float sum obeys the
 // limit's error bound.
-inline void AddBand(Lanes (&acc)[4], const _Float16* tile, const float* q, std::size_t width) {
+inline void AddBand(Lanes (&acc)[4], const std::uint16_t* tile, const float* q, std::size_t width) {
   std::size_t j = 0;
   for (; j + 4 <= width; j += 4) {
     for (std::size_t a = 0; a < 4; ++a) AddSquaredDiffs(acc[a], tile + (j + a) * HalfScreen::kTileRows, q[j + a]);
@@ -61,7 +101,7 @@ unsigned NotAbove(const Lanes& sums, float limit) {
 
 }  // namespace
 
-HalfScreen::HalfScreen(int dim) : dim_(dim) {
+HalfScreen::HalfScreen(int dim) {
   for (int end = kFirstCheck; end < dim; end += kCheckEvery) checks_.push_back(end);
   checks_.push_back(dim);
   bands_.resize(checks_.size());
@@ -72,13 +112,13 @@ void HalfScreen::Append(const float* row) {
   double error = 0.0;  // ||row - half(row)||^2: each difference of a float and a half is exact in double
   for (std::size_t k = 0; k < checks_.size(); ++k) {
     const auto width = static_cast<std::size_t>(checks_[k]) - from;
-    std::vector<_Float16>& band = bands_[k];
-    if (rows_ % kTileRows == 0) band.resize(band.size() + width * kTileRows, _Float16{});
-    _Float16* tile = band.data() + rows_ / kTileRows * width * kTileRows + rows_ % kTileRows;
+    std::vector<std::uint16_t>& band = bands_[k];
+    if (rows_ % kTileRows == 0) band.resize(band.size() + width * kTileRows, 0);
+    std::uint16_t* tile = band.data() + rows_ / kTileRows * width * kTileRows + rows_ % kTileRows;
     for (std::size_t j = 0; j < width; ++j) {
-      const _Float16 half = static_cast<_Float16>(row[from + j]);  // round to nearest
+      const std::uint16_t half = FloatToHalf(row[from + j]);
       tile[j * kTileRows] = half;
-      const double diff = static_cast<double>(row[from + j]) - static_cast<double>(static_cast<float>(half));
+      const double diff = static_cast<double>(row[from + j]) - static_cast<double>(HalfToFloat(half));
       error += diff * diff;
     }
     from += width;

@@ -12,6 +12,7 @@
 // rows' partial sums are one vector and a search that stops early does not stream what it skips.
 // Used by IncrementalIndex (a robot's store) and CentroidTable (routing). docs/performance.md.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace dvpr {
@@ -48,10 +49,11 @@ class HalfScreen {
   unsigned SurvivorsFrom(std::size_t first, const float* query, const float* limits, std::size_t band,
                          const float* sums) const;
 
-  int dim_;
   std::vector<int> checks_;
   std::size_t rows_ = 0;
-  std::vector<std::vector<_Float16>> bands_;  // band k: tiles of 8 rows x (checks[k] - checks[k-1]) values
+  // Band k: tiles of 8 rows x (checks[k] - checks[k-1]) values, as IEEE binary16 bits (not
+  // _Float16, which clang 14 does not have on x86).
+  std::vector<std::vector<std::uint16_t>> bands_;
   // The largest ||row - half(row)|| over the rows, rounded up; +inf if a value has no finite half.
   float error_ = 0.0f;
 };
