@@ -70,6 +70,14 @@ Stored Fill(IncrementalIndex& index, const std::vector<float>& rows, int dim) {
   return s;
 }
 
+// Eigen's product of `data` (rows x dim, row-major) with q: the values the kernels must equal.
+Eigen::VectorXf FullProduct(const std::vector<float>& data, int rows, int dim, const std::vector<float>& q) {
+  using RowMajor = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  Eigen::VectorXf full(rows);
+  full.noalias() = Eigen::Map<const RowMajor>(data.data(), rows, dim) * Eigen::Map<const Eigen::VectorXf>(q.data(), dim);
+  return full;
+}
+
 // The pruned search equals the full scan bit for bit (entry and distance).
 void ExpectSameAsFullScan(const IncrementalIndex& index, const float* q, int frame, int window) {
   const IndexSearchResult fast = index.Search(q, FrameId(frame), window);
@@ -90,9 +98,7 @@ TEST_P(FastSearchByWidth, GemvRowEqualsTheFullProductBitForBit) {
   const std::vector<float> q = Gaussian(rng, 1, dim);
   for (int rows : {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 23, 100, 257}) {
     const std::vector<float> data = Gaussian(rng, rows, dim);
-    using RowMajor = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-    Eigen::VectorXf full(rows);
-    full.noalias() = Eigen::Map<const RowMajor>(data.data(), rows, dim) * Eigen::Map<const Eigen::VectorXf>(q.data(), dim);
+    const Eigen::VectorXf full = FullProduct(data, rows, dim, q);
     for (int i = 0; i < rows; ++i) {
       const float one = GemvRowAsInFullProduct(data.data(), rows, dim, i, q.data());
       ASSERT_EQ(std::bit_cast<std::uint32_t>(one), std::bit_cast<std::uint32_t>(full[i]))
@@ -293,9 +299,7 @@ TEST(GemvRowKernel, EightRowsAndOneRowEqualTheFullProductBitForBit) {
     const std::vector<float> q = Gaussian(rng, 1, dim);
     for (int rows : {2, 3, 5, 7, 8, 9, 15, 16, 17, 45, 64, 65}) {
       const std::vector<float> data = Gaussian(rng, rows, dim);
-      using RowMajor = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-      Eigen::VectorXf full(rows);
-      full.noalias() = Eigen::Map<const RowMajor>(data.data(), rows, dim) * Eigen::Map<const Eigen::VectorXf>(q.data(), dim);
+      const Eigen::VectorXf full = FullProduct(data, rows, dim, q);
       for (int first = 0; first < rows; first += 8) {
         const float* block[8];
         for (int r = 0; r < 8; ++r) block[r] = &data[static_cast<std::size_t>(std::min(first + r, rows - 1)) * dim];
@@ -326,9 +330,7 @@ TEST(GemvRowKernel, SixteenRowsEqualTheFullProductBitForBit) {
     const std::vector<float> q = Gaussian(rng, 1, dim);
     for (int rows : {2, 3, 9, 15, 16, 17, 31, 33, 45, 64, 65}) {
       const std::vector<float> data = Gaussian(rng, rows, dim);
-      using RowMajor = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-      Eigen::VectorXf full(rows);
-      full.noalias() = Eigen::Map<const RowMajor>(data.data(), rows, dim) * Eigen::Map<const Eigen::VectorXf>(q.data(), dim);
+      const Eigen::VectorXf full = FullProduct(data, rows, dim, q);
       for (int first = 0; first < rows; first += 16) {
         const float* block[16];
         for (int r = 0; r < 16; ++r) block[r] = &data[static_cast<std::size_t>(std::min(first + r, rows - 1)) * dim];
