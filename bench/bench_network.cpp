@@ -12,6 +12,7 @@
 
 #include "agents/channels.h"
 #include "agents/sim_transport.h"
+#include "agents/verification_payload.h"
 #include "experiments/protocols/sim/message_rows.h"
 #include "net_models/network.h"
 #include "net_models/point_to_point_link.h"
@@ -162,6 +163,19 @@ void BM_Kitti100BroadcastTransport(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(delivered));
 }
 BENCHMARK(BM_Kitti100BroadcastTransport)->Arg(100)->Unit(benchmark::kMillisecond);
+
+// The 25 000-byte payload of one verification request (10^6 frames x 1000 robots: 909 k of them).
+void BM_VerificationPayload(benchmark::State& state) {
+  std::vector<float> descriptor(128, 0.25f);
+  std::vector<std::uint8_t> payload(25000);
+  int frame = 0;
+  for (auto _ : state) {
+    FillVerificationPayload(FrameId(frame++), descriptor, payload);
+    benchmark::DoNotOptimize(payload.data());
+  }
+  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(payload.size()));
+}
+BENCHMARK(BM_VerificationPayload)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace dvpr

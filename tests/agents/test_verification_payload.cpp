@@ -4,6 +4,9 @@
 //   frame 3, (1.0, 2.0): 5d 09 d1 99 ea 69 0a aa b7 e0 c0 ce
 //   frame 4, (1.0, 2.0): 77 5f 7b 0a d2 13 44 ea 74 ad ca 14
 //   frame 3, (1.0, 2.5): a2 44 d4 7a 86 95 37 e2 e1 5b 47 5c
+// and, of frame 3, (1.0, 2.0) at 25000 bytes, the 16 bytes at 56, 120, 12296 and 24984 (words
+// mixed 16 at a time where the CPU has 64-bit vector multiplies, one at a time elsewhere): the
+// python3 stream compared byte for byte.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -46,6 +49,25 @@ TEST(VerificationPayload, FillWritesTheSameBytesOverABufferOfAnySize) {
     std::vector<std::uint8_t> filled(size, 0xee);
     FillVerificationPayload(FrameId(3), d, filled);
     EXPECT_EQ(filled, VerificationPayload(FrameId(3), d, size)) << size;
+  }
+}
+
+TEST(VerificationPayload, LongPayloadsMatchTheReferenceStreamAcrossItsBlocks) {
+  const std::array<float, 2> d{1.0f, 2.0f};
+  const auto bytes = VerificationPayload(FrameId(3), d, 25000);
+  const auto at = [&](std::size_t from) { return Bytes12(bytes.begin() + from, bytes.begin() + from + 16); };
+  EXPECT_EQ(at(56), (Bytes12{0x81, 0x03, 0x9c, 0x30, 0xd2, 0x9d, 0x2e, 0x53, 0xfe, 0x4c, 0x00, 0x68, 0xad, 0xfe,
+                             0x94, 0x57}));
+  EXPECT_EQ(at(120), (Bytes12{0x44, 0xb2, 0x64, 0x34, 0xcc, 0x80, 0x60, 0xad, 0xed, 0xed, 0x3d, 0x13, 0xa3, 0xbe,
+                              0x74, 0x9e}));
+  EXPECT_EQ(at(12296), (Bytes12{0x9f, 0x2e, 0xa9, 0x79, 0x73, 0xcc, 0x6a, 0x24, 0xc0, 0xee, 0xb1, 0x96, 0x8b, 0xcb,
+                                0x35, 0xbd}));
+  EXPECT_EQ(at(24984), (Bytes12{0x35, 0xb3, 0x90, 0x60, 0x2f, 0x37, 0x4c, 0xa5, 0xcc, 0xae, 0xb1, 0x8a, 0xc9, 0xae,
+                                0x11, 0xa1}));
+  // Every size around a block of 16 words ends where the longer payload's stream is.
+  for (std::size_t size = 100; size < 400; ++size) {
+    const auto shorter = VerificationPayload(FrameId(3), d, size);
+    ASSERT_TRUE(std::equal(shorter.begin(), shorter.end(), bytes.begin())) << size;
   }
 }
 
