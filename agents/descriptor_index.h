@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "agents/descriptors.h"
+#include "agents/growable_array.h"
 #include "agents/half_screen.h"
 #include "agents/ids.h"
 
@@ -82,10 +83,10 @@ class IncrementalIndex {
   void SetLimits(float best, double margin) const;
 
   int dim_;
-  std::vector<float> data_;   // size() x dim, row-major
+  GrowableArray<float> data_;  // size() x dim, row-major
   HalfScreen screen_;                  // every row again in half precision, for the bounds
   mutable std::vector<float> limits_;  // per check of the screen: the largest partial sum that can still win
-  std::vector<float> norms_;  // squared norms of the rows
+  GrowableArray<float> norms_;  // squared norms of the rows
   float max_norm_ = 0.0f;     // max of norms_: scales the rounding margin of the bounds
   std::vector<IndexEntry> entries_;
   mutable std::vector<float> scratch_;
