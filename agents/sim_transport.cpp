@@ -39,13 +39,17 @@ void SimTransport::DoPublish(const std::string& channel, const char* type_name, 
   network_.Send(node_, network_.InternChannel(channel), TypeOf(type_name), std::move(bytes));
 }
 
+// A PublishChannel of this transport is the network's ChannelId (DoIntern).
 void SimTransport::DoPublishInterned(PublishChannel channel, const char* type_name, std::vector<std::uint8_t> bytes) {
-  const auto i = static_cast<std::size_t>(channel);
-  if (i >= network_channels_.size()) network_channels_.resize(i + 1, kUnresolved);
-  if (network_channels_[i] == kUnresolved) {
-    network_channels_[i] = static_cast<std::uint32_t>(network_.InternChannel(NameOf(channel)));
-  }
-  network_.Send(node_, ChannelId{network_channels_[i]}, TypeOf(type_name), std::move(bytes));
+  network_.Send(node_, ChannelId{static_cast<std::uint32_t>(channel)}, TypeOf(type_name), std::move(bytes));
+}
+
+PublishChannel SimTransport::DoIntern(const std::string& name) {
+  return PublishChannel{static_cast<std::uint32_t>(network_.InternChannel(name))};
+}
+
+const std::string& SimTransport::DoNameOf(PublishChannel channel) const {
+  return network_.ChannelNameString(ChannelId{static_cast<std::uint32_t>(channel)});
 }
 
 SimTransport::ChannelHandlers* SimTransport::Find(ChannelId channel) {

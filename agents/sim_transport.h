@@ -47,6 +47,8 @@ class SimTransport final : public Transport, private NetworkEndpoint {
 
   void DoPublish(const std::string& channel, const char* type_name, std::vector<std::uint8_t> bytes) override;
   void DoPublishInterned(PublishChannel channel, const char* type_name, std::vector<std::uint8_t> bytes) override;
+  PublishChannel DoIntern(const std::string& name) override;
+  const std::string& DoNameOf(PublishChannel channel) const override;
   std::uint64_t DoSubscribe(const std::string& channel, RawHandler handler) override;
   void DoUnsubscribe(std::uint64_t id) override;
   void OnReceive(const ReceivedMessage& message) override;
@@ -63,9 +65,6 @@ class SimTransport final : public Transport, private NetworkEndpoint {
   std::vector<std::pair<ChannelId, std::uint32_t>> by_channel_;  // sorted: channel -> channels_ index
   std::unordered_map<std::uint64_t, ChannelId> subscriptions_;  // id -> channel
   std::vector<std::pair<const char*, MessageTypeId>> types_;  // getTypeName() pointers seen
-  // The network's id of each PublishChannel, resolved on its first message (kUnresolved before).
-  static constexpr std::uint32_t kUnresolved = ~std::uint32_t{0};
-  std::vector<std::uint32_t> network_channels_;
   std::uint64_t next_id_ = 1;
 };
 

@@ -70,9 +70,9 @@ class Transport {
   }
 
   // The channel `name` to publish on; the same name gives the same value every time.
-  PublishChannel Intern(const std::string& name);
+  PublishChannel Intern(const std::string& name) { return DoIntern(name); }
   // The name of an interned channel (valid as long as the transport).
-  const std::string& NameOf(PublishChannel channel) const { return interned_.at(static_cast<std::size_t>(channel)); }
+  const std::string& NameOf(PublishChannel channel) const { return DoNameOf(channel); }
 
   // From now on messages are encoded into buffers taken from `buffers` (the simulated network's,
   // Network::payload_buffers(), which gets them back when delivered) instead of new ones. It
@@ -104,6 +104,12 @@ class Transport {
   // Publishing on an interned channel: by its name unless the transport has a faster way.
   virtual void DoPublishInterned(PublishChannel channel, const char* type_name, std::vector<std::uint8_t> bytes) {
     DoPublish(NameOf(channel), type_name, std::move(bytes));
+  }
+  // Interning: a table of the transport's own unless the transport has one already (the
+  // simulated network's, shared by every agent: a name is stored once, not once an agent).
+  virtual PublishChannel DoIntern(const std::string& name);
+  virtual const std::string& DoNameOf(PublishChannel channel) const {
+    return interned_.at(static_cast<std::size_t>(channel));
   }
   virtual std::uint64_t DoSubscribe(const std::string& channel, RawHandler handler) = 0;
   virtual void DoUnsubscribe(std::uint64_t id) = 0;
@@ -166,7 +172,7 @@ class Transport {
   std::unordered_map<std::string, std::uint32_t> interned_ids_;
 };
 
-inline PublishChannel Transport::Intern(const std::string& name) {
+inline PublishChannel Transport::DoIntern(const std::string& name) {
   const auto [it, added] = interned_ids_.try_emplace(name, static_cast<std::uint32_t>(interned_.size()));
   if (added) interned_.push_back(name);
   return PublishChannel{it->second};

@@ -107,6 +107,8 @@ class Network {
   // --- names --------------------------------------------------------------
   ChannelId InternChannel(std::string_view name);
   std::string_view ChannelName(ChannelId id) const { return channel_names_[static_cast<std::size_t>(id)]; }
+  // The same name as a string that lives as long as the network.
+  const std::string& ChannelNameString(ChannelId id) const { return channels_.at(static_cast<std::size_t>(id)).name; }
   MessageTypeId InternType(std::string_view name);
   std::string_view TypeName(MessageTypeId id) const { return type_names_[static_cast<std::size_t>(id)]; }
 

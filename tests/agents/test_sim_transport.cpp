@@ -102,6 +102,23 @@ TEST_F(SimTransportTest, InternedChannelsCarryTheSameMessagesAsNamedOnes) {
   EXPECT_EQ(net.Counters(NodeId(2), NodeId(0)).delivered, 1u);
 }
 
+// The agents of one network share its channel table: a name interned by two robots is one
+// value, named as it was interned, and a name interned before anyone subscribes still reaches
+// a later subscriber.
+TEST_F(SimTransportTest, TransportsOfOneNetworkInternANameAlike) {
+  const PublishChannel by_1 = robots[1]->Intern("DVPR_X");
+  const PublishChannel by_2 = robots[2]->Intern("DVPR_X");
+  EXPECT_EQ(by_1, by_2);
+  EXPECT_NE(robots[1]->Intern("DVPR_Y"), by_1);
+  EXPECT_EQ(robots[2]->NameOf(by_1), "DVPR_X");
+  std::vector<int> frames;
+  const Subscription sub = robots[0]->Subscribe<query_t>("DVPR_X", [&](const query_t& q) { frames.push_back(q.frame); });
+  robots[1]->Publish(by_1, Query(1, 4));
+  robots[2]->Publish(by_2, Query(2, 5));
+  sim.Run();
+  EXPECT_EQ(frames, (std::vector<int>{4, 5}));
+}
+
 TEST_F(SimTransportTest, ClockAndTimersAreVirtual) {
   std::vector<SimTime> fired;
   robots[1]->ScheduleAfter(SimTime::Millis(250), [&] { fired.push_back(robots[1]->Now()); });
