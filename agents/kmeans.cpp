@@ -350,14 +350,14 @@ std::vector<double> HalfGaps(const CentroidMatrix& centers) {
   return gap;
 }
 
-// Rows gathered for one GEMM of the bounded pass. The blocks are exactly those the pass has
+// Points gathered for one product of the bounded pass. The blocks are exactly those the pass has
 // always multiplied (the points to re-measure, in index order, cut every kBlockRows), so each
 // product and its rounding are unchanged: Eigen's GEMM sums a row differently depending on where
-// it falls in its block (agents/gemv_row.h), and one such row decides a label in the paper sweep.
+// it falls in its block (agents/kmeans_dots.h), and one such row decides a label in the paper sweep.
 struct Gathered {
-  DescriptorMatrix rows;      // kBlockRows x d; the first `size` rows are in use
-  std::vector<Index> index;   // the point of each row
+  std::vector<Index> index;   // kBlockRows slots; the first `size` are in use
   Index size = 0;
+  DescriptorMatrix rows;      // the rows of an Eigen product, copied together
 };
 
 // Gathered point i (its row `x`) scored nearest `n`: Hamerly's bounds from the two scores, and
@@ -369,7 +369,7 @@ void TakeNearest(const Points& p, Index i, const float* x, const NearestPair& n,
   const int own = a.labels[ui];
   if (n.best == own) return;
   ++a.changed;
-  const Eigen::Map<const Eigen::RowVectorXf> row(x, p.x.cols());  // the gathered copy, in cache
+  const Eigen::Map<const Eigen::RowVectorXf> row(x, p.x.cols());  // just scored: in cache
   a.sums.row(own) -= row.cast<double>();
   a.sums.row(n.best) += row.cast<double>();
   --a.counts[static_cast<std::size_t>(own)];
@@ -380,6 +380,7 @@ void TakeNearest(const Points& p, Index i, const float* x, const NearestPair& n,
 // Nearest and second-nearest centroid of the gathered points, as the block's Eigen product gives
 // them (the exact kernel for the points in full groups of 4 columns when s.on, Eigen for the
 // rest as in Assign); moves the points that change cluster, with their sums, in index order.
+// The rows are read where they are: the pass has just measured them, so they are in cache.
 void ReassignGathered(const Points& p, const CentroidMatrix& centers, const Eigen::VectorXf& cn,
                       Gathered& g, DistanceMatrix& dots, GroupScores& s, Assignment& a) {
   const Index k = centers.rows();
@@ -387,17 +388,19 @@ void ReassignGathered(const Points& p, const CentroidMatrix& centers, const Eige
   for (Index r = 0; r < grouped; r += kGroupPoints) {
     const int count = static_cast<int>(std::min<Index>(kGroupPoints, grouped - r));
     const float* row[kGroupPoints];
-    for (int l = 0; l < count; ++l) row[l] = g.rows.row(r + l).data();
+    for (int l = 0; l < count; ++l) row[l] = p.x.row(g.index[static_cast<std::size_t>(r + l)]).data();
     ScoreGroup(centers, cn, row, count, s);
     for (int l = 0; l < count; ++l) TakeNearest(p, g.index[static_cast<std::size_t>(r + l)], row[l], s.nearest[l], a);
   }
   if (grouped < g.size) {
     const Index from = grouped == 0 ? 0 : grouped - 4;
+    g.rows.resize(g.size - from, p.x.cols());
+    for (Index r = from; r < g.size; ++r) g.rows.row(r - from) = p.x.row(g.index[static_cast<std::size_t>(r)]);
     dots.resize(g.size - from, k);
-    dots.noalias() = g.rows.middleRows(from, g.size - from) * centers.transpose();
+    dots.noalias() = g.rows * centers.transpose();
     for (Index r = grouped; r < g.size; ++r) {
-      TakeNearest(p, g.index[static_cast<std::size_t>(r)], g.rows.row(r).data(),
-                  NearestTwo(cn.data(), dots.row(r - from).data(), k), a);
+      const Index i = g.index[static_cast<std::size_t>(r)];
+      TakeNearest(p, i, p.x.row(i).data(), NearestTwo(cn.data(), dots.row(r - from).data(), k), a);
     }
   }
   g.size = 0;
@@ -457,7 +460,7 @@ void PrefetchRow(const DescriptorMatrix& x, Index i) {
 // One Hamerly assignment pass: only points whose bounds cannot exclude a change are measured,
 // and the sums follow the points that move. First the stale bounds pick the suspects; then
 // each suspect's own distance is measured exactly (rows prefetched a few suspects ahead) and,
-// if that does not clear it, its row, still in cache, joins the block to re-measure.
+// if that does not clear it, the point joins the block to re-measure (its row stays in cache).
 void AssignWithBounds(const Points& p, const CentroidMatrix& centers, const Moves& moves, Assignment& a,
                       BoundsWork& w) {
   constexpr std::size_t kAhead = 4;  // suspects prefetched ahead of the one measured
@@ -466,7 +469,7 @@ void AssignWithBounds(const Points& p, const CentroidMatrix& centers, const Move
   a.changed = 0;
   const std::size_t suspects = Suspects(moves, gap, a, w.suspects);
   Gathered& g = w.gathered;
-  if (g.rows.rows() != kBlockRows) g.rows.resize(kBlockRows, p.x.cols()), g.index.resize(kBlockRows);
+  g.index.resize(kBlockRows);
   for (std::size_t s = 0; s < suspects; ++s) {
     if (s + kAhead < suspects) PrefetchRow(p.x, w.suspects[s + kAhead]);
     const Index i = w.suspects[s];
@@ -474,9 +477,8 @@ void AssignWithBounds(const Points& p, const CentroidMatrix& centers, const Move
     const int own = a.labels[ui];
     const double limit = std::max(gap[static_cast<std::size_t>(own)], a.lower[ui]);
     a.upper[ui] = std::sqrt(static_cast<double>((p.x.row(i) - centers.row(own)).squaredNorm()));
-    // The row goes into the next free slot, which only a point still in doubt keeps: copying a
-    // row in cache costs less than the mispredicted branch on a coin flip.
-    g.rows.row(g.size) = p.x.row(i);
+    // The point goes into the next free slot, which only a point still in doubt keeps: no
+    // branch on a coin flip, and nothing later waits for the count but the next slot's address.
     g.index[static_cast<std::size_t>(g.size)] = i;
     g.size += a.upper[ui] > limit;
     // Re-measuring a block moves only points before the next suspect: its test is unchanged.
