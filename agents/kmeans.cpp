@@ -463,7 +463,7 @@ void PrefetchRow(const DescriptorMatrix& x, Index i) {
 // if that does not clear it, the point joins the block to re-measure (its row stays in cache).
 void AssignWithBounds(const Points& p, const CentroidMatrix& centers, const Moves& moves, Assignment& a,
                       BoundsWork& w) {
-  constexpr std::size_t kAhead = 4;  // suspects prefetched ahead of the one measured
+  constexpr std::size_t kAhead = 16;  // suspects prefetched ahead of the one measured
   const std::vector<double> gap = HalfGaps(centers);
   const Eigen::VectorXf cn = SquaredNorms(centers);
   a.changed = 0;

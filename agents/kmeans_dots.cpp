@@ -182,13 +182,13 @@ bool HasAvx512Dots() {
 }
 
 void TransposeGroup(const float* const* rows, int count, Index d, float* xt) {
+  alignas(32) static constexpr float kZeros[kMaxDotsDim] = {};
+  const float* from[kGroupPoints];  // missing points read zeros: no branch in the loop
+  for (int lane = 0; lane < kGroupPoints; ++lane) from[lane] = lane < count ? rows[lane] : kZeros;
   for (int half = 0; half < 2; ++half) {
     for (Index p = 0; p < d; p += 8) {
       __m256 r[8];
-      for (int lane = 0; lane < 8; ++lane) {
-        const int point = 8 * half + lane;
-        r[lane] = point < count ? _mm256_loadu_ps(rows[point] + p) : _mm256_setzero_ps();
-      }
+      for (int lane = 0; lane < 8; ++lane) r[lane] = _mm256_loadu_ps(from[8 * half + lane] + p);
       Transpose8(r);
       for (int q = 0; q < 8; ++q) _mm256_store_ps(xt + 16 * (p + q) + 8 * half, r[q]);
     }
