@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -12,6 +14,7 @@
 #include <immintrin.h>
 #endif
 
+#include "agents/kmeans_dots.h"
 #include "agents/l2.h"
 #include "sim/random_bits.h"
 
@@ -170,9 +173,94 @@ NearestPair NearestTwo(const float* cn, const float* dots, Index k) {
 NearestPair NearestTwo(const float* cn, const float* dots, Index k) { return NearestTwoScalar(cn, dots, k); }
 #endif
 
+// The points of one group (agents/kmeans_dots.h), scored with the exact kernel: per lane,
+// NearestTwo's pair. `on`: the kernel gives Eigen's products for this fit's k and d (checked
+// once per fit); otherwise every product is Eigen's.
+struct GroupScores {
+  bool on = false;
+  alignas(64) float xt[kMaxDotsDim * kGroupPoints];
+  std::vector<float> dots;  // k x kGroupPoints
+  NearestPair nearest[kGroupPoints];
+};
+
+#if DVPR_KMEANS_DOTS
+// NearestTwoScalar for each lane of a group's dots, 8 lanes a register, centroid by centroid in
+// index order with the same strict comparison.
+void NearestOfGroup(const float* cn, const float* dots, Index k, NearestPair* out) {
+  const __m256 inf = _mm256_set1_ps(std::numeric_limits<float>::infinity());
+  for (int half = 0; half < kGroupPoints; half += 8) {
+    __m256 best = inf, second = inf, best_c = _mm256_setzero_ps();
+    for (Index c = 0; c < k; ++c) {
+      const __m256 d = _mm256_loadu_ps(dots + kGroupPoints * c + half);
+      const __m256 score = _mm256_sub_ps(_mm256_set1_ps(cn[c]), _mm256_add_ps(d, d));
+      const __m256 better = _mm256_cmp_ps(score, best, _CMP_LT_OQ);
+      second = _mm256_blendv_ps(_mm256_min_ps(second, score), best, better);
+      best_c = _mm256_blendv_ps(best_c, _mm256_set1_ps(static_cast<float>(c)), better);
+      best = _mm256_blendv_ps(best, score, better);
+    }
+    alignas(32) float b[8], s[8], i[8];
+    _mm256_store_ps(b, best), _mm256_store_ps(s, second), _mm256_store_ps(i, best_c);
+    for (int l = 0; l < 8; ++l) out[half + l] = NearestPair{static_cast<int>(i[l]), b[l], s[l]};
+  }
+}
+#else
+void NearestOfGroup(const float*, const float*, Index, NearestPair*) {}
+#endif
+
+// Scores `count` points (rows[0..count), count <= kGroupPoints) into g.nearest.
+void ScoreGroup(const CentroidMatrix& centers, const Eigen::VectorXf& cn, const float* const* rows, int count,
+                GroupScores& g) {
+  const Index k = centers.rows();
+  g.dots.resize(static_cast<std::size_t>(k * kGroupPoints));
+  TransposeGroup(rows, count, centers.cols(), g.xt);
+  GroupDots(g.xt, centers.cols(), centers.data(), k, g.dots.data());
+  NearestOfGroup(cn.data(), g.dots.data(), k, g.nearest);
+}
+
+// Whether the exact kernel gives Eigen's product for these points and centroids: DotsReplicable
+// says so for the build and the shapes; the first points are checked against Eigen on this
+// machine (its caches size Eigen's blocks).
+bool GroupScoresMatchEigen(const DescriptorMatrix& x, const CentroidMatrix& centers, GroupScores& g) {
+  const Index k = centers.rows();
+  const Index n = std::min<Index>(kGroupPoints, x.rows());
+  if (!DotsReplicable(k, x.cols()) || n < 4) return false;
+  DistanceMatrix want(n, k);
+  want.noalias() = x.topRows(n) * centers.transpose();
+  const float* rows[kGroupPoints];
+  for (Index r = 0; r < n; ++r) rows[r] = x.row(r).data();
+  g.dots.resize(static_cast<std::size_t>(k * kGroupPoints));
+  TransposeGroup(rows, static_cast<int>(n), x.cols(), g.xt);
+  GroupDots(g.xt, x.cols(), centers.data(), k, g.dots.data());
+  for (Index r = 0; r < n / 4 * 4; ++r) {
+    for (Index c = 0; c < k; ++c) {
+      if (std::memcmp(&g.dots[static_cast<std::size_t>(kGroupPoints * c + r)], &want(r, c), sizeof(float)) != 0) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// Point i's nearest centroid in a full pass: its label, distance, bounds and sums.
+void AssignPoint(const Points& p, Index i, const NearestPair& n, Assignment& a) {
+  auto& label = a.labels[static_cast<std::size_t>(i)];
+  a.changed += (label != n.best);
+  label = n.best;
+  const float dist = std::max(0.0f, p.norms[i] + n.best_score);
+  a.distance[static_cast<std::size_t>(i)] = dist;
+  a.upper[static_cast<std::size_t>(i)] = std::sqrt(static_cast<double>(dist));
+  a.lower[static_cast<std::size_t>(i)] = std::sqrt(static_cast<double>(std::max(0.0f, p.norms[i] + n.second_score)));
+  a.inertia += dist;
+  a.sums.row(n.best) += p.x.row(i).cast<double>();
+  ++a.counts[static_cast<std::size_t>(n.best)];
+}
+
 // Nearest centroid of every point (ties to the lowest index) and the per-cluster sums, in one
-// pass over the points: GEMM on a block of rows, then reduce it while it is in cache.
-void Assign(const Points& p, const CentroidMatrix& centers, Assignment& a) {
+// pass over the points, a block of rows at a time: the products Eigen's GEMM would make on each
+// block, the points in full groups of 4 columns by the exact kernel (when g.on), the last
+// (rows mod 4) by Eigen with 4 points before them (which puts them on their path in the block's
+// product), reduced while in cache.
+void Assign(const Points& p, const CentroidMatrix& centers, Assignment& a, GroupScores& g) {
   const Index n = p.x.rows();
   const Index k = centers.rows();
   const Eigen::VectorXf cn = SquaredNorms(centers);
@@ -183,23 +271,19 @@ void Assign(const Points& p, const CentroidMatrix& centers, Assignment& a) {
   DistanceMatrix dots;
   for (Index first = 0; first < n; first += kBlockRows) {
     const Index rows = std::min(kBlockRows, n - first);
-    dots.resize(rows, k);
-    dots.noalias() = p.x.middleRows(first, rows) * centers.transpose();
-    for (Index r = 0; r < rows; ++r) {
-      const Index i = first + r;
-      const auto [best, best_score, second_score] = NearestTwo(cn.data(), dots.row(r).data(), k);
-      auto& label = a.labels[static_cast<std::size_t>(i)];
-      a.changed += (label != best);
-      label = best;
-      const float dist = std::max(0.0f, p.norms[i] + best_score);
-      a.distance[static_cast<std::size_t>(i)] = dist;
-      a.upper[static_cast<std::size_t>(i)] = std::sqrt(static_cast<double>(dist));
-      a.lower[static_cast<std::size_t>(i)] =
-          std::sqrt(static_cast<double>(std::max(0.0f, p.norms[i] + second_score)));
-      a.inertia += dist;
-      a.sums.row(best) += p.x.row(i).cast<double>();
-      ++a.counts[static_cast<std::size_t>(best)];
+    const Index grouped = g.on ? rows / 4 * 4 : 0;
+    for (Index r = 0; r < grouped; r += kGroupPoints) {
+      const int count = static_cast<int>(std::min<Index>(kGroupPoints, grouped - r));
+      const float* row[kGroupPoints];
+      for (int l = 0; l < count; ++l) row[l] = p.x.row(first + r + l).data();
+      ScoreGroup(centers, cn, row, count, g);
+      for (int l = 0; l < count; ++l) AssignPoint(p, first + r + l, g.nearest[l], a);
     }
+    if (grouped == rows) continue;
+    const Index from = grouped == 0 ? 0 : grouped - 4;
+    dots.resize(rows - from, k);
+    dots.noalias() = p.x.middleRows(first + from, rows - from) * centers.transpose();
+    for (Index r = grouped; r < rows; ++r) AssignPoint(p, first + r, NearestTwo(cn.data(), dots.row(r - from).data(), k), a);
   }
 }
 
@@ -266,37 +350,58 @@ std::vector<double> HalfGaps(const CentroidMatrix& centers) {
   return gap;
 }
 
-// Rows gathered for one GEMM of the bounded pass. The blocks are exactly those the pass has
+// Points gathered for one product of the bounded pass. The blocks are exactly those the pass has
 // always multiplied (the points to re-measure, in index order, cut every kBlockRows), so each
 // product and its rounding are unchanged: Eigen's GEMM sums a row differently depending on where
-// it falls in its block (agents/gemv_row.h), and one such row decides a label in the paper sweep.
+// it falls in its block (agents/kmeans_dots.h), and one such row decides a label in the paper sweep.
 struct Gathered {
-  DescriptorMatrix rows;      // kBlockRows x d; the first `size` rows are in use
-  std::vector<Index> index;   // the point of each row
+  std::vector<Index> index;   // kBlockRows slots; the first `size` are in use
   Index size = 0;
+  DescriptorMatrix rows;      // the rows of an Eigen product, copied together
 };
 
-// Nearest and second-nearest centroid of the gathered points; moves the points that change
-// cluster, with their sums.
+// Gathered point i (its row `x`) scored nearest `n`: Hamerly's bounds from the two scores, and
+// the move, with the sums, if its centroid changed.
+void TakeNearest(const Points& p, Index i, const float* x, const NearestPair& n, Assignment& a) {
+  const auto ui = static_cast<std::size_t>(i);
+  a.upper[ui] = std::sqrt(static_cast<double>(std::max(0.0f, p.norms[i] + n.best_score)));
+  a.lower[ui] = std::sqrt(static_cast<double>(std::max(0.0f, p.norms[i] + n.second_score)));
+  const int own = a.labels[ui];
+  if (n.best == own) return;
+  ++a.changed;
+  const Eigen::Map<const Eigen::RowVectorXf> row(x, p.x.cols());  // just scored: in cache
+  a.sums.row(own) -= row.cast<double>();
+  a.sums.row(n.best) += row.cast<double>();
+  --a.counts[static_cast<std::size_t>(own)];
+  ++a.counts[static_cast<std::size_t>(n.best)];
+  a.labels[ui] = n.best;
+}
+
+// Nearest and second-nearest centroid of the gathered points, as the block's Eigen product gives
+// them (the exact kernel for the points in full groups of 4 columns when s.on, Eigen for the
+// rest as in Assign); moves the points that change cluster, with their sums, in index order.
+// The rows are read where they are: the pass has just measured them, so they are in cache.
 void ReassignGathered(const Points& p, const CentroidMatrix& centers, const Eigen::VectorXf& cn,
-                      Gathered& g, DistanceMatrix& dots, Assignment& a) {
+                      Gathered& g, DistanceMatrix& dots, GroupScores& s, Assignment& a) {
   const Index k = centers.rows();
-  dots.resize(g.size, k);
-  dots.noalias() = g.rows.topRows(g.size) * centers.transpose();
-  for (Index r = 0; r < g.size; ++r) {
-    const Index i = g.index[static_cast<std::size_t>(r)];
-    const auto ui = static_cast<std::size_t>(i);
-    const auto [best, best_score, second_score] = NearestTwo(cn.data(), dots.row(r).data(), k);
-    a.upper[ui] = std::sqrt(static_cast<double>(std::max(0.0f, p.norms[i] + best_score)));
-    a.lower[ui] = std::sqrt(static_cast<double>(std::max(0.0f, p.norms[i] + second_score)));
-    const int own = a.labels[ui];
-    if (best == own) continue;
-    ++a.changed;
-    a.sums.row(own) -= g.rows.row(r).cast<double>();  // the point's row, still in cache
-    a.sums.row(best) += g.rows.row(r).cast<double>();
-    --a.counts[static_cast<std::size_t>(own)];
-    ++a.counts[static_cast<std::size_t>(best)];
-    a.labels[ui] = best;
+  const Index grouped = s.on ? g.size / 4 * 4 : 0;
+  for (Index r = 0; r < grouped; r += kGroupPoints) {
+    const int count = static_cast<int>(std::min<Index>(kGroupPoints, grouped - r));
+    const float* row[kGroupPoints];
+    for (int l = 0; l < count; ++l) row[l] = p.x.row(g.index[static_cast<std::size_t>(r + l)]).data();
+    ScoreGroup(centers, cn, row, count, s);
+    for (int l = 0; l < count; ++l) TakeNearest(p, g.index[static_cast<std::size_t>(r + l)], row[l], s.nearest[l], a);
+  }
+  if (grouped < g.size) {
+    const Index from = grouped == 0 ? 0 : grouped - 4;
+    g.rows.resize(g.size - from, p.x.cols());
+    for (Index r = from; r < g.size; ++r) g.rows.row(r - from) = p.x.row(g.index[static_cast<std::size_t>(r)]);
+    dots.resize(g.size - from, k);
+    dots.noalias() = g.rows * centers.transpose();
+    for (Index r = grouped; r < g.size; ++r) {
+      const Index i = g.index[static_cast<std::size_t>(r)];
+      TakeNearest(p, i, p.x.row(i).data(), NearestTwo(cn.data(), dots.row(r - from).data(), k), a);
+    }
   }
   g.size = 0;
 }
@@ -306,6 +411,7 @@ struct BoundsWork {
   std::vector<Index> suspects;  // points whose stale bounds allow a change (first ones in use)
   Gathered gathered;
   DistanceMatrix dots;
+  std::unique_ptr<GroupScores> scores = std::make_unique<GroupScores>();
 };
 
 // How far the centroids moved, as Hamerly's bounds need it: a point's upper bound grows by its
@@ -354,16 +460,16 @@ void PrefetchRow(const DescriptorMatrix& x, Index i) {
 // One Hamerly assignment pass: only points whose bounds cannot exclude a change are measured,
 // and the sums follow the points that move. First the stale bounds pick the suspects; then
 // each suspect's own distance is measured exactly (rows prefetched a few suspects ahead) and,
-// if that does not clear it, its row, still in cache, joins the block to re-measure.
+// if that does not clear it, the point joins the block to re-measure (its row stays in cache).
 void AssignWithBounds(const Points& p, const CentroidMatrix& centers, const Moves& moves, Assignment& a,
                       BoundsWork& w) {
-  constexpr std::size_t kAhead = 4;  // suspects prefetched ahead of the one measured
+  constexpr std::size_t kAhead = 16;  // suspects prefetched ahead of the one measured
   const std::vector<double> gap = HalfGaps(centers);
   const Eigen::VectorXf cn = SquaredNorms(centers);
   a.changed = 0;
   const std::size_t suspects = Suspects(moves, gap, a, w.suspects);
   Gathered& g = w.gathered;
-  if (g.rows.rows() != kBlockRows) g.rows.resize(kBlockRows, p.x.cols()), g.index.resize(kBlockRows);
+  g.index.resize(kBlockRows);
   for (std::size_t s = 0; s < suspects; ++s) {
     if (s + kAhead < suspects) PrefetchRow(p.x, w.suspects[s + kAhead]);
     const Index i = w.suspects[s];
@@ -371,15 +477,14 @@ void AssignWithBounds(const Points& p, const CentroidMatrix& centers, const Move
     const int own = a.labels[ui];
     const double limit = std::max(gap[static_cast<std::size_t>(own)], a.lower[ui]);
     a.upper[ui] = std::sqrt(static_cast<double>((p.x.row(i) - centers.row(own)).squaredNorm()));
-    // The row goes into the next free slot, which only a point still in doubt keeps: copying a
-    // row in cache costs less than the mispredicted branch on a coin flip.
-    g.rows.row(g.size) = p.x.row(i);
+    // The point goes into the next free slot, which only a point still in doubt keeps: no
+    // branch on a coin flip, and nothing later waits for the count but the next slot's address.
     g.index[static_cast<std::size_t>(g.size)] = i;
     g.size += a.upper[ui] > limit;
     // Re-measuring a block moves only points before the next suspect: its test is unchanged.
-    if (g.size == kBlockRows) ReassignGathered(p, centers, cn, g, w.dots, a);
+    if (g.size == kBlockRows) ReassignGathered(p, centers, cn, g, w.dots, *w.scores, a);
   }
-  if (g.size > 0) ReassignGathered(p, centers, cn, g, w.dots, a);
+  if (g.size > 0) ReassignGathered(p, centers, cn, g, w.dots, *w.scores, a);
 }
 
 // Exact squared distance of every point to its own centroid (for the empty-cluster re-seed).
@@ -407,9 +512,11 @@ KMeansResult Lloyd(const Points& p, const KMeansParams& params, std::uint64_t se
   bool full = true;  // first pass, and after a re-seed: measure everything with GEMM
   std::vector<double> moved(static_cast<std::size_t>(params.k));
   BoundsWork work;
+  GroupScores& scores = *work.scores;
+  scores.on = GroupScoresMatchEigen(p.x, result.centroids, scores);
   for (int it = 0; it < params.max_iterations; ++it) {
     if (full) {
-      Assign(p, result.centroids, a);
+      Assign(p, result.centroids, a, scores);
     } else {
       AssignWithBounds(p, result.centroids, BoundMoves(moved), a, work);
     }
@@ -440,7 +547,7 @@ KMeansResult Lloyd(const Points& p, const KMeansParams& params, std::uint64_t se
     }
   }
   if (!final_pass) return result;
-  Assign(p, result.centroids, a);  // labels and inertia of the final centroids
+  Assign(p, result.centroids, a, scores);  // labels and inertia of the final centroids
   result.labels = std::move(a.labels);
   result.inertia = a.inertia;
   return result;
