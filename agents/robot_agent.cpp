@@ -141,6 +141,7 @@ RobotAgent::Task& RobotAgent::PushTask(Task::Kind kind, RobotId querier, FrameId
   task.match_robot = RobotId();
   task.descriptor = nullptr;
   task.message.Reset();
+  task.searched_at = 0;
   return task;
 }
 
@@ -166,7 +167,8 @@ void RobotAgent::StartNextTask() {
 // delivered when the service time has elapsed.
 void RobotAgent::ServeSearch() {
   const Task& task = in_service_;
-  const IndexSearchResult result = index_.Search(task.descriptor, task.frame, params_.suppression_frames);
+  if (task.searched_at != index_.changes() + 1) SearchAhead();
+  const IndexSearchResult& result = task.result;
   const SimTime duration = params_.service.fixed + params_.service.per_comparison * result.comparisons;
   ++load_.searches;
   if (task.querier != id_) ++load_.remote_queries;
@@ -174,6 +176,24 @@ void RobotAgent::ServeSearch() {
   load_.busy += duration;
   service_best_ = result.best;
   transport_.ScheduleAfter(duration, [this] { FinishSearch(); });
+}
+
+// The results are those the searches would give when served: the store is the same until then
+// (changes() says whether it is). A search's result depends on nothing else (the index's hint
+// only saves work).
+void RobotAgent::SearchAhead() {
+  const std::uint64_t version = index_.changes() + 1;
+  bool ahead = true;  // no search before it stores
+  const auto search = [&](Task& t) {
+    if (!ahead || t.kind != Task::Kind::kSearch) return;
+    if (t.searched_at != version) {
+      t.result = index_.Search(t.descriptor, t.frame, params_.suppression_frames);
+      t.searched_at = version;
+    }
+    ahead = !t.store;
+  };
+  search(in_service_);
+  queue_.ForEach(search);
 }
 
 void RobotAgent::FinishSearch() {

@@ -72,6 +72,9 @@ class RobotAgent final : public TeamAgent {
     const float* descriptor = nullptr;
     MessageRef<query_t> message;
     bool store = false;             // kSearch: keep the descriptor after searching
+    // kSearch: its result, if searched ahead; valid while index_.changes() + 1 == searched_at.
+    IndexSearchResult result;
+    std::uint64_t searched_at = 0;  // 0: not searched
     FrameId match_frame;            // kVerify
     RobotId match_robot;
   };
@@ -89,6 +92,10 @@ class RobotAgent final : public TeamAgent {
   // Service of in_service_: starts now, ends (Finish...) when its service time has elapsed. The
   // timer holds only the agent, so scheduling it does not allocate.
   void ServeSearch();
+  // Searches the task in service and the searches queued behind it up to the first that will
+  // store (which changes the store before the next is served): the store is read once for all
+  // of them while it is in cache, not once per service among 99 other robots' searches.
+  void SearchAhead();
   void FinishSearch();
   void ServeVerify();
   void FinishVerify();
