@@ -34,6 +34,7 @@ void IncrementalIndex::Add(RobotId robot, FrameId frame, const float* descriptor
   max_norm_ = std::max(max_norm_, norms_.back());
   screen_.Append(descriptor);
   entries_.push_back({robot, frame});
+  ++changes_;
 }
 
 void IncrementalIndex::RemoveIf(const std::function<bool(std::size_t)>& remove) {
@@ -56,6 +57,7 @@ void IncrementalIndex::RemoveIf(const std::function<bool(std::size_t)>& remove) 
   for (std::size_t i = 0; i < kept; ++i) screen_.Append(Descriptor(i));
   max_norm_ = norms_.empty() ? 0.0f : *std::max_element(norms_.begin(), norms_.end());
   hint_ = 0;
+  ++changes_;
 }
 
 IndexSearchResult IncrementalIndex::SearchFullScan(const float* query, FrameId query_frame, int window) const {

@@ -59,6 +59,9 @@ class IncrementalIndex {
   IndexSearchResult SearchFullScan(const float* query, FrameId query_frame, int window) const;
 
   const std::vector<IndexEntry>& entries() const { return entries_; }
+  // Counts the calls that changed what is stored (Add, RemoveIf): a search's result still holds
+  // while this is what it was (a robot searches its queued queries ahead, RobotAgent).
+  std::uint64_t changes() const { return changes_; }
   // The stored descriptor of entry i (dim() floats), valid until the next Add or RemoveIf.
   const float* Descriptor(std::size_t i) const { return data_.data() + i * static_cast<std::size_t>(dim_); }
 
@@ -93,6 +96,7 @@ class IncrementalIndex {
   // The previous search's winner: consecutive queries to one robot are usually neighbouring
   // frames, so its distance is a tight first bound. Only a hint: any value gives the same result.
   mutable std::size_t hint_ = 0;
+  std::uint64_t changes_ = 0;
 };
 
 }  // namespace dvpr

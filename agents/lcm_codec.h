@@ -203,6 +203,30 @@ inline bool DecodeInto<query_t>(std::span<const std::uint8_t> buf, query_t& msg)
   return true;
 }
 
+// match_t, the reply to every search (99 a broadcast frame), read field by field as its
+// generated decoder reads it (which calls a function per field: 3 % of the 100-robot broadcast's
+// samples): the same values and the same rejections (not 35 bytes, another type); tests compare
+// it with the generated decoder.
+template <>
+inline bool DecodeInto<match_t>(std::span<const std::uint8_t> buf, match_t& msg) {
+  using namespace codec_detail;
+  // fingerprint, utime, query_robot, query_frame, responder, has_match, match_robot, match_frame, distance
+  constexpr std::size_t kSize = 8 + 8 + 2 + 4 + 2 + 1 + 2 + 4 + 4;
+  if (buf.size() != kSize) return false;
+  const std::uint8_t* p = buf.data();
+  if (static_cast<std::int64_t>(Load64(p)) != match_t::getHash()) return false;
+  msg.utime = static_cast<std::int64_t>(Load64(p + 8));
+  msg.query_robot = static_cast<std::int16_t>(Load16(p + 16));
+  msg.query_frame = static_cast<std::int32_t>(Load32(p + 18));
+  msg.responder = static_cast<std::int16_t>(Load16(p + 22));
+  msg.has_match = static_cast<std::int8_t>(p[24]);
+  msg.match_robot = static_cast<std::int16_t>(Load16(p + 25));
+  msg.match_frame = static_cast<std::int32_t>(Load32(p + 27));
+  const std::uint32_t bits = Load32(p + 31);
+  std::memcpy(&msg.distance, &bits, sizeof bits);
+  return true;
+}
+
 // Decodes a whole buffer into a new Msg. Empty when DecodeInto fails.
 template <typename Msg>
 std::optional<Msg> Decode(std::span<const std::uint8_t> buf) {

@@ -35,6 +35,16 @@ class ReuseQueue {
     --count_;
   }
 
+  // Calls f(element) for every element, front to back.
+  template <class F>
+  void ForEach(F&& f) {
+    std::size_t at = head_;
+    for (std::size_t i = 0; i < count_; ++i) {
+      f(slots_[at]);
+      at = at + 1 == slots_.size() ? 0 : at + 1;
+    }
+  }
+
   // Removes every element (their slots keep what they hold).
   void clear() { head_ = 0, count_ = 0; }
 

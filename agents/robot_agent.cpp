@@ -40,12 +40,15 @@ std::vector<std::string> RobotAgent::InboxChannels(RobotId id) {
 
 void RobotAgent::Start() {
   const auto on_query = [this](QueryRole role) {
-    return [this, role](const query_t& q) { OnQuery(q, role); };
+    return [this, role](const MessageRef<query_t>& q) { OnQuery(q, role); };
   };
-  subscriptions_.push_back(transport_.Subscribe<query_t>(channels::Query(id_), on_query(QueryRole::kSearchAndStore)));
-  subscriptions_.push_back(transport_.Subscribe<query_t>(channels::Probe(id_), on_query(QueryRole::kSearch)));
-  subscriptions_.push_back(transport_.Subscribe<query_t>(channels::Store(id_), on_query(QueryRole::kStore)));
-  subscriptions_.push_back(transport_.Subscribe<query_t>(channels::kQueryAll, on_query(QueryRole::kSearch)));
+  const auto subscribe_query = [&](const std::string& channel, QueryRole role) {
+    subscriptions_.push_back(transport_.SubscribeShared<query_t>(channel, on_query(role)));
+  };
+  subscribe_query(channels::Query(id_), QueryRole::kSearchAndStore);
+  subscribe_query(channels::Probe(id_), QueryRole::kSearch);
+  subscribe_query(channels::Store(id_), QueryRole::kStore);
+  subscribe_query(std::string(channels::kQueryAll), QueryRole::kSearch);
   subscriptions_.push_back(transport_.Subscribe<match_t>(channels::Match(id_), [this](const match_t& m) { OnMatch(m); }));
   subscriptions_.push_back(transport_.Subscribe<verify_request_t>(
       channels::VerifyRequest(id_), [this](const verify_request_t& r) { OnVerifyRequest(r); }));
@@ -108,15 +111,13 @@ void RobotAgent::PublishQuery(int k, const QueryPlan& plan) {
   for (const std::string& channel : plan.channels) transport_.Publish(channel, q);
 }
 
-void RobotAgent::EnqueueSearch(RobotId querier, FrameId frame, const float* descriptor, bool store) {
+void RobotAgent::EnqueueSearch(RobotId querier, FrameId frame, const float* descriptor, bool store,
+                               MessageRef<query_t> message) {
   if (!online_) return;
   Task& task = PushTask(Task::Kind::kSearch, querier, frame);
   task.store = store;
-  if (task.descriptor.capacity() == 0 && !spare_descriptors_.empty()) {
-    task.descriptor = std::move(spare_descriptors_.back());
-    spare_descriptors_.pop_back();
-  }
-  task.descriptor.assign(descriptor, descriptor + frames_.descriptors->cols());
+  task.descriptor = descriptor;
+  task.message = std::move(message);
   Enqueued();
 }
 
@@ -129,7 +130,7 @@ void RobotAgent::EnqueueVerify(RobotId querier, FrameId frame, FrameId match_fra
   Enqueued();
 }
 
-// The back slot with every field but the descriptor reset (it keeps its buffer).
+// The back slot with every field reset (the message it held, if any, let go).
 RobotAgent::Task& RobotAgent::PushTask(Task::Kind kind, RobotId querier, FrameId frame) {
   Task& task = queue_.Push();
   task.kind = kind;
@@ -138,6 +139,9 @@ RobotAgent::Task& RobotAgent::PushTask(Task::Kind kind, RobotId querier, FrameId
   task.store = false;
   task.match_frame = FrameId();
   task.match_robot = RobotId();
+  task.descriptor = nullptr;
+  task.message.Reset();
+  task.searched_at = 0;
   return task;
 }
 
@@ -163,7 +167,8 @@ void RobotAgent::StartNextTask() {
 // delivered when the service time has elapsed.
 void RobotAgent::ServeSearch() {
   const Task& task = in_service_;
-  const IndexSearchResult result = index_.Search(task.descriptor.data(), task.frame, params_.suppression_frames);
+  if (task.searched_at != index_.changes() + 1) SearchAhead();
+  const IndexSearchResult& result = task.result;
   const SimTime duration = params_.service.fixed + params_.service.per_comparison * result.comparisons;
   ++load_.searches;
   if (task.querier != id_) ++load_.remote_queries;
@@ -173,11 +178,29 @@ void RobotAgent::ServeSearch() {
   transport_.ScheduleAfter(duration, [this] { FinishSearch(); });
 }
 
+// The results are those the searches would give when served: the store is the same until then
+// (changes() says whether it is). A search's result depends on nothing else (the index's hint
+// only saves work).
+void RobotAgent::SearchAhead() {
+  const std::uint64_t version = index_.changes() + 1;
+  bool ahead = true;  // no search before it stores
+  const auto search = [&](Task& t) {
+    if (!ahead || t.kind != Task::Kind::kSearch) return;
+    if (t.searched_at != version) {
+      t.result = index_.Search(t.descriptor, t.frame, params_.suppression_frames);
+      t.searched_at = version;
+    }
+    ahead = !t.store;
+  };
+  search(in_service_);
+  queue_.ForEach(search);
+}
+
 void RobotAgent::FinishSearch() {
   if (!online_) return;
   const Task& task = in_service_;
   const std::optional<IndexMatch>& best = service_best_;
-  if (task.store) routing_->Store(task.querier, task.frame, task.descriptor.data());
+  if (task.store) routing_->Store(task.querier, task.frame, task.descriptor);
   if (task.querier == id_) {
     RecordReply(task.frame, best);
   } else {
@@ -221,15 +244,11 @@ void RobotAgent::FinishVerify() {
   EndService();
 }
 
-// The task's buffer goes back to the spares before the next task starts, and the next search
-// queued takes the buffer given back last: the fewest distinct buffers (the slot a task leaves
-// keeps nothing). With a buffer per queue slot, cycling through 128 slots, the searches read
-// their query from a colder line (measured: the first load of the query took 3 times the samples).
+// The finished task lets go of its query (the decoded message goes back to the pool once the
+// other robots that queued it are done with it too).
 void RobotAgent::EndService() {
-  if (in_service_.descriptor.capacity() > 0) {
-    spare_descriptors_.push_back(std::move(in_service_.descriptor));
-    in_service_.descriptor = {};
-  }
+  in_service_.message.Reset();
+  in_service_.descriptor = nullptr;
   busy_ = false;
   StartNextTask();
 }
@@ -249,13 +268,14 @@ PublishChannel RobotAgent::ChannelOf(std::vector<std::uint32_t>& by_robot, Robot
 // The channel the query came on says what to do with it: a robot asked to
 // search serves the query (and stores it afterwards when asked to); a robot
 // that is only a replica stores it and sends nothing back.
-void RobotAgent::OnQuery(const query_t& q, QueryRole role) {
+void RobotAgent::OnQuery(const MessageRef<query_t>& message, QueryRole role) {
+  const query_t& q = *message;
   if (!online_ || q.robot == id_.value || q.dim != frames_.descriptors->cols()) return;
   if (role == QueryRole::kStore) {
     routing_->Store(RobotId(q.robot), FrameId(q.frame), q.descriptor.data());
     return;
   }
-  EnqueueSearch(RobotId(q.robot), FrameId(q.frame), q.descriptor.data(), role == QueryRole::kSearchAndStore);
+  EnqueueSearch(RobotId(q.robot), FrameId(q.frame), q.descriptor.data(), role == QueryRole::kSearchAndStore, message);
 }
 
 void RobotAgent::OnMatch(const match_t& m) {

@@ -19,6 +19,7 @@
 #include "agents/agent_params.h"
 #include "agents/agent_routing.h"
 #include "agents/channels.h"
+#include "agents/decoded_messages.h"
 #include "agents/descriptor_index.h"
 #include "agents/descriptors.h"
 #include "agents/frame_stream.h"
@@ -65,17 +66,25 @@ class RobotAgent final : public TeamAgent {
     enum class Kind { kSearch, kVerify } kind = Kind::kSearch;
     RobotId querier;
     FrameId frame;
-    std::vector<float> descriptor;  // kSearch; its buffer goes back to spare_descriptors_ when done
+    // kSearch: the query's descriptor, in `message` when received, else the robot's own frame
+    // (frames_.descriptors, alive as long as the agent). Held, not copied: the 99 robots that
+    // queue one broadcast query point at one decoded descriptor.
+    const float* descriptor = nullptr;
+    MessageRef<query_t> message;
     bool store = false;             // kSearch: keep the descriptor after searching
+    // kSearch: its result, if searched ahead; valid while index_.changes() + 1 == searched_at.
+    IndexSearchResult result;
+    std::uint64_t searched_at = 0;  // 0: not searched
     FrameId match_frame;            // kVerify
     RobotId match_robot;
   };
 
   void TakeFrame(int k);
   void PublishQuery(int k, const QueryPlan& plan);
-  // Queues a search of `descriptor` (copied into a buffer of an earlier task's: no allocation
-  // once warm) or a verification; nothing while offline.
-  void EnqueueSearch(RobotId querier, FrameId frame, const float* descriptor, bool store);
+  // Queues a search of `descriptor` (in `message` if not empty, which the task keeps alive) or a
+  // verification; nothing while offline.
+  void EnqueueSearch(RobotId querier, FrameId frame, const float* descriptor, bool store,
+                     MessageRef<query_t> message = {});
   void EnqueueVerify(RobotId querier, FrameId frame, FrameId match_frame);
   Task& PushTask(Task::Kind kind, RobotId querier, FrameId frame);
   void Enqueued();
@@ -83,13 +92,17 @@ class RobotAgent final : public TeamAgent {
   // Service of in_service_: starts now, ends (Finish...) when its service time has elapsed. The
   // timer holds only the agent, so scheduling it does not allocate.
   void ServeSearch();
+  // Searches the task in service and the searches queued behind it up to the first that will
+  // store (which changes the store before the next is served): the store is read once for all
+  // of them while it is in cache, not once per service among 99 other robots' searches.
+  void SearchAhead();
   void FinishSearch();
   void ServeVerify();
   void FinishVerify();
   void EndService();
   // The channel name(robot) interned in `by_robot` (a slot per robot id, made on first use).
   PublishChannel ChannelOf(std::vector<std::uint32_t>& by_robot, RobotId robot, std::string (*name)(RobotId));
-  void OnQuery(const query_t& q, QueryRole role);
+  void OnQuery(const MessageRef<query_t>& q, QueryRole role);
   void OnMatch(const match_t& m);
   void OnVerifyRequest(const verify_request_t& r);
   void OnVerifyResult(const verify_result_t& r);
@@ -109,7 +122,6 @@ class RobotAgent final : public TeamAgent {
   ReuseQueue<Task> queue_;
   bool busy_ = false;
   Task in_service_;                         // when busy_ (swapped with the queue's front slot)
-  std::vector<std::vector<float>> spare_descriptors_;  // buffers of finished tasks, last given first taken
   std::optional<IndexMatch> service_best_;  // its search's result, sent when the service ends
   // Reply and verification channels by robot id (kNoChannel until first used).
   static constexpr std::uint32_t kNoChannel = ~std::uint32_t{0};

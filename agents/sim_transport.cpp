@@ -105,8 +105,10 @@ void SimTransport::OnReceive(const ReceivedMessage& message) {
     if (it == entry.handlers.end() || it->id > last_id) break;
     const Handler h = *it;  // keeps the handler alive even if it unsubscribes itself
     prev_id = h.id;
+    delivery_key_ = message.message + 1;  // set per call: a handler may deliver a message of its own
     (*h.fn)(entry.name, message.payload);
   }
+  delivery_key_ = 0;
 }
 
 }  // namespace dvpr

@@ -3,7 +3,9 @@
 // timers as simulator events, messages through the simulated Network. Robot
 // r is network node r. Publishing hands the encoded bytes to the Network
 // (moved, not copied); a delivery calls every handler this robot subscribed
-// on the message's channel, in subscription order.
+// on the message's channel, in subscription order. Each delivery is named by the
+// network's message number, so the transports of a run that share one
+// DecodedMessages (ShareDecodes) decode a broadcast once for all its receivers.
 #include <cstdint>
 #include <deque>
 #include <memory>

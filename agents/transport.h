@@ -12,9 +12,11 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
+#include "agents/decoded_messages.h"
 #include "agents/lcm_codec.h"
 #include "net_models/payload_buffers.h"
 #include "sim/sim_time.h"
@@ -81,12 +83,25 @@ class Transport {
 
   // Calls handler with each message of type Msg received on channel. A buffer
   // that does not decode as Msg is counted in MalformedCount() and dropped.
-  // Each subscription decodes into one message of its own, reused from delivery to delivery
-  // (no allocation per message); the handler's reference is valid during the call only.
+  // Messages are decoded into the transport's DecodedMessages (reused once nobody holds them:
+  // no allocation per message); the handler's reference is valid during the call only.
   template <typename Msg>
   [[nodiscard]] Subscription Subscribe(const std::string& channel, std::function<void(const Msg&)> handler) {
-    return Subscription(this, DoSubscribe(channel, ReusingDecoder<Msg>{this, std::move(handler)}));
+    return Subscription(this, DoSubscribe(channel, PooledDecoder<Msg, const Msg&>{this, std::move(handler)}));
   }
+  // The same, with a reference the handler may keep: the message stays alive and unchanged
+  // while a copy of it exists (a queued task points into it instead of copying it).
+  template <typename Msg>
+  [[nodiscard]] Subscription SubscribeShared(const std::string& channel,
+                                             std::function<void(const MessageRef<Msg>&)> handler) {
+    return Subscription(this, DoSubscribe(channel, PooledDecoder<Msg, const MessageRef<Msg>&>{this, std::move(handler)}));
+  }
+
+  // From now on messages are decoded into `decodes` (null: the transport's own), which must
+  // outlive the transport and every MessageRef its handlers kept. Transports that share one and
+  // name their deliveries (SimTransport: by the network's message number) decode a message
+  // delivered to several of them once.
+  void ShareDecodes(DecodedMessages* decodes) { decodes_ = decodes != nullptr ? decodes : &own_decodes_; }
 
   // The agent's clock: virtual time in simulation, time since start when real.
   virtual SimTime Now() const = 0;
@@ -114,6 +129,11 @@ class Transport {
   virtual std::uint64_t DoSubscribe(const std::string& channel, RawHandler handler) = 0;
   virtual void DoUnsubscribe(std::uint64_t id) = 0;
 
+  // Names the message being delivered while the transport calls its raw handlers: != 0, and
+  // the same for every delivery of one published message to transports sharing a
+  // DecodedMessages (see ShareDecodes); 0 (the default) names nothing.
+  std::uint64_t delivery_key_ = 0;
+
  private:
   friend class Subscription;
 
@@ -126,48 +146,29 @@ class Transport {
     return bytes;
   }
 
-  // A subscription's raw handler: decodes into its own message. A handler that is called again
-  // while the message is in use (a transport that delivers from inside a handler) decodes into a
-  // message of that call's own. The message lives in the decoder itself, not behind a pointer of
-  // its own: one cache line less to fetch per delivery. RawHandler may copy the decoder; a copy
-  // starts with a message of its own (what it holds between calls is never read).
-  template <typename Msg>
-  struct ReusingDecoder {
-    struct Reused {
-      Msg msg;
-      bool in_use = false;
-      Reused() = default;
-      Reused(const Reused&) {}
-      Reused& operator=(const Reused&) { return *this; }
-    };
+  // A subscription's raw handler: the delivery's message from the transport's DecodedMessages,
+  // handed to the handler as a reference to the message (Arg = const Msg&) or as a MessageRef.
+  template <typename Msg, typename Arg>
+  struct PooledDecoder {
     Transport* transport;
-    std::function<void(const Msg&)> handler;
-    mutable Reused reused{};
+    std::function<void(Arg)> handler;
 
     void operator()(const std::string&, std::span<const std::uint8_t> bytes) const {
-      if (reused.in_use) {
-        Msg own;
-        Deliver(bytes, own);
-        return;
-      }
-      reused.in_use = true;
-      struct Release {
-        bool& in_use;
-        ~Release() { in_use = false; }
-      } release{reused.in_use};
-      Deliver(bytes, reused.msg);
-    }
-    void Deliver(std::span<const std::uint8_t> bytes, Msg& into) const {
-      if (DecodeInto(bytes, into)) {
-        handler(into);
-      } else {
+      const MessageRef<Msg> msg = transport->decodes_->Pool<Msg>().Decode(transport->delivery_key_, bytes);
+      if (!msg) {
         ++transport->malformed_;
+      } else if constexpr (std::is_same_v<Arg, const Msg&>) {
+        handler(*msg);
+      } else {
+        handler(msg);
       }
     }
   };
 
   std::uint64_t malformed_ = 0;
   PayloadBuffers* buffers_ = nullptr;
+  DecodedMessages own_decodes_;
+  DecodedMessages* decodes_ = &own_decodes_;
   std::deque<std::string> interned_;  // by PublishChannel; deque: NameOf's references stay put
   std::unordered_map<std::string, std::uint32_t> interned_ids_;
 };

@@ -271,7 +271,7 @@ void Network::Deliver(std::uint32_t slot, NodeId dst, std::uint64_t copy) {
   }
   // OnReceive may send (and grow payloads_), so copy what it needs first; the
   // byte buffer itself does not move while this delivery holds a reference.
-  const ReceivedMessage m{p.src, dst, p.channel, ChannelName(p.channel), p.bytes, p.sent};
+  const ReceivedMessage m{p.src, dst, p.channel, ChannelName(p.channel), p.bytes, p.sent, p.message};
   if (NetworkEndpoint* endpoint = endpoints_[static_cast<std::size_t>(dst.value)]) endpoint->OnReceive(m);
   ReleasePayload(slot);
 }

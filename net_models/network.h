@@ -47,6 +47,7 @@ struct ReceivedMessage {
   std::string_view channel_name;
   std::span<const std::uint8_t> payload;  // valid during the OnReceive call only
   SimTime sent;
+  std::uint64_t message = 0;  // the Send/SendTo call it came from (MessageCopy::message): the same for every copy
 };
 
 // A node's receiving side (SimTransport implements it).

@@ -49,6 +49,21 @@ TEST_F(IndexTest, NothingOutsideWindowGivesNoMatchButCountsComparisons) {
   EXPECT_EQ(r.comparisons, 3);
 }
 
+// changes() counts the calls that change the store, a RemoveIf that removes nothing included;
+// searching changes nothing.
+TEST_F(IndexTest, ChangesCountsAddsAndRemovals) {
+  EXPECT_EQ(index_.changes(), 3u);  // the three Adds of SetUp
+  const std::array<float, 2> q{3.0f, 3.0f};
+  (void)index_.Search(q.data(), FrameId(100), 5);
+  EXPECT_EQ(index_.changes(), 3u);
+  index_.RemoveIf([](std::size_t i) { return i == 1; });
+  EXPECT_EQ(index_.changes(), 4u);
+  index_.RemoveIf([](std::size_t) { return false; });
+  EXPECT_EQ(index_.changes(), 5u);
+  index_.Add(RobotId(3), FrameId(30), q.data());
+  EXPECT_EQ(index_.changes(), 6u);
+}
+
 TEST(Index, TiesGoToTheEntryAddedFirst) {
   IncrementalIndex index(1);
   const float x = 2.0f, y = -2.0f, q = 0.0f;

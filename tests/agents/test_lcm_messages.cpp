@@ -316,6 +316,60 @@ TEST(MessageDecodeInto, QueryDecoderAgreesWithTheGeneratedOneOnEveryBuffer) {
   EXPECT_EQ(accepted, 5 + 2);
 }
 
+// DecodeInto<match_t> has a decoder of its own too; the generated one is the reference, as above.
+// Buffers: two replies (with a match: a NaN distance with a payload, a negative has_match byte;
+// without one: -0 distance), each truncated at every length, with a trailing byte, and with each
+// byte of the fingerprint flipped.
+TEST(MessageDecodeInto, MatchDecoderAgreesWithTheGeneratedOneOnEveryBuffer) {
+  match_t with{};
+  with.utime = -1234567890123;
+  with.query_robot = -3;
+  with.query_frame = 70001;
+  with.responder = 513;
+  with.has_match = -1;
+  with.match_robot = 258;
+  with.match_frame = -5;
+  with.distance = std::bit_cast<float>(0x7fc00001u);
+  match_t without{};
+  without.utime = 42;
+  without.match_robot = -1;
+  without.match_frame = -1;
+  without.distance = -0.0f;
+  std::vector<std::vector<std::uint8_t>> buffers;
+  for (const match_t& m : {with, without}) {
+    const auto bytes = Encode(m);
+    ASSERT_EQ(bytes.size(), 35u);  // 8 + 8 + 2 + 4 + 2 + 1 + 2 + 4 + 4, worked by hand
+    for (std::size_t len = 0; len <= bytes.size(); ++len) buffers.emplace_back(bytes.begin(), bytes.begin() + len);
+    buffers.push_back(bytes);
+    buffers.back().push_back(0);
+    for (std::size_t i = 0; i < 8; ++i) {
+      buffers.push_back(bytes);
+      buffers.back()[i] ^= 0x01;
+    }
+  }
+  int accepted = 0;
+  for (const auto& buf : buffers) {
+    match_t reference{};
+    const bool ok_reference = reference.decode(buf.data(), 0, static_cast<int>(buf.size())) == static_cast<int>(buf.size());
+    match_t fast{};
+    fast.utime = 99;  // left from an earlier message
+    const bool ok_fast = DecodeInto(std::span<const std::uint8_t>(buf), fast);
+    ASSERT_EQ(ok_fast, ok_reference) << "buffer of " << buf.size() << " bytes";
+    if (!ok_fast) continue;
+    ++accepted;
+    EXPECT_EQ(fast.utime, reference.utime);
+    EXPECT_EQ(fast.query_robot, reference.query_robot);
+    EXPECT_EQ(fast.query_frame, reference.query_frame);
+    EXPECT_EQ(fast.responder, reference.responder);
+    EXPECT_EQ(fast.has_match, reference.has_match);
+    EXPECT_EQ(fast.match_robot, reference.match_robot);
+    EXPECT_EQ(fast.match_frame, reference.match_frame);
+    EXPECT_EQ(std::bit_cast<std::uint32_t>(fast.distance), std::bit_cast<std::uint32_t>(reference.distance));
+  }
+  EXPECT_EQ(accepted, 2);  // each whole encoding, nothing else
+  EXPECT_EQ(Decode<match_t>(Encode(with))->query_frame, 70001);
+}
+
 TEST(MessageRoundTrip, DescriptorBatchAndCentroidTable) {
   const descriptor_batch_t b = MakeBatch(3, 5);
   const descriptor_batch_t b2 = RoundTrip(b);

@@ -80,5 +80,27 @@ TEST(ReuseQueueTest, ClearEmptiesAndTheNextPopIsTheNextPush) {
   EXPECT_TRUE(q.empty());
 }
 
+// ForEach visits the queued elements front to back, also across the ring's wrap-around, and
+// may change them.
+TEST(ReuseQueueTest, ForEachVisitsFrontToBackAndMayChangeThem) {
+  ReuseQueue<Item> q;
+  Item out;
+  for (int i = 0; i < 6; ++i) q.Push().value = i;
+  for (int i = 0; i < 4; ++i) q.PopInto(out);
+  for (int i = 6; i < 11; ++i) q.Push().value = i;  // 8 slots: 8, 9, 10 wrap to the start
+  std::vector<int> seen;
+  q.ForEach([&](Item& item) {
+    seen.push_back(item.value);
+    item.value *= 10;
+  });
+  EXPECT_EQ(seen, (std::vector<int>{4, 5, 6, 7, 8, 9, 10}));
+  std::vector<int> popped;
+  while (!q.empty()) {
+    q.PopInto(out);
+    popped.push_back(out.value);
+  }
+  EXPECT_EQ(popped, (std::vector<int>{40, 50, 60, 70, 80, 90, 100}));
+}
+
 }  // namespace
 }  // namespace dvpr

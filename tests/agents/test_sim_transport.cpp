@@ -119,6 +119,31 @@ TEST_F(SimTransportTest, TransportsOfOneNetworkInternANameAlike) {
   EXPECT_EQ(frames, (std::vector<int>{4, 5}));
 }
 
+// Robots that share their decoded messages (as a simulation's do) see one decoded query per
+// broadcast: both receivers of the first query get the same message, kept alive by the first
+// receiver's reference while the second query is decoded into another one, intact.
+TEST_F(SimTransportTest, ReceiversOfOneBroadcastShareItsDecodedMessage) {
+  DecodedMessages shared;
+  for (auto& r : robots) r->ShareDecodes(&shared);
+  std::vector<MessageRef<query_t>> kept;
+  std::vector<Subscription> subs;
+  for (int r = 1; r < kRobots; ++r) {
+    subs.push_back(robots[r]->SubscribeShared<query_t>(channels::kQueryAll,
+                                                       [&](const MessageRef<query_t>& q) { kept.push_back(q); }));
+  }
+  robots[0]->Publish(channels::kQueryAll, Query(0, 1));
+  robots[0]->Publish(channels::kQueryAll, Query(0, 2));
+  sim.Run();
+  ASSERT_EQ(kept.size(), 4u);  // robot 1 then robot 2, for each query in turn
+  EXPECT_EQ(&*kept[0], &*kept[1]);
+  EXPECT_EQ(&*kept[2], &*kept[3]);
+  EXPECT_NE(&*kept[0], &*kept[2]);
+  EXPECT_EQ(kept[0]->frame, 1);
+  EXPECT_EQ(kept[2]->frame, 2);
+  EXPECT_EQ(kept[0]->descriptor, std::vector<float>(128, 0.25f));
+  kept.clear();  // before `shared`, which they point into
+}
+
 TEST_F(SimTransportTest, ClockAndTimersAreVirtual) {
   std::vector<SimTime> fired;
   robots[1]->ScheduleAfter(SimTime::Millis(250), [&] { fired.push_back(robots[1]->Now()); });

@@ -19,6 +19,12 @@ class LoopbackTransport final : public Transport {
   std::int64_t UtimeAt(SimTime t) const override { return t.us(); }
   void ScheduleAfter(SimTime, Callback fn) override { fn(); }
   void Inject(const std::string& channel, const std::vector<std::uint8_t>& bytes) { Deliver(channel, bytes); }
+  // A delivery named `key`, as a transport that shares its decoded messages names them.
+  void InjectAs(std::uint64_t key, const std::string& channel, const std::vector<std::uint8_t>& bytes) {
+    delivery_key_ = key;
+    Deliver(channel, bytes);
+    delivery_key_ = 0;
+  }
 
  private:
   void DoPublish(const std::string& channel, const char*, std::vector<std::uint8_t> bytes) override {
@@ -101,6 +107,75 @@ TEST(TransportSubscribe, ABufferThatIsNotTheTypeIsCountedAndDropped) {
   match_t m{};
   t.Publish("M", m);
   EXPECT_EQ(calls, 1);
+}
+
+// Two transports sharing one DecodedMessages, as a simulation's robots do: the deliveries of one
+// message (one key) see one decoded message, a new key is decoded anew.
+TEST(TransportShareDecodes, DeliveriesOfOneMessageShareOneDecodedMessage) {
+  DecodedMessages shared;
+  LoopbackTransport a;
+  LoopbackTransport b;
+  a.ShareDecodes(&shared);
+  b.ShareDecodes(&shared);
+  std::vector<const query_t*> seen;
+  std::vector<std::int32_t> frames;
+  const auto handler = [&](const query_t& q) { seen.push_back(&q), frames.push_back(q.frame); };
+  const Subscription sub_a = a.Subscribe<query_t>("Q", handler);
+  const Subscription sub_b = b.Subscribe<query_t>("Q", handler);
+  const auto first = Encode(Query(1, {1.0f}));
+  a.InjectAs(7, "Q", first);
+  b.InjectAs(7, "Q", first);
+  b.InjectAs(8, "Q", Encode(Query(2, {2.0f})));
+  ASSERT_EQ(seen.size(), 3u);
+  EXPECT_EQ(seen[0], seen[1]);
+  EXPECT_EQ(frames, (std::vector<std::int32_t>{1, 1, 2}));
+}
+
+// What a kept reference holds stays as it was while later messages are decoded (each into a
+// message of its own), and a message nobody holds any more is decoded over again, not a new one.
+TEST(TransportShareDecodes, AKeptMessageStaysIntactAndAFreedOneIsReused) {
+  LoopbackTransport t;
+  std::vector<MessageRef<query_t>> kept;
+  std::vector<const query_t*> addresses;
+  const Subscription sub = t.SubscribeShared<query_t>("Q", [&](const MessageRef<query_t>& q) {
+    kept.push_back(q);
+    addresses.push_back(&*q);
+  });
+  t.Publish("Q", Query(1, {1.0f, 2.0f}));
+  t.Publish("Q", Query(2, {3.0f}));
+  t.Publish("Q", Query(3, {}));
+  ASSERT_EQ(kept.size(), 3u);
+  EXPECT_EQ(kept[0]->frame, 1);
+  EXPECT_EQ(kept[0]->descriptor, (std::vector<float>{1.0f, 2.0f}));
+  EXPECT_EQ(kept[1]->descriptor, (std::vector<float>{3.0f}));
+  EXPECT_TRUE(kept[2]->descriptor.empty());
+  EXPECT_NE(addresses[0], addresses[1]);
+  EXPECT_NE(addresses[1], addresses[2]);
+  kept.clear();  // the transport's pool still holds the last one (key 0: never reused as is)
+  t.Publish("Q", Query(4, {4.0f}));
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_EQ(kept[0]->frame, 4);
+  EXPECT_EQ(kept[0]->descriptor, (std::vector<float>{4.0f}));
+  EXPECT_TRUE(&*kept[0] == addresses[0] || &*kept[0] == addresses[1]);  // a freed one, decoded over
+}
+
+// A buffer that does not decode fails once per delivery even when its key is shared: each
+// transport counts it.
+TEST(TransportShareDecodes, AMalformedSharedMessageIsCountedByEveryReceiver) {
+  DecodedMessages shared;
+  LoopbackTransport a;
+  LoopbackTransport b;
+  a.ShareDecodes(&shared);
+  b.ShareDecodes(&shared);
+  int calls = 0;
+  const Subscription sub_a = a.Subscribe<match_t>("M", [&](const match_t&) { ++calls; });
+  const Subscription sub_b = b.Subscribe<match_t>("M", [&](const match_t&) { ++calls; });
+  const std::vector<std::uint8_t> garbage{1, 2, 3};
+  a.InjectAs(5, "M", garbage);
+  b.InjectAs(5, "M", garbage);
+  EXPECT_EQ(calls, 0);
+  EXPECT_EQ(a.MalformedCount(), 1u);
+  EXPECT_EQ(b.MalformedCount(), 1u);
 }
 
 }  // namespace

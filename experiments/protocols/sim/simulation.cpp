@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "agents/decoded_messages.h"
 #include "agents/sim_transport.h"
 #include "experiments/protocols/sim/event_log_recorder.h"
 #include "experiments/protocols/sim/message_roles.h"
@@ -119,6 +120,7 @@ SimRunLog RunTeam(const Dataset& data, const SimRunParams& params, const AgentMa
 
   const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), n);
   const GeometricVerifier verifier = PoseOracle(data.trajectory.positions, params.gt_radius_m);
+  DecodedMessages decoded;  // shared by the transports: a broadcast is decoded once, not once a robot
   std::vector<std::unique_ptr<SimTransport>> transports;
   std::vector<std::unique_ptr<TeamAgent>> agents;
   SimRunLog log;
@@ -130,6 +132,7 @@ SimRunLog RunTeam(const Dataset& data, const SimRunParams& params, const AgentMa
     for (int k = 0; k < range.size(); ++k) log.capture_time[static_cast<std::size_t>(range.begin.value + k)] = frames.TimeOf(k);
     transports.push_back(std::make_unique<SimTransport>(network, NodeId(r), params.start_utime));
     transports.back()->UseBuffers(&network.payload_buffers());
+    transports.back()->ShareDecodes(&decoded);
     agents.push_back(make_agent(RobotId(r), *transports.back(), frames, verifier));
   }
   for (auto& agent : agents) agent->Start();
