@@ -108,9 +108,9 @@ IndexSearchResult IncrementalIndex::Search(const float* query, FrameId query_fra
   if (hint_ < n && !InWindow(entries_[hint_].frame, query_frame, window)) {
     take(hint_, ModelDistance(hint_, query, q_norm));
   }
-  for (std::size_t first = 0; first < n; first += ByteScreen::kTileRows) {
+  for (std::size_t first = 0; first < n; first += HalfScreen::kTileRows) {
     const unsigned survivors = best < n ? screen_.Survivors(first, query, limits_.data()) : 0xFFu;
-    for (std::size_t i = first; i < std::min(n, first + ByteScreen::kTileRows); ++i) {
+    for (std::size_t i = first; i < std::min(n, first + HalfScreen::kTileRows); ++i) {
       if ((survivors >> (i - first) & 1u) == 0 || i == best) continue;
       if (InWindow(entries_[i].frame, query_frame, window)) continue;
       const float d = ModelDistance(i, query, q_norm);

@@ -8,8 +8,8 @@
 // expansion the static protocol's batched distances use (SearchFullScan).
 // Search gives the same entry and the same float distance, bit for bit, but
 // computes the model's value only for the few rows that could win: a screen
-// keeps every row again at one byte a value and rules most rows out from lower
-// bounds over their leading values (agents/byte_screen.h); the rows that pass
+// keeps every row again in half precision and rules most rows out from lower
+// bounds over their leading values (agents/half_screen.h); the rows that pass
 // every bound get the full product's own value (agents/gemv_row.h).
 // docs/performance.md.
 #include <cstddef>
@@ -20,7 +20,7 @@
 
 #include "agents/descriptors.h"
 #include "agents/growable_array.h"
-#include "agents/byte_screen.h"
+#include "agents/half_screen.h"
 #include "agents/ids.h"
 
 namespace dvpr {
@@ -87,7 +87,7 @@ class IncrementalIndex {
 
   int dim_;
   GrowableArray<float> data_;  // size() x dim, row-major
-  ByteScreen screen_;                  // every row again at a byte a value, for the bounds
+  HalfScreen screen_;                  // every row again in half precision, for the bounds
   mutable std::vector<float> limits_;  // per check of the screen: the largest partial sum that can still win
   GrowableArray<float> norms_;  // squared norms of the rows
   float max_norm_ = 0.0f;     // max of norms_: scales the rounding margin of the bounds

@@ -12,16 +12,14 @@
 #define DVPR_HALF_SCREEN_AVX 0
 #endif
 
-#include "agents/screen_bound.h"
-
 namespace dvpr {
 namespace {
 
 constexpr int kFirstCheck = 32;
 constexpr int kCheckEvery = 16;
 
-using screen_bound::Lanes;
-using screen_bound::NotAbove;
+// Eight rows side by side: a GNU vector of 8 floats (one AVX register, two SSE ones).
+using Lanes = float __attribute__((vector_size(8 * sizeof(float))));
 
 // The value of IEEE binary16 bits, exactly.
 float HalfToFloat(std::uint16_t h) {
@@ -88,6 +86,18 @@ inline void AddBand(Lanes (&acc)[4], const std::uint16_t* tile, const float* q, 
   for (; j < width; ++j) AddSquaredDiffs(acc[0], tile + j * HalfScreen::kTileRows, q[j]);
 }
 
+// Bit l set where lane l of `sums` is not above `limit` (NaN is not above: such a row is kept).
+unsigned NotAbove(const Lanes& sums, float limit) {
+#if DVPR_HALF_SCREEN_AVX
+  __m256 wide;
+  std::memcpy(&wide, &sums, sizeof wide);
+  return ~static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(wide, _mm256_set1_ps(limit), _CMP_GT_OQ))) & 0xFFu;
+#else
+  unsigned mask = 0;
+  for (unsigned l = 0; l < 8; ++l) mask |= (sums[l] > limit ? 0u : 1u) << l;
+  return mask;
+#endif
+}
 
 }  // namespace
 
@@ -114,8 +124,11 @@ void HalfScreen::Append(const float* row) {
     from += width;
   }
   ++rows_;
-  // An overflowed or NaN value leaves the screen without a bound (every row is then computed).
-  error_ = std::max(error_, screen_bound::RowError(error));
+  // The double sum's own rounding (dim terms) is far below the 2^-30 added; an overflowed or
+  // NaN value leaves the screen without a bound (every row is then computed).
+  const double bound = std::sqrt(error) * (1.0 + 0x1.0p-30);
+  const float rounded_up = std::nextafter(static_cast<float>(bound), std::numeric_limits<float>::infinity());
+  error_ = std::isfinite(bound) ? std::max(error_, rounded_up) : std::numeric_limits<float>::infinity();
 }
 
 void HalfScreen::Clear() {
@@ -124,7 +137,14 @@ void HalfScreen::Clear() {
   error_ = 0.0f;
 }
 
-float HalfScreen::Limit(double exact, std::size_t k) const { return screen_bound::Limit(exact, error_, checks_[k]); }
+// A row within `exact` of the query has a copy within sqrt(exact) + error of it (triangle
+// inequality), and a float sum of `terms` squared differences exceeds the exact one by at most
+// (terms + 2) units of 2^-24 relative (4 x that here).
+float HalfScreen::Limit(double exact, std::size_t k) const {
+  const double root = std::sqrt(std::max(0.0, exact)) * (1.0 + 0x1.0p-50) + error_;
+  const double limit = root * root * (1.0 + 4.0 * (checks_[k] + 3) * 0x1.0p-24);
+  return std::nextafter(static_cast<float>(limit), std::numeric_limits<float>::infinity());
+}
 
 unsigned HalfScreen::Survivors(std::size_t first, const float* query, const float* limits) const {
   return SurvivorsFrom(first, query, limits, 0, nullptr);
