@@ -29,7 +29,7 @@ IncrementalIndex::IncrementalIndex(int dim) : dim_(dim), screen_(dim) {
 }
 
 void IncrementalIndex::Add(RobotId robot, FrameId frame, const float* descriptor) {
-  data_.Append(descriptor, static_cast<std::size_t>(dim_));
+  data_.insert(data_.end(), descriptor, descriptor + dim_);
   norms_.push_back(Eigen::Map<const Eigen::VectorXf>(descriptor, dim_).squaredNorm());
   max_norm_ = std::max(max_norm_, norms_.back());
   screen_.Append(descriptor);

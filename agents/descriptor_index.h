@@ -19,7 +19,6 @@
 #include <vector>
 
 #include "agents/descriptors.h"
-#include "agents/growable_array.h"
 #include "agents/half_screen.h"
 #include "agents/ids.h"
 
@@ -86,10 +85,10 @@ class IncrementalIndex {
   void SetLimits(float best, double margin) const;
 
   int dim_;
-  GrowableArray<float> data_;  // size() x dim, row-major
+  std::vector<float> data_;   // size() x dim, row-major
   HalfScreen screen_;                  // every row again in half precision, for the bounds
   mutable std::vector<float> limits_;  // per check of the screen: the largest partial sum that can still win
-  GrowableArray<float> norms_;  // squared norms of the rows
+  std::vector<float> norms_;  // squared norms of the rows
   float max_norm_ = 0.0f;     // max of norms_: scales the rounding margin of the bounds
   std::vector<IndexEntry> entries_;
   mutable std::vector<float> scratch_;

@@ -112,8 +112,8 @@ void HalfScreen::Append(const float* row) {
   double error = 0.0;  // ||row - half(row)||^2: each difference of a float and a half is exact in double
   for (std::size_t k = 0; k < checks_.size(); ++k) {
     const auto width = static_cast<std::size_t>(checks_[k]) - from;
-    GrowableArray<std::uint16_t>& band = bands_[k];
-    if (rows_ % kTileRows == 0) band.resize(band.size() + width * kTileRows);  // zeros: the padding rows
+    std::vector<std::uint16_t>& band = bands_[k];
+    if (rows_ % kTileRows == 0) band.resize(band.size() + width * kTileRows, 0);
     std::uint16_t* tile = band.data() + rows_ / kTileRows * width * kTileRows + rows_ % kTileRows;
     for (std::size_t j = 0; j < width; ++j) {
       const std::uint16_t half = FloatToHalf(row[from + j]);

@@ -15,8 +15,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "agents/growable_array.h"
-
 namespace dvpr {
 
 class HalfScreen {
@@ -55,7 +53,7 @@ class HalfScreen {
   std::size_t rows_ = 0;
   // Band k: tiles of 8 rows x (checks[k] - checks[k-1]) values, as IEEE binary16 bits (not
   // _Float16, which clang 14 does not have on x86).
-  std::vector<GrowableArray<std::uint16_t>> bands_;
+  std::vector<std::vector<std::uint16_t>> bands_;
   // The largest ||row - half(row)|| over the rows, rounded up; +inf if a value has no finite half.
   float error_ = 0.0f;
 };
