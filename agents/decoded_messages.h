@@ -124,8 +124,8 @@ class DecodedMessages {
     for (const Entry& e : pools_) {
       if (e.tag == &kTag<Msg>) return *static_cast<DecodedPool<Msg>*>(e.pool.get());
     }
-    auto* pool = new DecodedPool<Msg>();
-    pools_.push_back(Entry{&kTag<Msg>, std::shared_ptr<void>(pool, [](void* p) { delete static_cast<DecodedPool<Msg>*>(p); })});
+    auto pool = std::make_shared<DecodedPool<Msg>>();
+    pools_.push_back(Entry{&kTag<Msg>, pool});
     return *pool;
   }
 

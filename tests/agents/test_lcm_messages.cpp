@@ -257,6 +257,18 @@ TEST(MessageDecode, GarbageLengthFieldDoesNotAllocate) {
   EXPECT_FALSE(Decode<query_t>(q).has_value());
 }
 
+// `bytes` truncated at every length (the whole encoding included), with a trailing byte, and with
+// each byte of the 8-byte fingerprint flipped, appended to `buffers`.
+void AppendDamagedCopies(const std::vector<std::uint8_t>& bytes, std::vector<std::vector<std::uint8_t>>& buffers) {
+  for (std::size_t len = 0; len <= bytes.size(); ++len) buffers.emplace_back(bytes.begin(), bytes.begin() + len);
+  buffers.push_back(bytes);
+  buffers.back().push_back(0);
+  for (std::size_t i = 0; i < 8; ++i) {
+    buffers.push_back(bytes);
+    buffers.back()[i] ^= 0x01;
+  }
+}
+
 // DecodeInto<query_t> has a decoder of its own (lcm_codec.h); LCM's generated decoder, called
 // here directly on a fresh message, is the reference: for every buffer both accept or both
 // reject, and what they accept decodes to the same fields and the same float bits (NaNs,
@@ -275,13 +287,7 @@ TEST(MessageDecodeInto, QueryDecoderAgreesWithTheGeneratedOneOnEveryBuffer) {
     q.robot = -2;
     q.frame = -70000;
     const auto bytes = Encode(q);
-    for (std::size_t len = 0; len <= bytes.size(); ++len) buffers.emplace_back(bytes.begin(), bytes.begin() + len);
-    buffers.push_back(bytes);
-    buffers.back().push_back(0);
-    for (std::size_t i = 0; i < 8; ++i) {
-      buffers.push_back(bytes);
-      buffers.back()[i] ^= 0x01;
-    }
+    AppendDamagedCopies(bytes, buffers);
     for (const std::uint16_t claimed : {0, 1, 2, 127, 129, 0x7fff, 0x8000, 0xffff}) {
       buffers.push_back(bytes);
       buffers.back()[30] = static_cast<std::uint8_t>(claimed >> 8);
@@ -339,13 +345,7 @@ TEST(MessageDecodeInto, MatchDecoderAgreesWithTheGeneratedOneOnEveryBuffer) {
   for (const match_t& m : {with, without}) {
     const auto bytes = Encode(m);
     ASSERT_EQ(bytes.size(), 35u);  // 8 + 8 + 2 + 4 + 2 + 1 + 2 + 4 + 4, worked by hand
-    for (std::size_t len = 0; len <= bytes.size(); ++len) buffers.emplace_back(bytes.begin(), bytes.begin() + len);
-    buffers.push_back(bytes);
-    buffers.back().push_back(0);
-    for (std::size_t i = 0; i < 8; ++i) {
-      buffers.push_back(bytes);
-      buffers.back()[i] ^= 0x01;
-    }
+    AppendDamagedCopies(bytes, buffers);
   }
   int accepted = 0;
   for (const auto& buf : buffers) {
