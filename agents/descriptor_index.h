@@ -84,18 +84,19 @@ class IncrementalIndex {
   // The screen's limits (one a check) for a best model distance so far.
   void SetLimits(float best, double margin) const;
 
+  // What a search of a small store reads first, together (SearchEveryRow: two cache lines).
   int dim_;
-  std::vector<float> data_;   // size() x dim, row-major
-  HalfScreen screen_;                  // every row again in half precision, for the bounds
-  mutable std::vector<float> limits_;  // per check of the screen: the largest partial sum that can still win
-  std::vector<float> norms_;  // squared norms of the rows
-  float max_norm_ = 0.0f;     // max of norms_: scales the rounding margin of the bounds
-  std::vector<IndexEntry> entries_;
-  mutable std::vector<float> scratch_;
+  std::uint64_t changes_ = 0;
   // The previous search's winner: consecutive queries to one robot are usually neighbouring
   // frames, so its distance is a tight first bound. Only a hint: any value gives the same result.
   mutable std::size_t hint_ = 0;
-  std::uint64_t changes_ = 0;
+  std::vector<float> data_;   // size() x dim, row-major
+  std::vector<float> norms_;  // squared norms of the rows
+  std::vector<IndexEntry> entries_;
+  mutable std::vector<float> scratch_;
+  float max_norm_ = 0.0f;     // max of norms_: scales the rounding margin of the bounds
+  HalfScreen screen_;                  // every row again in half precision, for the bounds
+  mutable std::vector<float> limits_;  // per check of the screen: the largest partial sum that can still win
 };
 
 }  // namespace dvpr

@@ -130,9 +130,11 @@ void RobotAgent::EnqueueVerify(RobotId querier, FrameId frame, FrameId match_fra
   Enqueued();
 }
 
-// The back slot with every field reset (the message it held, if any, let go).
+// The back slot with every field reset (the message it held, if any, let go); an idle robot's
+// task goes straight into service (its queue is empty: StartNextTask empties it before it idles),
+// not through a queue slot and a swap.
 RobotAgent::Task& RobotAgent::PushTask(Task::Kind kind, RobotId querier, FrameId frame) {
-  Task& task = queue_.Push();
+  Task& task = busy_ ? queue_.Push() : in_service_;
   task.kind = kind;
   task.querier = querier;
   task.frame = frame;
@@ -148,14 +150,20 @@ RobotAgent::Task& RobotAgent::PushTask(Task::Kind kind, RobotId querier, FrameId
 void RobotAgent::Enqueued() {
   if (busy_) {
     load_.max_queue = std::max<std::int64_t>(load_.max_queue, static_cast<std::int64_t>(queue_.size()));
+    return;
   }
-  StartNextTask();
+  busy_ = true;  // PushTask put the task in service
+  Serve();
 }
 
 void RobotAgent::StartNextTask() {
   if (busy_ || queue_.empty() || !online_) return;
   busy_ = true;
   queue_.PopInto(in_service_);
+  Serve();
+}
+
+void RobotAgent::Serve() {
   if (in_service_.kind == Task::Kind::kSearch) {
     ServeSearch();
   } else {

@@ -87,8 +87,11 @@ class RobotAgent final : public TeamAgent {
                      MessageRef<query_t> message = {});
   void EnqueueVerify(RobotId querier, FrameId frame, FrameId match_frame);
   Task& PushTask(Task::Kind kind, RobotId querier, FrameId frame);
+  // After PushTask: serves the task now if the robot was idle.
   void Enqueued();
+  // Serves the queue's front task if the robot is idle.
   void StartNextTask();
+  void Serve();  // in_service_
   // Service of in_service_: starts now, ends (Finish...) when its service time has elapsed. The
   // timer holds only the agent, so scheduling it does not allocate.
   void ServeSearch();
@@ -110,26 +113,28 @@ class RobotAgent final : public TeamAgent {
   void MaybeVerify(int k);
   int LocalIndexOf(FrameId frame) const;
 
+  // What every delivered query reads or writes comes first, together (a broadcast run reaches
+  // each of 100 robots once a query, its state long gone from the nearer caches by then).
   RobotId id_;
+  bool online_ = true;
+  bool busy_ = false;
   AgentParams params_;
   Transport& transport_;
+  RobotLoad load_;
+  std::optional<IndexMatch> service_best_;  // its search's result, sent when the service ends
+  Task in_service_;                         // when busy_ (swapped with the queue's front slot)
+  ReuseQueue<Task> queue_;
   FrameStream frames_;
   GeometricVerifier verifier_;
   IncrementalIndex index_;
   std::unique_ptr<AgentRouting> routing_;
   std::vector<QueryRecord> outcomes_;
-  RobotLoad load_;
-  ReuseQueue<Task> queue_;
-  bool busy_ = false;
-  Task in_service_;                         // when busy_ (swapped with the queue's front slot)
-  std::optional<IndexMatch> service_best_;  // its search's result, sent when the service ends
   // Reply and verification channels by robot id (kNoChannel until first used).
   static constexpr std::uint32_t kNoChannel = ~std::uint32_t{0};
   std::vector<std::uint32_t> match_channels_;
   std::vector<std::uint32_t> verify_request_channels_;
   std::vector<std::uint32_t> verify_result_channels_;
   verify_request_t verify_request_;
-  bool online_ = true;
   std::vector<Subscription> subscriptions_;
 };
 

@@ -161,6 +161,10 @@ void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::v
   p.type = type;
   p.sent = now;
   p.wire_bytes = fp.wire_bytes.value();
+  std::vector<PendingCopy>& pending = pending_[slot];
+  pending.clear();
+  order_.clear();
+  bool one_time = true;  // every copy that goes arrives at one time (the usual case)
   for (std::size_t i = 0; i < dsts_.size(); ++i) {
     const NodeId dst = dsts_[i];
     const std::uint64_t copy = copies_++;
@@ -174,10 +178,47 @@ void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::v
       continue;
     }
     ++p.refs;
-    sim_.ScheduleAt(outcomes_[i].arrival, [this, slot, dst, copy] { Deliver(slot, dst, copy); });
+    pending.push_back(PendingCopy{dst, copy});
+    if (!order_.empty() && outcomes_[i].arrival != outcomes_[order_.front()].arrival) one_time = false;
+    order_.push_back(static_cast<std::uint32_t>(i));
   }
   if (!observers_.empty()) NotifyMedium(p, use);
-  if (p.refs == 0) ReleasePayload(slot);
+  if (p.refs == 0) {
+    ReleasePayload(slot);
+    return;
+  }
+  if (one_time) {
+    const auto end = static_cast<std::uint32_t>(pending.size());
+    sim_.ScheduleAt(outcomes_[order_.front()].arrival, [this, slot, end] { DeliverCopies(slot, 0, end); });
+    return;
+  }
+  // Arrival times differ: the copies sorted by time (stably: destination order within a time),
+  // one event a time.
+  std::vector<std::uint32_t>& by_time = by_time_;
+  by_time.resize(order_.size());
+  for (std::uint32_t k = 0; k < by_time.size(); ++k) by_time[k] = k;
+  std::stable_sort(by_time.begin(), by_time.end(), [this](std::uint32_t a, std::uint32_t b) {
+    return outcomes_[order_[a]].arrival < outcomes_[order_[b]].arrival;
+  });
+  sorted_.clear();
+  for (const std::uint32_t k : by_time) sorted_.push_back(pending[k]);
+  pending.swap(sorted_);
+  const auto count = static_cast<std::uint32_t>(by_time.size());
+  for (std::uint32_t first = 0; first < count;) {
+    const SimTime at = outcomes_[order_[by_time[first]]].arrival;
+    std::uint32_t end = first + 1;
+    while (end < count && outcomes_[order_[by_time[end]]].arrival == at) ++end;
+    sim_.ScheduleAt(at, [this, slot, first, end] { DeliverCopies(slot, first, end); });
+    first = end;
+  }
+}
+
+void Network::DeliverCopies(std::uint32_t slot, std::uint32_t first, std::uint32_t end) {
+  for (std::uint32_t k = first; k < end; ++k) {
+    // Indexed each time: a delivery may send, and new slots move the vectors (not their contents).
+    const PendingCopy c = pending_[slot][k];
+    Deliver(slot, c.dst, c.copy);
+  }
 }
 
 // Fills outcomes_ for dsts_ and frames_; the sender counts what its message
@@ -234,6 +275,7 @@ std::uint32_t Network::AllocatePayload(std::vector<std::uint8_t>&& bytes) {
   } else {
     slot = static_cast<std::uint32_t>(payloads_.size());
     payloads_.emplace_back();
+    pending_.emplace_back();
   }
   Payload& p = payloads_[slot];
   p.bytes = std::move(bytes);

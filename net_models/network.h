@@ -14,8 +14,11 @@
 // Hot path, for ~1 million messages per second: channel and type names are
 // interned to small ids once; the payload is moved in and shared by all its
 // destinations (one buffer, reference-counted in a slab, no copy per
-// destination); delivery events capture only (network, slot, destination,
-// copy number), so they fit the Simulator's inline callback storage.
+// destination); the copies of one message that arrive at the same time are
+// one event, which delivers them in the order of their destinations (as the
+// events of single copies, scheduled one after another, would run: nothing can
+// come between them), and it captures only (network, slot, range of copies),
+// so it fits the Simulator's inline callback storage.
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -185,6 +188,8 @@ class Network {
   void NotifyMedium(const Payload& p, const LinkModel::MediumUse& use);
   std::uint32_t AllocatePayload(std::vector<std::uint8_t>&& bytes);
   void ReleasePayload(std::uint32_t slot);
+  // Delivers copies [first, end) of the slot's pending copies (they arrive now).
+  void DeliverCopies(std::uint32_t slot, std::uint32_t first, std::uint32_t end);
   void Deliver(std::uint32_t slot, NodeId dst, std::uint64_t copy);
   MessageCopy CopyOf(const Payload& p, NodeId dst, std::uint64_t copy) const;
   void NotifySent(const Payload& p, NodeId dst, std::uint64_t copy, DropReason drop);
@@ -206,7 +211,16 @@ class Network {
   std::vector<SimTime> offline_from_;
   std::vector<SimTime> offline_until_;
 
+  // A copy on its way: where to, its number (MessageCopy::copy).
+  struct PendingCopy {
+    NodeId dst;
+    std::uint64_t copy = 0;
+  };
+
   std::vector<Payload> payloads_;
+  // By payload slot: its copies on their way, by arrival time, then destination order (the
+  // vectors keep their capacity when a slot is reused).
+  std::vector<std::vector<PendingCopy>> pending_;
   std::vector<std::uint32_t> free_payloads_;
   PayloadBuffers buffers_;
 
@@ -220,6 +234,9 @@ class Network {
   std::vector<NodeId> dsts_;
   std::vector<Bytes> frames_;
   std::vector<LinkDelivery> outcomes_;
+  std::vector<std::uint32_t> order_;    // the copies that go: their indices in dsts_
+  std::vector<std::uint32_t> by_time_;  // positions in order_, sorted by arrival time (stable)
+  std::vector<PendingCopy> sorted_;
 };
 
 }  // namespace dvpr
