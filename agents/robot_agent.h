@@ -122,7 +122,7 @@ class RobotAgent final : public TeamAgent {
   Transport& transport_;
   RobotLoad load_;
   std::optional<IndexMatch> service_best_;  // its search's result, sent when the service ends
-  Task in_service_;                         // when busy_ (swapped with the queue's front slot)
+  Task in_service_;  // when busy_ (written by PushTask when idle, else swapped with the queue's front slot)
   ReuseQueue<Task> queue_;
   FrameStream frames_;
   GeometricVerifier verifier_;

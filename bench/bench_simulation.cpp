@@ -27,8 +27,9 @@ using bench::Table;
 // FNV-1a over every output of the run a change of speed must leave alone: each query record,
 // each robot's load, each pair's counters and role bytes, the senders' medium, the role totals
 // and the end time. Not the events: how many the simulator runs is its own business (a
-// broadcast's copies that arrive together are one event since session 10), reported apart. 48 bits, so the counter (a double) holds it exactly; compare it
-// between builds with --benchmark_format=json.
+// broadcast's copies that arrive together are one event since session 10), reported apart.
+// 48 bits, so the counter (a double) holds it exactly; compare it between builds with
+// --benchmark_format=json.
 class Checksum {
  public:
   template <class T>

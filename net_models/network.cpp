@@ -163,8 +163,6 @@ void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::v
   p.wire_bytes = fp.wire_bytes.value();
   std::vector<PendingCopy>& pending = pending_[slot];
   pending.clear();
-  order_.clear();
-  bool one_time = true;  // every copy that goes arrives at one time (the usual case)
   for (std::size_t i = 0; i < dsts_.size(); ++i) {
     const NodeId dst = dsts_[i];
     const std::uint64_t copy = copies_++;
@@ -178,36 +176,22 @@ void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::v
       continue;
     }
     ++p.refs;
-    pending.push_back(PendingCopy{dst, copy});
-    if (!order_.empty() && outcomes_[i].arrival != outcomes_[order_.front()].arrival) one_time = false;
-    order_.push_back(static_cast<std::uint32_t>(i));
+    pending.push_back(PendingCopy{dst, copy, outcomes_[i].arrival});
   }
   if (!observers_.empty()) NotifyMedium(p, use);
   if (p.refs == 0) {
     ReleasePayload(slot);
     return;
   }
-  if (one_time) {
-    const auto end = static_cast<std::uint32_t>(pending.size());
-    sim_.ScheduleAt(outcomes_[order_.front()].arrival, [this, slot, end] { DeliverCopies(slot, 0, end); });
-    return;
-  }
-  // Arrival times differ: the copies sorted by time (stably: destination order within a time),
-  // one event a time.
-  std::vector<std::uint32_t>& by_time = by_time_;
-  by_time.resize(order_.size());
-  for (std::uint32_t k = 0; k < by_time.size(); ++k) by_time[k] = k;
-  std::stable_sort(by_time.begin(), by_time.end(), [this](std::uint32_t a, std::uint32_t b) {
-    return outcomes_[order_[a]].arrival < outcomes_[order_[b]].arrival;
-  });
-  sorted_.clear();
-  for (const std::uint32_t k : by_time) sorted_.push_back(pending[k]);
-  pending.swap(sorted_);
-  const auto count = static_cast<std::uint32_t>(by_time.size());
+  // One event per arrival time (usually one for all), the copies sorted by time; stably, so
+  // destination order within a time.
+  const auto by_time = [](const PendingCopy& a, const PendingCopy& b) { return a.arrival < b.arrival; };
+  if (!std::is_sorted(pending.begin(), pending.end(), by_time)) std::stable_sort(pending.begin(), pending.end(), by_time);
+  const auto count = static_cast<std::uint32_t>(pending.size());
   for (std::uint32_t first = 0; first < count;) {
-    const SimTime at = outcomes_[order_[by_time[first]]].arrival;
+    const SimTime at = pending[first].arrival;
     std::uint32_t end = first + 1;
-    while (end < count && outcomes_[order_[by_time[end]]].arrival == at) ++end;
+    while (end < count && pending[end].arrival == at) ++end;
     sim_.ScheduleAt(at, [this, slot, first, end] { DeliverCopies(slot, first, end); });
     first = end;
   }

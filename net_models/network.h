@@ -211,10 +211,11 @@ class Network {
   std::vector<SimTime> offline_from_;
   std::vector<SimTime> offline_until_;
 
-  // A copy on its way: where to, its number (MessageCopy::copy).
+  // A copy on its way: where to, its number (MessageCopy::copy), when it arrives.
   struct PendingCopy {
     NodeId dst;
     std::uint64_t copy = 0;
+    SimTime arrival;
   };
 
   std::vector<Payload> payloads_;
@@ -234,9 +235,6 @@ class Network {
   std::vector<NodeId> dsts_;
   std::vector<Bytes> frames_;
   std::vector<LinkDelivery> outcomes_;
-  std::vector<std::uint32_t> order_;    // the copies that go: their indices in dsts_
-  std::vector<std::uint32_t> by_time_;  // positions in order_, sorted by arrival time (stable)
-  std::vector<PendingCopy> sorted_;
 };
 
 }  // namespace dvpr
