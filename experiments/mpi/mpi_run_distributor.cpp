@@ -104,8 +104,12 @@ MpiRunDistributor::MpiRunDistributor(const MpiWorld& world) : world_(world) {
   if (world.rank() == 0) return;
   run_folder_ = fs::temp_directory_path() / (RunFolderPrefix(world.rank()) + std::to_string(::getpid()));
   RemoveOnTermination(run_folder_);  // killed by the launcher, the rank leaves nothing behind
-  fs::remove_all(run_folder_);       // one of this pid's earlier life
-  fs::create_directories(run_folder_);
+  // Made with the cleanup held off: a SIGTERM from the launcher now (another rank failed)
+  // removes the folder after it is made, or ends the process before it is.
+  Uninterrupted([&] {
+    fs::remove_all(run_folder_);  // one of this pid's earlier life
+    fs::create_directories(run_folder_);
+  });
 }
 
 MpiRunDistributor::~MpiRunDistributor() {

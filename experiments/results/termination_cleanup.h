@@ -11,7 +11,9 @@
 namespace dvpr {
 
 // Installs the handlers and the cleanup thread (once per process; again in a forked child) and
-// registers `dir`. Call before the threads that write into `dir` start.
+// registers `dir`. Call before the threads that write into `dir` start, and before `dir` is
+// made; make it inside Uninterrupted(), so a signal's cleanup cannot run between a removal
+// that found nothing and the mkdir that follows it.
 void RemoveOnTermination(const std::filesystem::path& dir);
 
 // Forgets `dir` (committed, or already removed).

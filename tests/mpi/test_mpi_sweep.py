@@ -32,7 +32,11 @@ def mpirun(ranks, *command):
                ASAN_OPTIONS="detect_leaks=0",
                # No ptrace-based single copy in a container; no network beyond loopback.
                OMPI_MCA_btl="self,vader", OMPI_MCA_btl_vader_single_copy_mechanism="none",
-               OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_hwloc_base_binding_policy="none")
+               OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_hwloc_base_binding_policy="none",
+               # Ending a failed job, Open MPI sends the other ranks SIGCONT, waits, SIGTERM (on
+               # which each removes its run folder), waits, SIGKILL: 3 s, not 1, for each wait,
+               # so that an ASan build on a loaded 2-core machine has time to clean up.
+               OMPI_MCA_odls_base_sigkill_timeout="3")
     cmd = [MPIRUN, "--allow-run-as-root", "-n", str(ranks), *command]
     return subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=300)
 
@@ -97,7 +101,8 @@ def failing(mode, index, status):
         # SIGKILL leaves the killed rank's run folder; the next job's rank 0 removes it.
         check(len(left) <= 1 and all(n.startswith(f"dvpr-rank{rank}-") for n in left),
               f"left in TMPDIR: {left}", proc)
-        again = mpirun(2, FAULT, str(CONFIG), str(out), "0", "input")
+        # One rank: rank 0 makes no run folder of its own, so what is left is the killed one's.
+        again = mpirun(1, FAULT, str(CONFIG), str(out), "0", "input")
         check(again.returncode == 1 and not any(TMP.iterdir()),
               f"the next job did not remove the killed rank's run folder: {list(TMP.iterdir())}", again)
     else:
