@@ -53,6 +53,44 @@ void BM_HoldModel(benchmark::State& state) {
 }
 BENCHMARK(BM_HoldModel)->Arg(16)->Arg(1024)->Arg(65536)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 
+// The hold model in its steady state, as the classic queue studies time it: one Simulator is
+// filled with `pending` events and run through `pending` more before timing starts; then every
+// iteration runs 2 000 000 events and every one of them schedules its successor, so exactly
+// `pending` events wait throughout. BM_HoldModel above also times the filling from an empty
+// queue, the draining to none and the kernel clearing each new Simulator's memory.
+struct SteadyHold {
+  Simulator* sim;
+  const std::vector<std::int64_t>* delays;
+  std::uint64_t* remaining;
+  void operator()() const {
+    const std::int64_t d = (*delays)[*remaining & (delays->size() - 1)];
+    sim->Schedule(SimTime::Nanos(d), *this);
+    if (--*remaining == 0) sim->Stop();
+  }
+};
+
+void BM_HoldSteady(benchmark::State& state) {
+  const auto pending = static_cast<std::size_t>(state.range(0));
+  const auto delays = Delays(1 << 16);
+  constexpr std::uint64_t kEvents = 2'000'000;
+  Simulator sim;
+  std::uint64_t remaining = pending;  // the warm-up: every event once
+  for (std::size_t i = 0; i < pending; ++i) {
+    sim.Schedule(SimTime::Nanos(delays[i % delays.size()]), SteadyHold{&sim, &delays, &remaining});
+  }
+  sim.Run();
+  std::uint64_t executed = 0;
+  for (auto _ : state) {
+    remaining = kEvents;
+    const std::uint64_t before = sim.EventsExecuted();
+    sim.Run();
+    executed += sim.EventsExecuted() - before;
+  }
+  if (sim.PendingEvents() != pending) state.SkipWithError("the pending count drifted");
+  state.SetItemsProcessed(static_cast<std::int64_t>(executed));
+}
+BENCHMARK(BM_HoldSteady)->Arg(16)->Arg(1024)->Arg(65536)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+
 // The hold model on a bare queue, to choose the Simulator's queue (issue 15): pop the earliest
 // (time, key) entry, push one at a random delay after it, `pending` entries throughout.
 template <typename Queue>

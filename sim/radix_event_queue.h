@@ -9,7 +9,7 @@
 // sorted; a pop takes the smaller head of the two. A later entry sits in the wheel, at the level
 // of the highest digit in which its time differs from base_, in the bucket of its own digit there.
 // When the block is drained, the first non-empty bucket of the lowest non-empty level is spread
-// over the levels below it (relative to the block of its earliest entry, the new base_), until a
+// over the levels below it (relative to the start of the bucket's range, the new base_), until a
 // level-1 bucket, one whole block, comes down: it is counting-sorted on its last digit into run_.
 // An entry thus moves once per digit (twice for delays up to 2^24 ns), always by a sequential
 // append, where a binary heap takes a cache miss per level and the binary radix heap (this file
@@ -178,7 +178,8 @@ class BasicRadixEventQueue {
   // run_ and near_ are drained and the wheel is not: brings the next non-empty block into run_.
   // The next block is that of the earliest entry of the first non-empty bucket of the lowest
   // non-empty level: every entry of that bucket shares base_'s digits above the bucket's level,
-  // so relative to the new base_ the rest of the wheel keeps its levels and digits, and the
+  // so relative to the new base_ (the start of that bucket's range, and at the end the block of
+  // its earliest entry) the rest of the wheel keeps its levels and digits, and the
   // bucket's entries fall to levels below (a sparse queue's entry comes down in one step).
   void Advance() {
     for (;;) {
@@ -200,15 +201,19 @@ class BasicRadixEventQueue {
         Release(from);
         return;
       }
-      std::int64_t first = from.head->entries[0].time;
-      for (const Page* b = from.head; b != nullptr; b = b->next) {
-        for (std::size_t i = 0; i < b->count; ++i) first = std::min(first, b->entries[i].time);
-      }
-      base_ = first & ~static_cast<std::int64_t>(kDigitMask);
-      for (const Page* b = from.head; b != nullptr; b = b->next) {
+      // Spread relative to the start of the bucket's range: the bucket's entries differ from it
+      // only below `level`, so no scan for the earliest one is needed. Each page goes back to
+      // the pool as soon as it is read, so the pages the spreading writes are mostly those it
+      // has just read, still in cache.
+      const int shift = level * kDigitBits;
+      base_ = (from.head->entries[0].time >> shift) << shift;
+      for (Page* b = from.head; b != nullptr;) {
         for (std::size_t i = 0; i < b->count; ++i) Append(b->entries[i]);  // to levels below, empty until now
+        Page* const next = b->next;
+        b->next = free_;
+        free_ = b;
+        b = next;
       }
-      Release(from);
     }
   }
 
