@@ -103,13 +103,12 @@ MpiRunDistributor::MpiRunDistributor(const MpiWorld& world) : world_(world) {
   RemoveStaleRunFolders(fs::temp_directory_path());
   if (world.rank() == 0) return;
   run_folder_ = fs::temp_directory_path() / (RunFolderPrefix(world.rank()) + std::to_string(::getpid()));
-  RemoveOnTermination(run_folder_);  // killed by the launcher, the rank leaves nothing behind
-  // Made with the cleanup held off: a SIGTERM from the launcher now (another rank failed)
-  // removes the folder after it is made, or ends the process before it is.
-  Uninterrupted([&] {
-    fs::remove_all(run_folder_);  // one of this pid's earlier life
-    fs::create_directories(run_folder_);
-  });
+  // Ended by the launcher (another rank failed), the rank leaves nothing behind.
+  std::error_code ec;
+  if (!CreateRemovedOnTermination(run_folder_, ec)) {
+    KeepOnTermination(run_folder_);
+    throw fs::filesystem_error("cannot create this rank's run folder", run_folder_, ec);
+  }
 }
 
 MpiRunDistributor::~MpiRunDistributor() {

@@ -101,16 +101,8 @@ ResultFolder::ResultFolder(const fs::path& target)
   }
   CreateOutputDir(target_.parent_path());
   RemoveStaleTemporaries(target_);
-  RemoveOnTermination(tmp_);  // before the folder exists: a signal now leaves nothing either
   std::error_code ec;
-  bool created = false;
-  // Created with the cleanup held off: a signal's cleanup runs wholly before (and the process
-  // ends before the folder is made) or wholly after, never between its removal and the mkdir.
-  Uninterrupted([&] {
-    fs::remove_all(tmp_, ec);  // one of this pid's earlier life (pid reused after a SIGKILL)
-    created = fs::create_directory(tmp_, ec);
-  });
-  if (!created || ec) {
+  if (!CreateRemovedOnTermination(tmp_, ec)) {
     const std::string why = ec ? " (" + ec.message() + ")" : std::string();
     KeepOnTermination(tmp_);
     for (const fs::path& p : created_parents_) fs::remove(p, ec);

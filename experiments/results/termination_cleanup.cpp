@@ -79,10 +79,15 @@ void InstallOnce() {
 
 }  // namespace
 
-void RemoveOnTermination(const std::filesystem::path& dir) {
+bool CreateRemovedOnTermination(const std::filesystem::path& dir, std::error_code& ec) {
   std::lock_guard lock(Mutex());
   InstallOnce();
   Registered().push_back(dir);
+  std::error_code ignored;
+  std::filesystem::remove_all(dir, ignored);
+  if (std::filesystem::create_directory(dir, ec)) return true;
+  if (!ec) ec = std::make_error_code(std::errc::file_exists);  // made by another process meanwhile
+  return false;
 }
 
 void KeepOnTermination(const std::filesystem::path& dir) {

@@ -7,14 +7,17 @@
 // SIGKILL cannot be caught: what it leaves behind, the next run removes (result_folder.h).
 #include <filesystem>
 #include <functional>
+#include <system_error>
 
 namespace dvpr {
 
-// Installs the handlers and the cleanup thread (once per process; again in a forked child) and
-// registers `dir`. Call before the threads that write into `dir` start, and before `dir` is
-// made; make it inside Uninterrupted(), so a signal's cleanup cannot run between a removal
-// that found nothing and the mkdir that follows it.
-void RemoveOnTermination(const std::filesystem::path& dir);
+// Installs the handlers and the cleanup thread (once per process; again in a forked child),
+// registers `dir` and makes it afresh (removing one of this pid's earlier life, after a SIGKILL
+// and a reused pid), all with the cleanup held off: a signal's cleanup runs wholly before (the
+// process ends and `dir` is never made) or wholly after (it removes `dir`). Its parent must
+// exist. Returns false, with `ec` set, if `dir` could not be made; it stays registered then.
+// Call before the threads that write into `dir` start.
+bool CreateRemovedOnTermination(const std::filesystem::path& dir, std::error_code& ec);
 
 // Forgets `dir` (committed, or already removed).
 void KeepOnTermination(const std::filesystem::path& dir);
