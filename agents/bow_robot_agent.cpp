@@ -7,6 +7,7 @@
 #include "agents/bow_query.h"
 #include "agents/channels.h"
 #include "agents/verification_payload.h"
+#include "agents/verify_messages.h"
 
 namespace dvpr {
 
@@ -178,15 +179,8 @@ void BowRobotAgent::ServeVerify(Task task) {
     if (task.querier == id_) {
       outcomes_[static_cast<std::size_t>(LocalIndexOf(task.frame))].verify_accepted = verdict.accepted;
     } else {
-      verify_result_t v;
-      v.utime = transport_.Utime();
-      v.query_robot = static_cast<std::int16_t>(task.querier.value);
-      v.query_frame = task.frame.value;
-      v.match_robot = static_cast<std::int16_t>(id_.value);
-      v.match_frame = task.match_frame.value;
-      v.accepted = verdict.accepted;
-      v.inliers = verdict.inliers;
-      transport_.Publish(channels::VerifyResult(task.querier), v);
+      transport_.Publish(channels::VerifyResult(task.querier),
+                         MakeVerifyResult(transport_.Utime(), task.querier, task.frame, id_, task.match_frame, verdict));
     }
     busy_ = false;
     StartNextTask();
@@ -254,17 +248,13 @@ void BowRobotAgent::MaybeVerify(int k) {
     return;
   }
   verify_request_t r;
-  r.utime = transport_.Utime();
-  r.query_robot = static_cast<std::int16_t>(id_.value);
-  r.query_frame = o.frame.value;
-  r.match_robot = static_cast<std::int16_t>(o.best->robot.value);
-  r.match_frame = o.best->frame.value;
-  r.payload_size = static_cast<std::int32_t>(params_.verification.request_bytes.value());
+  FillVerifyRequest(r, transport_.Utime(), id_, o.frame, o.best->robot, o.best->frame,
+                    static_cast<std::int32_t>(params_.verification.request_bytes.value()));
   // The payload stands for the query's keypoints (verification_payload.h), here derived from its
   // BoW weights.
   std::vector<float> weights;
   for (const BowEntry& e : vectors_[static_cast<std::size_t>(o.frame.value)]) weights.push_back(e.weight);
-  r.payload = VerificationPayload(o.frame, weights, static_cast<std::size_t>(r.payload_size));
+  FillVerificationPayload(o.frame, weights, r.payload);
   transport_.Publish(channels::VerifyRequest(o.best->robot), r);
 }
 

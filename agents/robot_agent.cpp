@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "agents/verification_payload.h"
+#include "agents/verify_messages.h"
 
 namespace dvpr {
 
@@ -239,15 +240,8 @@ void RobotAgent::FinishVerify() {
   if (task.querier == id_) {
     outcomes_[static_cast<std::size_t>(LocalIndexOf(task.frame))].verify_accepted = verdict.accepted;
   } else {
-    verify_result_t v;
-    v.utime = transport_.Utime();
-    v.query_robot = static_cast<std::int16_t>(task.querier.value);
-    v.query_frame = task.frame.value;
-    v.match_robot = static_cast<std::int16_t>(id_.value);
-    v.match_frame = task.match_frame.value;
-    v.accepted = verdict.accepted;
-    v.inliers = verdict.inliers;
-    transport_.Publish(ChannelOf(verify_result_channels_, task.querier, channels::VerifyResult), v);
+    transport_.Publish(ChannelOf(verify_result_channels_, task.querier, channels::VerifyResult),
+                       MakeVerifyResult(transport_.Utime(), task.querier, task.frame, id_, task.match_frame, verdict));
   }
   EndService();
 }
@@ -316,13 +310,8 @@ void RobotAgent::MaybeVerify(int k) {
     return;
   }
   verify_request_t& r = verify_request_;  // reused: its payload buffer is refilled, not reallocated
-  r.utime = transport_.Utime();
-  r.query_robot = static_cast<std::int16_t>(id_.value);
-  r.query_frame = o.frame.value;
-  r.match_robot = static_cast<std::int16_t>(o.best->robot.value);
-  r.match_frame = o.best->frame.value;
-  r.payload_size = static_cast<std::int32_t>(params_.verification.request_bytes.value());
-  r.payload.resize(static_cast<std::size_t>(r.payload_size));
+  FillVerifyRequest(r, transport_.Utime(), id_, o.frame, o.best->robot, o.best->frame,
+                    static_cast<std::int32_t>(params_.verification.request_bytes.value()));
   const auto dim = static_cast<std::size_t>(frames_.descriptors->cols());
   FillVerificationPayload(o.frame, std::span<const float>(frames_.descriptors->row(o.frame.value).data(), dim),
                           r.payload);

@@ -14,6 +14,7 @@
 #include "agents/channels.h"
 #include "agents/lcm_codec.h"
 #include "agents/sim_transport.h"
+#include "agents/verification_payload.h"
 #include "net_models/ideal_link.h"
 #include "net_models/network_observer.h"
 #include "sim/simulator.h"
@@ -104,11 +105,16 @@ TEST(BowMatchMessage, EncodesTo39BytesAndBack) {
   EXPECT_FALSE(Decode<bow_match_t>(std::span<const std::uint8_t>(buf.data(), 38)));
 }
 
-// Every message a team sent: (sent ns, channel, source, destination, payload bytes).
+// Every message a team sent: (sent ns, channel, source, destination, payload bytes), and the
+// verification exchange's messages decoded.
 struct SentLog final : NetworkObserver {
   std::vector<std::tuple<std::int64_t, std::string, int, int, std::size_t>> sent;
+  std::vector<verify_request_t> requests;
+  std::vector<verify_result_t> results;
   void OnSent(const MessageCopy& c) override {
     sent.emplace_back(c.sent.ns(), std::string(c.channel_name), c.src.value, c.dst.value, c.payload.size());
+    if (c.channel_name.starts_with("DVPR_VREQ_")) requests.push_back(Decode<verify_request_t>(c.payload).value());
+    if (c.channel_name.starts_with("DVPR_VRES_")) results.push_back(Decode<verify_result_t>(c.payload).value());
   }
 };
 
@@ -196,6 +202,35 @@ TEST_F(ThreeRobotBowTeam, SendsTheHandWorkedMessages) {
       {s + 2 * ms, "DVPR_VRES_0", 1, 0, 33},        // r1's verdict on F2
   };
   EXPECT_EQ(sent, expected);
+}
+
+// The one exchange over the network (see the fixture): robot 0 asks robot 1 at 1.001 s (utime
+// in microseconds from 0) to verify its F1 against F2; robot 1 answers 1 ms later, rejected
+// (the verifier accepts only F4; it counts no inliers). The request's 100 payload bytes stand
+// for F1's keypoints: derived from its BoW weights in word order, .25 .25 .5
+// (agents/verification_payload.h).
+TEST_F(ThreeRobotBowTeam, VerificationMessagesCarryTheQueryAndTheMatch) {
+  Run(BowTeamPlan{3, std::make_shared<const WordOwners>(WordOwners::Modulo(9, 3))});
+  ASSERT_EQ(log_.requests.size(), 1u);
+  const verify_request_t& r = log_.requests[0];
+  EXPECT_EQ(r.utime, 1'001'000);
+  EXPECT_EQ(r.query_robot, 0);
+  EXPECT_EQ(r.query_frame, 1);
+  EXPECT_EQ(r.match_robot, 1);
+  EXPECT_EQ(r.match_frame, 2);
+  EXPECT_EQ(r.payload_size, 100);
+  const std::vector<float> f1_weights{.25f, .25f, .5f};
+  EXPECT_EQ(r.payload, VerificationPayload(FrameId(1), f1_weights, 100));
+
+  ASSERT_EQ(log_.results.size(), 1u);
+  const verify_result_t& v = log_.results[0];
+  EXPECT_EQ(v.utime, 1'002'000);
+  EXPECT_EQ(v.query_robot, 0);
+  EXPECT_EQ(v.query_frame, 1);
+  EXPECT_EQ(v.match_robot, 1);
+  EXPECT_EQ(v.match_frame, 2);
+  EXPECT_FALSE(v.accepted);
+  EXPECT_EQ(v.inliers, 0);
 }
 
 TEST_F(ThreeRobotBowTeam, VotesAndVerifiesAsWorkedByHand) {
