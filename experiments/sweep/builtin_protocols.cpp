@@ -36,8 +36,9 @@ PaperProtocolParams ToPaperParams(const SharedInputs& in) {
 }
 
 // In the static protocol, broadcast ranks every query against every other robot's frames and
-// keeps the best: exactly the centralized ranking. Its row says so (relative AUC 1); balance is
-// not defined for it (every robot receives every query).
+// keeps the best: exactly the centralized ranking. Its row says so (relative AUC 1, or undefined
+// like every other row's when the reference AUC is 0: a run without a revisit); balance is not
+// defined for it (every robot receives every query).
 RunResult PaperBroadcastRow(const RunSpec& spec, const PaperEvaluator& evaluator,
                             std::int64_t queries) {
   RunResult row;
@@ -45,7 +46,7 @@ RunResult PaperBroadcastRow(const RunSpec& spec, const PaperEvaluator& evaluator
   row.seed = spec.seed;
   row.auc = evaluator.centralized().auc;
   row.auc_reference = row.auc;
-  row.relative_auc = 1.0;
+  row.relative_auc = row.auc_reference == 0 ? kNotApplicable : 1.0;
   row.queries = queries;
   return row;
 }

@@ -22,6 +22,7 @@
 #include "experiments/results/result_writers.h"
 #include "experiments/protocols/sim/sim_protocol.h"
 #include "experiments/data/split.h"
+#include "experiments/evaluation/metrics.h"
 #include "experiments/strategies/run_centroids.h"
 
 namespace dvpr {
@@ -375,7 +376,7 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
     if (IsReference(spec)) {
       reference = g.auc;
       g.rows.runs.front().auc_reference = g.auc;
-      g.rows.runs.front().relative_auc = 1.0;
+      g.rows.runs.front().relative_auc = RelativeAuc(g.auc, g.auc);
     }
     out << "launch: " << team.strategy << ": " << g.queries << " queries, " << g.incomplete
         << " with a reply missing, auc " << FormatDouble(g.auc, 4) << "\n";

@@ -178,7 +178,7 @@ BowRunResult BowEvaluator::Reference(const std::string& name, int robots, bool b
   row.key.robots = robots;
   row.auc = centralized_.auc;
   row.auc_reference = centralized_.auc;
-  row.relative_auc = 1.0;
+  row.relative_auc = RelativeAuc(row.auc, row.auc_reference);
   row.queries = static_cast<std::int64_t>(frames.size());
   std::int64_t words = 0;
   for (std::size_t i = 0; i < frames.size(); ++i) {
