@@ -1,6 +1,7 @@
 #include "net_models/units.h"
 
 #include <array>
+#include <cctype>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -97,6 +98,12 @@ std::int64_t ParseQuantity(std::string_view text, std::string_view what, const s
   bool too_long = false;
   const auto number = ParseDecimal(rest, too_long);
   if (!number) Fail(what, text, expected);
+  // "1e6bps": the number is exact decimal digits only, so an exponent is named rather than
+  // reported as the unknown unit "e6bps".
+  if (rest.size() >= 2 && (rest[0] == 'e' || rest[0] == 'E') &&
+      (std::isdigit(static_cast<unsigned char>(rest[1])) || rest[1] == '-' || rest[1] == '+')) {
+    Fail(what, text, "digits without an exponent (e.g. 0.001 or 1000, not 1e-3 or 1e3); " + std::string(expected));
+  }
   if (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
   if (rest.empty()) Fail(what, text, "a unit after the number; " + std::string(expected));
   for (const UnitEntry& u : units) {

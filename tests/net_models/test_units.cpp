@@ -119,6 +119,28 @@ TEST(ParseQuantityLimits, DurationsUpToTheLargestSimTime) {
   EXPECT_EQ(ParseDuration("0000000000000000000000001.5h"), SimTime::Nanos(5'400'000'000'000));
 }
 
+// An exponent is not part of the exact decimal syntax: the error says so instead of calling
+// "e400bps" an unknown unit. "1 e" stays an unknown unit (no digit after the e).
+TEST(ParseQuantityLimits, AnExponentIsNamed) {
+  const auto expect_named = [](const auto& parse, const char* text) {
+    SCOPED_TRACE(text);
+    try {
+      parse(text);
+      ADD_FAILURE() << "no error";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("expected digits without an exponent"), std::string::npos) << e.what();
+    }
+  };
+  for (const char* text : {"1e6bps", "1E6bps", "1e400bps"}) expect_named(ParseDataRate, text);
+  for (const char* text : {"1e-3s", "2.5e+2ms"}) expect_named(ParseDuration, text);
+  try {
+    ParseDuration("1 e");
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("expected a known unit"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ParseQuantityLimits, TooLargeNamesTheLargestValue) {
   try {
     ParseDuration("2562048h");
