@@ -57,6 +57,7 @@ class Row {
     return v;
   }
   bool Empty(Column c) const { return Text(c).empty(); }
+  std::size_t size() const { return fields_.size(); }
 
  private:
   [[noreturn]] void Fail(Column c, const std::string& expected, const std::string& got) const {
@@ -148,11 +149,18 @@ Scan ScanFile(const std::filesystem::path& file, const Selection& selection) {
   if (!std::getline(in, line)) throw std::runtime_error(file.string() + ": empty file (no header)");
   if (!line.empty() && line.back() == '\r') line.pop_back();
   const std::array<std::size_t, kColumns> index = HeaderIndex(line, file);
+  const std::size_t columns = Split(line).size();
   Scan scan;
   for (long number = 2; std::getline(in, line); ++number) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty()) continue;
     const Row row(file, number, index, line);
+    // A row cut short (a file copied while written, or edited) is refused, not read in part.
+    if (row.size() != columns) {
+      throw std::runtime_error(file.string() + ": line " + std::to_string(number) + ": expected " +
+                               std::to_string(columns) + " fields as in the header, got " +
+                               std::to_string(row.size()) + " (a cut or edited file?)");
+    }
     if (row.Text(kProtocol) != "sim") continue;
     ++scan.sim_rows;
     const RunId id{row.Number<int>(kRobots), row.Number<int>(kRun), row.Number<int>(kVariant)};

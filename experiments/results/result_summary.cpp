@@ -177,15 +177,24 @@ std::vector<std::string> SplitCsv(const std::string& line) {
   return fields;
 }
 
+// The name of runs.csv column i, for errors.
+const std::string& ColumnName(std::size_t i) {
+  static const std::vector<std::string> names = SplitCsv(kRunsHeader);
+  return names.at(i);
+}
+
+// Field i of a runs.csv row as a number; empty is "not applicable" (NaN) for a floating column.
 template <typename T>
-T Parse(const std::string& s, const std::string& where) {
+T Parse(const std::vector<std::string>& f, std::size_t i, const std::string& where) {
+  const std::string& s = f[i];
   if (s.empty()) {
     if constexpr (std::is_floating_point_v<T>) return kNotApplicable;
   }
   T v{};
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || end != s.data() + s.size()) {
-    throw std::runtime_error(where + ": not a number: '" + s + "'");
+  if (ec != std::errc() || end != s.data() + s.size() || s.empty()) {
+    throw std::runtime_error(where + ": " + ColumnName(i) + ": expected " +
+                             (std::is_floating_point_v<T> ? "a number" : "an integer") + ", got '" + s + "'");
   }
   return v;
 }
@@ -197,11 +206,11 @@ RunRoleBytes ParseRunRoles(const std::vector<std::string>& f, const std::string&
   for (std::size_t i = 0; i < static_cast<std::size_t>(kMessageRoles); ++i) {
     const std::size_t at = 27 + 5 * i;
     CopyBytes& c = roles.copies[i];
-    c.payload = Parse<std::int64_t>(f[at], where);
-    roles.medium[i] = Parse<std::int64_t>(f[at + 1], where);
-    c.wire = Parse<std::int64_t>(f[at + 2], where);
-    c.delivered_payload = Parse<std::int64_t>(f[at + 3], where);
-    c.delivered_wire = Parse<std::int64_t>(f[at + 4], where);
+    c.payload = Parse<std::int64_t>(f, at, where);
+    roles.medium[i] = Parse<std::int64_t>(f, at + 1, where);
+    c.wire = Parse<std::int64_t>(f, at + 2, where);
+    c.delivered_payload = Parse<std::int64_t>(f, at + 3, where);
+    c.delivered_wire = Parse<std::int64_t>(f, at + 4, where);
   }
   return roles;
 }
@@ -210,28 +219,28 @@ RunResult ParseRunRow(const std::vector<std::string>& f, const std::string& wher
   RunResult r;
   r.key.protocol = f[0];
   r.key.strategy = f[1];
-  r.key.robots = Parse<int>(f[2], where);
-  r.key.run = Parse<int>(f[3], where);
-  r.seed = Parse<std::uint64_t>(f[4], where);
+  r.key.robots = Parse<int>(f, 2, where);
+  r.key.run = Parse<int>(f, 3, where);
+  r.seed = Parse<std::uint64_t>(f, 4, where);
   double* doubles[] = {&r.auc, &r.auc_reference, &r.relative_auc, &r.worst_balance_ratio};
-  for (int i = 0; i < 4; ++i) *doubles[i] = Parse<double>(f[5 + i], where);
-  r.queries = Parse<std::int64_t>(f[9], where);
-  r.messages = Parse<std::int64_t>(f[10], where);
-  r.payload_bytes = Parse<std::int64_t>(f[11], where);
-  r.wire_bytes = Parse<std::int64_t>(f[12], where);
-  r.bytes_per_query = Parse<double>(f[13], where);
-  r.mean_latency_ms = Parse<double>(f[14], where);
-  r.p99_latency_ms = Parse<double>(f[15], where);
-  r.dropped_messages = Parse<std::int64_t>(f[16], where);
+  for (std::size_t i = 0; i < 4; ++i) *doubles[i] = Parse<double>(f, 5 + i, where);
+  r.queries = Parse<std::int64_t>(f, 9, where);
+  r.messages = Parse<std::int64_t>(f, 10, where);
+  r.payload_bytes = Parse<std::int64_t>(f, 11, where);
+  r.wire_bytes = Parse<std::int64_t>(f, 12, where);
+  r.bytes_per_query = Parse<double>(f, 13, where);
+  r.mean_latency_ms = Parse<double>(f, 14, where);
+  r.p99_latency_ms = Parse<double>(f, 15, where);
+  r.dropped_messages = Parse<std::int64_t>(f, 16, where);
   if (!f[18].empty()) {
-    r.key.network.variant = Parse<int>(f[17], where);
+    r.key.network.variant = Parse<int>(f, 17, where);
     r.key.network.model = f[18];
-    r.key.network.bandwidth_bps = Parse<double>(f[19], where);
-    r.key.network.latency_ms = Parse<double>(f[20], where);
+    r.key.network.bandwidth_bps = Parse<double>(f, 19, where);
+    r.key.network.latency_ms = Parse<double>(f, 20, where);
     r.key.network.loss = f[21];
   }
   // f[22] is the network's name, made from the fields above.
-  r.duration_s = Parse<double>(f[23], where);
+  r.duration_s = Parse<double>(f, 23, where);
   if (!f[24].empty()) r.roles = ParseRunRoles(f, where);
   return r;
 }
@@ -252,7 +261,8 @@ std::vector<RunResult> ReadRunsCsv(const std::filesystem::path& path) {
     const std::string where = path.string() + ":" + std::to_string(number);
     const auto fields = SplitCsv(line);
     if (fields.size() != kRunsFields) {
-      throw std::runtime_error(where + ": expected " + std::to_string(kRunsFields) + " fields");
+      throw std::runtime_error(where + ": expected " + std::to_string(kRunsFields) + " fields, got " +
+                               std::to_string(fields.size()) + " (a cut or edited file?)");
     }
     rows.push_back(ParseRunRow(fields, where));
   }

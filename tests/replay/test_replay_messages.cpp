@@ -116,7 +116,19 @@ TEST_F(ReplayMessagesTest, FilesThatCannotBeReplayedAreOneLineNamingTheFile) {
       "sim,broadcast,3,0,zero,10,0,1,DVPR_QUERY_ALL,x,query_t,536,589,0,0,point_to_point,1e+07,2,none,q\n");
   EXPECT_EQ(ErrorOf([&] { ReadReplayRun(bad, {}); }), bad.string() + ": line 2: sent_ns: expected a number, got 'zero'");
   const auto short_row = Write("short.csv", std::string(kHeader) + "sim,broadcast,3,0\n");
-  EXPECT_EQ(ErrorOf([&] { ReadReplayRun(short_row, {}); }), short_row.string() + ": line 2: network_variant: expected a value, got a short row");
+  EXPECT_EQ(ErrorOf([&] { ReadReplayRun(short_row, {}); }),
+            short_row.string() + ": line 2: expected 20 fields as in the header, got 4 (a cut or edited file?)");
+  // Cut inside its last field (role, which the replay does not read) the row still has 20 fields;
+  // cut one comma earlier it has 19 and is refused, though every column the replay reads is whole.
+  const auto cut = Write("cut.csv", std::string(kHeader) +
+      "sim,broadcast,3,0,0,10,0,1,DVPR_QUERY_ALL,x,query_t,536,589,0,0,point_to_point,1e+07,2,none,q\n"
+      "sim,broadcast,3,0,0,10,0,2,DVPR_QUERY_ALL,x,query_t,536,589,0,0,point_to_point,1e+07,2,none\n");
+  EXPECT_EQ(ErrorOf([&] { ReadReplayRun(cut, {}); }),
+            cut.string() + ": line 3: expected 20 fields as in the header, got 19 (a cut or edited file?)");
+  const auto extra = Write("extra.csv", std::string(kHeader) +
+      "sim,broadcast,3,0,0,10,0,1,DVPR_QUERY_ALL,x,query_t,536,589,0,0,point_to_point,1e+07,2,none,q,more\n");
+  EXPECT_EQ(ErrorOf([&] { ReadReplayRun(extra, {}); }),
+            extra.string() + ": line 2: expected 20 fields as in the header, got 21 (a cut or edited file?)");
   const auto empty = Write("empty.csv", "");
   EXPECT_EQ(ErrorOf([&] { ReadReplayRun(empty, {}); }), empty.string() + ": empty file (no header)");
   EXPECT_EQ(ErrorOf([&] { ReadReplayRun(dir_ / "absent.csv", {}); }), (dir_ / "absent.csv").string() + ": cannot open it");

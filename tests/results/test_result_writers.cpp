@@ -1,4 +1,5 @@
 // Result files: exact CSV formatting, atomic writes, summary means, runs.csv read back.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -183,6 +184,38 @@ TEST(ResultWriters, AtomicWriteLeavesNoTemporary) {
   const auto rows = ReadRunsCsv(dir / "runs.csv");
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(CsvRow(rows[1]), CsvRow(SimRow(1, 0.6)));
+}
+
+// A runs.csv that cannot be read back names its line and column: a field that is not a number
+// (line 3's "run", the 4th column), a row with a field missing.
+TEST(ResultWriters, ReadRunsCsvErrorsNameLineAndColumn) {
+  const fs::path dir = fs::path(DVPR_TEST_TMP) / "writers_read_errors";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string good = CsvRow(SimRow(0, 0.8));
+  const auto error_of = [&](const std::string& second_row) {
+    std::ofstream(dir / "runs.csv") << kRunsHeader << "\n" << good << "\n" << second_row << "\n";
+    try {
+      ReadRunsCsv(dir / "runs.csv");
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  // The row with field i (0-based) replaced by text.
+  const auto with_field = [&](std::size_t i, const std::string& text) {
+    std::size_t begin = 0;
+    for (std::size_t k = 0; k < i; ++k) begin = good.find(',', begin) + 1;
+    return good.substr(0, begin) + text + good.substr(good.find(',', begin));
+  };
+  const std::string where = (dir / "runs.csv").string() + ":3: ";
+  EXPECT_EQ(error_of(with_field(3, "zz")), where + "run: expected an integer, got 'zz'");
+  EXPECT_EQ(error_of(with_field(5, "0.8x")), where + "auc: expected a number, got '0.8x'");
+  EXPECT_EQ(error_of(with_field(2, "")), where + "robots: expected an integer, got ''");
+  const std::string cut = good.substr(0, good.rfind(','));
+  EXPECT_EQ(error_of(cut), where + "expected " + std::to_string(std::count(good.begin(), good.end(), ',') + 1) +
+                               " fields, got " + std::to_string(std::count(good.begin(), good.end(), ',')) +
+                               " (a cut or edited file?)");
 }
 
 TEST(ResultWriters, UncreatableFolderNamesThePath) {
