@@ -36,13 +36,28 @@ extern "C" void ForwardSignal(int sig) {
   errno = saved;
 }
 
-// A worker may still create a file in a folder while it is removed: try until it is gone.
-void RemoveFolder(const std::filesystem::path& dir) {
-  for (int attempt = 0; attempt < 10; ++attempt) {
+// Removes dir, trying until it is gone or `attempts` passes failed.
+bool RemoveAll(const std::filesystem::path& dir, int attempts) {
+  for (int attempt = 0; attempt < attempts; ++attempt) {
     std::error_code ec;
     std::filesystem::remove_all(dir, ec);
-    if (!std::filesystem::exists(dir, ec)) return;
+    if (!std::filesystem::exists(dir, ec)) return true;
   }
+  return false;
+}
+
+// Workers may still be writing into the folder: removing it in place races with them (a file
+// made after remove_all listed the folder keeps it from being removed, pass after pass). So it
+// is first renamed away, in one step: from then on a new file under its old path cannot be made,
+// and only writes already inside open() can land in the renamed folder, which a further pass
+// removes. A folder made again under the old path meanwhile (create_directories) goes last.
+void RemoveFolder(const std::filesystem::path& dir) {
+  std::filesystem::path away = dir;
+  away += ".removing";
+  std::error_code ec;
+  std::filesystem::rename(dir, away, ec);
+  if (!ec) RemoveAll(away, 100);
+  RemoveAll(dir, 10);
 }
 
 void CleanUpThenDie(int read_fd) {
