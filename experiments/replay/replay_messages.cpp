@@ -152,6 +152,11 @@ Scan ScanFile(const std::filesystem::path& file, const Selection& selection) {
   const std::size_t columns = Split(line).size();
   Scan scan;
   for (long number = 2; std::getline(in, line); ++number) {
+    // dvpr ends every line; one without its end is where a copy or a write was cut off.
+    if (in.eof()) {
+      throw std::runtime_error(file.string() + ": line " + std::to_string(number) +
+                               ": the file ends inside it (no line end: a cut file?)");
+    }
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty()) continue;
     const Row row(file, number, index, line);

@@ -259,6 +259,8 @@ std::vector<RunResult> ReadRunsCsv(const std::filesystem::path& path) {
   std::vector<RunResult> rows;
   for (int number = 2; std::getline(in, line); ++number) {
     const std::string where = path.string() + ":" + std::to_string(number);
+    // dvpr ends every line; a last one without its end was cut off (its last number may be too).
+    if (in.eof()) throw std::runtime_error(where + ": the file ends inside this line (no line end: a cut file?)");
     const auto fields = SplitCsv(line);
     if (fields.size() != kRunsFields) {
       throw std::runtime_error(where + ": expected " + std::to_string(kRunsFields) + " fields, got " +

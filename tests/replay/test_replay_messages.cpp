@@ -125,6 +125,11 @@ TEST_F(ReplayMessagesTest, FilesThatCannotBeReplayedAreOneLineNamingTheFile) {
       "sim,broadcast,3,0,0,10,0,2,DVPR_QUERY_ALL,x,query_t,536,589,0,0,point_to_point,1e+07,2,none\n");
   EXPECT_EQ(ErrorOf([&] { ReadReplayRun(cut, {}); }),
             cut.string() + ": line 3: expected 20 fields as in the header, got 19 (a cut or edited file?)");
+  const auto unended = Write("unended.csv", std::string(kHeader) +
+      "sim,broadcast,3,0,0,10,0,1,DVPR_QUERY_ALL,x,query_t,536,589,0,0,point_to_point,1e+07,2,none,q\n"
+      "sim,broadcast,3,0,0,10,0,2,DVPR_QUERY_ALL,x,query_t,536,589,0,0,point_to_point,1e+07,2,none,q");
+  EXPECT_EQ(ErrorOf([&] { ReadReplayRun(unended, {}); }),
+            unended.string() + ": line 3: the file ends inside it (no line end: a cut file?)");
   const auto extra = Write("extra.csv", std::string(kHeader) +
       "sim,broadcast,3,0,0,10,0,1,DVPR_QUERY_ALL,x,query_t,536,589,0,0,point_to_point,1e+07,2,none,q,more\n");
   EXPECT_EQ(ErrorOf([&] { ReadReplayRun(extra, {}); }),

@@ -212,6 +212,13 @@ TEST(ResultWriters, ReadRunsCsvErrorsNameLineAndColumn) {
   EXPECT_EQ(error_of(with_field(3, "zz")), where + "run: expected an integer, got 'zz'");
   EXPECT_EQ(error_of(with_field(5, "0.8x")), where + "auc: expected a number, got '0.8x'");
   EXPECT_EQ(error_of(with_field(2, "")), where + "robots: expected an integer, got ''");
+  std::ofstream(dir / "runs.csv") << kRunsHeader << "\n" << good << "\n" << good.substr(0, good.size() - 1);
+  try {
+    ReadRunsCsv(dir / "runs.csv");
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), where + "the file ends inside this line (no line end: a cut file?)");
+  }
   const std::string cut = good.substr(0, good.rfind(','));
   EXPECT_EQ(error_of(cut), where + "expected " + std::to_string(std::count(good.begin(), good.end(), ',') + 1) +
                                " fields, got " + std::to_string(std::count(good.begin(), good.end(), ',')) +
