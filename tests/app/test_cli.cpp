@@ -82,6 +82,27 @@ TEST_F(CliTest, BadNumberInAFlagNamesTheFlag) {
   EXPECT_NE(launch.err.find("--speedup: expected a number, got 'fast'"), std::string::npos) << launch.err;
 }
 
+// The wall-clock flags are bounded where agent time (wall time x speedup, int64 ns) stays exact:
+// --speedup 1e308 was accepted and the agents' clock overflowed (they never finished).
+TEST_F(CliTest, WallClockFlagsOutOfRangeAreUsageErrors) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"launch --config x.yaml --robots 2 --speedup 1e308", "--speedup must be a number in (0, 10000], got 1e+308"},
+      {"launch --config x.yaml --robots 2 --speedup 10001", "--speedup must be a number in (0, 10000], got 10001"},
+      {"launch --config x.yaml --robots 2 --speedup 0", "--speedup must be a number in (0, 10000], got 0"},
+      {"launch --config x.yaml --robots 2 --grace 100001", "--grace must be a number of seconds in [0, 100000], got 100001"},
+      {"launch --config x.yaml --robots 2 --timeout nan", "--timeout must be a number of seconds in [0, 100000], got nan"},
+      {"agent --config x.yaml --robot 0 --speedup 1e5", "--speedup must be a number in (0, 10000], got 100000"},
+      {"agent --config x.yaml --robot 0 --grace -1", "--grace must be a number of seconds in [0, 100000], got -1"},
+      {"agent --config x.yaml --robot 0 --barrier-timeout 0",
+       "--barrier-timeout must be a number of seconds in (0, 100000], got 0"},
+  };
+  for (const auto& [args, message] : cases) {
+    const Result r = Dvpr(args);
+    EXPECT_EQ(r.status, 2) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
+  }
+}
+
 }  // namespace
 
 namespace {

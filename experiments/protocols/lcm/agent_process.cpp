@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <stdexcept>
 
@@ -32,9 +33,41 @@ void AgentProcessOptions::Validate() const {
   if (robots && *robots < 2) fail("--robots must be at least 2, got " + std::to_string(*robots));
   if (robots && robot >= *robots) fail("--robot " + std::to_string(robot) + " is not in a team of " + std::to_string(*robots));
   if (run < 0) fail("--run must be >= 0");
-  if (!(speedup > 0.0) || !std::isfinite(speedup)) fail("--speedup must be a positive number");
-  if (!(grace_s >= 0.0)) fail("--grace must be >= 0");
-  if (!(barrier_timeout_s > 0.0)) fail("--barrier-timeout must be > 0");
+  CheckSpeedup(speedup);
+  CheckWallSeconds("--grace", grace_s, 0, false);
+  CheckWallSeconds("--barrier-timeout", barrier_timeout_s, 0, true);
+}
+
+namespace {
+
+// A flag's value as the user would write it: 100000, 1e+308, nan (FormatDouble is for CSV cells).
+std::string Shown(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.10g", v);
+  return text;
+}
+
+}  // namespace
+
+void CheckSpeedup(double speedup) {
+  if (!(speedup > 0.0 && speedup <= kMaxSpeedup)) {
+    throw std::invalid_argument("--speedup must be a number in (0, " + Shown(kMaxSpeedup) + "], got " + Shown(speedup));
+  }
+}
+
+void CheckWallSeconds(const char* flag, double seconds, double low, bool low_open) {
+  const bool above = low_open ? seconds > low : seconds >= low;
+  if (!(above && seconds <= kMaxWallSeconds)) {
+    throw std::invalid_argument(std::string(flag) + " must be a number of seconds in " + (low_open ? "(" : "[") +
+                                Shown(low) + ", " + Shown(kMaxWallSeconds) + "], got " + Shown(seconds));
+  }
+}
+
+void CheckTeamSize(std::int64_t robots, std::int64_t frames) {
+  if (robots < 2 || robots > frames || robots > 32767) {
+    throw std::invalid_argument("--robots: " + std::to_string(robots) + " robots for " + std::to_string(frames) +
+                                " frames (at least 2, at most one per frame and 32767)");
+  }
 }
 
 AgentProcessOptions ParseAgentArgs(const std::vector<std::string>& args) {
@@ -262,10 +295,7 @@ Team LoadTeam(const AgentProcessOptions& o) {
   t.inputs.config = &t.config;
   t.robots = o.robots.value_or(t.config.sweep.robots.front());
   const auto frames = t.inputs.deployment.size();
-  if (t.robots < 2 || t.robots > frames || t.robots > 32767) {
-    throw std::invalid_argument("--robots: " + std::to_string(t.robots) + " robots for " + std::to_string(frames) +
-                                " frames (at least 2, at most one per frame)");
-  }
+  CheckTeamSize(t.robots, frames);
   if (o.robot >= t.robots) throw std::invalid_argument("--robot " + std::to_string(o.robot) + " is not in a team of " + std::to_string(t.robots));
   // Built by every process from the same inputs, so the whole team routes alike.
   t.routing = BuildRunRouting(t.strategy, StrategyInputsOf(t.inputs), t.robots, o.run);

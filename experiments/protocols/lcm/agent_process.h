@@ -9,6 +9,7 @@
 // LcmTransport, and ends when every robot announced
 // done or at its deadline (the team's last frame + grace), then writes its
 // log (experiments/protocols/lcm/agent_log.h).
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <ostream>
@@ -20,6 +21,22 @@
 namespace dvpr {
 
 inline constexpr const char* kDefaultLcmUrl = "udpm://239.255.76.67:7667?ttl=0";
+
+// The bounds of the wall-clock flags of `dvpr agent` and `dvpr launch`. Agent time is wall time
+// x speedup in int64 nanoseconds: a speedup of at most 10^4 keeps 10 days of wall time and a
+// grace of 10^5 s (1.16 days) x 10^4 within it. A larger value was accepted and overflowed the
+// clock (the agents never finished).
+inline constexpr double kMaxSpeedup = 1e4;
+inline constexpr double kMaxWallSeconds = 1e5;
+
+// Throws std::invalid_argument naming the flag unless 0 < speedup <= kMaxSpeedup.
+void CheckSpeedup(double speedup);
+// Throws std::invalid_argument naming `flag` unless low <= seconds <= kMaxWallSeconds (low < seconds
+// when `low_open`).
+void CheckWallSeconds(const char* flag, double seconds, double low, bool low_open);
+// Throws std::invalid_argument unless a team of `robots` can split `frames` (2..frames, at
+// most 32767: the LCM messages' int16 robot ids).
+void CheckTeamSize(std::int64_t robots, std::int64_t frames);
 
 struct AgentProcessOptions {
   std::filesystem::path config;

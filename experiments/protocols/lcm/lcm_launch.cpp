@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "agents/lcm_transport.h"
 #include "experiments/protocols/lcm/agent_process.h"
 #include "experiments/protocols/inputs.h"
 #include "experiments/config/option_reader.h"
@@ -31,9 +32,9 @@ void LaunchOptions::Validate() const {
   if (config.empty()) throw std::invalid_argument("--config is required");
   if (robots < 2) throw std::invalid_argument("--robots is required (at least 2)");
   if (run < 0) throw std::invalid_argument("--run must be >= 0");
-  if (!(speedup > 0.0) || !std::isfinite(speedup)) throw std::invalid_argument("--speedup must be a positive number");
-  if (!(grace_s >= 0.0)) throw std::invalid_argument("--grace must be >= 0");
-  if (!(timeout_s >= 0.0)) throw std::invalid_argument("--timeout must be >= 0");
+  CheckSpeedup(speedup);
+  CheckWallSeconds("--grace", grace_s, 0, false);
+  CheckWallSeconds("--timeout", timeout_s, 0, false);
 }
 
 LaunchOptions ParseLaunchArgs(const std::vector<std::string>& args) {
@@ -345,6 +346,12 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
   o.Validate();
   const ExperimentConfig config = LoadConfig(o.config, o.overrides);
   const auto target = o.out.empty() ? std::filesystem::path("results") / (config.name + "_lcm") : o.out;
+  // What every agent would find wrong is found here, once, before a process starts: the inputs
+  // (each agent loads the same), the team size against the frames, the LCM URL.
+  SharedInputs inputs = LoadSharedInputs(config, o.config.string());
+  inputs.config = &config;
+  CheckTeamSize(o.robots, inputs.deployment.size());
+  { const LcmTransport probe(o.lcm_url.empty() ? kDefaultLcmUrl : o.lcm_url); }
   // Agents write into the temporary folder; the target appears only if some team ran.
   ResultFolder folder(target);
   const std::filesystem::path dir = folder.dir();
@@ -356,8 +363,6 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
   std::vector<Team> teams;
   for (const StrategySpec& spec : strategies) teams.push_back(RunTeam(o, config, spec.name, dir, out));
 
-  SharedInputs inputs = LoadSharedInputs(config, o.config.string());
-  inputs.config = &config;
   RunOutput all;
   std::ostringstream agents_csv;
   agents_csv << "strategy,robot,exit,log,queries,incomplete\n";
@@ -382,9 +387,9 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
         << " with a reply missing, auc " << FormatDouble(g.auc, 4) << "\n";
     Append(all, g.rows);
   }
-  if (all.runs.empty()) {
-    out << "launch: no team ran; nothing written to " << target.string() << "\n";
-    return 1;  // the folder's destructor removes the temporary folder
+  if (all.runs.empty()) {  // the folder's destructor removes the temporary folder
+    throw std::runtime_error(target.string() + ": no team ran (no agent left a log; why each failed is above); "
+                             "nothing written");
   }
   WriteLaunchFiles(dir, config, all, agents_csv.str());
   folder.Commit();

@@ -1,7 +1,8 @@
-// `dvpr launch` when agents fail to start: each failed agent's first error line is printed, a team
-// that never ran gets no rows, and launch exits 1. When no team ran, no result folder appears
-// (not even a half-written one); when one strategy's agents all fail, only the teams that ran have
-// rows.
+// `dvpr launch` when agents cannot run: what every agent would refuse (an LCM URL that does not
+// open, more robots than frames) the launcher refuses before it starts any; otherwise each failed
+// agent's first error line is printed, a team that never ran gets no rows, and launch exits 1.
+// When no team ran, no result folder appears (not even a half-written one); when one strategy's
+// agents all fail, only the teams that ran have rows.
 #include <algorithm>
 
 #include "lcm_test_support.h"
@@ -33,26 +34,59 @@ std::vector<std::string> NamesStartingWith(const fs::path& dir, const std::strin
   return names;
 }
 
-// An LCM provider that does not exist: lcm_create fails in every agent, whatever the network.
-TEST(LaunchFailureTest, NoAgentCanOpenLcmPrintsEachCauseWritesNothingAndExits1) {
+// An LCM provider that does not exist: the launcher tries the URL itself before it starts an
+// agent (each would fail alike), so it refuses at once: one error line, no agent, no folder.
+TEST(LaunchFailureTest, AnLcmUrlThatCannotOpenIsRefusedBeforeAnyAgentStarts) {
   const fs::path dir = TestDir();
   const int status = WaitFor(Spawn(LaunchArgv("nosuchprovider://nowhere", dir / "out"), dir / "launch.out"),
                              std::chrono::seconds(240));
   const std::string printed = Slurp(dir / "launch.out");
   ASSERT_TRUE(WIFEXITED(status)) << printed;
   EXPECT_EQ(WEXITSTATUS(status), 1) << printed;
-  // The LCM library's own line is the first error line of each agent's output.
-  for (const std::string strategy : {"broadcast", "decentralized"}) {
-    for (const std::string robot : {"0", "1"}) {
-      const std::string cause = "launch: " + strategy + " robot " + robot +
-                                ": exit 1: Error: LCM provider \"nosuchprovider\" not found\n";
-      EXPECT_NE(printed.find(cause), std::string::npos) << "missing: " << cause << "in:\n" << printed;
-    }
-    EXPECT_NE(printed.find("launch: " + strategy + ": no agent ran, no rows written\n"), std::string::npos) << printed;
+  EXPECT_NE(printed.find("dvpr: error: LCM could not be initialised with URL 'nosuchprovider://nowhere'"),
+            std::string::npos) << printed;
+  EXPECT_EQ(printed.find("agents started"), std::string::npos) << printed;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  EXPECT_TRUE(NamesStartingWith(dir, ".out.tmp-").empty());
+}
+
+// More robots than frames: refused by the launcher, before it starts any of them (it used to
+// start them all, each of which failed alike: 100000 processes for --robots 100000).
+TEST(LaunchFailureTest, AnImpossibleTeamSizeIsRefusedBeforeAnyAgentStarts) {
+  const fs::path dir = TestDir();
+  std::vector<std::string> argv = LaunchArgv("nosuchprovider://nowhere", dir / "out");
+  argv[std::find(argv.begin(), argv.end(), "--robots") - argv.begin() + 1] = "100000";
+  const int status = WaitFor(Spawn(argv, dir / "launch.out"), std::chrono::seconds(240));
+  const std::string printed = Slurp(dir / "launch.out");
+  ASSERT_TRUE(WIFEXITED(status)) << printed;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << printed;
+  EXPECT_NE(printed.find("dvpr: error: --robots: 100000 robots for "), std::string::npos) << printed;
+  EXPECT_EQ(printed.find("agents started"), std::string::npos) << printed;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+// Every team's agents fail (re-clustering, which `dvpr agent` refuses): each agent's cause is
+// printed, then one error line; no result folder appears, not even a half-written one.
+TEST(LaunchFailureTest, NoTeamRanPrintsEachCauseWritesNothingAndExits1) {
+  const std::string why = IsolateNetwork();
+  if (!why.empty()) GTEST_SKIP() << why;
+  const fs::path dir = TestDir();
+  std::vector<std::string> argv = LaunchArgv(Url(7714), dir / "out");
+  for (const std::string s : {"dataset.frames=100", "strategies=[recluster_c2_p50]"}) {
+    argv.push_back("--set");
+    argv.push_back(s);
   }
-  EXPECT_EQ(printed.find("queries,"), std::string::npos) << printed;  // no team summary line
-  EXPECT_NE(printed.find("launch: no team ran; nothing written to " + (dir / "out").string()), std::string::npos)
-      << printed;
+  const int status = WaitFor(Spawn(argv, dir / "launch.out"), std::chrono::seconds(240));
+  const std::string printed = Slurp(dir / "launch.out");
+  ASSERT_TRUE(WIFEXITED(status)) << printed;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << printed;
+  for (const std::string robot : {"0", "1"}) {
+    const std::string cause = "launch: recluster_c2_p50 robot " + robot +
+                              ": exit 1: dvpr: error: --strategy: 'recluster_c2_p50' re-clusters during the run";
+    EXPECT_NE(printed.find(cause), std::string::npos) << "missing: " << cause << "\nin:\n" << printed;
+  }
+  EXPECT_NE(printed.find("launch: recluster_c2_p50: no agent ran, no rows written\n"), std::string::npos) << printed;
+  EXPECT_NE(printed.find("dvpr: error: " + (dir / "out").string() + ": no team ran"), std::string::npos) << printed;
   EXPECT_FALSE(fs::exists(dir / "out"));
   EXPECT_TRUE(NamesStartingWith(dir, ".out.tmp-").empty());
 }
