@@ -105,6 +105,10 @@ SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string&
     throw ConfigError(origin + ": robots: " + std::to_string(largest) + " robots but only " +
                       std::to_string(in.deployment.size()) + " frames (dataset.frames)");
   }
+  const auto& protocols = config.sweep.protocols;
+  if (std::any_of(protocols.begin(), protocols.end(), [](const std::string& p) { return p != "paper"; })) {
+    CheckDescriptorsFitTheWire(in.deployment, origin);
+  }
   in.training = LoadTraining(config, in.deployment, origin);
   const RunCentroidParams& centroids = config.training.run_centroids;
   const auto k = static_cast<Eigen::Index>(largest) * centroids.clusters_per_robot;
@@ -113,6 +117,15 @@ SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string&
                       " training descriptors, k-means needs at least " + std::to_string(k));
   }
   return in;
+}
+
+void CheckDescriptorsFitTheWire(const Dataset& deployment, const std::string& origin) {
+  if (deployment.dim() > kMaxWireDim) {
+    throw ConfigError(origin + ": dataset.dim: " + std::to_string(deployment.dim()) +
+                      " values per descriptor, but a query_t carries at most " + std::to_string(kMaxWireDim) +
+                      " (its dim is an int16 on the wire); only the paper protocol, which sends no messages, "
+                      "takes longer descriptors");
+  }
 }
 
 }  // namespace dvpr

@@ -65,6 +65,25 @@ TEST_F(CliTest, DimLargerThanDescriptors) {
                     "bad.yaml: dataset.descriptors: ");
 }
 
+// query_t's dim is an int16: a simulated run of longer descriptors is refused before it starts
+// (dim 100000 was an internal error inside the run); the paper protocol, which sends no message,
+// takes them. 32767 is the longest that travels.
+TEST_F(CliTest, DescriptorsLongerThanAMessageCarriesAreRefusedForTheSimulation) {
+  const std::string poses = std::string(DVPR_SOURCE_DIR) + "/data/kitti/00_poses.txt";
+  const auto yaml = [&](int dim, const char* protocol) {
+    return "dataset: {source: synthetic, poses: '" + poses + "', dim: " + std::to_string(dim) +
+           ", frames: 20, synthetic: {place_features: 2}}\ntraining: {synthetic: {samples: 10}}\nrobots: [2]\nruns: 1\nprotocols: [" + protocol +
+           "]\nstrategies: [decentralized]\nnetwork: {model: ideal}\noutputs: {figures: false}\n";
+  };
+  ExpectConfigError(RunConfig(yaml(32768, "sim")),
+                    "bad.yaml: dataset.dim: 32768 values per descriptor, but a query_t carries at most 32767");
+  const Result paper = RunConfig(yaml(32768, "paper"));
+  EXPECT_EQ(paper.status, 0) << paper.err;
+  fs::remove_all(Out());
+  const Result longest = RunConfig(yaml(32767, "sim"));
+  EXPECT_EQ(longest.status, 0) << longest.err;
+}
+
 TEST_F(CliTest, BadOverride) {
   ExpectConfigError(RunConfig("runs: 2\n", "--set runs=0"), "runs: must be in [1, 100000], got 0");
 }

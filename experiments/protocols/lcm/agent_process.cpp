@@ -296,6 +296,7 @@ Team LoadTeam(const AgentProcessOptions& o) {
   t.robots = o.robots.value_or(t.config.sweep.robots.front());
   const auto frames = t.inputs.deployment.size();
   CheckTeamSize(t.robots, frames);
+  CheckDescriptorsFitTheWire(t.inputs.deployment, o.config.string());
   if (o.robot >= t.robots) throw std::invalid_argument("--robot " + std::to_string(o.robot) + " is not in a team of " + std::to_string(t.robots));
   // Built by every process from the same inputs, so the whole team routes alike.
   t.routing = BuildRunRouting(t.strategy, StrategyInputsOf(t.inputs), t.robots, o.run);

@@ -351,6 +351,7 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
   SharedInputs inputs = LoadSharedInputs(config, o.config.string());
   inputs.config = &config;
   CheckTeamSize(o.robots, inputs.deployment.size());
+  CheckDescriptorsFitTheWire(inputs.deployment, o.config.string());
   { const LcmTransport probe(o.lcm_url.empty() ? kDefaultLcmUrl : o.lcm_url); }
   // Agents write into the temporary folder; the target appears only if some team ran.
   ResultFolder folder(target);

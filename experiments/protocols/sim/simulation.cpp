@@ -28,6 +28,10 @@ void SimRunParams::Validate(const Dataset& data) const {
                                 std::to_string(data.size()) + " frames");
   }
   if (robots > 32767) throw std::invalid_argument("robots: at most 32767 (int16 robot ids on the wire)");
+  if (data.dim() > 32767) {
+    throw std::invalid_argument("dataset.dim: at most 32767 values per descriptor (query_t's int16 dim), got " +
+                                std::to_string(data.dim()));
+  }
   agent.Validate();
   network.Validate(robots);
   for (const auto& d : dropouts) {
