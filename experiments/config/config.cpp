@@ -386,6 +386,12 @@ ConfigOverride ParseOverride(const std::string& arg) {
   if (o.path.front() == '.' || o.path.back() == '.' || o.path.find("..") != std::string::npos) {
     throw ConfigError("--set " + arg + ": malformed key path '" + o.path + "'");
   }
+  // Keys are names; a list is set whole (dropout[0].robot would be read as an unknown key).
+  if (const auto bracket = o.path.find_first_of("[]"); bracket != std::string::npos) {
+    const std::string list = o.path.substr(0, o.path.find('['));
+    throw ConfigError("--set " + arg + ": a key path names map keys only, not list elements; set the whole list, e.g. --set '" +
+                      (list.empty() ? std::string("dropout") : list) + "=[...]'");
+  }
   return o;
 }
 

@@ -88,6 +88,9 @@ TEST_F(CliTest, UsageErrorsAreStatusTwo) {
   ExpectExactly(Dvpr("run c.yaml --threads"), 2, "dvpr run: --threads needs a value (see dvpr --help)");
   ExpectExactly(Dvpr("run"), 2, "dvpr run: dvpr run needs a CONFIG.yaml (see dvpr --help)");
   ExpectExactly(Dvpr("run c.yaml --set runs"), 2, "dvpr run: --set runs: expected key.path=value (see dvpr --help)");
+  ExpectExactly(Dvpr("run c.yaml --set dropout[0].robot=1"), 2,
+                "dvpr run: --set dropout[0].robot=1: a key path names map keys only, not list elements; set the "
+                "whole list, e.g. --set 'dropout=[...]' (see dvpr --help)");
   ExpectExactly(Dvpr("agent --config c.yaml --robot 0 --set =1"), 2,
                 "dvpr agent: --set =1: expected key.path=value (see dvpr --help)");
   ExpectExactly(Dvpr("launch --config c.yaml --robots 2 --grace"), 2, "dvpr launch: --grace needs a value (see dvpr --help)");
