@@ -1,6 +1,7 @@
 #include "experiments/sweep/sweep_checks.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <stdexcept>
 #include <vector>
@@ -86,6 +87,17 @@ void CheckStrategies(const SharedInputs& in, const std::string& origin) {
   std::map<int, TrainingReader> centroid_readers;  // by clusters per robot
   for (std::size_t i = 0; i < c.sweep.strategies.size(); ++i) {
     const StrategySpec& spec = c.sweep.strategies[i];
+    // A re-clustering leader sends its table in a centroid_table_t, whose k is an int16 (the paper
+    // protocol evaluates the plan without messages).
+    const int largest = *std::max_element(c.sweep.robots.begin(), c.sweep.robots.end());
+    const bool sends = std::any_of(c.sweep.protocols.begin(), c.sweep.protocols.end(),
+                                   [](const std::string& p) { return p != "paper"; });
+    if (sends && spec.reclusters() && static_cast<std::int64_t>(largest) * spec.clusters_per_robot > 32767) {
+      throw ConfigError(origin + ": strategies[" + std::to_string(i) + "]: '" + spec.name + "' sends tables of " +
+                        std::to_string(static_cast<std::int64_t>(largest) * spec.clusters_per_robot) + " centroids (" +
+                        std::to_string(largest) + " robots x " + std::to_string(spec.clusters_per_robot) +
+                        "), but a centroid_table_t carries at most 32767 (its k is an int16 on the wire)");
+    }
     const TrainingUse use = TrainingUseOf(spec, strategy_inputs);
     if (!use.run_centroids && !use.descriptors) continue;
     CheckTrainingDescriptors(in, TrainingReader{i, &spec}, use, origin);

@@ -111,6 +111,20 @@ TEST_F(CliChecksTest, AStrategyWithMoreClustersThanTrainingDescriptorsIsRefused)
                       "but there are only 200"));
 }
 
+// recluster_c11000 for 3 robots sends tables of 33000 centroids in the simulation, more than
+// centroid_table_t's int16 k holds: refused before the training check, which it would also fail.
+// The paper protocol evaluates the same plan without messages and checks only the training side.
+TEST_F(CliChecksTest, AReclusteringTableLongerThanAMessageCarriesIsRefusedForTheSimulation) {
+  protocols_ = "[paper, sim]";
+  ExpectExactly(RunConfig(Yaml("strategies: [decentralized, recluster_c11000_p50]\n")), 1,
+                Error("strategies[1]: 'recluster_c11000_p50' sends tables of 33000 centroids (3 robots x 11000), "
+                      "but a centroid_table_t carries at most 32767 (its k is an int16 on the wire)"));
+  protocols_ = "[paper]";
+  ExpectExactly(RunConfig(Yaml("strategies: [decentralized, recluster_c11000_p50]\n")), 1,
+                Error("strategies[1]: 'recluster_c11000_p50' clusters the training descriptors into k = 33000 "
+                      "(3 robots x 11000), but there are only 200"));
+}
+
 // A npy header holding a newline and a control byte: still one line.
 TEST_F(CliChecksTest, ABrokenCentroidFileHeaderIsOneLine) {
   Centroids(32);
