@@ -1,11 +1,13 @@
 #include "experiments/app/cli.h"
 
+#include <algorithm>
 #include <exception>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <thread>
 
 #include "dvpr/version.h"
 #include "experiments/protocols/lcm/agent_process.h"
@@ -15,6 +17,7 @@
 #include "experiments/app/run_on_ranks.h"
 #include "experiments/arch/dispatch.h"
 #include "experiments/figures/figures.h"
+#include "experiments/mpi/mpi_run_distributor.h"
 #include "experiments/mpi/mpi_world.h"
 #include "experiments/protocols/lcm/lcm_launch.h"
 #include "experiments/replay/replay.h"
@@ -134,6 +137,10 @@ int Run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     return kExitOk;
   };
   const MpiWorld world;  // one of several ranks under mpirun or srun (experiments/mpi/mpi_world.h)
+  if (world.joined() && world.rank() == 0 && a.options.threads == 0) {
+    err << BoundCoresNote(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())), BoundCores(),
+                          world.local_size());
+  }
   if (!world.distributed()) return run(a.options, out);
   return RunOnRanks(world, a.options, run, out, err);
 }

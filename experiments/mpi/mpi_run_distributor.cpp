@@ -224,6 +224,21 @@ void MpiRunDistributor::ReportFailure(std::exception_ptr error) const {
   for (;;) std::this_thread::sleep_for(std::chrono::milliseconds(50));  // until rank 0 aborts the job
 }
 
+int BoundCores() {
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  cpu_set_t allowed;
+  CPU_ZERO(&allowed);
+  if (::sched_getaffinity(0, sizeof allowed, &allowed) != 0) return cores;
+  return std::clamp(CPU_COUNT(&allowed), 1, cores);
+}
+
+std::string BoundCoresNote(int machine_cores, int bound_cores, int local_ranks) {
+  if (bound_cores >= machine_cores || static_cast<long>(bound_cores) * local_ranks >= machine_cores) return "";
+  return "dvpr: note: the MPI launcher bound each of the " + std::to_string(local_ranks) + " rank(s) on this machine to " +
+         std::to_string(bound_cores) + " of its " + std::to_string(machine_cores) +
+         " cores; if the others are free, mpirun --bind-to none (or --map-by slot:PE=N) lets the runs use them\n";
+}
+
 int ThreadsPerRank(const MpiWorld& world, int requested) {
   if (requested > 0) return requested;
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));

@@ -15,6 +15,7 @@
 #include <exception>
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "experiments/mpi/mpi_world.h"
 #include "experiments/sweep/run_distributor.h"
@@ -61,5 +62,13 @@ class MpiRunDistributor final : public RunDistributor {
 // The threads of each rank's pool: `requested` when given (--threads); else the cores the rank
 // is bound to, if the launcher bound it; else this machine's cores shared among its ranks.
 int ThreadsPerRank(const MpiWorld& world, int requested);
+
+// The cores this process may run on (its affinity), at most the machine's.
+int BoundCores();
+
+// A note for the user when the launcher bound the ranks on this machine to fewer cores than it
+// has (Open MPI binds each rank to one core by default for -n 1 and 2: `mpirun -n 1 dvpr run`
+// then takes twice as long as `dvpr run` on 2 cores); empty when they can use them all.
+std::string BoundCoresNote(int machine_cores, int bound_cores, int local_ranks);
 
 }  // namespace dvpr

@@ -32,6 +32,8 @@ class MpiWorld {
   // The ranks on this machine (this one included): they share its cores.
   int local_size() const { return local_size_; }
   bool distributed() const { return size_ > 1; }
+  // Started by an MPI launcher (and joined the job), one rank or more.
+  bool joined() const { return joined_; }
 
   // Blocks until `bytes` may be reused (the receiver may not have them yet).
   void Send(int dest, RankTag tag, const Bytes8& bytes) const;
