@@ -23,6 +23,10 @@ using RobotId = StrongId<RobotTag, std::int32_t>;
 // the robot's sub-sequence), so the suppression window applies across robots.
 using FrameId = StrongId<FrameTag, std::int32_t>;
 
+// The largest count an LCM message's int16 field holds (lcmtypes/dvpr/*.lcm): a robot id, a
+// descriptor's dim, a centroid table's k.
+inline constexpr int kMaxWireInt16 = 32767;
+
 template <typename Tag, typename Rep>
 std::ostream& operator<<(std::ostream& os, StrongId<Tag, Rep> id) { return os << id.value; }
 

@@ -1,13 +1,11 @@
 #include "experiments/app/cli.h"
 
-#include <algorithm>
 #include <exception>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
-#include <thread>
 
 #include "dvpr/version.h"
 #include "experiments/protocols/lcm/agent_process.h"
@@ -138,8 +136,7 @@ int Run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   };
   const MpiWorld world;  // one of several ranks under mpirun or srun (experiments/mpi/mpi_world.h)
   if (world.joined() && world.rank() == 0 && a.options.threads == 0) {
-    err << BoundCoresNote(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())), BoundCores(),
-                          world.local_size());
+    err << BoundCoresNote(MachineCores(), BoundCores(), world.local_size());
   }
   if (!world.distributed()) return run(a.options, out);
   return RunOnRanks(world, a.options, run, out, err);

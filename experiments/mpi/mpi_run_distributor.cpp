@@ -224,8 +224,10 @@ void MpiRunDistributor::ReportFailure(std::exception_ptr error) const {
   for (;;) std::this_thread::sleep_for(std::chrono::milliseconds(50));  // until rank 0 aborts the job
 }
 
+int MachineCores() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
+
 int BoundCores() {
-  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int cores = MachineCores();
   cpu_set_t allowed;
   CPU_ZERO(&allowed);
   if (::sched_getaffinity(0, sizeof allowed, &allowed) != 0) return cores;
@@ -241,7 +243,7 @@ std::string BoundCoresNote(int machine_cores, int bound_cores, int local_ranks) 
 
 int ThreadsPerRank(const MpiWorld& world, int requested) {
   if (requested > 0) return requested;
-  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int cores = MachineCores();
   cpu_set_t allowed;
   CPU_ZERO(&allowed);
   // A rank the launcher bound to some cores (srun --cpus-per-task, mpirun --map-by ...:PE=n)

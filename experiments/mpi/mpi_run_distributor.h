@@ -63,7 +63,8 @@ class MpiRunDistributor final : public RunDistributor {
 // is bound to, if the launcher bound it; else this machine's cores shared among its ranks.
 int ThreadsPerRank(const MpiWorld& world, int requested);
 
-// The cores this process may run on (its affinity), at most the machine's.
+// This machine's cores (at least 1), and those this process may run on (its affinity).
+int MachineCores();
 int BoundCores();
 
 // A note for the user when the launcher bound the ranks on this machine to fewer cores than it

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "agents/ids.h"
 #include "experiments/data/bow_file.h"
 #include "experiments/data/loaders.h"
 #include "experiments/data/synthetic_bow.h"
@@ -105,10 +106,7 @@ SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string&
     throw ConfigError(origin + ": robots: " + std::to_string(largest) + " robots but only " +
                       std::to_string(in.deployment.size()) + " frames (dataset.frames)");
   }
-  const auto& protocols = config.sweep.protocols;
-  if (std::any_of(protocols.begin(), protocols.end(), [](const std::string& p) { return p != "paper"; })) {
-    CheckDescriptorsFitTheWire(in.deployment, origin);
-  }
+  if (config.sweep.SendsMessages()) CheckDescriptorsFitTheWire(in.deployment, origin);
   in.training = LoadTraining(config, in.deployment, origin);
   const RunCentroidParams& centroids = config.training.run_centroids;
   const auto k = static_cast<Eigen::Index>(largest) * centroids.clusters_per_robot;
@@ -120,9 +118,9 @@ SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string&
 }
 
 void CheckDescriptorsFitTheWire(const Dataset& deployment, const std::string& origin) {
-  if (deployment.dim() > kMaxWireDim) {
+  if (deployment.dim() > kMaxWireInt16) {
     throw ConfigError(origin + ": dataset.dim: " + std::to_string(deployment.dim()) +
-                      " values per descriptor, but a query_t carries at most " + std::to_string(kMaxWireDim) +
+                      " values per descriptor, but a query_t carries at most " + std::to_string(kMaxWireInt16) +
                       " (its dim is an int16 on the wire); only the paper protocol, which sends no messages, "
                       "takes longer descriptors");
   }

@@ -10,9 +10,6 @@ namespace dvpr {
 // `origin` names the config file in error messages.
 SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string& origin);
 
-// The longest descriptor a message carries: query_t's and descriptor_batch_t's dim are int16.
-inline constexpr int kMaxWireDim = 32767;
-
 // Throws a ConfigError naming dataset.dim when the deployment's descriptors are longer than a
 // message can carry. LoadSharedInputs checks it for a config with a protocol that sends messages
 // (the paper protocol sends none and takes any length); dvpr agent and launch call it.

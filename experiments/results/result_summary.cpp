@@ -192,7 +192,7 @@ T Parse(const std::vector<std::string>& f, std::size_t i, const std::string& whe
   }
   T v{};
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || end != s.data() + s.size() || s.empty()) {
+  if (ec != std::errc() || end != s.data() + s.size()) {
     throw std::runtime_error(where + ": " + ColumnName(i) + ": expected " +
                              (std::is_floating_point_v<T> ? "a number" : "an integer") + ", got '" + s + "'");
   }

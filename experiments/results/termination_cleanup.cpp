@@ -37,13 +37,12 @@ extern "C" void ForwardSignal(int sig) {
 }
 
 // Removes dir, trying until it is gone or `attempts` passes failed.
-bool RemoveAll(const std::filesystem::path& dir, int attempts) {
+void RemoveAll(const std::filesystem::path& dir, int attempts) {
   for (int attempt = 0; attempt < attempts; ++attempt) {
     std::error_code ec;
     std::filesystem::remove_all(dir, ec);
-    if (!std::filesystem::exists(dir, ec)) return true;
+    if (!std::filesystem::exists(dir, ec)) return;
   }
-  return false;
 }
 
 // Workers may still be writing into the folder: removing it in place races with them (a file

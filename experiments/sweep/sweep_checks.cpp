@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "agents/ids.h"
 #include "experiments/protocols/strategy_inputs.h"
 #include "experiments/strategies/run_routing.h"
 #include "experiments/sweep/sweep.h"
@@ -85,14 +86,13 @@ void CheckStrategies(const SharedInputs& in, const std::string& origin) {
   const ExperimentConfig& c = *in.config;
   const StrategyInputs strategy_inputs = StrategyInputsOf(in);
   std::map<int, TrainingReader> centroid_readers;  // by clusters per robot
+  // A re-clustering leader sends its table in a centroid_table_t, whose k is an int16 (the paper
+  // protocol evaluates the plan without messages).
+  const int largest = *std::max_element(c.sweep.robots.begin(), c.sweep.robots.end());
+  const bool sends = c.sweep.SendsMessages();
   for (std::size_t i = 0; i < c.sweep.strategies.size(); ++i) {
     const StrategySpec& spec = c.sweep.strategies[i];
-    // A re-clustering leader sends its table in a centroid_table_t, whose k is an int16 (the paper
-    // protocol evaluates the plan without messages).
-    const int largest = *std::max_element(c.sweep.robots.begin(), c.sweep.robots.end());
-    const bool sends = std::any_of(c.sweep.protocols.begin(), c.sweep.protocols.end(),
-                                   [](const std::string& p) { return p != "paper"; });
-    if (sends && spec.reclusters() && static_cast<std::int64_t>(largest) * spec.clusters_per_robot > 32767) {
+    if (sends && spec.reclusters() && static_cast<std::int64_t>(largest) * spec.clusters_per_robot > kMaxWireInt16) {
       throw ConfigError(origin + ": strategies[" + std::to_string(i) + "]: '" + spec.name + "' sends tables of " +
                         std::to_string(static_cast<std::int64_t>(largest) * spec.clusters_per_robot) + " centroids (" +
                         std::to_string(largest) + " robots x " + std::to_string(spec.clusters_per_robot) +

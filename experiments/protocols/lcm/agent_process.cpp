@@ -9,6 +9,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "agents/ids.h"
 #include "agents/bow_robot_agent.h"
 #include "agents/channels.h"
 #include "agents/lcm_transport.h"
@@ -64,7 +65,7 @@ void CheckWallSeconds(const char* flag, double seconds, double low, bool low_ope
 }
 
 void CheckTeamSize(std::int64_t robots, std::int64_t frames) {
-  if (robots < 2 || robots > frames || robots > 32767) {
+  if (robots < 2 || robots > frames || robots > kMaxWireInt16) {
     throw std::invalid_argument("--robots: " + std::to_string(robots) + " robots for " + std::to_string(frames) +
                                 " frames (at least 2, at most one per frame and 32767)");
   }

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "agents/ids.h"
 #include "agents/decoded_messages.h"
 #include "agents/sim_transport.h"
 #include "experiments/protocols/sim/event_log_recorder.h"
@@ -27,8 +28,8 @@ void SimRunParams::Validate(const Dataset& data) const {
     throw std::invalid_argument("robots: " + std::to_string(robots) + " robots but only " +
                                 std::to_string(data.size()) + " frames");
   }
-  if (robots > 32767) throw std::invalid_argument("robots: at most 32767 (int16 robot ids on the wire)");
-  if (data.dim() > 32767) {
+  if (robots > kMaxWireInt16) throw std::invalid_argument("robots: at most 32767 (int16 robot ids on the wire)");
+  if (data.dim() > kMaxWireInt16) {
     throw std::invalid_argument("dataset.dim: at most 32767 values per descriptor (query_t's int16 dim), got " +
                                 std::to_string(data.dim()));
   }

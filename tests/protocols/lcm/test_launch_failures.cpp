@@ -4,6 +4,7 @@
 // When no team ran, no result folder appears (not even a half-written one); when one strategy's
 // agents all fail, only the teams that ran have rows.
 #include <algorithm>
+#include <utility>
 
 #include "lcm_test_support.h"
 #include "tests/test_support.h"
@@ -32,6 +33,26 @@ std::vector<std::string> NamesStartingWith(const fs::path& dir, const std::strin
     if (name.rfind(prefix, 0) == 0) names.push_back(name);
   }
   return names;
+}
+
+// `dvpr launch` of 100 frames with `strategies` on its own port, where every recluster_c2_p50
+// agent refuses to run: its exit status and what it printed. Checks the refusal of both robots
+// and that the team is reported as not run.
+std::pair<int, std::string> LaunchWithRefusedReclustering(int port, const std::string& strategies, const fs::path& dir) {
+  std::vector<std::string> argv = LaunchArgv(Url(port), dir / "out");
+  for (const std::string& s : {std::string("dataset.frames=100"), "strategies=" + strategies}) {
+    argv.push_back("--set");
+    argv.push_back(s);
+  }
+  const int status = WaitFor(Spawn(argv, dir / "launch.out"), std::chrono::seconds(240));
+  std::string printed = Slurp(dir / "launch.out");
+  for (const std::string robot : {"0", "1"}) {
+    const std::string cause = "launch: recluster_c2_p50 robot " + robot +
+                              ": exit 1: dvpr: error: --strategy: 'recluster_c2_p50' re-clusters during the run";
+    EXPECT_NE(printed.find(cause), std::string::npos) << "missing: " << cause << "\nin:\n" << printed;
+  }
+  EXPECT_NE(printed.find("launch: recluster_c2_p50: no agent ran, no rows written\n"), std::string::npos) << printed;
+  return {status, std::move(printed)};
 }
 
 // An LCM provider that does not exist: the launcher tries the URL itself before it starts an
@@ -71,21 +92,9 @@ TEST(LaunchFailureTest, NoTeamRanPrintsEachCauseWritesNothingAndExits1) {
   const std::string why = IsolateNetwork();
   if (!why.empty()) GTEST_SKIP() << why;
   const fs::path dir = TestDir();
-  std::vector<std::string> argv = LaunchArgv(Url(7714), dir / "out");
-  for (const std::string s : {"dataset.frames=100", "strategies=[recluster_c2_p50]"}) {
-    argv.push_back("--set");
-    argv.push_back(s);
-  }
-  const int status = WaitFor(Spawn(argv, dir / "launch.out"), std::chrono::seconds(240));
-  const std::string printed = Slurp(dir / "launch.out");
+  const auto [status, printed] = LaunchWithRefusedReclustering(7714, "[recluster_c2_p50]", dir);
   ASSERT_TRUE(WIFEXITED(status)) << printed;
   EXPECT_EQ(WEXITSTATUS(status), 1) << printed;
-  for (const std::string robot : {"0", "1"}) {
-    const std::string cause = "launch: recluster_c2_p50 robot " + robot +
-                              ": exit 1: dvpr: error: --strategy: 'recluster_c2_p50' re-clusters during the run";
-    EXPECT_NE(printed.find(cause), std::string::npos) << "missing: " << cause << "\nin:\n" << printed;
-  }
-  EXPECT_NE(printed.find("launch: recluster_c2_p50: no agent ran, no rows written\n"), std::string::npos) << printed;
   EXPECT_NE(printed.find("dvpr: error: " + (dir / "out").string() + ": no team ran"), std::string::npos) << printed;
   EXPECT_FALSE(fs::exists(dir / "out"));
   EXPECT_TRUE(NamesStartingWith(dir, ".out.tmp-").empty());
@@ -98,21 +107,9 @@ TEST(LaunchFailureTest, StrategyWhoseAgentsAllFailedHasNoRowsWhileTheOthersDo) {
   const std::string why = IsolateNetwork();
   if (!why.empty()) GTEST_SKIP() << why;
   const fs::path dir = TestDir();
-  std::vector<std::string> argv = LaunchArgv(Url(7711), dir / "out");
-  for (const std::string s : {"dataset.frames=100", "strategies=[recluster_c2_p50, broadcast]"}) {
-    argv.push_back("--set");
-    argv.push_back(s);
-  }
-  const int status = WaitFor(Spawn(argv, dir / "launch.out"), std::chrono::seconds(240));
-  const std::string printed = Slurp(dir / "launch.out");
+  const auto [status, printed] = LaunchWithRefusedReclustering(7711, "[recluster_c2_p50, broadcast]", dir);
   ASSERT_TRUE(WIFEXITED(status)) << printed;
   EXPECT_EQ(WEXITSTATUS(status), 1) << printed;
-  for (const std::string robot : {"0", "1"}) {
-    const std::string cause = "launch: recluster_c2_p50 robot " + robot +
-                              ": exit 1: dvpr: error: --strategy: 'recluster_c2_p50' re-clusters during the run";
-    EXPECT_NE(printed.find(cause), std::string::npos) << "missing: " << cause << "\nin:\n" << printed;
-  }
-  EXPECT_NE(printed.find("launch: recluster_c2_p50: no agent ran, no rows written\n"), std::string::npos) << printed;
   EXPECT_NE(printed.find("launch: broadcast: 100 queries, 0 with a reply missing"), std::string::npos) << printed;
   const std::string runs = Slurp(dir / "out" / "runs.csv");
   EXPECT_EQ(std::count(runs.begin(), runs.end(), '\n'), 2) << runs;  // header + broadcast
