@@ -1,5 +1,5 @@
 #pragma once
-// What a robot's protocol is tuned by (DESIGN.md sections 1 and 3): the matching window, what
+// What a robot's protocol is tuned by (docs/design.md sections 1 and 3): the matching window, what
 // serving costs, geometric verification. The config holds these structs as they are (sections
 // service and verification); each Validate() throws std::invalid_argument "<field>: <problem>",
 // naming the field as the struct spells it.

@@ -1,6 +1,6 @@
 #pragma once
-// The centroid-to-robot table of the decentralized method (DESIGN.md section 1): k centroids of
-// descriptor space, each owned by one robot; a descriptor is routed to the owner of its nearest
+// The centroid-to-robot table of the decentralized method (docs/design.md section 1): k centroids
+// of descriptor space, each owned by one robot; a descriptor is routed to the owner of its nearest
 // centroid. The paper gives each robot one centroid; the table allows any number per robot.
 #include <vector>
 

@@ -5,7 +5,7 @@
 // A query's channel tells its receiver what to do with it (QueryRole), so a
 // responder never re-derives that from the sender's routing. The three
 // unicast query prefixes have the same length: a channel name is counted in
-// the wire bytes (DESIGN.md section 4), so the role costs no byte.
+// the wire bytes (docs/design.md section 4), so the role costs no byte.
 #include <string>
 
 #include "agents/ids.h"

@@ -1,5 +1,5 @@
 #pragma once
-// The frames a robot takes (DESIGN.md section 3): rows [first, first + count) of the full
+// The frames a robot takes (docs/design.md section 3): rows [first, first + count) of the full
 // sequence, the k-th at k / fps from the start of the run.
 #include <cmath>
 

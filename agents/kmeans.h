@@ -1,12 +1,12 @@
 #pragma once
-// k-means clustering of descriptor space (DESIGN.md section 1, step 1): k-means++ seeding, then
-// Lloyd iterations. Full assignment passes use distances through matrix products (Eigen GEMM,
+// k-means clustering of descriptor space (docs/design.md section 1, step 1): k-means++ seeding,
+// then Lloyd iterations. Full assignment passes use distances through matrix products (Eigen GEMM,
 // ||x||^2 - 2 x.c + ||c||^2; on x86-64-v3 most entries come from agents/kmeans_dots.h, which
 // sums each one as the GEMM does); the passes in between skip the points that Hamerly's bounds
-// prove cannot change cluster, which is most of them once the centroids settle. Deterministic for a seed: the random
-// draws come from sim/random_bits.h (no std distributions), the arithmetic has a fixed order,
-// and Eigen runs single-threaded, so a seed gives the same centroids with any standard library
-// and any number of threads (float results may differ between CPUs with different SIMD widths).
+// prove cannot change cluster, which is most of them once the centroids settle. Deterministic for a
+// seed: the random draws come from sim/random_bits.h (no std distributions), the arithmetic has a
+// fixed order, and Eigen runs single-threaded, so a seed gives the same centroids with any standard
+// library and any number of threads (float results may differ between CPUs with different SIMD widths).
 #include <cstdint>
 #include <vector>
 

@@ -2,7 +2,7 @@
 // One robot of the team: takes a frame every 1/fps, routes its descriptor as a
 // query, serves the queries routed to it one at a time (search, store, reply),
 // and follows a good match with a geometric-verification exchange with the
-// robot that observed the matched frame (DESIGN.md sections 1 and 3).
+// robot that observed the matched frame (docs/design.md sections 1 and 3).
 //
 // The agent only records what happened (QueryRecord, RobotLoad); metrics are
 // computed elsewhere from those records. It talks only through Transport, so

@@ -1,5 +1,5 @@
 #pragma once
-// Load a robot carried while serving (DESIGN.md section 3, per-robot load), as every kind of
+// Load a robot carried while serving (docs/design.md section 3, per-robot load), as every kind of
 // team agent records it (RobotAgent, BowRobotAgent).
 #include <cstdint>
 

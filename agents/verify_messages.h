@@ -1,5 +1,5 @@
 #pragma once
-// The two messages of the geometric-verification exchange (DESIGN.md section 3) as every team
+// The two messages of the geometric-verification exchange (docs/design.md section 3) as every team
 // agent fills them: RobotAgent and BowRobotAgent differ in what they verify and how they send
 // it, not in these fields.
 #include <cstdint>

@@ -1,4 +1,4 @@
-// The whole paper sweep (DESIGN.md section 2): n = 2..20 robots x 10 runs, k-means (k = n) on
+// The whole paper sweep (docs/design.md section 2): n = 2..20 robots x 10 runs, k-means (k = n) on
 // 20 000 training descriptors, N = 4541 frames of KITTI 00, d = 128, synthetic descriptors
 // (diverse training, as in the paper). A numpy/scikit-learn implementation takes about 180 s.
 //   build/release/bench/bench_paper_sweep --benchmark_filter=PaperSweep/2

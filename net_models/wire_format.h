@@ -1,5 +1,5 @@
 #pragma once
-// Bytes on the wire for one LCM message (DESIGN.md §4), following what LCM's
+// Bytes on the wire for one LCM message (docs/design.md §4), following what LCM's
 // UDP multicast provider (lcm/lcm_udpm.c, LCM 1.3.x on Linux) puts on a socket:
 //
 //  1. LCM datagrams. If channel + NUL + payload <= 65499 bytes, one "short"

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The paper sweep (DESIGN.md section 2) in numpy/scikit-learn: the peer of dvpr's BM_PaperSweep.
+"""The paper sweep (docs/design.md section 2) in numpy/scikit-learn: the peer of dvpr's BM_PaperSweep.
 
   apt-get install python3-sklearn
   nice -n 10 /usr/bin/time -v /usr/bin/python3 bench/peers/paper_sweep_sklearn.py
@@ -50,7 +50,7 @@ def ground_truth(pos):
 
 
 def auc(score, match, pos_sq, relevant_count):
-    """DESIGN.md section 2: rank ranked queries by score, cumulative TP/FP, area under PR."""
+    """docs/design.md section 2: rank ranked queries by score, cumulative TP/FP, area under PR."""
     ranked = np.flatnonzero(np.isfinite(score))
     order = ranked[np.argsort(score[ranked], kind="stable")]
     tp = (pos_sq[order, match[order]] < RADIUS_SQ).astype(np.float64)

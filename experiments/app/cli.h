@@ -1,5 +1,5 @@
 #pragma once
-// The dvpr subcommands (DESIGN.md section 6). main.cpp only dispatches to RunCli.
+// The dvpr subcommands (docs/design.md section 6). main.cpp only dispatches to RunCli.
 #include <exception>
 #include <ostream>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// `dvpr run`: a validated config in, the output folder of DESIGN.md section 6 out.
+// `dvpr run`: a validated config in, the output folder of docs/design.md section 6 out.
 #include <filesystem>
 #include <ostream>
 #include <string>

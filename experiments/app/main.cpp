@@ -1,4 +1,4 @@
-// The dvpr command: see README.md and ../shared/DESIGN.md section 6. The subcommands live in
+// The dvpr command: see README.md and docs/design.md section 6. The subcommands live in
 // experiments/app/cli.cpp.
 #include <iostream>
 #include <string>

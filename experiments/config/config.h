@@ -1,7 +1,7 @@
 #pragma once
-// The experiment config (DESIGN.md section 7) as typed structs. This is the one place YAML enters:
-// LoadConfig() reads a file, applies `--set` overrides to the YAML tree, validates every key and
-// returns an ExperimentConfig; nothing below experiments/ sees YAML or strings.
+// The experiment config (docs/design.md section 7) as typed structs. This is the one place YAML
+// enters: LoadConfig() reads a file, applies `--set` overrides to the YAML tree, validates every
+// key and returns an ExperimentConfig; nothing below experiments/ sees YAML or strings.
 //
 // Rules the parser enforces (each violation throws ConfigError, one line naming the key path):
 // - unknown keys are rejected, listing the expected ones;

@@ -1,5 +1,5 @@
 // ExperimentConfig -> YAML: every key written (verification.bow_max_distance only where it can
-// matter or was changed, EmitRest), in the order of DESIGN.md section 7, numbers in
+// matter or was changed, EmitRest), in the order of docs/design.md section 7, numbers in
 // their shortest round-trip form, so the file parses back to an equal config.
 #include <algorithm>
 #include <charconv>

@@ -1,5 +1,5 @@
 #pragma once
-// Splitting the deployment sequence among the robots (DESIGN.md §2): robot r drives the
+// Splitting the deployment sequence among the robots (docs/design.md §2): robot r drives the
 // contiguous frames [floor(r N / n), floor((r + 1) N / n)), so lengths differ by at most one.
 #include <vector>
 

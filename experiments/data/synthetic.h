@@ -1,7 +1,8 @@
 #pragma once
-// The synthetic appearance model (DESIGN.md §8, docs/synthetic_model.md): NetVLAD-like descriptors
-// for a trajectory when no real features are available, and the two training sets of the paper's
-// experiment (diverse: many environments; deployment-like: the deployment's own environment).
+// The synthetic appearance model (docs/design.md §8, docs/synthetic_model.md): NetVLAD-like
+// descriptors for a trajectory when no real features are available, and the two training sets of
+// the paper's experiment (diverse: many environments; deployment-like: the deployment's own
+// environment).
 //
 // A descriptor is, before L2 normalisation,
 //   decay ⊙ (environment mean + place field(x, z, heading) + appearance change(time) + noise),

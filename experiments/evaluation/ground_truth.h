@@ -1,5 +1,5 @@
 #pragma once
-// Ground truth of place recognition (DESIGN.md section 2), from positions only. Frames are
+// Ground truth of place recognition (docs/design.md section 2), from positions only. Frames are
 // indexed in the full sequence; frame j is a candidate for query i only outside the suppression
 // window, |i - j| > suppression_frames.
 #include <cstdint>

@@ -1,6 +1,6 @@
 #pragma once
 // Place-recognition metrics as pure functions of an immutable log of query outcomes
-// (DESIGN.md section 2, restating the authors' evaluation code; implemented exactly):
+// (docs/design.md section 2, restating the authors' evaluation code; implemented exactly):
 //   rank the queries that have a match by score ascending (stable: equal scores keep the order
 //   of the input); tp_k = 1 if ||P_query - P_match||^2 < r^2; TP, FP = cumulative sums of tp and
 //   1 - tp; FN = R - TP; precision_k = TP/(TP+FP+1e-12); recall_k = TP/(TP+FN+1e-12);

@@ -1,5 +1,5 @@
 #pragma once
-// Online metrics of one simulation run (DESIGN.md section 3), as pure
+// Online metrics of one simulation run (docs/design.md section 3), as pure
 // functions of what the agents and the network recorded.
 #include <cstdint>
 #include <optional>

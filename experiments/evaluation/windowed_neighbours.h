@@ -1,5 +1,5 @@
 #pragma once
-// Exact best matches of the static protocol (DESIGN.md section 2), for every query at once and
+// Exact best matches of the static protocol (docs/design.md section 2), for every query at once and
 // for any restriction of the candidate pool, fast enough to evaluate hundreds of routings of the
 // same sequence.
 //

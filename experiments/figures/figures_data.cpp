@@ -31,7 +31,7 @@ void WriteSeries(const std::filesystem::path& data_dir, const std::string& stem,
   WriteFileAtomic(data_dir / (stem + ".titles"), titles.str());
 }
 
-// AUC of a curve by DESIGN.md section 2 (for the legend).
+// AUC of a curve by docs/design.md section 2 (for the legend).
 double CurveAuc(const PrCurve& c) {
   double auc = 0;
   for (std::size_t k = 1; k < c.recall.size(); ++k) {

@@ -1,6 +1,6 @@
 #pragma once
 // The messages of one simulated run, read from a result folder's messages.csv
-// (DESIGN.md section 6) for `dvpr replay`. Columns are found by their header
+// (docs/design.md section 6) for `dvpr replay`. Columns are found by their header
 // names, so columns added later (anywhere) are ignored.
 #include <cstdint>
 #include <filesystem>

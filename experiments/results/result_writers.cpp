@@ -11,7 +11,7 @@
 
 namespace dvpr {
 
-// Network columns come after the ones DESIGN.md requires, so scripts reading by position still
+// Network columns come after the ones docs/design.md requires, so scripts reading by position still
 // find the required columns first; the columns of issue 16 (network name, bytes by role) after
 // those, and messages.csv's role last of all.
 #define DVPR_NETWORK_COLUMNS "network_variant,network_model,bandwidth_bps,latency_ms,loss,network_name"

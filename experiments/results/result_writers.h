@@ -1,6 +1,6 @@
 #pragma once
-// The result files of DESIGN.md section 6. Every file is written atomically (a temporary file in
-// the same folder, renamed over the target when complete), so a reader or a crashed run never
+// The result files of docs/design.md section 6. Every file is written atomically (a temporary file
+// in the same folder, renamed over the target when complete), so a reader or a crashed run never
 // leaves a half-written file. Formatting is deterministic and locale-free: integers as they are,
 // doubles in the shortest form that reads back to the same double (std::to_chars without a
 // precision, e.g. 0.1, 0.8666666666666667, 1e+06), so another tool can compare to the last bit;

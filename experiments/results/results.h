@@ -1,7 +1,7 @@
 #pragma once
-// The rows of the result files (DESIGN.md section 6). The static protocol and the simulation fill
-// them; experiments/results/result_writers.h turns them into CSV/JSON. Plain data, no behaviour, so every
-// producer can fill them without knowing how they are written.
+// The rows of the result files (docs/design.md section 6). The static protocol and the simulation
+// fill them; experiments/results/result_writers.h turns them into CSV/JSON. Plain data, no
+// behaviour, so every producer can fill them without knowing how they are written.
 //
 // Conventions:
 // - Identification fields (protocol, strategy, robots, run, seed, network_*) are stamped by the run

@@ -1,5 +1,5 @@
 // The same config and seed give the same output files, byte for byte, whatever
-// the thread count; another seed gives other results (DESIGN.md: reproducible runs).
+// the thread count; another seed gives other results (docs/design.md: reproducible runs).
 #include <sys/wait.h>
 
 #include <filesystem>

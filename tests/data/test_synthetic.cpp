@@ -111,7 +111,7 @@ TEST_F(SyntheticTest, FirstDimensionsCarryMostVariance) {
 
 TEST_F(SyntheticTest, DeploymentLikeTrainingSharesTheDeploymentEnvironment) {
   // The deployment's mean descriptor is near the deployment-like set's and far from the diverse
-  // set's: what makes diverse-trained routing unbalanced (DESIGN.md §8).
+  // set's: what makes diverse-trained routing unbalanced (docs/design.md §8).
   const Eigen::RowVectorXf deploy = SyntheticDeployment(Road(300, 2.0), params_, 6).colwise().mean();
   const Eigen::RowVectorXf like = SyntheticTrainingDeploymentLike(params_, Samples(300), 6).colwise().mean();
   const Eigen::RowVectorXf diverse = SyntheticTrainingDiverse(params_, Samples(300), 6).colwise().mean();

@@ -1,4 +1,4 @@
-// PR curve and AUC exactly as DESIGN.md section 2, on cases worked out by hand; balance ratio.
+// PR curve and AUC exactly as docs/design.md section 2, on cases worked out by hand; balance ratio.
 #include <cmath>
 #include <stdexcept>
 #include <vector>

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Independent numpy implementation of the paper's static evaluation (DESIGN.md section 2).
+"""Independent numpy implementation of the paper's static evaluation (docs/design.md section 2).
 
 Written from the specification, not from dvpr's C++, so that tests can check dvpr against it:
 

@@ -33,7 +33,7 @@ namespace dvpr {
 struct AgentLinkCount {
   std::int64_t messages = 0;
   std::int64_t payload_bytes = 0;
-  std::int64_t wire_bytes = 0;  // the wire-format model of DESIGN.md section 4
+  std::int64_t wire_bytes = 0;  // the wire-format model of docs/design.md section 4
 };
 
 struct AgentLog {

@@ -1,7 +1,7 @@
 #pragma once
-// The paper's static evaluation (DESIGN.md section 2): the centralized AUC once, then for every
-// robot count n and run: centroids (k-means with k = n x clusters_per_robot on the training set,
-// or loaded from files), every frame routed to the owner of its nearest centroid, the
+// The paper's static evaluation (docs/design.md section 2): the centralized AUC once, then for
+// every robot count n and run: centroids (k-means with k = n x clusters_per_robot on the training
+// set, or loaded from files), every frame routed to the owner of its nearest centroid, the
 // decentralized AUC with each query's candidates restricted to frames routed to the same robot,
 // relative AUC and the worst balance ratio. Ground truth (R) stays global.
 //

@@ -1,5 +1,5 @@
 #pragma once
-// The static protocol (DESIGN.md section 2) for any routing strategy (issue 8). The paper's
+// The static protocol (docs/design.md section 2) for any routing strategy (issue 8). The paper's
 // decentralized evaluation (PaperEvaluator::Evaluate) restricts each query to frames routed to
 // the same robot; strategies that search at several robots or store at several generalise that:
 //

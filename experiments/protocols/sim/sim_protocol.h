@@ -2,7 +2,7 @@
 // Protocol "sim" of `dvpr run`: for each (robots, run, network variant) the
 // team runs in virtual time once per strategy, on the same data and
 // centroids as the paper protocol's run; broadcast is the reference of the
-// relative AUC (DESIGN.md section 3). The bag-of-words strategies run as teams of BoW agents
+// relative AUC (docs/design.md section 3). The bag-of-words strategies run as teams of BoW agents
 // (agents/bow_robot_agent.h) with the centralized BoW server (bow_centralized) as their
 // reference (docs/bow.md).
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// One simulation run (DESIGN.md section 3): n robot agents drive their
+// One simulation run (docs/design.md section 3): n robot agents drive their
 // sub-sequences from t = 0, exchange LCM messages through the network model in
 // virtual time, and record what happened. Metrics come afterwards, from the
 // returned log (SummarizeSimRun).

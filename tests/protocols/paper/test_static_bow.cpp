@@ -46,7 +46,7 @@ TEST_F(StaticBowTest, CentralizedRanking) {
   const PaperEvaluator paper(data_, {.radius_m = 5, .suppression_frames = 1}, 2, 1);
   ASSERT_EQ(paper.relevant(), 4);
   const BowEvaluator bow(paper, bow_);
-  // Within 1e-9: precision and recall carry DESIGN.md's + 1e-12 in their denominators.
+  // Within 1e-9: precision and recall carry docs/design.md's + 1e-12 in their denominators.
   EXPECT_NEAR(bow.centralized().auc, 0.75, 1e-9);
   const BowRunResult broadcast = bow.Reference("bow_broadcast", 2, true);
   EXPECT_DOUBLE_EQ(broadcast.paper.row.relative_auc, 1.0);

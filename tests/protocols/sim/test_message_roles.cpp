@@ -1,6 +1,6 @@
 // Bytes by message role (issue 16): the role read from each channel, and RoleBytesRecorder on a
 // hand-worked three-robot exchange, with every size worked out from LCM's encoding rules and
-// DESIGN.md section 4 (net_models/wire_format.h), not taken from the code under test.
+// docs/design.md section 4 (net_models/wire_format.h), not taken from the code under test.
 //
 // Depends on the LCM sizes of query_t, match_t, verify_request_t, verify_result_t and
 // centroid_table_t: a field added to one of them changes the numbers below (each is derived in

@@ -127,9 +127,9 @@ int NearestOwner(const CentroidTable& table, const Eigen::Ref<const Eigen::RowVe
   return table.OwnerOf(best).value;
 }
 
-// Wire bytes of one message by DESIGN.md section 4, for messages below LCM's 64 kB fragmenting:
-// one LCM datagram (8-byte header, channel, NUL, payload), UDP 8, IPv4 fragments of at most 1480
-// data bytes (MTU 1500) with 20 header bytes each, 2 bytes of framing per IP packet.
+// Wire bytes of one message by docs/design.md section 4, for messages below LCM's 64 kB
+// fragmenting: one LCM datagram (8-byte header, channel, NUL, payload), UDP 8, IPv4 fragments of at
+// most 1480 data bytes (MTU 1500) with 20 header bytes each, 2 bytes of framing per IP packet.
 std::int64_t WireBytes(std::int64_t payload, const std::string& channel) {
   const std::int64_t ip_data = 8 + static_cast<std::int64_t>(channel.size()) + 1 + payload + 8;
   const std::int64_t packets = (ip_data + 1479) / 1480;

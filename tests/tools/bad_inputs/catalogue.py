@@ -426,7 +426,7 @@ def result_folder_cases():
              ("network.links",), sets=S("network.links=[{src: 0, dst: 5}]"), prior="base.yaml"),
         Case("f05", "a later run with queries off", success=True, prior="base.yaml",
              sets=S("outputs.queries=false"), check=no_file("queries.csv"),
-             why="a result folder describes one run (DESIGN.md 6): replaced whole, or the run "
+             why="a result folder describes one run (docs/design.md 6): replaced whole, or the run "
                  "refuses with one line and leaves it as it was (issue 12: choose one)"),
         Case("f06", "a later run with fewer robots", success=True, prior="base.yaml",
              sets=S("robots=[2]"), check=no_file("centroids/centroids_n3_r0.npy"), why="as f05"),
