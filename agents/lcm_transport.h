@@ -1,8 +1,15 @@
 #pragma once
-// Transport over real LCM (UDP multicast by default): the same agents, run as
-// processes in wall-clock time. Timers and message handlers run on the thread
-// that calls Run()/RunUntilWall(), so agent code needs no locks, as in the
-// simulator.
+// Transport over real LCM (UDP multicast): the same agents, run as processes in wall-clock
+// time. Timers and message handlers run on the thread that calls Run()/RunUntilWall(), so agent
+// code needs no locks, as in the simulator.
+//
+// Publishing goes through liblcm; receiving does not. Debian's liblcm 1.3.1 writes out of
+// bounds on a fragment whose offset wraps (one 233-byte datagram from anyone on the segment
+// killed every agent; LCM pull request #628), so the transport reads the group itself, with the
+// same wire format and the same socket options (agents/udpm/): lcm-spy, lcm-logger and other
+// LCM programs on the URL keep working beside it. Only udpm:// URLs are taken. Every datagram
+// is counted (ReceiveCounts): malformed ones and repeats of one already taken (the same sender
+// and sequence number: a duplicating network) are dropped, never handed to a handler.
 //
 // The agent clock: agent time = (wall time since the epoch) x speedup. The
 // epoch is construction time until SetEpoch() moves it (a team starts
@@ -28,6 +35,9 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "agents/transport.h"
+#include "agents/udpm/udpm_reassembler.h"
+#include "agents/udpm/udpm_socket.h"
+#include "agents/udpm/udpm_url.h"
 
 namespace dvpr {
 
@@ -37,15 +47,17 @@ class LcmTransport final : public Transport {
   // Sees every publication.
   using Observer = std::function<void(const std::string& channel, std::span<const std::uint8_t> bytes)>;
   // Sees every message of a subscribed channel before it is decoded (once per
-  // datagram, whatever the number of subscriptions); false drops it unseen
-  // by the handlers (e.g. a well-formed message from outside the team).
-  using Filter = std::function<bool(const std::string& channel, std::span<const std::uint8_t> bytes)>;
+  // message, whatever the number of subscriptions), with its sender (udpm::Sender::Key());
+  // false drops it unseen by the handlers (e.g. a well-formed message from outside the team).
+  using Filter = std::function<bool(const std::string& channel, std::span<const std::uint8_t> bytes,
+                                    std::uint64_t sender)>;
 
-  // url: an LCM provider URL, e.g. "udpm://239.255.76.67:7667?ttl=0"; empty
-  // uses LCM's default (or $LCM_DEFAULT_URL). speedup > 1 runs the agent's
-  // clock faster than the wall clock (frames at fps x speedup).
-  // Throws std::runtime_error when LCM cannot be initialised.
-  explicit LcmTransport(const std::string& url, double speedup = 1.0);
+  // url: an LCM udpm URL, e.g. "udpm://239.255.76.67:7667?ttl=0"; empty uses LCM's default
+  // (or $LCM_DEFAULT_URL). speedup > 1 runs the agent's clock faster than the wall clock
+  // (frames at fps x speedup). limits: what reassembling fragments may hold.
+  // Throws std::invalid_argument for a URL that is not udpm (udpm::ParseUrl) and
+  // std::runtime_error, in one line, when the group cannot be opened.
+  explicit LcmTransport(const std::string& url, double speedup = 1.0, udpm::Limits limits = {});
   ~LcmTransport() override;
   LcmTransport(const LcmTransport&) = delete;
   LcmTransport& operator=(const LcmTransport&) = delete;
@@ -84,6 +96,12 @@ class LcmTransport final : public Transport {
   std::uint64_t PublishedBytes() const { return published_bytes_; }
   std::uint64_t PublishFailures() const { return publish_failures_; }
   std::uint64_t Received() const { return received_; }
+  // Every datagram read from the group, by what became of it.
+  const udpm::Counts& ReceiveCounts() const { return reassembler_.counts(); }
+  // Datagrams the kernel dropped because the receive buffer was full (read late).
+  std::uint64_t KernelDropped() const { return socket_.kernel_dropped(); }
+  // The sender (udpm::Sender::Key()) of the message being handled; 0 outside a handler.
+  std::uint64_t CurrentSender() const { return current_sender_; }
 
  private:
   struct Timer {
@@ -91,38 +109,41 @@ class LcmTransport final : public Transport {
     std::uint64_t seq;
     bool operator>(const Timer& o) const { return due != o.due ? due > o.due : seq > o.seq; }
   };
-  struct Handler {
-    LcmTransport* self;
-    RawHandler fn;
-    lcm::Subscription* subscription;
+  struct Held {
+    std::vector<std::uint8_t> bytes;
+    std::uint64_t sender = 0;
   };
   struct ChannelSubscription {
-    lcm::Subscription* subscription = nullptr;
     std::map<std::uint64_t, RawHandler> handlers;
-    bool hold = false;                            // HoldUntilSubscribed, no handler yet
-    std::vector<std::vector<std::uint8_t>> held;  // what arrived meanwhile
+    bool hold = false;       // HoldUntilSubscribed, no handler yet
+    std::vector<Held> held;  // what arrived meanwhile
   };
-  lcm::Subscription* Listen(const std::string& channel);
 
   void DoPublish(const std::string& channel, const char* type_name, std::vector<std::uint8_t> bytes) override;
   std::uint64_t DoSubscribe(const std::string& channel, RawHandler handler) override;
   void DoUnsubscribe(std::uint64_t id) override;
-  static void OnRaw(const lcm::ReceiveBuffer* rbuf, const std::string& channel, LcmTransport* self);
-  void Dispatch(const std::string& channel, std::span<const std::uint8_t> bytes);
+  // Reads and handles what waits on the socket (a bounded number of datagrams).
+  void ReceiveWaiting();
+  void Dispatch(const std::string& channel, std::span<const std::uint8_t> bytes, std::uint64_t sender);
   void RunDueTimers();
   void WaitAndHandle(WallClock::duration wait);
   WallClock::duration ToWall(SimTime agent) const;
 
-  lcm::LCM lcm_;
+  udpm::Url url_;
+  udpm::Socket socket_;
+  udpm::Reassembler reassembler_;
+  std::vector<std::uint8_t> datagram_;
+  std::unique_ptr<lcm::LCM> lcm_;  // publishing only: it never subscribes, so it never receives
+  std::uint64_t current_sender_ = 0;
   double speedup_;
   WallClock::time_point zero_;
   std::int64_t zero_utime_;  // zero_ on the system clock, microseconds since the Unix epoch
   std::optional<WallClock::time_point> running_due_;  // due time of the timer being run
   std::priority_queue<Timer, std::vector<Timer>, std::greater<>> timers_;
   std::map<std::uint64_t, Callback> timer_callbacks_;
-  // One LCM subscription per channel; handlers by subscription id. Removing a
-  // handler while it runs is safe: handlers are copied before being called.
-  std::map<std::string, ChannelSubscription> channels_;
+  // The channels listened to; handlers by subscription id. Removing a handler while it runs is
+  // safe: handlers are copied before being called. std::less<>: looked up by string_view.
+  std::map<std::string, ChannelSubscription, std::less<>> channels_;
   std::map<std::uint64_t, std::string> channel_of_;
   Filter on_receive_;
   Observer on_publish_;

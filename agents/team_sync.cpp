@@ -9,21 +9,30 @@ namespace dvpr {
 TeamSync::TeamSync(RobotId self, int robots, std::int64_t team_key)
     : self_(self), robots_(robots), team_key_(team_key),
       ready_utime_(static_cast<std::size_t>(std::max(robots, 0))),
-      done_(static_cast<std::size_t>(std::max(robots, 0)), false) {
+      done_(static_cast<std::size_t>(std::max(robots, 0)), false),
+      sender_(static_cast<std::size_t>(std::max(robots, 0)), 0) {
   if (robots < 1 || self.value < 0 || self.value >= robots) {
     throw std::invalid_argument("TeamSync: robot " + std::to_string(self.value) + " is not in a team of " +
                                 std::to_string(robots));
   }
 }
 
-bool TeamSync::OnStatus(const agent_status_t& s) {
-  const bool ours = s.team_key == team_key_ && s.robots == robots_ && s.robot >= 0 && s.robot < robots_ &&
-                    s.state >= agent_status_t::READY && s.state <= agent_status_t::DONE;
+bool TeamSync::OnStatus(const agent_status_t& s, std::uint64_t sender) {
+  bool ours = s.team_key == team_key_ && s.robots == robots_ && s.robot >= 0 && s.robot < robots_ &&
+              s.state >= agent_status_t::READY && s.state <= agent_status_t::DONE;
+  const auto r = static_cast<std::size_t>(std::max<int>(s.robot, 0));
+  if (ours && sender != 0) {
+    const auto known = robot_of_.find(sender);
+    if (sender_[r] == 0 && known == robot_of_.end()) {
+      sender_[r] = sender;
+      robot_of_.emplace(sender, s.robot);
+    }
+    ours = sender_[r] == sender;
+  }
   if (!ours) {
     ++foreign_;
     return false;
   }
-  const auto r = static_cast<std::size_t>(s.robot);
   // The first ready instant heard is kept: a restarted agent must not move
   // the start the others already computed.
   if (!ready_utime_[r]) ready_utime_[r] = s.ready_utime;
@@ -42,6 +51,11 @@ agent_status_t TeamSync::Announce(std::int64_t utime, std::int8_t state, std::in
   s.ready_utime = ready_utime;
   s.frames_taken = frames_taken;
   return s;
+}
+
+bool TeamSync::FromMember(RobotId robot, std::uint64_t sender) const {
+  return sender != 0 && robot.value >= 0 && robot.value < robots_ &&
+         sender_[static_cast<std::size_t>(robot.value)] == sender;
 }
 
 int TeamSync::HeardCount() const {

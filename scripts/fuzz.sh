@@ -4,7 +4,7 @@
 # tests/fuzz/corpus/<target>/. Fails when a target crashes, leaks, trips a sanitizer or one of
 # its properties, times out on one input or allocates beyond the limit; it then prints the
 # command that reruns the saved input.
-#   DVPR_FUZZ_SECONDS  seconds per target (default 15: six targets, about 1.5 minutes)
+#   DVPR_FUZZ_SECONDS  seconds per target (default 15: seven targets, about 1.75 minutes)
 #   DVPR_FUZZ_BUILD    build directory (default build/fuzz)
 #   DVPR_FUZZ_TARGETS  the targets to run (default: all)
 #   DVPR_FUZZ_SEED     libFuzzer's seed (default 1, so CI replays the same mutations and a finding
@@ -17,7 +17,7 @@ cd "$(dirname "$0")/.."
 SECONDS_EACH=${DVPR_FUZZ_SECONDS:-15}
 SEED=${DVPR_FUZZ_SEED:-1}
 BUILD=${DVPR_FUZZ_BUILD:-build/fuzz}
-read -r -a TARGETS <<< "${DVPR_FUZZ_TARGETS:-config npy csv bin poses lcm}"
+read -r -a TARGETS <<< "${DVPR_FUZZ_TARGETS:-config npy csv bin poses lcm udpm}"
 
 cmake -S . -B "$BUILD" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDVPR_FUZZ=ON -DDVPR_WERROR=ON \

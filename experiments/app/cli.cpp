@@ -40,8 +40,11 @@ Usage:
   dvpr plot DIR      redraw DIR/figures/*.png from the files in DIR
   dvpr agent --config C --robot R [--robots N] [--run K] [--strategy S] [--lcm URL]
              [--speedup X] [--out FILE] [--set key.path=value ...] [--grace SEC]
-                     one robot as a real process over LCM (UDP multicast), in
-                     wall-clock time at the config's fps x speedup; writes its log
+             [--team-nonce HEX]
+                     one robot as a real process over LCM (UDP multicast, udpm://
+                     URLs only), in wall-clock time at the config's fps x speedup;
+                     writes its log; agents with another --team-nonce (dvpr launch
+                     draws one per launch) are another team
   dvpr launch --config C --robots N [--run K] [--out DIR] [--lcm URL] [--speedup X]
               [--set key.path=value ...] [--grace SEC] [--timeout SEC]
                      N agent processes on this machine, each configured strategy

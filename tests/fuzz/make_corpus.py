@@ -150,6 +150,49 @@ def lcm_seed_messages(t):
                                        has_match=True, match_robot=0, match_frame=3, score=0.375))
 
 
+def udpm_frame(sender, step, datagram):
+    """One datagram of a fuzz_udpm input: sender (0-3), time step (x 50 ms), length, bytes."""
+    return bytes([(step << 2) | sender]) + struct.pack(">H", len(datagram)) + datagram
+
+
+def udpm_small(seqno, channel, payload):
+    return b"LC02" + struct.pack(">I", seqno) + channel + b"\0" + payload
+
+
+def udpm_fragment(seqno, size, offset, no, count, channel, data):
+    head = b"LC03" + struct.pack(">IIIHH", seqno, size, offset, no, count)
+    return head + (channel + b"\0" if no == 0 else b"") + data
+
+
+def udpm_seeds():
+    f = udpm_frame
+    write("udpm", "small.bin", f(0, 0, udpm_small(1, b"DVPR_STATUS", bytes(range(20)))))
+    write("udpm", "three_fragments.bin",
+          f(1, 0, udpm_fragment(7, 30, 0, 0, 3, b"DVPR_VREQ_1", bytes(10)))
+          + f(1, 0, udpm_fragment(7, 30, 10, 1, 3, b"", bytes(range(10))))
+          + f(1, 0, udpm_fragment(7, 30, 20, 2, 3, b"", bytes(10))))
+    write("udpm", "fragments_reversed_and_repeated.bin",
+          f(2, 0, udpm_fragment(3, 8, 4, 1, 2, b"", b"efgh"))
+          + f(2, 0, udpm_fragment(3, 8, 4, 1, 2, b"", b"efgh"))
+          + f(2, 1, udpm_fragment(3, 8, 0, 0, 2, b"CH", b"abcd"))
+          + f(2, 0, udpm_fragment(3, 8, 0, 0, 2, b"CH", b"abcd")))
+    write("udpm", "small_repeated_two_senders.bin",
+          f(0, 0, udpm_small(5, b"C", b"x")) + f(0, 0, udpm_small(5, b"C", b"x")) + f(3, 0, udpm_small(5, b"C", b"x")))
+    # Issue 31's datagram: 2^28 bytes claimed, offset 0xFFFFFFF0 (wraps in 32-bit arithmetic).
+    write("udpm", "wrapping_offset.bin", f(0, 0, udpm_fragment(1, 1 << 28, 0xFFFFFFF0, 1, 2, b"", b"A" * 213)))
+    write("udpm", "counts_disagree.bin",
+          f(1, 0, udpm_fragment(9, 12, 0, 0, 3, b"CH", b"abcd"))
+          + f(1, 0, udpm_fragment(9, 12, 4, 1, 2, b"", b"efgh")))
+    write("udpm", "overlap_and_gap.bin",
+          f(1, 0, udpm_fragment(4, 9, 0, 0, 2, b"CH", b"ab"))
+          + f(1, 0, udpm_fragment(4, 9, 1, 1, 2, b"", b"bcdefghi"))
+          + f(1, 0, udpm_fragment(4, 9, 5, 1, 2, b"", b"fghi")))
+    write("udpm", "stale_partial.bin",
+          f(0, 0, udpm_fragment(2, 4, 0, 0, 2, b"CH", b"ab")) + f(1, 63, udpm_small(1, b"C", b""))
+          + f(0, 0, udpm_fragment(2, 4, 2, 1, 2, b"", b"cd")))
+    write("udpm", "truncated_headers.bin", f(0, 0, b"LC0") + f(0, 0, b"LC03" + bytes(10)) + f(0, 0, b"LC02\0\0\0\1AB"))
+
+
 if __name__ == "__main__":
     npy_seeds()
     csv_seeds()
@@ -157,3 +200,4 @@ if __name__ == "__main__":
     pose_seeds()
     config_seeds()
     lcm_seeds()
+    udpm_seeds()

@@ -5,7 +5,8 @@
 // died leaves none.
 //
 //   agent,robot,robots,run,strategy,speedup,start_utime,end_ns,end_reason,
-//         published,published_bytes,publish_failures,received,malformed,foreign,medium_wire_bytes
+//         published,published_bytes,publish_failures,received,malformed,foreign,medium_wire_bytes,
+//         datagrams,malformed_datagrams,duplicates,incomplete_messages,kernel_dropped
 //   load,searches,remote_queries,comparisons,stored,verifications,busy_ns,max_queue
 //   sent,dst,messages,payload_bytes,wire_bytes        one line per destination robot
 //   recv,src,messages                                 one line per source robot
@@ -19,6 +20,14 @@
 // wall clock (agent-time latency / speedup), empty when a reply is missing.
 // end_reason: all_done (every robot announced done) or deadline. Distances are
 // written in the shortest form that reads back to the same float.
+//
+// What the network brought (LcmTransport, agents/udpm/): datagrams read from the group, of
+// which malformed (not LCM, cut, fragments that do not fit their message: dropped) and
+// duplicates (a sender's message or fragment already taken: dropped); partial messages
+// dropped unfinished; datagrams the kernel dropped because the receive buffer was full. Of the
+// messages on the agent's channels, malformed did not decode and foreign came from outside the
+// team (another team's heartbeats, robots or frames out of range, a sender that is not the
+// robot it names): both dropped.
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -52,6 +61,11 @@ struct AgentLog {
   std::uint64_t malformed = 0;   // buffers that did not decode as the channel's type
   std::uint64_t foreign = 0;     // well-formed messages of another team (heartbeats, ids out of range): dropped
   std::int64_t medium_wire_bytes = 0;  // wire bytes of each publication once
+  std::uint64_t datagrams = 0;            // read from the group
+  std::uint64_t malformed_datagrams = 0;  // of which not well-formed LCM: dropped
+  std::uint64_t duplicates = 0;           // of which repeats (same sender and sequence number): dropped
+  std::uint64_t incomplete_messages = 0;  // fragmented messages dropped before their last fragment
+  std::uint64_t kernel_dropped = 0;       // lost to a full receive buffer (SO_RXQ_OVFL)
   RobotLoad load;
   std::vector<AgentLinkCount> sent;            // per destination robot
   std::vector<std::int64_t> received_from;     // per source robot (own echoes excluded)

@@ -1,8 +1,10 @@
 #include "experiments/protocols/lcm/agent_process.h"
 
 #include <signal.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +17,7 @@
 #include "agents/lcm_transport.h"
 #include "agents/robot_agent.h"
 #include "agents/team_sync.h"
+#include "agents/udpm/udpm_url.h"
 #include "experiments/protocols/lcm/agent_log.h"
 #include "experiments/protocols/sim/pose_oracle.h"
 #include "experiments/protocols/inputs.h"
@@ -34,6 +37,7 @@ void AgentProcessOptions::Validate() const {
   if (robots && *robots < 2) fail("--robots must be at least 2, got " + std::to_string(*robots));
   if (robots && robot >= *robots) fail("--robot " + std::to_string(robot) + " is not in a team of " + std::to_string(*robots));
   if (run < 0) fail("--run must be >= 0");
+  CheckLcmUrl(lcm_url);
   CheckSpeedup(speedup);
   CheckWallSeconds("--grace", grace_s, 0, false);
   CheckWallSeconds("--barrier-timeout", barrier_timeout_s, 0, true);
@@ -64,6 +68,29 @@ void CheckWallSeconds(const char* flag, double seconds, double low, bool low_ope
   }
 }
 
+void CheckLcmUrl(const std::string& url) {
+  try {
+    udpm::ParseUrl(url);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("--lcm: ") + e.what());
+  }
+}
+
+std::uint64_t ParseTeamNonce(const std::string& text) {
+  std::uint64_t v = 0;
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), v, 16);
+  if (text.empty() || text.size() > 16 || r.ec != std::errc() || r.ptr != text.data() + text.size()) {
+    throw std::invalid_argument("--team-nonce: expected 1 to 16 hexadecimal digits, got '" + text + "'");
+  }
+  return v;
+}
+
+std::string TeamNonceText(std::uint64_t nonce) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(nonce));
+  return text;
+}
+
 void CheckTeamSize(std::int64_t robots, std::int64_t frames) {
   if (robots < 2 || robots > frames || robots > kMaxWireInt16) {
     throw std::invalid_argument("--robots: " + std::to_string(robots) + " robots for " + std::to_string(frames) +
@@ -83,6 +110,7 @@ AgentProcessOptions ParseAgentArgs(const std::vector<std::string>& args) {
     else if (f == "--run") o.run = in.Int();
     else if (f == "--strategy") o.strategy = in.Text();
     else if (f == "--lcm") o.lcm_url = in.Text();
+    else if (f == "--team-nonce") o.team_nonce = ParseTeamNonce(in.Text());
     else if (f == "--speedup") o.speedup = in.Double();
     else if (f == "--out") o.out = in.Text();
     else if (f == "--grace") o.grace_s = in.Double();
@@ -106,10 +134,12 @@ std::int64_t WallUtime() {
 
 // Everything the agents of one team must agree on, hashed: if one process has
 // other data, centroids or parameters, it routes differently and must not join.
-// Broadcast has no table: its robots need no centroids in common.
+// Broadcast has no table: its robots need no centroids in common. The nonce keeps two teams
+// of the same config apart (each `dvpr launch` draws its own).
 std::int64_t TeamKey(const ExperimentConfig& c, const Dataset& data, const CentroidTable* table, const BowData* bow,
-                     const std::string& strategy, int robots, int run) {
+                     const std::string& strategy, int robots, int run, std::uint64_t nonce) {
   Fnv1a h;
+  h.AddValue(nonce);
   h.AddValue(robots);
   h.AddValue(run);
   h.Add(strategy.data(), strategy.size());
@@ -200,7 +230,8 @@ struct TrafficCounters {
   std::vector<std::int64_t> received_from;
   std::int64_t medium_wire_bytes = 0;
   int frames = 0;
-  std::uint64_t foreign = 0;  // well-formed messages naming robots or frames outside the team
+  std::uint64_t foreign = 0;  // well-formed messages naming robots or frames outside the team, or
+                              // sent by a process that is not the robot they name
 
   void OnPublish(const std::string& channel, std::size_t size) {
     if (channel == channels::kStatus) return;
@@ -220,12 +251,17 @@ struct TrafficCounters {
       count(static_cast<std::size_t>(*dst));
     }
   }
-  // Counts per source; drops well-formed messages from outside the team.
-  bool OnReceive(const std::string& channel, std::span<const std::uint8_t> bytes) {
-    if (channel == channels::kStatus) return true;
+  // Takes the heartbeats into `sync` (which learns each robot's sender from them); counts
+  // messages per source; drops well-formed messages from outside the team.
+  bool OnReceive(const std::string& channel, std::span<const std::uint8_t> bytes, std::uint64_t sender,
+                 TeamSync& sync) {
+    if (channel == channels::kStatus) {
+      const auto s = Decode<agent_status_t>(bytes);
+      return !s || sync.OnStatus(*s, sender);  // one that does not decode: the handler counts it
+    }
     const auto src = SourceOf(channel, bytes, static_cast<int>(received_from.size()), frames);
     if (!src) return true;  // let the handler's decoder count it as malformed
-    if (*src < 0) {
+    if (*src < 0 || !sync.FromMember(RobotId(*src), sender)) {
       ++foreign;
       return false;
     }
@@ -277,9 +313,9 @@ StrategySpec TeamStrategy(const AgentProcessOptions& o, const ExperimentConfig& 
   }
 }
 
-Team LoadTeam(const AgentProcessOptions& o) {
+Team LoadTeam(const AgentProcessOptions& o, ExperimentConfig config) {
   Team t;
-  t.config = LoadConfig(o.config, o.overrides);
+  t.config = std::move(config);
   t.strategy = TeamStrategy(o, t.config);  // before the data: a typo fails at once
   if (t.strategy.reclusters()) {
     throw std::invalid_argument("--strategy: '" + t.strategy.name +
@@ -302,7 +338,7 @@ Team LoadTeam(const AgentProcessOptions& o) {
   // Built by every process from the same inputs, so the whole team routes alike.
   t.routing = BuildRunRouting(t.strategy, StrategyInputsOf(t.inputs), t.robots, o.run);
   t.key = TeamKey(t.config, t.inputs.deployment, t.routing.table.get(), t.routing.bow_team ? &t.inputs.bow : nullptr,
-                  t.strategy.name, t.robots, o.run);
+                  t.strategy.name, t.robots, o.run, o.team_nonce);
   // The process announces the heartbeats (DVPR_STATUS, every kAnnouncePeriod); failover listens.
   if (t.routing.failover != nullptr) t.routing.failover->UseProcessHeartbeats(t.key);
   return t;
@@ -334,6 +370,12 @@ AgentLog MakeLog(const AgentProcessOptions& o, const Team& t, const TeamAgent& a
   l.publish_failures = transport.PublishFailures();
   l.received = transport.Received();
   l.malformed = transport.MalformedCount();
+  const udpm::Counts& datagrams = transport.ReceiveCounts();
+  l.datagrams = datagrams.datagrams;
+  l.malformed_datagrams = datagrams.malformed;
+  l.duplicates = datagrams.duplicates;
+  l.incomplete_messages = datagrams.incomplete;
+  l.kernel_dropped = transport.KernelDropped();
   l.foreign = sync.foreign() + traffic.foreign;
   l.medium_wire_bytes = traffic.medium_wire_bytes;
   l.load = agent.load();
@@ -372,13 +414,50 @@ void ScheduleDropout(const ExperimentConfig& c, int robot, Transport& transport)
   }
 }
 
+// The folder the log goes to must be there before the team runs: found missing at the end, the
+// whole run was lost (and its teammates waited for nothing).
+void CheckLogFolder(const std::filesystem::path& log) {
+  const std::filesystem::path folder = log.parent_path().empty() ? std::filesystem::path(".") : log.parent_path();
+  std::error_code ec;
+  if (!std::filesystem::is_directory(folder, ec)) {
+    throw std::runtime_error("--out " + log.string() + ": the folder " + folder.string() + " does not exist");
+  }
+  if (access(folder.c_str(), W_OK) != 0) {
+    throw std::runtime_error("--out " + log.string() + ": the folder " + folder.string() + " is not writable");
+  }
+}
+
+// What reassembling may hold: the team's largest message is a verification request (its
+// payload is verification.request_bytes) or a query, far below LCM's 2^28 bytes.
+udpm::Limits ReceiveLimits(const ExperimentConfig& c) {
+  constexpr std::int64_t kHeaders = 1 << 20;  // a query's descriptor (32767 floats) and any header
+  const std::int64_t largest = c.agent.verification.request_bytes.value() + kHeaders;
+  if (largest > std::int64_t{udpm::kMaxMessageBytes}) {
+    throw std::invalid_argument("verification.request_bytes: " +
+                                std::to_string(c.agent.verification.request_bytes.value()) +
+                                " bytes do not fit one LCM message (at most 2^28 = 268435456 bytes with headers)");
+  }
+  udpm::Limits limits;
+  limits.max_message_bytes = std::max(limits.max_message_bytes, static_cast<std::uint32_t>(largest));
+  limits.max_partial_bytes = std::max(limits.max_partial_bytes, 2 * std::size_t{limits.max_message_bytes} + (16u << 20));
+  return limits;
+}
+
 }  // namespace
 
 int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   o.Validate();
-  // LCM first: an agent that cannot talk fails at once, before minutes of loading and k-means.
-  LcmTransport transport(o.lcm_url, o.speedup);
-  const Team t = LoadTeam(o);
+  ExperimentConfig config = LoadConfig(o.config, o.overrides);
+  const std::string strategy_name = TeamStrategy(o, config).name;
+  const int robots = o.robots.value_or(config.sweep.robots.front());
+  const std::filesystem::path path =
+      o.out.empty() ? std::filesystem::path("agent_" + strategy_name + "_n" + std::to_string(robots) + "_r" +
+                                            std::to_string(o.run) + "_robot" + std::to_string(o.robot) + ".log")
+                    : o.out;
+  CheckLogFolder(path);
+  // LCM next: an agent that cannot talk fails at once, before minutes of loading and k-means.
+  LcmTransport transport(o.lcm_url, o.speedup, ReceiveLimits(config));
+  const Team t = LoadTeam(o, std::move(config));
   const Dataset& data = t.inputs.deployment;
   const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), t.robots);
   const FrameRange range = split.ranges.at(static_cast<std::size_t>(o.robot));
@@ -388,9 +467,13 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
                           static_cast<int>(data.size()), 0};
   traffic.wire.mtu = t.config.network.mtu.front();
   transport.SetPublishObserver([&](const std::string& c, std::span<const std::uint8_t> b) { traffic.OnPublish(c, b.size()); });
-  transport.SetReceiveFilter([&](const std::string& c, std::span<const std::uint8_t> b) { return traffic.OnReceive(c, b); });
   TeamSync sync(RobotId(o.robot), t.robots, t.key);
-  Subscription status = transport.Subscribe<agent_status_t>(channels::kStatus, [&](const agent_status_t& s) { sync.OnStatus(s); });
+  transport.SetReceiveFilter([&](const std::string& c, std::span<const std::uint8_t> b, std::uint64_t sender) {
+    return traffic.OnReceive(c, b, sender, sync);
+  });
+  // The filter takes the heartbeats (it knows their sender); this keeps their channel open and
+  // counts one that does not decode as malformed.
+  Subscription status = transport.Subscribe<agent_status_t>(channels::kStatus, [](const agent_status_t&) {});
   const std::unique_ptr<TeamAgent> agent_owner = MakeAgent(o, t, transport, range);
   TeamAgent& agent = *agent_owner;
 
@@ -438,15 +521,12 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   }
 
   const AgentLog log = MakeLog(o, t, agent, transport, sync, traffic, *start, end_reason);
-  const std::filesystem::path path =
-      o.out.empty() ? std::filesystem::path("agent_" + t.strategy.name + "_n" + std::to_string(t.robots) + "_r" +
-                                            std::to_string(o.run) + "_robot" + std::to_string(o.robot) + ".log")
-                    : o.out;
   WriteAgentLog(path, log);
   const auto complete = std::count_if(log.queries.begin(), log.queries.end(), [](const QueryRecord& q) { return q.Complete(); });
   out << "robot " << o.robot << ": " << log.queries.size() << " queries, " << complete << " with every reply, "
-      << log.malformed << " malformed, " << log.foreign << " foreign, end: " << end_reason << ", log " << path.string()
-      << "\n";
+      << log.malformed_datagrams << " malformed datagrams, " << log.malformed << " malformed messages, "
+      << log.foreign << " foreign, " << log.duplicates << " duplicates, " << log.kernel_dropped
+      << " dropped by a full receive buffer, end: " << end_reason << ", log " << path.string() << "\n";
   return 0;
 }
 

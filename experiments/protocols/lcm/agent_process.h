@@ -45,14 +45,27 @@ struct AgentProcessOptions {
   std::optional<int> robots;       // default: the config's first robot count
   int run = 0;
   std::string strategy;            // default: the config's first strategy
-  std::string lcm_url = kDefaultLcmUrl;
+  std::string lcm_url = kDefaultLcmUrl;  // udpm only (agents/udpm/udpm_url.h)
+  // Mixed into the team key: agents started with other nonces are another team, even of the same
+  // config on the same URL. `dvpr launch` draws one per launch; 0 (the default) lets agents
+  // started by hand form a team by their config alone.
+  std::uint64_t team_nonce = 0;
   double speedup = 1.0;
   std::filesystem::path out;       // default: agent_<strategy>_n<robots>_r<run>_robot<robot>.log
+                                   // (its folder must exist: checked before the team starts)
   double grace_s = 2.0;            // wall seconds after the team's last frame before giving up
   double barrier_timeout_s = 120;  // wall seconds to wait for the whole team
   double start_margin_s = 0.3;     // between the last robot ready and the start
   void Validate() const;           // throws std::invalid_argument naming the option
 };
+
+// Throws std::invalid_argument naming --lcm unless `url` is a udpm URL a team can use
+// (agents/udpm/udpm_url.h): file://, memq:// and the other providers are refused before
+// anything is opened.
+void CheckLcmUrl(const std::string& url);
+// A team nonce as --team-nonce takes it: 1 to 16 hexadecimal digits. Throws std::invalid_argument.
+std::uint64_t ParseTeamNonce(const std::string& text);
+std::string TeamNonceText(std::uint64_t nonce);
 
 // Parses the arguments after "agent". Throws std::invalid_argument.
 AgentProcessOptions ParseAgentArgs(const std::vector<std::string>& args);

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -32,6 +33,7 @@ void LaunchOptions::Validate() const {
   if (config.empty()) throw std::invalid_argument("--config is required");
   if (robots < 2) throw std::invalid_argument("--robots is required (at least 2)");
   if (run < 0) throw std::invalid_argument("--run must be >= 0");
+  if (!lcm_url.empty()) CheckLcmUrl(lcm_url);
   CheckSpeedup(speedup);
   CheckWallSeconds("--grace", grace_s, 0, false);
   CheckWallSeconds("--timeout", timeout_s, 0, false);
@@ -124,7 +126,16 @@ bool DroppedOnPurpose(const ExperimentConfig& config, const Child& c) {
   return std::any_of(config.dropout.begin(), config.dropout.end(), [&](const Dropout& d) { return d.robot == c.robot; });
 }
 
-std::vector<std::string> AgentArgv(const LaunchOptions& o, const std::string& strategy, int robot,
+// This launch's team nonce (agent_process.h): another launch of the same config on the same URL
+// draws another, so the two teams never take each other's heartbeats or messages.
+std::uint64_t DrawTeamNonce() {
+  std::random_device device;
+  std::uint64_t nonce = 0;
+  while (nonce == 0) nonce = (std::uint64_t{device()} << 32) ^ device();
+  return nonce;
+}
+
+std::vector<std::string> AgentArgv(const LaunchOptions& o, std::uint64_t nonce, const std::string& strategy, int robot,
                                    const std::filesystem::path& log) {
   std::vector<std::string> a{o.binary.string(), "agent", "--config", o.config.string()};
   for (const auto& s : o.overrides) {
@@ -142,6 +153,7 @@ std::vector<std::string> AgentArgv(const LaunchOptions& o, const std::string& st
   add("--run", std::to_string(o.run));
   add("--strategy", strategy);
   add("--lcm", o.lcm_url.empty() ? kDefaultLcmUrl : o.lcm_url);
+  add("--team-nonce", TeamNonceText(nonce));
   add("--speedup", speedup.str());
   add("--grace", grace.str());
   add("--out", log.string());
@@ -246,13 +258,13 @@ std::filesystem::path AgentFile(const std::filesystem::path& dir, const std::str
 
 // Starts one agent per robot for `strategy` and waits for them (killing the ones still running
 // at the timeout).
-Team RunTeam(const LaunchOptions& o, const ExperimentConfig& config, const std::string& strategy,
+Team RunTeam(const LaunchOptions& o, std::uint64_t nonce, const ExperimentConfig& config, const std::string& strategy,
              const std::filesystem::path& dir, std::ostream& out) {
   Team team{strategy, {}};
   for (int r = 0; r < o.robots; ++r) {
     const auto log = AgentFile(dir, strategy, r, ".log");
     std::filesystem::remove(log);  // a stale log must not pass for this run's
-    team.children.push_back(Child{r, Spawn(AgentArgv(o, strategy, r, log), AgentFile(dir, strategy, r, ".out"))});
+    team.children.push_back(Child{r, Spawn(AgentArgv(o, nonce, strategy, r, log), AgentFile(dir, strategy, r, ".out"))});
   }
   out << "launch: " << strategy << ": " << o.robots << " agents started\n" << std::flush;
   // The frames' wall time, plus the agents' grace, plus start-up and barrier.
@@ -302,9 +314,12 @@ TeamLogs CollectTeam(const ExperimentConfig& config, const Team& team, int robot
     if (l) {
       for (const auto& q : l->queries) incomplete += q.Complete() ? 0 : 1;
     }
+    const auto count = [&](std::uint64_t AgentLog::*field) { return l ? std::to_string((*l).*field) : std::string(); };
     agents_csv << team.strategy << ',' << c.robot << ',' << Describe(c) << ',' << (l ? path.filename().string() : "")
                << ',' << (l ? std::to_string(l->queries.size()) : "") << ',' << (l ? std::to_string(incomplete) : "")
-               << '\n';
+               << ',' << count(&AgentLog::malformed_datagrams) << ',' << count(&AgentLog::malformed) << ','
+               << count(&AgentLog::foreign) << ',' << count(&AgentLog::duplicates) << ','
+               << count(&AgentLog::kernel_dropped) << '\n';
     if (!ok && !dropped) {
       const std::string why = FirstErrorLine(AgentFile(dir, team.strategy, c.robot, ".out"));
       out << "launch: " << team.strategy << " robot " << c.robot << ": " << Describe(c)
@@ -361,12 +376,14 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
   // server's (bow_centralized) every bow_ strategy's (docs/bow.md).
   std::vector<StrategySpec> strategies = config.sweep.strategies;
   std::stable_partition(strategies.begin(), strategies.end(), [](const StrategySpec& s) { return IsReference(s); });
+  const std::uint64_t nonce = DrawTeamNonce();
   std::vector<Team> teams;
-  for (const StrategySpec& spec : strategies) teams.push_back(RunTeam(o, config, spec.name, dir, out));
+  for (const StrategySpec& spec : strategies) teams.push_back(RunTeam(o, nonce, config, spec.name, dir, out));
 
   RunOutput all;
   std::ostringstream agents_csv;
-  agents_csv << "strategy,robot,exit,log,queries,incomplete\n";
+  agents_csv << "strategy,robot,exit,log,queries,incomplete,malformed_datagrams,malformed_messages,foreign,"
+                "duplicates,kernel_dropped\n";
   double reference_auc = kNotApplicable, bow_reference_auc = kNotApplicable;
   bool clean = true;
   for (const Team& team : teams) {
