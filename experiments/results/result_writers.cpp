@@ -226,37 +226,6 @@ void CreateOutputDir(const std::filesystem::path& dir) {
   }
 }
 
-AtomicFile::AtomicFile(std::filesystem::path path) : path_(std::move(path)) {
-  // pid in the name: two dvpr processes writing the same folder do not share a temporary.
-  tmp_ = path_.parent_path() /
-         ("." + path_.filename().string() + ".tmp" + std::to_string(::getpid()));
-  out_.open(tmp_, std::ios::binary | std::ios::trunc);
-  if (!out_) throw std::runtime_error(path_.string() + ": cannot open for writing");
-}
-
-AtomicFile::~AtomicFile() {
-  if (committed_) return;
-  out_.close();
-  std::error_code ec;
-  std::filesystem::remove(tmp_, ec);
-}
-
-void AtomicFile::Commit() {
-  out_.flush();
-  if (!out_) throw std::runtime_error(path_.string() + ": write failed");
-  out_.close();
-  std::error_code ec;
-  std::filesystem::rename(tmp_, path_, ec);
-  if (ec) throw std::runtime_error(path_.string() + ": cannot rename into place (" + ec.message() + ")");
-  committed_ = true;
-}
-
-void WriteFileAtomic(const std::filesystem::path& path, const std::string& content) {
-  AtomicFile f(path);
-  f.stream() << content;
-  f.Commit();
-}
-
 void WriteRunsCsv(const std::filesystem::path& path, const std::vector<RunResult>& rows) {
   AtomicFile f(path);
   f.stream() << kRunsHeader << '\n';

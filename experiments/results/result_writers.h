@@ -13,32 +13,12 @@
 
 #include "experiments/results/bow_rows.h"
 #include "experiments/results/results.h"
+#include "experiments/results/safe_output.h"  // AtomicFile, WriteFileAtomic
 
 namespace dvpr {
 
 // Creates `dir` (and parents); throws std::runtime_error naming it if that fails.
 void CreateOutputDir(const std::filesystem::path& dir);
-
-// Writes `content` to `path` atomically; throws std::runtime_error naming the path on failure.
-void WriteFileAtomic(const std::filesystem::path& path, const std::string& content);
-
-// A file written row by row into a temporary, renamed into place by Commit(); removed if never
-// committed (an error halfway leaves nothing behind).
-class AtomicFile {
- public:
-  explicit AtomicFile(std::filesystem::path path);
-  ~AtomicFile();
-  AtomicFile(const AtomicFile&) = delete;
-  AtomicFile& operator=(const AtomicFile&) = delete;
-  std::ostream& stream() { return out_; }
-  void Commit();
-
- private:
-  std::filesystem::path path_;
-  std::filesystem::path tmp_;
-  std::ofstream out_;
-  bool committed_ = false;
-};
 
 // CSV headers and rows, one function per file.
 extern const char* const kRunsHeader;       // runs.csv
