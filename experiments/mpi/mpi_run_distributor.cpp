@@ -80,12 +80,13 @@ bool AllDigits(const std::string& s) {
 }
 
 // The run folders of this machine's ranks that were killed (SIGKILL, a crash) before removing
-// theirs: "dvpr-rank<r>-<host>-<pid>" whose process is gone.
+// theirs: "dvpr-rank<r>-<host>-<pid>" whose process is gone (with kRemovingSuffix when the kill
+// came while the cleanup removed it).
 void RemoveStaleRunFolders(const fs::path& temp) {
   const std::string host = "-" + HostName() + "-";
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(temp, ec)) {
-    const std::string name = entry.path().filename().string();
+    const std::string name(WithoutRemovingSuffix(entry.path().filename().string()));
     const std::size_t at = name.find(host);
     if (name.rfind("dvpr-rank", 0) != 0 || at == std::string::npos) continue;
     const std::string rank = name.substr(9, at - 9), pid = name.substr(at + host.size());

@@ -37,12 +37,13 @@ bool IsEmptyFolder(const fs::path& dir) {
   return fs::directory_iterator(dir) == fs::directory_iterator();
 }
 
-// A temporary folder whose process is gone (killed by SIGKILL, a crash) is no one's: remove it.
+// A temporary folder whose process is gone (killed by SIGKILL, a crash) is no one's: remove it,
+// also when the kill came while the cleanup removed it (kRemovingSuffix).
 void RemoveStaleTemporaries(const fs::path& target) {
   const std::string prefix = TemporaryPrefix(target);
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(target.parent_path(), ec)) {
-    const std::string name = entry.path().filename().string();
+    const std::string name(WithoutRemovingSuffix(entry.path().filename().string()));
     if (name.rfind(prefix, 0) != 0) continue;
     const std::string digits = name.substr(prefix.size());
     if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) continue;

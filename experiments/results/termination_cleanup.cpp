@@ -52,7 +52,7 @@ void RemoveAll(const std::filesystem::path& dir, int attempts) {
 // removes. A folder made again under the old path meanwhile (create_directories) goes last.
 void RemoveFolder(const std::filesystem::path& dir) {
   std::filesystem::path away = dir;
-  away += ".removing";
+  away += kRemovingSuffix;
   std::error_code ec;
   std::filesystem::rename(dir, away, ec);
   if (!ec) RemoveAll(away, 100);

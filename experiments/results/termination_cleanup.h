@@ -7,6 +7,7 @@
 // SIGKILL cannot be caught: what it leaves behind, the next run removes (result_folder.h).
 #include <filesystem>
 #include <functional>
+#include <string_view>
 #include <system_error>
 
 namespace dvpr {
@@ -18,6 +19,14 @@ namespace dvpr {
 // exist. Returns false, with `ec` set, if `dir` could not be made; it stays registered then.
 // Call before the threads that write into `dir` start.
 bool CreateRemovedOnTermination(const std::filesystem::path& dir, std::error_code& ec);
+
+// The cleanup renames a folder to its name + this suffix before removing it, so a SIGKILL during
+// the removal leaves it under that name. The sweeps for dead processes' folders (result_folder.cpp,
+// mpi_run_distributor.cpp) read the owner's pid from the name without it.
+inline constexpr std::string_view kRemovingSuffix = ".removing";
+inline std::string_view WithoutRemovingSuffix(std::string_view name) {
+  return name.ends_with(kRemovingSuffix) ? name.substr(0, name.size() - kRemovingSuffix.size()) : name;
+}
 
 // Forgets `dir` (committed, or already removed).
 void KeepOnTermination(const std::filesystem::path& dir);

@@ -7,15 +7,26 @@ same-folder: tests/mpi/mpi_sweep.yaml run by one process, by 2 and by 3 MPI rank
 fail-input / fail-internal / die: tests/app/mpi_fault_sweep.cpp under 3 ranks with one run
   failing on a known rank (spec i runs on rank i mod 3): a std::runtime_error (exit 1), a
   std::logic_error (exit 3), or the rank killed (SIGKILL). The error names the run and the rank,
-  mpirun ends (a hang would trip ctest's timeout), and neither the result folder nor a temporary
-  folder is left (but for a killed rank's run folder, which the next job removes).
+  mpirun ends (a hang would trip ctest's timeout), the result folder is not written, and nothing
+  is left once the next job on this machine has started.
+
+  Open MPI ends the other ranks of a failed job with SIGCONT, a wait, SIGTERM (on which a rank
+  removes its run folder, and rank 0 its temporary result folder), a wait, SIGKILL; the waits
+  are fixed (odls_base_sigkill_timeout, 1 s), so on a loaded machine a rank may be killed before
+  its cleanup ends. The test does not bet on that window: it waits until every rank process is
+  gone (this script adopts and reaps them), accepts as leftovers only folders of those dead
+  processes, of the two kinds the next job removes, and checks that the next job removes them.
+  It prints how many ranks cleaned up on SIGTERM.
 
 Usage: test_mpi_sweep.py MODE MPIRUN DVPR FAULT_SWEEP SOURCE_DIR WORK_DIR
 """
+import ctypes
+import errno
 import os
 import pathlib
 import re
 import shutil
+import socket
 import subprocess
 import sys
 
@@ -32,13 +43,39 @@ def mpirun(ranks, *command):
                ASAN_OPTIONS="detect_leaks=0",
                # No ptrace-based single copy in a container; no network beyond loopback.
                OMPI_MCA_btl="self,vader", OMPI_MCA_btl_vader_single_copy_mechanism="none",
-               OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_hwloc_base_binding_policy="none",
-               # Ending a failed job, Open MPI sends the other ranks SIGCONT, waits, SIGTERM (on
-               # which each removes its run folder), waits, SIGKILL: 3 s, not 1, for each wait,
-               # so that an ASan build on a loaded 2-core machine has time to clean up.
-               OMPI_MCA_odls_base_sigkill_timeout="3")
+               OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_hwloc_base_binding_policy="none")
     cmd = [MPIRUN, "--allow-run-as-root", "-n", str(ranks), *command]
-    return subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=300)
+    proc = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=300)
+    reap_ranks()
+    return proc
+
+
+def adopt_orphans():
+    """Makes this script the subreaper of what it starts: a rank that outlives mpirun (Open MPI
+    marks the ranks it SIGKILLs as ended without waiting for them) becomes its child."""
+    PR_SET_CHILD_SUBREAPER = 36
+    libc = ctypes.CDLL(None, use_errno=True)
+    if libc.prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0) != 0:
+        sys.exit(f"FAIL: prctl(PR_SET_CHILD_SUBREAPER): {os.strerror(ctypes.get_errno())}")
+
+
+def reap_ranks():
+    """Waits until every rank process has ended and is reaped: the event the leftover checks
+    need (a dead rank's folders are its to remove no more, and the next job removes them only
+    once its process is gone). A rank that never ends trips ctest's timeout."""
+    while True:
+        try:
+            os.waitpid(-1, 0)
+        except ChildProcessError:
+            return
+
+
+def process_gone(pid):
+    try:
+        os.kill(pid, 0)
+    except OSError as e:
+        return e.errno == errno.ESRCH
+    return False
 
 
 def check(condition, message, proc=None):
@@ -94,22 +131,46 @@ def failing(mode, index, status):
               f"the error does not name rank {rank} and the failed run", proc)
         check(proc.stderr.count("injected failure") == 1, "the error reported more than once", proc)
     check(not out.exists(), "the result folder was written although a run failed", proc)
-    check(sorted(p.name for p in WORK.iterdir() if p.name.startswith(".")) == [],
-          "a temporary result folder was left beside the output", proc)
+    # What a rank ended by SIGKILL leaves: its run folder in TMPDIR ("dvpr-rank<r>-<host>-<pid>",
+    # never rank 0's, which has none) and, for rank 0, the temporary result folder beside the
+    # output (".out.tmp-<pid>"); either with ".removing" when the kill came during its SIGTERM
+    # cleanup, which renames a folder before it removes it. Rank 0 reports a failure itself after
+    # its cleanup, so the latter only when Open MPI ended it (die). The killed rank of die is
+    # always among them.
+    host = socket.gethostname()
+    run_folder = re.compile(rf"dvpr-rank([12])-{re.escape(host)}-(\d+)(\.removing)?")
     left = sorted(p.name for p in TMP.iterdir())
-    if status is None:
-        # SIGKILL leaves the killed rank's run folder; the next job's rank 0 removes it.
-        check(len(left) <= 1 and all(n.startswith(f"dvpr-rank{rank}-") for n in left),
-              f"left in TMPDIR: {left}", proc)
-        # One rank: rank 0 makes no run folder of its own, so what is left is the killed one's.
-        again = mpirun(1, FAULT, str(CONFIG), str(out), "0", "input")
-        check(again.returncode == 1 and not any(TMP.iterdir()),
-              f"the next job did not remove the killed rank's run folder: {list(TMP.iterdir())}", again)
-    else:
-        check(not left, f"left in TMPDIR: {left}", proc)
+    for name in left:
+        m = run_folder.fullmatch(name)
+        check(m is not None and process_gone(int(m.group(2))),
+              f"left in TMPDIR: {name} (not the run folder of a rank that has ended)", proc)
+    beside = sorted(p.name for p in WORK.iterdir() if p.name.startswith("."))
+    for name in beside:
+        m = re.fullmatch(r"\.out\.tmp-(\d+)(\.removing)?", name)
+        check(status is None and m is not None and process_gone(int(m.group(1))),
+              f"left beside the output: {name} (not the temporary folder of a rank 0 Open MPI ended)", proc)
+    # Open MPI ends the two ranks that did not fail. Rank 0, when it failed or reported the
+    # failure, cleaned up itself before it aborted the job.
+    if status is None:  # die: ranks 0 and 2 were ended; the killed rank 1 left its run folder
+        check(any(run_folder.fullmatch(n).group(1) == str(rank) for n in left),
+              f"the killed rank {rank} left no run folder: {left}", proc)
+        cleaned = (1 - (len(left) - 1)) + (1 - len(beside))
+    else:  # ranks 1 and 2 were ended
+        cleaned = 2 - len(left)
+    # The next job on this machine (one rank, which makes no run folder of its own and fails
+    # before it writes) removes what dead ranks left.
+    again = mpirun(1, FAULT, str(CONFIG), str(out), "0", "input")
+    check(again.returncode == 1, "the next job did not fail as it should", again)
+    check(not any(TMP.iterdir()), f"the next job did not remove the dead ranks' run folders: "
+          f"{sorted(p.name for p in TMP.iterdir())}", again)
+    check(sorted(p.name for p in WORK.iterdir() if p.name.startswith(".")) == [],
+          "the next job did not remove the dead rank 0's temporary result folder", again)
+    print(f"ranks Open MPI ended that cleaned up on SIGTERM: {cleaned} of 2; "
+          f"left for the next job: {left + beside}")
     print(f"{mode} on rank {rank}: exit {proc.returncode}, nothing written")
 
 
+adopt_orphans()
 shutil.rmtree(WORK, ignore_errors=True)
 TMP.mkdir(parents=True)
 if MODE == "same-folder":

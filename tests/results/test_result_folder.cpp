@@ -160,17 +160,21 @@ TEST_F(ResultFolderTest, TemporaryFoldersOfDeadProcessesAreRemovedLiveOnesKept) 
   const fs::path live = TemporaryFolderFor(root_ / "out", ::getppid());
   const fs::path other = root_ / ".out.tmp-notapid";
   const fs::path unrelated = TemporaryFolderFor(root_ / "other", DeadPid());
-  for (const fs::path& p : {dead, live, other, unrelated}) {
+  // Killed while its termination cleanup removed the folder (renamed first, then removed).
+  const fs::path dead_removing = TemporaryFolderFor(root_ / "out", DeadPid()).string() + ".removing";
+  const fs::path live_removing = live.string() + ".removing";
+  for (const fs::path& p : {dead, live, other, unrelated, dead_removing, live_removing}) {
     fs::create_directories(p);
     Write(p / "runs.csv", "partial");
   }
   {
     ResultFolder folder(root_ / "out");
     EXPECT_FALSE(fs::exists(dead));
+    EXPECT_FALSE(fs::exists(dead_removing));
     folder.Commit();
   }
   std::vector<std::string> want = {"out", live.filename().string(), other.filename().string(),
-                                   unrelated.filename().string()};
+                                   unrelated.filename().string(), live_removing.filename().string()};
   std::sort(want.begin(), want.end());
   EXPECT_EQ(Names(root_), want);
 }
