@@ -16,6 +16,7 @@
 
 #include "agents/bow_vector.h"
 #include "agents/ids.h"
+#include "agents/index.h"
 
 namespace dvpr {
 
@@ -25,19 +26,20 @@ struct BowIndexMatch {
   double score = 0.0;
 };
 
-struct BowSearchResult {
-  std::optional<BowIndexMatch> best;
-  std::int64_t comparisons = 0;  // postings visited outside the window: what the search cost
-};
+// comparisons: postings visited outside the window (what the search cost).
+using BowSearchResult = SearchResult<BowIndexMatch>;
 
-class BowIndex {
+class BowIndex final : public Index<const BowVector&, BowIndexMatch> {
  public:
+  // Sparse: a part's entries name their words.
+  int dim() const override { return 0; }
+  // Parts stored (one a frame).
+  std::size_t size() const override { return observer_.size(); }
   // Keeps `part` of `frame`, observed by `robot`. A frame already stored is kept once (a
   // duplicated message on a real network adds nothing).
-  void Add(RobotId robot, FrameId frame, const BowVector& part);
-  BowSearchResult Search(const BowVector& part, FrameId query, int window) const;
+  void Add(RobotId robot, FrameId frame, const BowVector& part) override;
+  BowSearchResult Search(const BowVector& part, FrameId query, int window) const override;
 
-  std::int64_t parts() const { return static_cast<std::int64_t>(observer_.size()); }
   std::int64_t postings() const { return postings_count_; }
 
  private:

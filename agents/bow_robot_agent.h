@@ -1,7 +1,9 @@
 #pragma once
 // One robot of a bag-of-words team (docs/bow.md): the distributed inverted index of Cieslewski
-// and Scaramuzza (ICRA 2017) as messages, built like RobotAgent (the same Transport, QueryRecord,
-// RobotLoad, FIFO task queue, service-time model and verification exchange).
+// and Scaramuzza (ICRA 2017) as messages. What every robot does (frame clock, FIFO task queue and
+// service-time model, replies, verification exchange, dropout) is AgentCore's and TaskServer's,
+// as for RobotAgent; this class keeps how a frame becomes parts, how a part is scored and how
+// the answers vote.
 //
 // Per frame it takes, the robot splits its L1-normalised BoW vector by word owner
 // (BowTeamPlan::words), publishes one bow_query_t to each other owner of a non-empty part
@@ -22,19 +24,16 @@
 // Service time: params.service.fixed + per_comparison x the postings visited (the BoW
 // counterpart of the descriptors compared; RobotLoad::comparisons counts them).
 #include <cstdint>
-#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "agents/agent_params.h"
+#include "agents/agent_core.h"
 #include "agents/bow_index.h"
 #include "agents/bow_vector.h"
 #include "agents/bow_words.h"
-#include "agents/frame_stream.h"
-#include "agents/geometric_verifier.h"
-#include "agents/team_agent.h"
+#include "agents/task_server.h"
 #include "agents/transport.h"
 
 namespace dvpr {
@@ -47,69 +46,44 @@ struct BowTeamPlan {
   bool broadcast() const { return words == nullptr; }
 };
 
-class BowRobotAgent final : public TeamAgent {
+// What a queued search of a part holds.
+struct BowSearch {
+  BowVector part;
+};
+
+class BowRobotAgent final : public TaskServer<BowSearch> {
  public:
-  // `frames` gives when the robot takes which frames (its descriptors are not used);
-  // `vectors` holds every frame of the sequence (read when a frame is taken and for the
-  // verification payload) and outlives the agent.
-  BowRobotAgent(RobotId id, const AgentParams& params, Transport& transport, BowTeamPlan plan, FrameStream frames,
-                const std::vector<BowVector>& vectors, GeometricVerifier verifier);
-  BowRobotAgent(const BowRobotAgent&) = delete;
-  BowRobotAgent& operator=(const BowRobotAgent&) = delete;
+  // `setup.frames` gives when the robot takes which frames (its descriptors are not used) and
+  // setup.robots must be plan.robots; `vectors` holds every frame of the sequence (read when a
+  // frame is taken and for the verification payload) and outlives the agent.
+  BowRobotAgent(const AgentSetup& setup, Transport& transport, BowTeamPlan plan, const std::vector<BowVector>& vectors,
+                GeometricVerifier verifier);
 
   void Start() override;
   static std::vector<std::string> InboxChannels(RobotId id);
   std::vector<std::string> Inbox() const override { return InboxChannels(id_); }
-  void GoOffline() override;
 
-  RobotId id() const override { return id_; }
-  const std::vector<QueryRecord>& outcomes() const override { return outcomes_; }
-  RobotLoad load() const override;
   const BowIndex& index() const { return index_; }
 
  private:
-  struct Task {
-    enum class Kind { kSearch, kVerify } kind = Kind::kSearch;
-    RobotId querier;
-    FrameId frame;
-    BowVector part;       // kSearch
-    bool store = false;   // kSearch: keep the part after scoring it
-    FrameId match_frame;  // kVerify
-  };
-  struct Answers {        // per own frame, while its replies come in
-    std::vector<std::int16_t> responders;
-    std::vector<PartialMatch> matches;
-  };
+  void TakeFrame(int k) override;
+  std::span<const float> VerificationFeatures(FrameId frame) override;
+  void Conclude(int k) override;
+  std::int64_t Stored() const override { return static_cast<std::int64_t>(index_.size()); }
+  std::int64_t Search(Task& task) override;
+  void Searched(const Task& task) override;
 
-  void TakeFrame(int k);
   void PublishParts(FrameId frame, const std::vector<BowVector>& parts, bool broadcast, const BowVector& whole);
-  void Enqueue(Task task);
-  void StartNextTask();
-  void ServeSearch(Task task);
-  void ServeVerify(Task task);
   void OnQuery(const bow_query_t& q, bool store);
   void OnMatch(const bow_match_t& m);
-  void OnVerifyRequest(const verify_request_t& r);
-  void OnVerifyResult(const verify_result_t& r);
   void RecordAnswer(FrameId frame, RobotId responder, const std::optional<BowIndexMatch>& match);
-  void MaybeVerify(int k);
-  int LocalIndexOf(FrameId frame) const;
 
-  RobotId id_;
-  AgentParams params_;
-  Transport& transport_;
+  std::optional<BowIndexMatch> service_best_;  // its search's result, sent when the service ends
   BowTeamPlan plan_;
-  FrameStream frames_;
   const std::vector<BowVector>& vectors_;
-  GeometricVerifier verifier_;
   BowIndex index_;
-  std::vector<QueryRecord> outcomes_;
-  std::vector<Answers> answers_;
-  RobotLoad load_;
-  std::deque<Task> queue_;
-  bool busy_ = false;
-  bool online_ = true;
-  std::vector<Subscription> subscriptions_;
+  std::vector<std::vector<PartialMatch>> answers_;  // per own frame, while its replies come in
+  std::vector<float> features_;                     // VerificationFeatures' buffer
 };
 
 }  // namespace dvpr

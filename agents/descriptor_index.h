@@ -21,13 +21,9 @@
 #include "agents/descriptors.h"
 #include "agents/half_screen.h"
 #include "agents/ids.h"
+#include "agents/index.h"
 
 namespace dvpr {
-
-struct IndexEntry {
-  RobotId robot;  // robot that observed the frame
-  FrameId frame;  // frame index in the full sequence
-};
 
 struct IndexMatch {
   RobotId robot;
@@ -35,24 +31,23 @@ struct IndexMatch {
   float distance = 0.0f;  // squared L2
 };
 
-struct IndexSearchResult {
-  std::optional<IndexMatch> best;  // none when nothing lies outside the window
-  std::int64_t comparisons = 0;    // descriptors compared (the service-time cost)
-};
+// comparisons: descriptors compared (the service-time cost); best: none when nothing lies outside
+// the window.
+using IndexSearchResult = SearchResult<IndexMatch>;
 
-class IncrementalIndex {
+class IncrementalIndex final : public Index<const float*, IndexMatch> {
  public:
   explicit IncrementalIndex(int dim);
 
-  int dim() const { return dim_; }
-  std::size_t size() const { return entries_.size(); }
+  int dim() const override { return dim_; }
+  std::size_t size() const override { return entries_.size(); }
 
-  void Add(RobotId robot, FrameId frame, const float* descriptor);
+  void Add(RobotId robot, FrameId frame, const float* descriptor) override;
 
   // Best stored entry whose frame is more than `window` frames from
   // query_frame; ties go to the entry added first. Every stored entry counts
   // as a comparison (the model's cost, however few rows the search reads).
-  IndexSearchResult Search(const float* query, FrameId query_frame, int window) const;
+  IndexSearchResult Search(const float* query, FrameId query_frame, int window) const override;
   // The same answer from the full matrix-vector product over every row: the
   // definition Search is tested against, and the benchmarks' baseline.
   IndexSearchResult SearchFullScan(const float* query, FrameId query_frame, int window) const;

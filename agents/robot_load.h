@@ -15,6 +15,9 @@ struct RobotLoad {
   std::int64_t verifications = 0;
   SimTime busy;                            // total service time
   std::int64_t max_queue = 0;              // longest wait line seen (the task in service excluded)
+  // Messages ignored for naming a robot outside the team (a real network's garbage or another
+  // team's traffic; none in a simulation).
+  std::int64_t foreign_ids = 0;
 };
 
 }  // namespace dvpr

@@ -8,6 +8,7 @@
 
 #include "agents/failure_detector.h"
 #include "agents/ids.h"
+#include "agents/index.h"
 #include "agents/query_record.h"
 #include "agents/robot_load.h"
 
@@ -32,6 +33,10 @@ class TeamAgent {
   virtual RobotLoad load() const = 0;
   // The robots this agent declared lost (failover), in order of detection.
   virtual std::vector<LostRobot> Lost() const { return {}; }
+  // The frames whose whole vector this agent stores, as another robot would hold a copy of one
+  // (replication: what a dropout loses). None for an agent that keeps only parts of vectors
+  // (BoW: no other robot holds the same part).
+  virtual std::vector<IndexEntry> WholeFramesStored() const { return {}; }
 };
 
 }  // namespace dvpr

@@ -114,8 +114,9 @@ struct IdealTeam {
     for (int r = 0; r < robots; ++r) {
       transports.push_back(std::make_unique<SimTransport>(network, NodeId(r)));
       FrameStream frames = streams.empty() ? FrameStream{&x, FrameId(0), 0, 10.0} : streams[static_cast<std::size_t>(r)];
-      agents.push_back(std::make_unique<RobotAgent>(RobotId(r), Instant(), *transports.back(), routing.MakeAgentRouting(),
-                                                    frames, [](FrameId, FrameId) { return VerifyVerdict{}; }));
+      agents.push_back(std::make_unique<RobotAgent>(AgentSetup{RobotId(r), robots, Instant(), frames}, *transports.back(),
+                                                    routing.MakeAgentRouting(),
+                                                    [](FrameId, FrameId) { return VerifyVerdict{}; }));
     }
   }
   void Watch(const std::string& channel) {

@@ -36,7 +36,7 @@ TEST(BowIndex, ScoresTheSumOfSharedMinimaAndBreaksTiesToTheLowerFrame) {
   index.Add(RobotId(1), FrameId(10), {{1, 0.25f}, {2, 0.5f}});
   index.Add(RobotId(2), FrameId(20), {{2, 0.25f}, {3, 0.25f}});
   index.Add(RobotId(0), FrameId(30), {{1, 0.125f}, {3, 0.5f}});
-  EXPECT_EQ(index.parts(), 3);
+  EXPECT_EQ(index.size(), 3u);
   EXPECT_EQ(index.postings(), 6);
   const BowVector query{{1, 0.5f}, {2, 0.125f}, {3, 0.25f}};
   const BowSearchResult r = index.Search(query, FrameId(25), 0);
@@ -72,7 +72,7 @@ TEST(BowIndex, HighestScoreWinsAndADuplicateIsStoredOnce) {
   index.Add(RobotId(0), FrameId(1), {{7, 0.25f}});
   index.Add(RobotId(1), FrameId(2), {{7, 0.5f}});
   index.Add(RobotId(1), FrameId(2), {{7, 0.5f}});
-  EXPECT_EQ(index.parts(), 2);
+  EXPECT_EQ(index.size(), 2u);
   EXPECT_EQ(index.postings(), 2);
   const BowSearchResult r = index.Search({{7, 0.75f}}, FrameId(100), 0);
   ASSERT_TRUE(r.best);
@@ -159,9 +159,8 @@ class ThreeRobotBowTeam : public ::testing::Test {
     const GeometricVerifier verifier = [](FrameId, FrameId match) { return VerifyVerdict{match == FrameId(4), 0}; };
     for (int r = 0; r < 3; ++r) {
       transports_.push_back(std::make_unique<SimTransport>(*network_, NodeId(r)));
-      agents_.push_back(std::make_unique<BowRobotAgent>(RobotId(r), params, *transports_.back(), plan,
-                                                        FrameStream{nullptr, FrameId(2 * r), 2, 1.0}, vectors_,
-                                                        verifier));
+      const AgentSetup setup{RobotId(r), 3, params, FrameStream{nullptr, FrameId(2 * r), 2, 1.0}};
+      agents_.push_back(std::make_unique<BowRobotAgent>(setup, *transports_.back(), plan, vectors_, verifier));
     }
     for (auto& a : agents_) a->Start();
     sim_.Run();
@@ -322,8 +321,10 @@ TEST(BowRobotAgent, AFrameWithoutWordsIsStillAQuery) {
   const std::vector<BowVector> vectors{{}, {{1, 1.0f}}};
   const BowTeamPlan plan{2, std::make_shared<const WordOwners>(WordOwners::Modulo(2, 2))};
   const GeometricVerifier verifier = [](FrameId, FrameId) { return VerifyVerdict{}; };
-  BowRobotAgent a0(RobotId(0), AgentParams{}, t0, plan, FrameStream{nullptr, FrameId(0), 1, 10.0}, vectors, verifier);
-  BowRobotAgent a1(RobotId(1), AgentParams{}, t1, plan, FrameStream{nullptr, FrameId(1), 1, 10.0}, vectors, verifier);
+  BowRobotAgent a0(AgentSetup{RobotId(0), 2, AgentParams{}, FrameStream{nullptr, FrameId(0), 1, 10.0}}, t0, plan, vectors,
+                   verifier);
+  BowRobotAgent a1(AgentSetup{RobotId(1), 2, AgentParams{}, FrameStream{nullptr, FrameId(1), 1, 10.0}}, t1, plan, vectors,
+                   verifier);
   a0.Start();
   a1.Start();
   sim.Run();

@@ -38,8 +38,8 @@ TEST(MessageTimes, UtimeIsStartPlusSendTimeAndQueriesCarryTheirCaptureTime) {
   const std::vector<FrameStream> streams{{&x, FrameId(0), 3, 4.0}, {&x, FrameId(3), 1, 4.0}};
   for (int r = 0; r < 2; ++r) {
     transports.push_back(std::make_unique<SimTransport>(network, NodeId(r), kStart));
-    agents.push_back(std::make_unique<RobotAgent>(RobotId(r), params, *transports.back(), routing.MakeAgentRouting(),
-                                                  streams[static_cast<std::size_t>(r)],
+    agents.push_back(std::make_unique<RobotAgent>(AgentSetup{RobotId(r), 2, params, streams[static_cast<std::size_t>(r)]},
+                                                  *transports.back(), routing.MakeAgentRouting(),
                                                   [](FrameId, FrameId) { return VerifyVerdict{}; }));
   }
   std::vector<query_t> queries;

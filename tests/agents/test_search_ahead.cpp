@@ -13,24 +13,13 @@
 #include "agents/sim_transport.h"
 #include "net_models/ideal_link.h"
 #include "sim/simulator.h"
+#include "tests/agents/fixed_plan.h"
 #include "tests/descriptor_support.h"
 
 namespace dvpr {
 namespace {
 
-// The same plan for every frame; stores into the robot's own index.
-class FixedPlan final : public AgentRouting {
- public:
-  explicit FixedPlan(QueryPlan plan) : plan_(std::move(plan)) {}
-  void Start(const AgentContext& robot) override { store_ = &robot.store; }
-  void Stop() override {}
-  QueryPlan Plan(const float*) const override { return plan_; }
-  void Store(RobotId querier, FrameId frame, const float* descriptor) override { store_->Add(querier, frame, descriptor); }
-
- private:
-  QueryPlan plan_;
-  IncrementalIndex* store_ = nullptr;
-};
+using testing_support::FixedPlan;
 
 // Ideal network (delivery at the instant of sending), 1 ms per search, 1-D descriptors.
 // Robot 0 takes frames 0, 1, 2 (values 11, 11, 21) at 0, 0.25 and 0.5 ms and asks robot 1 to
@@ -59,9 +48,8 @@ TEST(SearchAhead, AStoreBeforeAQueuedQueryIsServedCountsForIt) {
   const std::vector<FrameStream> streams{{&x, FrameId(0), 3, 4000.0}, {&x, FrameId(3), 2, 500.0}};
   for (int r = 0; r < 2; ++r) {
     transports.push_back(std::make_unique<SimTransport>(network, NodeId(r)));
-    agents.push_back(std::make_unique<RobotAgent>(RobotId(r), params, *transports.back(),
-                                                  std::make_unique<FixedPlan>(r == 0 ? ask : keep),
-                                                  streams[static_cast<std::size_t>(r)],
+    agents.push_back(std::make_unique<RobotAgent>(AgentSetup{RobotId(r), 2, params, streams[static_cast<std::size_t>(r)]},
+                                                  *transports.back(), std::make_unique<FixedPlan>(r == 0 ? ask : keep),
                                                   [](FrameId, FrameId) { return VerifyVerdict{}; }));
   }
   for (auto& a : agents) a->Start();

@@ -398,11 +398,12 @@ std::unique_ptr<TeamAgent> MakeAgent(const AgentProcessOptions& o, const Team& t
   const FrameStream frames{&data.descriptors, range.begin, range.size(), data.fps};
   GeometricVerifier verifier = PoseOracle(data.trajectory.positions, t.config.evaluation.radius_m);
   if (t.routing.bow_team) {
-    return std::make_unique<BowRobotAgent>(RobotId(o.robot), t.config.agent, transport, *t.routing.bow_team, frames,
-                                           t.inputs.bow.frames, std::move(verifier));
+    const AgentSetup setup{RobotId(o.robot), t.routing.bow_team->robots, t.config.agent, frames};
+    return std::make_unique<BowRobotAgent>(setup, transport, *t.routing.bow_team, t.inputs.bow.frames,
+                                           std::move(verifier));
   }
-  return std::make_unique<RobotAgent>(RobotId(o.robot), t.config.agent, transport, t.routing.team->MakeAgentRouting(),
-                                      frames, std::move(verifier));
+  const AgentSetup setup{RobotId(o.robot), t.routing.team->num_robots(), t.config.agent, frames};
+  return std::make_unique<RobotAgent>(setup, transport, t.routing.team->MakeAgentRouting(), std::move(verifier));
 }
 
 // `dropout:` in a real team: the robot's process kills itself at that agent time, as the

@@ -73,13 +73,11 @@ bool IsDropped(const SimRunParams& params, int robot) {
   return false;
 }
 
-// The (robot that saw it, frame) of every descriptor an agent stores; a BoW agent keeps parts of
-// vectors, none of which another robot holds a copy of (no replication): none listed.
+// The (robot that saw it, frame) of every descriptor an agent stores whole
+// (TeamAgent::WholeFramesStored: a BoW agent lists none).
 std::vector<std::pair<int, int>> StoredCopies(const TeamAgent& agent) {
   std::vector<std::pair<int, int>> out;
-  if (const auto* robot = dynamic_cast<const RobotAgent*>(&agent)) {
-    for (const IndexEntry& e : robot->index().entries()) out.emplace_back(e.robot.value, e.frame.value);
-  }
+  for (const IndexEntry& e : agent.WholeFramesStored()) out.emplace_back(e.robot.value, e.frame.value);
   return out;
 }
 
@@ -181,7 +179,8 @@ SimRunLog RunSimulation(const Dataset& data, const TeamRouting& routing, const S
   }
   return RunTeam(data, params, [&](RobotId r, Transport& transport, const FrameStream& frames,
                                    const GeometricVerifier& verifier) -> std::unique_ptr<TeamAgent> {
-    return std::make_unique<RobotAgent>(r, params.agent, transport, routing.MakeAgentRouting(), frames, verifier);
+    return std::make_unique<RobotAgent>(AgentSetup{r, params.robots, params.agent, frames}, transport,
+                                        routing.MakeAgentRouting(), verifier);
   });
 }
 
@@ -198,7 +197,8 @@ SimRunLog RunBowSimulation(const Dataset& data, const std::vector<BowVector>& ve
   }
   return RunTeam(data, params, [&](RobotId r, Transport& transport, const FrameStream& frames,
                                    const GeometricVerifier& verifier) -> std::unique_ptr<TeamAgent> {
-    return std::make_unique<BowRobotAgent>(r, params.agent, transport, plan, frames, vectors, verifier);
+    return std::make_unique<BowRobotAgent>(AgentSetup{r, params.robots, params.agent, frames}, transport, plan, vectors,
+                                           verifier);
   });
 }
 

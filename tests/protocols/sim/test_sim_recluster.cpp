@@ -66,8 +66,8 @@ struct Team {
       transports.push_back(std::make_unique<SimTransport>(*network, NodeId(r)));
       auto component = std::make_unique<ReclusterAgentRouting>(routing.plan());
       routings.push_back(component.get());
-      agents.push_back(std::make_unique<RobotAgent>(RobotId(r), agent, *transports.back(), std::move(component),
-                                                    FrameStream{&x, range.begin, range.size(), 10.0},
+      const AgentSetup setup{RobotId(r), n, agent, FrameStream{&x, range.begin, range.size(), 10.0}};
+      agents.push_back(std::make_unique<RobotAgent>(setup, *transports.back(), std::move(component),
                                                     [](FrameId, FrameId) { return VerifyVerdict{}; }));
     }
     for (auto& a : agents) a->Start();
