@@ -12,6 +12,7 @@
 #include "experiments/config/config.h"
 #include "experiments/config/option_reader.h"
 #include "experiments/app/experiment.h"
+#include "experiments/app/plot_command.h"
 #include "experiments/app/run_on_ranks.h"
 #include "experiments/arch/dispatch.h"
 #include "experiments/figures/figures.h"
@@ -150,11 +151,7 @@ int Plot(const std::vector<std::string>& args, std::ostream& out, std::ostream& 
     err << "dvpr plot: expected one folder (see dvpr --help)\n";
     return kExitUsage;
   }
-  const std::filesystem::path dir = args[1];
-  if (!std::filesystem::exists(dir / "runs.csv")) {
-    throw std::runtime_error(dir.string() + ": no runs.csv (is this a dvpr run folder?)");
-  }
-  for (const auto& png : DrawFigures(dir, err)) out << png.string() << "\n";
+  for (const auto& png : PlotFolder(args[1], err)) out << png.string() << "\n";
   return kExitOk;
 }
 

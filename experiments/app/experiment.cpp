@@ -35,27 +35,27 @@ void CheckProtocolsAvailable(const ExperimentConfig& config, const std::string& 
 
 // The row files, open as temporaries until every run has been written.
 struct RowFiles {
-  RowFiles(const std::filesystem::path& dir, const OutputsConfig& outputs, bool dropouts, bool bow_strategies)
-      : runs(dir / "runs.csv"), per_robot(dir / "per_robot.csv"), links(dir / "links.csv") {
+  RowFiles(const OutputDir& dir, const OutputsConfig& outputs, bool dropouts, bool bow_strategies)
+      : runs(dir, "runs.csv"), per_robot(dir, "per_robot.csv"), links(dir, "links.csv") {
     runs.stream() << kRunsHeader << '\n';
     per_robot.stream() << kPerRobotHeader << '\n';
     links.stream() << kLinksHeader << '\n';
     if (outputs.queries) {
-      queries.emplace(dir / "queries.csv");
+      queries.emplace(dir, "queries.csv");
       queries->stream() << kQueriesHeader << '\n';
     }
     if (outputs.messages) {
-      messages.emplace(dir / "messages.csv");
+      messages.emplace(dir, "messages.csv");
       messages->stream() << kMessagesHeader << '\n';
     }
     if (dropouts) {
-      failover.emplace(dir / "failover.csv");
+      failover.emplace(dir, "failover.csv");
       failover->stream() << kFailoverHeader << '\n';
     }
     if (bow_strategies) {
-      bow.emplace(dir / "bow.csv");
+      bow.emplace(dir, "bow.csv");
       bow->stream() << kBowHeader << '\n';
-      bow_sizes.emplace(dir / "bow_sizes.csv");
+      bow_sizes.emplace(dir, "bow_sizes.csv");
       bow_sizes->stream() << kBowSizesHeader << '\n';
     }
   }
@@ -114,12 +114,12 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
   ResultFolder folder(out_dir);
   const std::filesystem::path dir = folder.dir();
   inputs.out_dir = dir;
-  WriteFileAtomic(dir / "config.yaml", EmitConfig(config));
+  WriteFileAt(folder.output(), "config.yaml", EmitConfig(config));
   // failover.csv only with failover on: a config with a dropout alone (tests/golden) writes what it
   // always wrote.
   const bool bow = std::any_of(config.sweep.strategies.begin(), config.sweep.strategies.end(),
                                [](const StrategySpec& s) { return s.bag_of_words(); });
-  RowFiles files(dir, config.outputs, !config.dropout.empty() && config.failover.enabled, bow);
+  RowFiles files(folder.output(), config.outputs, !config.dropout.empty() && config.failover.enabled, bow);
   std::vector<RunResult> rows;
   std::vector<PrCurve> curves;
   RunSweep(inputs, protocols, options, [&](const RunSpec&, RunOutput&& out) {
@@ -128,7 +128,7 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
     for (auto& c : out.curves) curves.push_back(std::move(c));
   });
   files.Commit();
-  WriteFileAtomic(dir / "summary.json", SummaryJson(rows));
+  WriteFileAt(folder.output(), "summary.json", SummaryJson(rows));
   if (config.outputs.figures) {
     WriteFigureData(dir, FigureData{&inputs.deployment.descriptors, &inputs.training, &curves,
                                     config.evaluation.suppression_frames});

@@ -262,15 +262,20 @@ std::filesystem::path TempPathNextTo(const std::filesystem::path& path) {
 
 }  // namespace
 
+std::string NpyBytes(const DescriptorMatrix& m) {
+  std::string bytes = NpyHeaderBytes(m.rows(), m.cols());
+  const char* data = reinterpret_cast<const char*>(m.data());
+  bytes.append(data, static_cast<std::size_t>(m.size()) * sizeof(float));
+  return bytes;
+}
+
 void WriteNpy(const std::filesystem::path& path, const DescriptorMatrix& m) {
   const std::filesystem::path tmp = TempPathNextTo(path);
   try {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) Fail(path, "cannot open temporary file " + tmp.string() + " for writing");
-    const std::string header = NpyHeaderBytes(m.rows(), m.cols());
-    out.write(header.data(), static_cast<std::streamsize>(header.size()));
-    out.write(reinterpret_cast<const char*>(m.data()),
-              static_cast<std::streamsize>(m.size() * static_cast<Eigen::Index>(sizeof(float))));
+    const std::string bytes = NpyBytes(m);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     out.close();
     if (!out) Fail(path, "write error on temporary file " + tmp.string());
     std::filesystem::rename(tmp, path);

@@ -1,6 +1,7 @@
 #pragma once
 // NumPy .npy files for descriptor and centroid matrices (the format numpy.save writes).
 #include <filesystem>
+#include <string>
 
 #include "agents/descriptors.h"
 
@@ -12,9 +13,13 @@ namespace dvpr {
 // unsupported dtype, truncated data).
 DescriptorMatrix ReadNpyMatrix(const std::filesystem::path& path);
 
-// Writes `m` as float32, C order, format version 1.0, byte-identical to numpy.save (numpy >= 1.24
-// header padding). Atomic: the bytes go to a temporary file in the same directory, which is then
-// renamed over `path`, so readers never see a half-written file.
+// The bytes of `m` as a .npy file: float32, C order, format version 1.0, byte-identical to
+// numpy.save (numpy >= 1.24 header padding). dvpr's outputs put them in place through
+// experiments/results/safe_output.h.
+std::string NpyBytes(const DescriptorMatrix& m);
+
+// Writes NpyBytes(m) to `path` (tests and tools that make input files). Atomic: the bytes go to a
+// temporary file in the same directory, which is then renamed over `path`.
 void WriteNpy(const std::filesystem::path& path, const DescriptorMatrix& m);
 
 }  // namespace dvpr

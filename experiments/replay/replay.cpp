@@ -1,11 +1,19 @@
 #include "experiments/replay/replay.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 
 #include "experiments/config/option_reader.h"
 #include "experiments/replay/replay_page.h"
 #include "experiments/replay/replay_tracks.h"
+#include "experiments/results/manifest.h"
 #include "experiments/results/result_writers.h"
+#include "experiments/results/safe_output.h"
 
 namespace dvpr::replay {
 
@@ -23,6 +31,28 @@ void CheckFolder(const std::filesystem::path& dir) {
   if (!std::filesystem::is_directory(dir)) throw std::runtime_error(dir.string() + ": not a folder (expected a result folder)");
   if (!std::filesystem::exists(dir / "messages.csv")) {
     throw std::runtime_error(dir.string() + ": no messages.csv (record it: dvpr run CONFIG --set outputs.messages=true)");
+  }
+}
+
+// The page may replace only what an earlier `dvpr replay` wrote (README "Result folders"): nothing
+// at `file`, or a regular file that starts with kReplayPageMarker. Not a link, not runs.csv.
+void CheckTarget(const std::filesystem::path& file) {
+  const std::string name = file.string();
+  const std::string refused = "; dvpr replay writes only a new file or over an earlier replay page: choose another --out";
+  struct stat st {};
+  if (::lstat(file.c_str(), &st) != 0) {
+    if (errno == ENOENT) return;
+    throw std::runtime_error(name + ": cannot check the output file (" + std::strerror(errno) + ")");
+  }
+  if (S_ISLNK(st.st_mode)) throw std::runtime_error(name + ": is a symbolic link" + refused);
+  if (!S_ISREG(st.st_mode)) throw std::runtime_error(name + ": exists and is not a file" + refused);
+  const std::string marker = kReplayPageMarker;
+  std::string head(marker.size(), '\0');
+  const int fd = ::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+  const ssize_t n = fd < 0 ? -1 : ::read(fd, head.data(), head.size());
+  if (fd >= 0) ::close(fd);
+  if (n != static_cast<ssize_t>(head.size()) || head != marker) {
+    throw std::runtime_error(name + ": exists and is not a replay page" + refused);
   }
 }
 
@@ -60,8 +90,13 @@ std::filesystem::path WriteReplay(const ReplayOptions& options, std::ostream& ou
       !options.out.empty() ? options.out
                            : options.dir / ("replay_n" + std::to_string(run.robots) + "_run" + std::to_string(run.run) +
                                             "_net" + std::to_string(run.network_variant) + ".html");
+  CheckTarget(file);
   const std::string page = ReplayPage(run, tracks);
-  WriteFileAtomic(file, page);
+  {
+    const OutputDir folder = OutputDir::Open(file.parent_path());
+    WriteFileAt(folder, file.filename().string(), page);
+    AddToManifest(folder, {file.filename().string()});  // a page in a result folder is dvpr's
+  }
   std::size_t messages = 0;
   for (const auto& s : run.strategies) messages += s.messages.size();
   out << "replay of " << tracks.name << ": " << run.robots << " robots, run " << run.run << ", network "

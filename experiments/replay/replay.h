@@ -20,9 +20,14 @@ struct ReplayOptions {
 // args[0] is "replay". Throws std::invalid_argument (a usage error) naming the flag.
 ReplayOptions ParseReplayArgs(const std::vector<std::string>& args);
 
+// How every replay page begins: `dvpr replay` writes over an existing file only when it starts
+// with this (an earlier page), never over runs.csv or any other file.
+inline constexpr const char* kReplayPageMarker = "<!DOCTYPE html>\n<!-- dvpr replay: written by `dvpr replay`";
+
 // Writes the page atomically (nothing, or the whole file) and says on `out` what it replays and
 // where. Throws std::runtime_error, one line naming the file at fault, for a missing folder, a
-// folder without messages.csv, a selection the folder does not hold, an unreadable pose file.
+// folder without messages.csv, a selection the folder does not hold, an unreadable pose file, an
+// output file that exists and is not an earlier replay page (or is a symbolic link).
 std::filesystem::path WriteReplay(const ReplayOptions& options, std::ostream& out);
 
 }  // namespace dvpr::replay

@@ -7,6 +7,7 @@
 // timestamps, not their absolute values).
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <string_view>
 
@@ -14,9 +15,12 @@ struct _lcm_eventlog_t;
 
 namespace dvpr {
 
+class AtomicFile;
+
 class LcmEventLogWriter {
  public:
-  // Creates (truncates) the file; throws std::runtime_error naming the path on failure.
+  // Starts the file as a private temporary beside `path` (safe_output.h); throws
+  // std::runtime_error naming the path on failure.
   explicit LcmEventLogWriter(const std::filesystem::path& path);
   ~LcmEventLogWriter();
   LcmEventLogWriter(const LcmEventLogWriter&) = delete;
@@ -24,12 +28,15 @@ class LcmEventLogWriter {
 
   // Appends one event stamped `utime` (microseconds); throws std::runtime_error if the write fails.
   void Write(std::int64_t utime, std::string_view channel, std::span<const std::uint8_t> data);
-  // Flushes and closes the file (the destructor does this too).
+  // Flushes and closes the file, checked, and puts it in place at the path; throws
+  // std::runtime_error naming it if a write failed (then no file is left). The destructor
+  // does this too, without the error.
   void Close();
   std::int64_t EventsWritten() const { return events_; }
 
  private:
   std::filesystem::path path_;
+  std::unique_ptr<AtomicFile> file_;
   _lcm_eventlog_t* log_ = nullptr;
   std::int64_t events_ = 0;
 };

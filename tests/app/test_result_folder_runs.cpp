@@ -96,12 +96,12 @@ class ResultFolderRunTest : public ::testing::Test {
 
 TEST_F(ResultFolderRunTest, ALaterRunReplacesTheFolderAsAWhole) {
   Run(true, 0.25);
-  EXPECT_EQ(Names(root_ / "out"), (Strings{"config.yaml", "links.csv", "per_robot.csv",
+  EXPECT_EQ(Names(root_ / "out"), (Strings{"config.yaml", "dvpr_manifest.txt", "links.csv", "per_robot.csv",
                                            "queries.csv", "runs.csv", "summary.json"}));
   Run(false, 0.75);  // queries off: the earlier queries.csv must not stay beside the new rows
   EXPECT_EQ(Names(root_), Strings{"out"});
   EXPECT_EQ(Names(root_ / "out"),
-            (Strings{"config.yaml", "links.csv", "per_robot.csv", "runs.csv", "summary.json"}));
+            (Strings{"config.yaml", "dvpr_manifest.txt", "links.csv", "per_robot.csv", "runs.csv", "summary.json"}));
   const std::vector<RunResult> rows = ReadRunsCsv(root_ / "out" / "runs.csv");
   ASSERT_EQ(rows.size(), 2u);  // n = 2 and 3, one run each
   for (const RunResult& r : rows) EXPECT_EQ(r.auc, 0.75);  // the later run's rows only
@@ -132,19 +132,33 @@ TEST_F(ResultFolderRunTest, AFailedFirstRunLeavesNoFolder) {
   EXPECT_EQ(Names(root_), Strings{});
 }
 
-TEST_F(ResultFolderRunTest, AFolderDvprDidNotWriteIsRefusedAndLeftAsItWas) {
-  fs::create_directories(root_ / "out");
-  std::ofstream(root_ / "out" / "notes.txt") << "my notes\n";
-  const auto before = SnapshotFolder(root_);
-  try {
-    Run(true, 0.25);
-    FAIL() << "a folder with other files was replaced";
-  } catch (const std::runtime_error& e) {
-    EXPECT_EQ(std::string(e.what()).rfind((root_ / "out").string() +
-                                          ": exists, is not empty and is not a dvpr result folder", 0),
-              0u) << e.what();
+// Refused before the sweep: the protocol is never even built, and the folder stays as it was.
+TEST_F(ResultFolderRunTest, AFolderDvprDidNotWriteIsRefusedBeforeTheSweepAndLeftAsItWas) {
+  for (const bool earlier_run : {false, true}) {
+    SCOPED_TRACE(earlier_run ? "a dvpr result folder with a user's file" : "a folder of the user's");
+    fs::remove_all(root_);
+    fs::create_directories(root_ / "out");
+    if (earlier_run) Run(true, 0.25);
+    std::ofstream(root_ / "out" / "notes.txt") << "my notes\n";
+    const auto before = SnapshotFolder(root_);
+    bool swept = false;
+    ProtocolRegistry registry;
+    registry.Add("paper", [&swept](const SharedInputs&) -> RunFunction {
+      swept = true;
+      return [](const RunSpec&) { return RunOutput{}; };
+    });
+    try {
+      std::ostringstream summary;
+      RunExperiment(Config(true), "folder.yaml", root_ / "out", registry, {.threads = 1, .progress = false}, summary);
+      FAIL() << "a folder with other files was replaced";
+    } catch (const std::runtime_error& e) {
+      const std::string why = earlier_run ? "(not in its dvpr_manifest.txt)" : "(it has no dvpr_manifest.txt)";
+      EXPECT_EQ(std::string(e.what()).rfind((root_ / "out").string() + ": holds notes.txt, which dvpr did not "
+                                            "write " + why, 0), 0u) << e.what();
+    }
+    EXPECT_FALSE(swept);
+    EXPECT_EQ(SnapshotFolder(root_), before);
   }
-  EXPECT_EQ(SnapshotFolder(root_), before);
 }
 
 // SIGTERM in the middle of the sweep, in a child process that signals itself (no timing). The

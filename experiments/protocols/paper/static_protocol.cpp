@@ -6,6 +6,7 @@
 #include <string>
 
 #include "experiments/data/npy.h"
+#include "experiments/results/safe_output.h"
 #include "experiments/strategies/run_routing.h"
 
 namespace dvpr {
@@ -130,8 +131,8 @@ PaperRunResult EvaluatePaperRun(const PaperEvaluator& evaluator, const CentroidT
   result.curve.run = run;
   if (!params.centroids_out_dir.empty()) {
     const auto start = std::chrono::steady_clock::now();
-    WriteNpy(params.centroids_out_dir / ("centroids_n" + std::to_string(robots) + "_r" + std::to_string(run) + ".npy"),
-             table.centroids());
+    WriteFileAtomic(params.centroids_out_dir / ("centroids_n" + std::to_string(robots) + "_r" + std::to_string(run) + ".npy"),
+                    NpyBytes(table.centroids()));
     result.timings.io_s = SecondsSince(start);
   }
   return result;

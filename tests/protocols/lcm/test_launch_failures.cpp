@@ -27,7 +27,7 @@ std::vector<std::string> LaunchArgv(const std::string& lcm_url, const fs::path& 
   return a;
 }
 
-// Everything in `dir` whose name starts with `prefix` (temporary result folders are ".<name>.tmp-<pid>").
+// Everything in `dir` whose name starts with `prefix` (temporary result folders are ".dvpr-run-...").
 std::vector<std::string> NamesStartingWith(const fs::path& dir, const std::string& prefix) {
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(dir)) {
@@ -108,7 +108,7 @@ TEST(LaunchFailureTest, AGroupThatCannotBeJoinedIsRefusedInOneLineBeforeAnyAgent
                           "route?", 0), 0u) << printed;
   ExpectOneLine(printed);
   EXPECT_FALSE(fs::exists(dir / "out"));
-  EXPECT_TRUE(NamesStartingWith(dir, ".out.tmp-").empty());
+  EXPECT_TRUE(NamesStartingWith(dir, ".dvpr-run-").empty());
 }
 
 // `dvpr agent --out` into a folder that is not there: refused before the agent opens LCM or
@@ -153,7 +153,7 @@ TEST(LaunchFailureTest, NoTeamRanPrintsEachCauseWritesNothingAndExits1) {
   EXPECT_EQ(WEXITSTATUS(status), 1) << printed;
   EXPECT_NE(printed.find("dvpr: error: " + (dir / "out").string() + ": no team ran"), std::string::npos) << printed;
   EXPECT_FALSE(fs::exists(dir / "out"));
-  EXPECT_TRUE(NamesStartingWith(dir, ".out.tmp-").empty());
+  EXPECT_TRUE(NamesStartingWith(dir, ".dvpr-run-").empty());
 }
 
 // A strategy the agents refuse (re-clustering, which `dvpr agent` does not implement): all its
