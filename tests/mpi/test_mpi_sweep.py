@@ -133,7 +133,7 @@ def failing(mode, index, status):
     check(not out.exists(), "the result folder was written although a run failed", proc)
     # What a rank ended by SIGKILL leaves: its run folder in TMPDIR ("dvpr-rank<r>-<host>-<pid>",
     # never rank 0's, which has none) and, for rank 0, the temporary result folder beside the
-    # output (".out.tmp-<pid>"); either with ".removing" when the kill came during its SIGTERM
+    # output (".dvpr-run-<tag>-<pid>-<random>"); either with ".removing" when the kill came during its SIGTERM
     # cleanup, which renames a folder before it removes it. Rank 0 reports a failure itself after
     # its cleanup, so the latter only when Open MPI ended it (die). The killed rank of die is
     # always among them.
@@ -146,7 +146,7 @@ def failing(mode, index, status):
               f"left in TMPDIR: {name} (not the run folder of a rank that has ended)", proc)
     beside = sorted(p.name for p in WORK.iterdir() if p.name.startswith("."))
     for name in beside:
-        m = re.fullmatch(r"\.out\.tmp-(\d+)(\.removing)?", name)
+        m = re.fullmatch(r"\.dvpr-run-[0-9a-f]{8}-(\d+)-[0-9a-f]{16}(\.removing)?", name)
         check(status is None and m is not None and process_gone(int(m.group(1))),
               f"left beside the output: {name} (not the temporary folder of a rank 0 Open MPI ended)", proc)
     # Open MPI ends the two ranks that did not fail. Rank 0, when it failed or reported the
