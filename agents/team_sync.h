@@ -31,11 +31,12 @@
 #include <dvpr/agent_status_t.hpp>
 
 #include "agents/ids.h"
+#include "lcmtypes/channels/channels.h"
 
 namespace dvpr {
 
 namespace channels {
-inline const std::string kStatus = "DVPR_STATUS";
+inline const std::string kStatus = ChannelName(ChannelKind::kStatus);
 }  // namespace channels
 
 class TeamSync {

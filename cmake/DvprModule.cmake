@@ -1,9 +1,10 @@
-# dvpr_module(<target> DEPS <targets...> [DEFINITIONS <name=value...>])
+# dvpr_module(<target> [PUBLIC <targets...>] [PRIVATE <targets...>] [DEFINITIONS <name=value...>])
 # One static library per folder, built from the .cpp files directly in it
 # (subfolders are libraries of their own; main.cpp is excluded), so adding a
-# file needs no CMake edit. DEPS are the modules and packages it may use: the
-# direction written in docs/architecture.md, which scripts/check_layers.py
-# checks against the includes. DEFINITIONS are private compile definitions
+# file needs no CMake edit. PUBLIC and PRIVATE together are the modules and
+# packages it may use, exactly its row of docs/architecture.md; PUBLIC only
+# those its headers include (their users need them too), PRIVATE the rest.
+# scripts/check_layers.py checks both against the includes. DEFINITIONS are private compile definitions
 # (given here so both variants below get them). Every module also joins the
 # umbrella target dvpr_all (benchmarks).
 #
@@ -13,29 +14,37 @@
 # the generic one no fast code (Eigen's and std's templates are instantiated in
 # both; one binary must not mix them).
 function(dvpr_module target)
-  cmake_parse_arguments(ARG "" "" "DEPS;DEFINITIONS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "PUBLIC;PRIVATE;DEPS;DEFINITIONS" ${ARGN})
+  list(APPEND ARG_PUBLIC ${ARG_DEPS})  # DEPS: the earlier name of PUBLIC
+  if(ARG_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "dvpr_module(${target}): unexpected ${ARG_UNPARSED_ARGUMENTS} (PUBLIC, PRIVATE, DEFINITIONS)")
+  endif()
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
   list(FILTER sources EXCLUDE REGEX ".*/main\\.cpp$")
-  _dvpr_add_library(${target} "${sources}" "${ARG_DEPS}" "" "${ARG_DEFINITIONS}")
+  _dvpr_add_library(${target} "${sources}" "${ARG_PUBLIC}" "${ARG_PRIVATE}" "" "${ARG_DEFINITIONS}")
   target_link_libraries(dvpr_all INTERFACE ${target})
   if(DVPR_DISPATCH)
-    dvpr_fast_variants(fast_deps ${ARG_DEPS})
-    _dvpr_add_library(${target}${DVPR_FAST_SUFFIX} "${sources}" "${fast_deps}" "${DVPR_FAST_FLAGS}"
-                      "${ARG_DEFINITIONS}")
+    dvpr_fast_variants(fast_public ${ARG_PUBLIC})
+    dvpr_fast_variants(fast_private ${ARG_PRIVATE})
+    _dvpr_add_library(${target}${DVPR_FAST_SUFFIX} "${sources}" "${fast_public}" "${fast_private}"
+                      "${DVPR_FAST_FLAGS}" "${ARG_DEFINITIONS}")
     target_link_libraries(dvpr_all${DVPR_FAST_SUFFIX} INTERFACE ${target}${DVPR_FAST_SUFFIX})
   endif()
   set_property(GLOBAL APPEND PROPERTY DVPR_MODULES ${target})
 endfunction()
 
-function(_dvpr_add_library target sources deps flags definitions)
+function(_dvpr_add_library target sources public private flags definitions)
   if(sources)
     add_library(${target} STATIC ${sources})
-    target_link_libraries(${target} PUBLIC dvpr_includes ${deps})
+    target_link_libraries(${target} PUBLIC dvpr_includes ${public} PRIVATE ${private})
     target_compile_options(${target} PRIVATE ${flags})
     target_compile_definitions(${target} PRIVATE ${definitions})
   else()
+    if(private)  # a library of headers only has no sources of its own to use them
+      message(FATAL_ERROR "${target}: PRIVATE ${private} in a module without .cpp files")
+    endif()
     add_library(${target} INTERFACE)
-    target_link_libraries(${target} INTERFACE dvpr_includes ${deps})
+    target_link_libraries(${target} INTERFACE dvpr_includes ${public})
   endif()
 endfunction()
 

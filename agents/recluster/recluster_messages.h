@@ -5,16 +5,17 @@
 #include <string>
 
 #include "agents/ids.h"
+#include "lcmtypes/channels/channels.h"
 
 namespace dvpr {
 
 namespace channels {
 // Each robot's sample for an epoch, to the leader (descriptor_batch_t).
-inline std::string Sample(RobotId leader) { return "DVPR_SAMPLE_" + std::to_string(leader.value); }
+inline std::string Sample(RobotId leader) { return ChannelName(ChannelKind::kSample, leader.value); }
 // Stored descriptors moved to their owner under a new table (descriptor_batch_t).
-inline std::string Migrate(RobotId dst) { return "DVPR_MIGRATE_" + std::to_string(dst.value); }
+inline std::string Migrate(RobotId dst) { return ChannelName(ChannelKind::kMigrate, dst.value); }
 // The leader's table of an epoch, to every robot (centroid_table_t).
-inline const std::string kTable = "DVPR_TABLE";
+inline const std::string kTable = ChannelName(ChannelKind::kTable);
 }  // namespace channels
 
 // LCM-encoded sizes (fingerprint included), worked out from LCM's rules and pinned against

@@ -1,18 +1,16 @@
 #pragma once
-// What a message does, read from its channel name alone (agents/channels.h,
-// agents/recluster/recluster_messages.h), so a replay needs nothing but
-// messages.csv: the page colours each message by it and counts a robot's
-// queue from the requests it got and the answers it sent.
+// What a message does, read from its channel name alone in the message catalogue
+// (lcmtypes/channels/channels.h: its role, whether it is a request or an answer), so a replay
+// needs nothing but messages.csv: the page colours each message by its role and counts a
+// robot's queue from the requests it got and the answers it sent.
 #include <string_view>
 
-#include "experiments/results/results.h"
+#include "lcmtypes/channels/channels.h"
 
 namespace dvpr::replay {
 
-// The roles are the result files' own (results.h, MessageRole): query = DVPR_QUERY_*,
-// DVPR_PROBE_*, DVPR_STORE_*, DVPR_QUERY_ALL; reply = DVPR_MATCH_*; verify request =
-// DVPR_VREQ_*; verify result = DVPR_VRES_*; recluster = DVPR_SAMPLE_*, DVPR_TABLE,
-// DVPR_MIGRATE_*; other = any other channel (a later protocol's), drawn grey.
+// The roles are the result files' own (MessageRole); a channel the catalogue does not name (a
+// later protocol's) is "other", drawn grey.
 using dvpr::kMessageRoles;
 using dvpr::MessageRole;
 
@@ -20,7 +18,6 @@ using dvpr::MessageRole;
 // receiver sends its answer (a store-only query and re-clustering are neither).
 enum class QueueEffect { kNone = 0, kRequest = 1, kAnswer = -1 };
 
-MessageRole RoleOfChannel(std::string_view channel);
 QueueEffect QueueEffectOfChannel(std::string_view channel);
 // The role's name on the page ("query", "reply", "verify request", ...).
 std::string_view RoleName(MessageRole role);

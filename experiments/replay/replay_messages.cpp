@@ -91,7 +91,7 @@ Message MessageOf(const Row& row) {
   m.src = row.Number<int>(kSrc);
   m.dst = row.Number<int>(kDst);
   const std::string_view channel = row.Text(kChannel);
-  m.role = RoleOfChannel(channel);
+  m.role = channels::RoleOf(channel);
   m.queue = QueueEffectOfChannel(channel);
   m.counted_bytes = row.Number<std::int64_t>(kWireBytes);
   m.dropped = row.Number<int>(kDropped) != 0;

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "lcmtypes/channels/message_role.h"
+
 namespace dvpr {
 
 inline constexpr double kNotApplicable = std::numeric_limits<double>::quiet_NaN();
@@ -33,18 +35,9 @@ struct NetworkLabel {
 // No commas, so a CSV field needs no quoting.
 std::string NetworkName(const NetworkLabel& network);
 
-// What a message does, read from its channel (protocols/sim/message_roles.h). The byte columns
-// by role of runs.csv and links.csv follow this order; every message has exactly one role, so
-// the roles' bytes sum to each total.
-enum class MessageRole : int {
-  kQuery,          // a place-recognition query (search, store or both; broadcast or unicast)
-  kReply,          // its reply, the best match (match_t)
-  kVerifyRequest,  // geometric-verification request
-  kVerifyResult,   // its accept/reject
-  kRecluster,      // adaptive re-clustering: samples, tables, migrated descriptors
-  kOther,          // any channel not named above
-};
-inline constexpr int kMessageRoles = 6;
+// The byte columns by message role (MessageRole, lcmtypes/channels/message_role.h) of runs.csv
+// and links.csv follow the role order; every message has exactly one role, so the roles' bytes
+// sum to each total.
 inline constexpr std::array<const char*, kMessageRoles> kMessageRoleNames = {
     "query", "reply", "verify_request", "verify_result", "recluster", "other"};
 

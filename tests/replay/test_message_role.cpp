@@ -1,5 +1,5 @@
-// A message's role and its effect on the receiver's queue, from the channel names of
-// agents/channels.h and agents/recluster/recluster_messages.h, listed here by hand.
+// A message's role (the message catalogue's, lcmtypes/channels/channels.h) and its effect on the
+// receiver's queue, for every channel of the protocols, listed here by hand.
 #include <string>
 
 #include <gtest/gtest.h>
@@ -31,14 +31,15 @@ TEST(MessageRoleTest, EveryChannelOfTheProtocols) {
       {"DVPR_SAMPLE_0", MessageRole::kRecluster, QueueEffect::kNone, "re-clustering"},
       {"DVPR_TABLE", MessageRole::kRecluster, QueueEffect::kNone, "re-clustering"},
       {"DVPR_MIGRATE_7", MessageRole::kRecluster, QueueEffect::kNone, "re-clustering"},
+      {"DVPR_STATUS", MessageRole::kOther, QueueEffect::kNone, "other"},  // heartbeats
       {"DVPR_HEARTBEAT_2", MessageRole::kOther, QueueEffect::kNone, "other"},
       {"DVPR_TABLES", MessageRole::kOther, QueueEffect::kNone, "other"},
       {"", MessageRole::kOther, QueueEffect::kNone, "other"},
   };
   for (const Case& c : cases) {
-    EXPECT_EQ(RoleOfChannel(c.channel), c.role) << c.channel;
+    EXPECT_EQ(channels::RoleOf(c.channel), c.role) << c.channel;
     EXPECT_EQ(QueueEffectOfChannel(c.channel), c.queue) << c.channel;
-    EXPECT_EQ(RoleName(RoleOfChannel(c.channel)), c.name) << c.channel;
+    EXPECT_EQ(RoleName(channels::RoleOf(c.channel)), c.name) << c.channel;
   }
 }
 

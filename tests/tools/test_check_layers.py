@@ -1,19 +1,42 @@
 #!/usr/bin/env python3
-"""scripts/check_layers.py catches an include against docs/architecture.md.
+"""scripts/check_layers.py refuses what goes against docs/architecture.md.
 
-Copies the checker and the architecture table into a scratch tree, then:
-1. sim/ including a header of sim/ itself and net_models/ including sim/: clean (exit 0);
-2. a planted sim/planted.cpp including agents/robot_agent.h (sim may use nothing above it):
-   exit 1, and the message names the file, the line and both modules;
-3. a test of tests/sim/ including an agents header: exit 1 (tests link only their module).
+Copies the checker, the table, every CMakeLists.txt, source file and LCM type of the repository
+into a scratch tree, checks that the copy passes, then plants one fault at a time and checks
+that it is refused (exit 1) with a message naming the file and what is wrong:
+1. sim/ including <lcm/lcm-cpp.hpp> (an angle-bracket include of a package sim may not use) and
+   <dvpr/query_t.hpp> (lcm-gen's code of dvpr_lcmtypes);
+2. sim/ including agents/robot_agent.h (a quoted include of a module above it);
+3. bench/ including experiments/app/cli.h (the benchmarks may not use the command line), and
+   sim/ including a header of bench/ (the wrong way round);
+4. a test of tests/sim/ including an agents header (tests link only their module);
+5. a dependency missing from a module's CMake links (dvpr_replay without dvpr_channels), one
+   the row does not name, and a row naming a module no file of it includes;
+6. a PUBLIC link only .cpp files need, and a PRIVATE link a header needs.
 """
 import pathlib
+import re
 import shutil
 import subprocess
 import sys
 import tempfile
 
 SOURCE = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).resolve().parents[2])
+COPIED = (".h", ".hpp", ".cpp", ".lcm")
+
+
+def copy_tree(root):
+    (root / "scripts").mkdir()
+    (root / "docs").mkdir()
+    shutil.copy(SOURCE / "scripts/check_layers.py", root / "scripts")
+    shutil.copy(SOURCE / "docs/architecture.md", root / "docs")
+    for f in SOURCE.rglob("*"):
+        rel = f.relative_to(SOURCE)
+        if rel.parts[0] == "build" or rel.parts[0].startswith("."):
+            continue
+        if f.is_file() and (f.suffix in COPIED or f.name == "CMakeLists.txt"):
+            (root / rel).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy(f, root / rel)
 
 
 def run(root):
@@ -22,32 +45,71 @@ def run(root):
     return r.returncode, r.stderr
 
 
+def refused(root, want, what):
+    code, err = run(root)
+    assert code == 1, f"{what}: exit {code}, expected 1\n{err}"
+    assert want in err, f"{what}: no '{want}' in\n{err}"
+
+
+def planted(root, rel, text, want, what):
+    path = root / rel
+    path.write_text(text)
+    refused(root, want, what)
+    path.unlink()
+
+
+def edited(root, rel, old, new, want, what):
+    path = root / rel
+    before = path.read_text()
+    assert old in before, f"{rel} has no '{old}': update this test"
+    path.write_text(before.replace(old, new, 1))
+    refused(root, want, what)
+    path.write_text(before)
+
+
 def main():
     with tempfile.TemporaryDirectory() as tmp:
         root = pathlib.Path(tmp)
-        (root / "scripts").mkdir()
-        (root / "docs").mkdir()
-        shutil.copy(SOURCE / "scripts/check_layers.py", root / "scripts")
-        shutil.copy(SOURCE / "docs/architecture.md", root / "docs")
-        (root / "sim").mkdir()
-        (root / "net_models").mkdir()
-        (root / "sim/a.cpp").write_text('#include "sim/sim_time.h"\n#include <vector>\n')
-        (root / "net_models/b.cpp").write_text('#include "sim/simulator.h"\n')
+        copy_tree(root)
         code, err = run(root)
-        assert code == 0, f"clean tree: exit {code}\n{err}"
+        assert code == 0, f"the repository's copy: exit {code}\n{err}"
 
-        (root / "sim/planted.cpp").write_text('// planted\n#include "agents/robot_agent.h"\n')
-        code, err = run(root)
-        assert code == 1, f"planted include: exit {code}\n{err}"
-        want = "sim/planted.cpp:2: dvpr_sim includes agents/robot_agent.h of dvpr_agents"
-        assert want in err, f"message does not name file, line and modules:\n{err}"
-        (root / "sim/planted.cpp").unlink()
+        # 1. Angle-bracket includes.
+        planted(root, "sim/planted.cpp", "// planted\n#include <lcm/lcm-cpp.hpp>\n",
+                "sim/planted.cpp:2: dvpr_sim includes lcm/lcm-cpp.hpp of PkgConfig::LCM", "<lcm/...> in sim/")
+        planted(root, "sim/planted.cpp", "#include <vector>\n#include <dvpr/query_t.hpp>\n",
+                "sim/planted.cpp:2: dvpr_sim includes dvpr/query_t.hpp of dvpr_lcmtypes", "<dvpr/*.hpp> in sim/")
+        # 2. Quoted includes.
+        planted(root, "sim/planted.cpp", '// planted\n#include "agents/robot_agent.h"\n',
+                "sim/planted.cpp:2: dvpr_sim includes agents/robot_agent.h of dvpr_agents", "quoted, in sim/")
+        # 3. bench/: both ways.
+        planted(root, "bench/planted.cpp", '#include "experiments/app/cli.h"\n',
+                "bench/planted.cpp:1: dvpr_bench includes experiments/app/cli.h of dvpr_app", "in bench/")
+        planted(root, "sim/planted.cpp", '#include "bench/bench_main.h"\n',
+                "sim/planted.cpp:1: dvpr_sim includes bench/bench_main.h of dvpr_bench", "of bench/")
+        # 4. Tests.
+        planted(root, "tests/sim/test_planted.cpp", '#include "agents/descriptor_index.h"\n',
+                "tests/sim/test_planted.cpp:1: dvpr_sim includes agents/descriptor_index.h", "in tests/sim/")
+        # 5. CMake links against the table.
+        replay = "experiments/replay/CMakeLists.txt"
+        edited(root, replay, "PUBLIC dvpr_channels ", "",
+               f"{replay}: dvpr_replay does not link dvpr_channels, which its row", "a missing CMake dependency")
+        edited(root, replay, "PRIVATE dvpr_data", "PRIVATE dvpr_sim dvpr_data",
+               f"{replay}: dvpr_replay links dvpr_sim, which its row", "a CMake dependency the row lacks")
+        doc = "docs/architecture.md"
+        row = re.search(r"^\| `dvpr_figures` \|.*$", (root / doc).read_text(), re.M).group(0)
+        edited(root, doc, row, row.replace("`dvpr_results` |", "`dvpr_results`, `dvpr_sim` |"),
+               "dvpr_figures may use dvpr_sim, but no file of experiments/figures/ includes it", "an unused row entry")
+        # 6. PUBLIC where a header needs it, PRIVATE elsewhere.
+        edited(root, replay, "PRIVATE dvpr_data", "PUBLIC dvpr_data",
+               f"{replay}: dvpr_replay links dvpr_data PUBLIC, but none of its headers", "PUBLIC for a .cpp")
+        edited(root, replay, "PUBLIC dvpr_channels PRIVATE", "PRIVATE dvpr_channels",
+               f"{replay}: dvpr_replay links dvpr_channels PRIVATE, but its header includes it", "PRIVATE for a header")
 
-        (root / "tests/sim").mkdir(parents=True)
-        (root / "tests/sim/test_x.cpp").write_text('#include "agents/descriptor_index.h"\n')
         code, err = run(root)
-        assert code == 1 and "tests/sim/test_x.cpp:1" in err, f"test include: exit {code}\n{err}"
-    print("check_layers: clean tree passes, planted includes fail with file, line and modules")
+        assert code == 0, f"the copy after the plants were removed: exit {code}\n{err}"
+    print("check_layers: the repository passes; planted includes (quoted and <...>, in sim/, bench/, tests/) "
+          "and CMake links against the table are refused")
 
 
 if __name__ == "__main__":

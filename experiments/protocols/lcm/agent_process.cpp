@@ -27,6 +27,7 @@
 #include "experiments/protocols/strategy_inputs.h"
 #include "experiments/strategies/run_routing.h"
 #include "net_models/wire_format.h"
+#include "lcmtypes/channels/channels.h"
 
 namespace dvpr {
 
@@ -171,7 +172,7 @@ std::int64_t TeamKey(const ExperimentConfig& c, const Dataset& data, const Centr
   return h.value();
 }
 
-// The destination robot of a unicast channel ("DVPR_MATCH_3" -> 3).
+// The destination robot of a unicast channel (the reply channel of robot 3 -> 3).
 std::optional<int> UnicastDestination(const std::string& channel) {
   const auto pos = channel.rfind('_');
   if (pos == std::string::npos || pos + 1 >= channel.size()) return std::nullopt;
@@ -191,33 +192,47 @@ std::optional<int> SourceOf(const std::string& channel, std::span<const std::uin
   const auto robot = [&](int r, bool none_ok) { return (r >= 0 && r < robots) || (none_ok && r == -1); };
   const auto frame = [&](int f, bool none_ok) { return (f >= 0 && f < frames) || (none_ok && f == -1); };
   auto check = [](bool ok, int src) { return ok ? src : -1; };
-  const auto starts = [&channel](const char* prefix) { return channel.rfind(prefix, 0) == 0; };
-  if (starts("DVPR_QUERY_") || starts("DVPR_PROBE_") || starts("DVPR_STORE_")) {
-    if (auto q = Decode<query_t>(bytes)) return check(robot(q->robot, false) && frame(q->frame, false), q->robot);
-  } else if (starts("DVPR_MATCH_")) {
-    if (auto m = Decode<match_t>(bytes)) {
-      return check(robot(m->responder, false) && robot(m->query_robot, false) && frame(m->query_frame, false) &&
-                       robot(m->match_robot, !m->has_match) && frame(m->match_frame, !m->has_match),
-                   m->responder);
-    }
-  } else if (starts("DVPR_BOWQ_") || starts("DVPR_BOWP_")) {
-    if (auto q = Decode<bow_query_t>(bytes)) return check(robot(q->robot, false) && frame(q->frame, false), q->robot);
-  } else if (starts("DVPR_BOWM_")) {
-    if (auto m = Decode<bow_match_t>(bytes)) {
-      return check(robot(m->responder, false) && robot(m->query_robot, false) && frame(m->query_frame, false) &&
-                       robot(m->match_robot, !m->has_match) && frame(m->match_frame, !m->has_match),
-                   m->responder);
-    }
-  } else if (starts("DVPR_VREQ_")) {
-    if (auto r = Decode<verify_request_t>(bytes)) {
-      return check(robot(r->query_robot, false) && robot(r->match_robot, false) && frame(r->query_frame, false) &&
-                       frame(r->match_frame, false), r->query_robot);
-    }
-  } else if (starts("DVPR_VRES_")) {
-    if (auto r = Decode<verify_result_t>(bytes)) {
-      return check(robot(r->query_robot, false) && robot(r->match_robot, false) && frame(r->query_frame, false) &&
-                       frame(r->match_frame, false), r->match_robot);
-    }
+  using channels::ChannelKind;
+  const auto kind = channels::KindOf(channel);
+  if (!kind) return std::nullopt;
+  switch (*kind) {
+    case ChannelKind::kQuery:
+    case ChannelKind::kProbe:
+    case ChannelKind::kStore:
+    case ChannelKind::kQueryAll:
+      if (auto q = Decode<query_t>(bytes)) return check(robot(q->robot, false) && frame(q->frame, false), q->robot);
+      break;
+    case ChannelKind::kMatch:
+      if (auto m = Decode<match_t>(bytes)) {
+        return check(robot(m->responder, false) && robot(m->query_robot, false) && frame(m->query_frame, false) &&
+                         robot(m->match_robot, !m->has_match) && frame(m->match_frame, !m->has_match),
+                     m->responder);
+      }
+      break;
+    case ChannelKind::kBowQuery:
+    case ChannelKind::kBowProbe:
+      if (auto q = Decode<bow_query_t>(bytes)) return check(robot(q->robot, false) && frame(q->frame, false), q->robot);
+      break;
+    case ChannelKind::kBowMatch:
+      if (auto m = Decode<bow_match_t>(bytes)) {
+        return check(robot(m->responder, false) && robot(m->query_robot, false) && frame(m->query_frame, false) &&
+                         robot(m->match_robot, !m->has_match) && frame(m->match_frame, !m->has_match),
+                     m->responder);
+      }
+      break;
+    case ChannelKind::kVerifyRequest:
+      if (auto r = Decode<verify_request_t>(bytes)) {
+        return check(robot(r->query_robot, false) && robot(r->match_robot, false) && frame(r->query_frame, false) &&
+                         frame(r->match_frame, false), r->query_robot);
+      }
+      break;
+    case ChannelKind::kVerifyResult:
+      if (auto r = Decode<verify_result_t>(bytes)) {
+        return check(robot(r->query_robot, false) && robot(r->match_robot, false) && frame(r->query_frame, false) &&
+                         frame(r->match_frame, false), r->match_robot);
+      }
+      break;
+    default: break;  // re-clustering and heartbeats: not counted per source here
   }
   return std::nullopt;
 }

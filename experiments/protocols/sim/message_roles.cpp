@@ -4,49 +4,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "agents/channels.h"
-#include "agents/recluster/recluster_messages.h"
+#include "lcmtypes/channels/channels.h"
 
 namespace dvpr {
-
-namespace {
-
-// A unicast channel's name without its destination id ("DVPR_QUERY_"): taken from the channel
-// functions themselves, so a renamed channel cannot fall out of its role unnoticed.
-std::string PrefixOf(const std::string& channel_of_robot_0) {
-  return channel_of_robot_0.substr(0, channel_of_robot_0.size() - 1);
-}
-
-bool StartsWith(std::string_view s, const std::string& prefix) { return s.substr(0, prefix.size()) == prefix; }
-
-}  // namespace
-
-MessageRole RoleOfChannel(std::string_view channel) {
-  const RobotId r0(0);
-  // DVPR_QUERY_ALL starts with the prefix of DVPR_QUERY_<n>: a query too.
-  static const std::string query = PrefixOf(channels::Query(r0));
-  static const std::string probe = PrefixOf(channels::Probe(r0));
-  static const std::string store = PrefixOf(channels::Store(r0));
-  static const std::string match = PrefixOf(channels::Match(r0));
-  static const std::string vreq = PrefixOf(channels::VerifyRequest(r0));
-  static const std::string vres = PrefixOf(channels::VerifyResult(r0));
-  static const std::string sample = PrefixOf(channels::Sample(r0));
-  static const std::string migrate = PrefixOf(channels::Migrate(r0));
-  static const std::string bow_query = PrefixOf(channels::BowQuery(r0));
-  static const std::string bow_probe = PrefixOf(channels::BowProbe(r0));
-  static const std::string bow_match = PrefixOf(channels::BowMatch(r0));
-  if (StartsWith(channel, query) || StartsWith(channel, probe) || StartsWith(channel, store) ||
-      StartsWith(channel, bow_query) || StartsWith(channel, bow_probe)) {
-    return MessageRole::kQuery;
-  }
-  if (StartsWith(channel, match) || StartsWith(channel, bow_match)) return MessageRole::kReply;
-  if (StartsWith(channel, vreq)) return MessageRole::kVerifyRequest;
-  if (StartsWith(channel, vres)) return MessageRole::kVerifyResult;
-  if (StartsWith(channel, sample) || StartsWith(channel, migrate) || channel == channels::kTable) {
-    return MessageRole::kRecluster;
-  }
-  return MessageRole::kOther;
-}
 
 RoleBytesRecorder::RoleBytesRecorder(int nodes) : nodes_(nodes) {
   if (nodes <= 0) throw std::invalid_argument("RoleBytesRecorder: need at least one node, got " + std::to_string(nodes));
@@ -81,7 +41,7 @@ CopyBytes& RoleBytesRecorder::At(std::size_t role, NodeId src, NodeId dst) {
 std::size_t RoleBytesRecorder::RoleIndex(ChannelId channel, std::string_view name) {
   const auto id = static_cast<std::size_t>(channel);
   if (id >= roles_.size()) roles_.resize(id + 1, -1);
-  if (roles_[id] < 0) roles_[id] = static_cast<std::int8_t>(RoleOfChannel(name));
+  if (roles_[id] < 0) roles_[id] = static_cast<std::int8_t>(channels::RoleOf(name));
   return static_cast<std::size_t>(roles_[id]);
 }
 

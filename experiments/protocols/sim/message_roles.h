@@ -1,7 +1,7 @@
 #pragma once
-// Bytes by message role (results.h MessageRole), counted from a Network's hooks: the role of a
-// message is read from its channel (agents/channels.h, agents/recluster/recluster_messages.h),
-// so no agent has to say what it sent, and the network stays the only byte counter.
+// Bytes by message role (MessageRole), counted from a Network's hooks: the role of a message is
+// read from its channel in the message catalogue (lcmtypes/channels/channels.h), so no agent has
+// to say what it sent, and the network stays the only byte counter.
 //
 // Per directed pair and role: the copies' payload and wire bytes, offered (every copy sent) and
 // delivered; per role: what the messages put on the medium (MediumReport), so the roles sum to
@@ -18,9 +18,6 @@
 #include "net_models/pair_map.h"
 
 namespace dvpr {
-
-// The role of a channel; kOther for a channel no role names.
-MessageRole RoleOfChannel(std::string_view channel);
 
 // Per role, a table of the pairs (PairMap<CopyBytes>, made when the role is first seen): a copy
 // touches 32 bytes of its role's table, and the copies of one broadcast (one source, destinations

@@ -1,6 +1,6 @@
 #include "experiments/protocols/sim/message_rows.h"
 
-#include "experiments/protocols/sim/message_roles.h"
+#include "lcmtypes/channels/channels.h"
 
 namespace dvpr {
 
@@ -49,7 +49,7 @@ std::vector<MessageRow> MessageRowRecorder::Rows() const {
     row.payload_bytes = r.payload_bytes;
     row.wire_bytes = r.wire_bytes;
     row.dropped = r.dropped;
-    row.role = kMessageRoleNames[static_cast<std::size_t>(RoleOfChannel(row.channel))];
+    row.role = kMessageRoleNames[static_cast<std::size_t>(channels::RoleOf(row.channel))];
   }
   return rows;
 }

@@ -1,6 +1,7 @@
-// Bytes by message role (issue 16): the role read from each channel, and RoleBytesRecorder on a
-// hand-worked three-robot exchange, with every size worked out from LCM's encoding rules and
-// docs/design.md section 4 (net_models/wire_format.h), not taken from the code under test.
+// Bytes by message role (issue 16): RoleBytesRecorder on a hand-worked three-robot exchange, with
+// every size worked out from LCM's encoding rules and docs/design.md section 4
+// (net_models/wire_format.h), not taken from the code under test. The role of every channel is
+// pinned in tests/agents/recluster/test_every_channel.cpp.
 //
 // Depends on the LCM sizes of query_t, match_t, verify_request_t, verify_result_t and
 // centroid_table_t: a field added to one of them changes the numbers below (each is derived in
@@ -23,27 +24,6 @@ namespace dvpr {
 namespace {
 
 constexpr std::size_t Role(MessageRole r) { return static_cast<std::size_t>(r); }
-
-TEST(RoleOfChannel, NamesEveryChannelOfTheProtocols) {
-  EXPECT_EQ(RoleOfChannel(channels::Query(RobotId(3))), MessageRole::kQuery);
-  EXPECT_EQ(RoleOfChannel(channels::Probe(RobotId(12))), MessageRole::kQuery);
-  EXPECT_EQ(RoleOfChannel(channels::Store(RobotId(0))), MessageRole::kQuery);
-  EXPECT_EQ(RoleOfChannel(channels::kQueryAll), MessageRole::kQuery);
-  EXPECT_EQ(RoleOfChannel(channels::Match(RobotId(1))), MessageRole::kReply);
-  EXPECT_EQ(RoleOfChannel("DVPR_BOWQ_2"), MessageRole::kQuery);  // bag-of-words partial query
-  EXPECT_EQ(RoleOfChannel(channels::BowQuery(RobotId(7))), MessageRole::kQuery);
-  EXPECT_EQ(RoleOfChannel(channels::BowProbe(RobotId(0))), MessageRole::kQuery);
-  EXPECT_EQ(RoleOfChannel(channels::BowMatch(RobotId(3))), MessageRole::kReply);
-  EXPECT_EQ(RoleOfChannel("DVPR_BOWM_11"), MessageRole::kReply);
-  EXPECT_EQ(RoleOfChannel(channels::VerifyRequest(RobotId(1))), MessageRole::kVerifyRequest);
-  EXPECT_EQ(RoleOfChannel(channels::VerifyResult(RobotId(19))), MessageRole::kVerifyResult);
-  EXPECT_EQ(RoleOfChannel(channels::Sample(RobotId(0))), MessageRole::kRecluster);
-  EXPECT_EQ(RoleOfChannel(channels::Migrate(RobotId(4))), MessageRole::kRecluster);
-  EXPECT_EQ(RoleOfChannel(channels::kTable), MessageRole::kRecluster);
-  EXPECT_EQ(RoleOfChannel("DVPR_HEARTBEAT"), MessageRole::kOther);
-  EXPECT_EQ(RoleOfChannel("DVPR_TABLEX"), MessageRole::kOther);
-  EXPECT_EQ(RoleOfChannel(""), MessageRole::kOther);
-}
 
 // Three robots on one shared medium (1 Gbit/s, 1 ms), robot 2 offline from the start. Robot 0
 // queries robot 1 (the paper's method), then all (broadcast), verifies with robot 1 and sends a
