@@ -30,11 +30,14 @@ constexpr const char* kUsage = R"(dvpr: discrete-event simulator of decentralize
 
 Usage:
   dvpr run CONFIG.yaml [--out DIR] [--set key.path=value ...] [--threads N] [--quiet]
+           [--allow-large]
                      expand the config's sweep, run it on all cores, write DIR
                      (default results/<config name>): config.yaml, runs.csv,
                      per_robot.csv, links.csv, summary.json, figures/*.png;
                      DIR appears (an earlier result folder is replaced whole)
-                     only when all succeeded; other existing folders are refused
+                     only when all succeeded; other existing folders are refused;
+                     --allow-large runs a sweep refused as too large (over 1e6 runs,
+                     or a run that may need more than the machine's memory)
   mpirun -n K dvpr run CONFIG.yaml [...]   (or srun on a cluster)
                      the same sweep, its runs spread over K MPI ranks; rank 0
                      writes DIR, the same files as a single process, byte for byte
@@ -108,6 +111,8 @@ RunArgs ParseRunArgs(const std::vector<std::string>& args) {
       }
     } else if (f == "--quiet") {
       r.options.progress = false;
+    } else if (f == "--allow-large") {
+      r.options.allow_large = true;
     } else if (!f.empty() && f[0] == '-') {
       in.Unknown();
     } else if (r.config.empty()) {

@@ -89,7 +89,7 @@ struct RowFiles {
 void RunShare(const ExperimentConfig& config, const std::string& origin, const ProtocolRegistry& protocols,
               const ExecutorOptions& options) {
   SharedInputs inputs = LoadSharedInputs(config, origin);
-  CheckSweepInputs(inputs, origin);
+  CheckSweepInputs(inputs, origin, options.allow_large);
   inputs.out_dir = options.distributor->run_folder();
   RunSweep(inputs, protocols, options, [](const RunSpec&, RunOutput&&) {
     throw std::logic_error("RunShare: an output handed on to a process that does not write results");
@@ -109,7 +109,7 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
   }
   CheckOutputFolder(out_dir);  // before the inputs load: a refused --out fails at once
   SharedInputs inputs = LoadSharedInputs(config, origin);
-  CheckSweepInputs(inputs, origin);  // what would fail a run fails here, before anything is written
+  CheckSweepInputs(inputs, origin, options.allow_large);  // what would fail a run fails here, before anything is written
   // Everything is written into folder.dir() and moved to out_dir only when all succeeded.
   ResultFolder folder(out_dir);
   const std::filesystem::path dir = folder.dir();

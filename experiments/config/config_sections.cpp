@@ -150,6 +150,13 @@ std::vector<Dropout> ReadDropout(const Field& f, const SweepConfig& sweep) {
     Dropout d;
     d.robot = static_cast<int>(item.Child("robot").Int(0, largest - 1));
     d.at = item.Child("at").Duration(SimTime::Zero(), Dropout::kMaxAt);
+    // Once: a second time would give the robot contradictory failover rows.
+    for (std::size_t j = 0; j < out.size(); ++j) {
+      if (out[j].robot == d.robot) {
+        item.Child("robot").Fail("robot " + std::to_string(d.robot) + " is already dropped by dropout[" +
+                                 std::to_string(j) + "]; a robot drops out once");
+      }
+    }
     out.push_back(d);
   }
   return out;

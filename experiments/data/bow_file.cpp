@@ -45,6 +45,9 @@ BowEntry ParsePair(const fs::path& path, std::size_t line, std::string_view toke
       !std::isfinite(weight) || weight <= 0.0 || weight > 1e30) {
     bad("the weight must be a number in (0, 1e30]");
   }
+  // Weights are float32: one that rounds to 0 there (below about 1.4e-45) would silently be no
+  // word at all.
+  if (static_cast<float>(weight) == 0.0f) bad("the weight is 0 in float32 (the smallest is about 1.4e-45)");
   return {static_cast<std::int32_t>(word), static_cast<float>(weight)};
 }
 
@@ -171,7 +174,15 @@ BowData LoadBowText(const fs::path& path) {
 }  // namespace
 
 BowData LoadBowFile(const fs::path& path) {
-  return path.extension() == ".bin" ? LoadBowTriples(path) : LoadBowText(path);
+  const bool binary = path.extension() == ".bin";
+  BowData data = binary ? LoadBowTriples(path) : LoadBowText(path);
+  // Without a single word every BoW query finds nothing: a run would report a recall of 0 as if
+  // it had measured one.
+  if (data.vocabulary == 0) {
+    throw std::runtime_error(path.string() + ": no frame has a word (" +
+                             (binary ? "every weight is 0" : "every line is '-'") + "; expected at least one WORD:WEIGHT)");
+  }
+  return data;
 }
 
 }  // namespace dvpr

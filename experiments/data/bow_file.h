@@ -7,7 +7,9 @@
 //   a frame with no words is a line holding a single '-'.
 //
 // A pair may appear in any order; a word twice on one line is an error. The vocabulary is the
-// largest word + 1. Errors are std::runtime_error "<file>: line <n>: <problem>".
+// largest word + 1. A weight that is 0 in float32 (below about 1.4e-45), and a file in which no
+// frame has a word (either format), are errors. Errors are std::runtime_error
+// "<file>: line <n>: <problem>" (or "<file>: <problem>" for the whole file).
 //
 // A file whose name ends in .bin holds (frame, word, weight) triples instead, 12 bytes each,
 // little-endian: int32 frame in [0, 10000000), int32 word in [0, 10000000), float32 weight,

@@ -42,6 +42,8 @@ struct ExecutorOptions {
   // Spreads the runs over several processes (MPI ranks: experiments/mpi/); null runs them all
   // in this one (ExecuteRuns).
   const RunDistributor* distributor = nullptr;
+  // dvpr run --allow-large: run a sweep CheckSweepSize (sweep_size.h) would refuse.
+  bool allow_large = false;
 };
 
 // Calls run_functions.at(spec.protocol)(spec) for every spec on the ParallelFor pool

@@ -1,15 +1,19 @@
 #include "experiments/sweep/sweep_checks.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include "agents/ids.h"
+#include "agents/team_sync.h"
 #include "experiments/protocols/strategy_inputs.h"
 #include "experiments/strategies/run_routing.h"
 #include "experiments/sweep/sweep.h"
+#include "experiments/sweep/sweep_size.h"
 #include "net_models/param_checks.h"
 
 namespace dvpr {
@@ -33,6 +37,78 @@ void CheckNetworks(const ExperimentConfig& c, const std::string& origin) {
     } catch (const std::invalid_argument& e) {
       throw ConfigError(origin + ": " + e.what() + " (robots: " + Robots(c.sweep) +
                         "; every team of the sweep runs the same network section)");
+    }
+  }
+}
+
+// The longest a heartbeat (agent_status_t on DVPR_STATUS) takes from its robot to a teammate on
+// a network otherwise idle, in a team of `robots`: the propagation latency plus the time to put
+// its frames on the link (point_to_point: every pair, its overrides included; shared_medium:
+// every robot announces at the same instants, so the last heartbeat waits for all the others on
+// the one channel); ideal delivers at once. Traffic queued ahead of it only adds to this.
+SimTime WorstHeartbeatDelay(const NetworkModelParams& p, int robots) {
+  if (p.model == LinkModelKind::kIdeal) return SimTime::Zero();
+  // agent_status_t encoded: LCM's 8-byte type hash + utime 8, robot 2, robots 2, team_key 8,
+  // state 1, ready_utime 8, frames_taken 4 (lcmtypes/dvpr/agent_status_t.lcm; this layer may not
+  // include the generated type).
+  const Bytes payload(41);
+  const Bytes frames =
+      ComputeWireFootprint(payload, static_cast<std::int64_t>(channels::kStatus.size()), p.wire).wire_bytes;
+  if (p.model == LinkModelKind::kSharedMedium) return p.latency + p.bandwidth.TxTime(frames) * robots;
+  SimTime worst = p.latency + p.bandwidth.TxTime(frames);
+  for (const LinkOverrideParams& o : p.links) {
+    if (o.src.value >= robots || o.dst.value >= robots) continue;
+    worst = std::max(worst, o.latency.value_or(p.latency) + o.bandwidth.value_or(p.bandwidth).TxTime(frames));
+  }
+  return worst;
+}
+
+// A robot is declared lost when silent for longer than failover.timeout, checked every
+// heartbeat_period. A healthy teammate's heartbeats arrive a period apart plus however much
+// later one arrives than the one before, and the first arrives one delay after the start; so a
+// timeout shorter than period + the worst delay declares robots lost with nobody gone
+// (docs/failover.md). Real agents (dvpr launch) run on a real network, which no config describes.
+void CheckFailoverTimeout(const ExperimentConfig& c, const std::string& origin) {
+  const auto& protocols = c.sweep.protocols;
+  if (!c.failover.enabled || std::find(protocols.begin(), protocols.end(), "sim") == protocols.end()) return;
+  for (const NetworkVariant& v : ExpandNetworks(c.network)) {
+    for (const int n : c.sweep.robots) {
+      const SimTime delay = WorstHeartbeatDelay(v.params, n);
+      const SimTime need = c.failover.heartbeat_period + delay;
+      if (c.failover.timeout < need) {
+        throw ConfigError(origin + ": failover.timeout: must be at least heartbeat_period + the worst delay of a " +
+                          "heartbeat (" + FormatDuration(c.failover.heartbeat_period) + " + " + FormatDuration(delay) +
+                          " = " + FormatDuration(need) + " on network '" + v.name + "' with " + std::to_string(n) +
+                          " robots), got " + FormatDuration(c.failover.timeout) +
+                          "; a shorter one declares robots lost with nobody gone");
+      }
+    }
+  }
+}
+
+std::string Fps(double fps) {
+  std::ostringstream out;
+  out << fps;
+  return out.str();
+}
+
+// A dropout lies inside the run of every team that has its robot: a run lasts as long as its longest sub-trajectory (frame k at k / fps,
+// the run ending one frame after the last), so a later dropout would be reported as a robot lost.
+void CheckDropouts(const SharedInputs& in, const std::string& origin) {
+  const ExperimentConfig& c = *in.config;
+  const auto frames = static_cast<std::int64_t>(in.deployment.size());
+  for (std::size_t i = 0; i < c.dropout.size(); ++i) {
+    const Dropout& d = c.dropout[i];
+    const std::string key = origin + ": dropout[" + std::to_string(i) + "]";
+    for (const int n : c.sweep.robots) {
+      if (d.robot >= n || frames < n) continue;
+      const std::int64_t longest = (frames + n - 1) / n;
+      const auto end = SimTime::Nanos(static_cast<std::int64_t>(std::ceil(static_cast<double>(longest) / in.deployment.fps * 1e9)));
+      if (d.at >= end) {
+        throw ConfigError(key + ".at: " + FormatDuration(d.at) + " is not inside the run of " + std::to_string(n) +
+                          " robots, which ends at " + FormatDuration(end) + " (" + std::to_string(longest) +
+                          " frames at most per robot at " + Fps(in.deployment.fps) + " fps)");
+      }
     }
   }
 }
@@ -123,10 +199,17 @@ void CheckBowProtocols(const ExperimentConfig& c, const std::string& origin) {
 
 }  // namespace
 
-void CheckSweepInputs(const SharedInputs& inputs, const std::string& origin) {
+void CheckSweepInputs(const SharedInputs& inputs, const std::string& origin, bool allow_large) {
   if (inputs.config == nullptr) throw std::invalid_argument("CheckSweepInputs: the shared inputs have no config");
+  // First: the other checks list the network variants, which a hostile config makes too many.
+  if (!allow_large) {
+    CheckSweepSize(EstimateSweepSize(*inputs.config, inputs.deployment.size(), inputs.deployment.dim()),
+                   PhysicalMemoryBytes(), origin);
+  }
   CheckBowProtocols(*inputs.config, origin);
   CheckNetworks(*inputs.config, origin);
+  CheckFailoverTimeout(*inputs.config, origin);
+  CheckDropouts(inputs, origin);
   CheckStrategies(inputs, origin);
 }
 

@@ -16,7 +16,12 @@ namespace dvpr {
 //  - a strategy needs the training descriptors (balanced_, _train) but centroid files replace them,
 //    or clusters them into more clusters than there are descriptors;
 //  - with the sim protocol, a network variant is invalid for a team of the sweep, e.g. a link
-//    override (network.links) naming a robot outside the smallest team.
-void CheckSweepInputs(const SharedInputs& inputs, const std::string& origin);
+//    override (network.links) naming a robot outside the smallest team;
+//  - with failover on in the sim protocol, failover.timeout is shorter than heartbeat_period plus
+//    the worst delay of a heartbeat on a network variant (docs/failover.md);
+//  - a dropout is at or after the end of the run of a team that has its robot;
+//  - unless allow_large, the sweep has more than kMaxSweepRuns runs or a run may need more than
+//    the machine's memory (sweep_size.h).
+void CheckSweepInputs(const SharedInputs& inputs, const std::string& origin, bool allow_large = false);
 
 }  // namespace dvpr

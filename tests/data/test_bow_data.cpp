@@ -151,6 +151,17 @@ TEST_F(BowFileTest, MalformedLinesNameFileAndLine) {
   ExpectError("", {"empty"});
 }
 
+// 1e-46 is positive as a double but below float32's smallest subnormal (2^-149, about 1.4e-45):
+// it would be a word of weight 0. 1e-44 rounds to a float32 subnormal above 0 and is kept.
+TEST_F(BowFileTest, AWeightThatIsZeroInFloat32IsRefused) {
+  ExpectError("1:1 2:1e-46\n", {"line 1", "'2:1e-46'", "0 in float32"});
+  EXPECT_EQ(LoadBowFile(Text("1:1e-44\n")).frames[0].size(), 1u);
+}
+
+TEST_F(BowFileTest, AFileWithoutASingleWordIsRefused) {
+  ExpectError("-\n-\n", {"no frame has a word", "every line is '-'"});
+}
+
 // The binary triples (frame, word, weight), 12 bytes each, little-endian, in a .bin file.
 class BowTriplesTest : public ::testing::Test {
  protected:
@@ -219,6 +230,11 @@ TEST_F(BowTriplesTest, ZeroWeightDeclaresATrailingFrameWithoutWords) {
   EXPECT_EQ(d.frames[0], (BowVector{{1, 1.0f}}));
   EXPECT_TRUE(d.frames[3].empty());
   EXPECT_EQ(d.vocabulary, 2);
+}
+
+// Weights of 0 only declare frames: two frames, no word in either.
+TEST_F(BowTriplesTest, AFileWithoutASingleWordIsRefused) {
+  ExpectError(Bytes({{0, 1, 0.0f}, {1, 5, 0.0f}}), {"no frame has a word", "every weight is 0"});
 }
 
 TEST_F(BowTriplesTest, BadTriplesNameFileTripleAndByte) {

@@ -5,6 +5,9 @@
 #include <cstdint>
 #include <mutex>
 #include <stdexcept>
+#include <string>
+#include <system_error>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -45,6 +48,28 @@ TEST(ParallelFor, RethrowsTheErrorAndOnOneThreadRunsNothingAfterIt) {
   } catch (const std::runtime_error& e) {
     EXPECT_STREQ(e.what(), "index 7");
   }
+}
+
+// The system refuses the second worker thread (EAGAIN, as pthread_create does at RLIMIT_NPROC):
+// the one started is joined, nothing aborts, and the error is one line (before: std::terminate
+// on a vector of joinable threads). Of 4 workers, the calling thread and one more had started.
+TEST(ParallelFor, AThreadTheSystemRefusesIsOneErrorAfterTheStartedOnesJoined) {
+  int starts = 0;
+  const auto start_one_then_refuse = [&](std::vector<std::thread>& pool, auto& work) {
+    if (++starts == 2) throw std::system_error(std::make_error_code(std::errc::resource_unavailable_try_again));
+    pool.emplace_back(std::ref(work));
+  };
+  std::atomic<int> ran{0};
+  try {
+    ParallelFor(1000, 4, [&](std::int64_t) { ++ran; }, start_one_then_refuse);
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "cannot start threads: " + std::make_error_code(std::errc::resource_unavailable_try_again).message() +
+                  " (started 2 of 4; a process or thread limit is reached: try --threads 1)");
+  }
+  EXPECT_EQ(starts, 2);
+  EXPECT_LE(ran.load(), 1000);  // what the started worker took before it was stopped, each once
 }
 
 // Value 0 is held back until values 1-5 are done (two threads: one waits on 0, the other does

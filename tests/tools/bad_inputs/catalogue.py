@@ -484,6 +484,27 @@ def later_keys_cases():
     ]
 
 
+def checks_before_work_cases():
+    """Issue 31: configs that would make a run meaningless or too large, refused before it starts."""
+    return [
+        Case("h01", "failover.timeout shorter than heartbeat period + a heartbeat's delay "
+             "(100ms + 2.0728ms at 10Mbps 2ms)", ("failover.timeout", "heartbeat"),
+             sets=S("failover.enabled=true", "failover.heartbeat_period=100ms", "failover.timeout=101ms")),
+        Case("h02", "one robot dropped twice", ("dropout[1].robot", "once"),
+             sets=S("dropout=[{robot: 1, at: 1s}, {robot: 1, at: 2s}]")),
+        Case("h03", "dropout after the run of 3 robots ends (100 frames at 10 fps: 10 s)", ("dropout[0].at", "10s"),
+             sets=S("dropout=[{robot: 1, at: 12s}]")),
+        Case("h04", "dataset.bow text file without a single word", ("bow.txt", "no frame has a word"),
+             sets=S(*BOW, "dataset.bow=bow.txt"), files=spoil("bow.txt", "-\n" * 300)),
+        Case("h05", "dataset.bow text weight 1e-50 (0 in float32)", ("bow.txt", "float32"),
+             sets=S(*BOW, "dataset.bow=bow.txt"), files=spoil("bow.txt", "1:1e-50\n" + bow_lines(299))),
+        Case("h06", "dataset.bow binary file whose weights are all 0", ("bow.bin", "no frame has a word"),
+             sets=S(*BOW, "dataset.bow=bow.bin"), files=spoil("bow.bin", triples([(299, 1, 0.0), (0, 2, 0.0)]))),
+        Case("h07", "a sweep of 1.6e6 runs (runs = 100000, three latencies)", ("runs", "--allow-large"),
+             sets=S("runs=100000", "network.latency=[1ms, 2ms, 3ms]")),
+    ]
+
+
 def catalogue():
     return quantities() + yaml_structure() + files_cases() + robots_cases() + cli_cases() + \
-        result_folder_cases() + later_keys_cases()
+        result_folder_cases() + later_keys_cases() + checks_before_work_cases()
