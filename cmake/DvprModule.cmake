@@ -39,6 +39,10 @@ function(_dvpr_add_library target sources public private flags definitions)
     target_link_libraries(${target} PUBLIC dvpr_includes ${public} PRIVATE ${private})
     target_compile_options(${target} PRIVATE ${flags})
     target_compile_definitions(${target} PRIVATE ${definitions})
+    if(DVPR_FUZZ AND target IN_LIST DVPR_FUZZ_COVERED)  # tests/fuzz/fuzz_flags.cmake
+      target_compile_options(${target} PRIVATE ${DVPR_FUZZ_COVERAGE_FLAGS})
+      target_link_libraries(${target} PUBLIC dvpr_fuzz_coverage)
+    endif()
   else()
     if(private)  # a library of headers only has no sources of its own to use them
       message(FATAL_ERROR "${target}: PRIVATE ${private} in a module without .cpp files")

@@ -1,28 +1,30 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets of tests/fuzz with clang (ASan + UBSan + libFuzzer) in a build
-# directory of their own and runs each for a bounded time, starting from its seed corpus in
-# tests/fuzz/corpus/<target>/. Fails when a target crashes, leaks, trips a sanitizer or one of
-# its properties, times out on one input or allocates beyond the limit; it then prints the
-# command that reruns the saved input.
-#   DVPR_FUZZ_SECONDS  seconds per target (default 15: seven targets, about 1.75 minutes)
-#   DVPR_FUZZ_BUILD    build directory (default build/fuzz)
+# Runs the libFuzzer targets of tests/fuzz (every fuzz_<name>.cpp with a seed corpus
+# tests/fuzz/corpus/<name>/) each for a bounded time. They are built inside the sanitizer test
+# build (GCC, ASan + UBSan, -DDVPR_FUZZ=ON: tests/fuzz/fuzz_flags.cmake) from the objects the
+# test suite runs, so after scripts/test.sh nothing is left to compile but their links. Fails
+# when a target crashes, leaks, trips a sanitizer or one of its properties, times out on one
+# input or allocates beyond the limit; it then prints the command that reruns the saved input.
+#   DVPR_FUZZ_SECONDS  seconds per target (default 15: seven targets, under 2 minutes)
+#   DVPR_FUZZ_BUILD    the sanitizer build directory (default build/asan, scripts/test.sh's)
 #   DVPR_FUZZ_TARGETS  the targets to run (default: all)
 #   DVPR_FUZZ_SEED     libFuzzer's seed (default 1, so CI replays the same mutations and a finding
 #                      reproduces; 0 lets libFuzzer pick one, to explore further by hand)
-# New inputs a run finds go to $DVPR_FUZZ_BUILD/corpus/<target>/ (kept for the next local run,
-# never committed); failing inputs to $DVPR_FUZZ_BUILD/findings/<target>/.
+# New inputs a run finds go to $DVPR_FUZZ_BUILD/fuzz/corpus/<target>/ (kept for the next local
+# run, never committed); failing inputs to $DVPR_FUZZ_BUILD/fuzz/findings/<target>/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 SECONDS_EACH=${DVPR_FUZZ_SECONDS:-15}
 SEED=${DVPR_FUZZ_SEED:-1}
-BUILD=${DVPR_FUZZ_BUILD:-build/fuzz}
-read -r -a TARGETS <<< "${DVPR_FUZZ_TARGETS:-config npy csv bin poses lcm udpm}"
+BUILD=${DVPR_FUZZ_BUILD:-build/asan}
+# Every fuzz_<name>.cpp with a seed corpus, as tests/fuzz/CMakeLists.txt finds them.
+ALL=$(cd tests/fuzz && for f in fuzz_*.cpp; do n=${f#fuzz_}; n=${n%.cpp}; if [ -d "corpus/$n" ]; then echo "$n"; fi; done)
+read -r -a TARGETS <<< "${DVPR_FUZZ_TARGETS:-$(echo $ALL)}"
 
-cmake -S . -B "$BUILD" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDVPR_FUZZ=ON -DDVPR_WERROR=ON \
-  -DDVPR_BUILD_TESTS=OFF -DDVPR_BUILD_BENCH=OFF -DDVPR_ARCH=generic >/dev/null
-# Only the fuzz targets and the libraries they link (DVPR_ARCH=generic: one variant of each).
+# scripts/test.sh's configuration, plus the fuzz targets.
+cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDVPR_SANITIZE=ON -DDVPR_WERROR=ON \
+  -DDVPR_BUILD_BENCH=OFF -DDVPR_ARCH=x86-64-v3 -DDVPR_FUZZ=ON >/dev/null
 cmake --build "$BUILD" -j "$(nproc)" --target dvpr_fuzz
 
 # The data targets write each input to a file: tmpfs when there is one.
@@ -33,9 +35,9 @@ export UBSAN_OPTIONS=print_stacktrace=1
 failed=()
 for t in "${TARGETS[@]}"; do
   bin="$BUILD/tests/fuzz/fuzz_$t"
-  work="$BUILD/corpus/$t"
-  findings="$(pwd)/$BUILD/findings/$t"
-  log="$BUILD/logs/fuzz_$t.log"
+  work="$BUILD/fuzz/corpus/$t"
+  findings="$(pwd)/$BUILD/fuzz/findings/$t"
+  log="$BUILD/fuzz/logs/fuzz_$t.log"
   mkdir -p "$work" "$findings" "$(dirname "$log")"
   # The first corpus folder receives new inputs, so the committed seeds stay untouched.
   # -timeout: one input running longer than 10 s is a failure (inputs normally take well under

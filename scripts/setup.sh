@@ -9,7 +9,7 @@ PACKAGES=(
   libeigen3-dev libboost-dev libyaml-cpp-dev
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
   libgtest-dev libbenchmark-dev
-  clang libclang-rt-14-dev                   # libFuzzer + ASan/UBSan runtimes (scripts/fuzz.sh)
+  libclang-rt-14-dev                         # libFuzzer's archive (scripts/fuzz.sh links it with g++)
   gnuplot-nox                                # figures
   python3 python3-numpy                      # independent cross-checks in the tests
   iproute2                                   # ip: loopback multicast for the LCM team tests
