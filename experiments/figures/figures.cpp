@@ -1,16 +1,15 @@
 // gnuplot scripts for the figures (see figures.h) and running them.
 #include "experiments/figures/figures.h"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <optional>
 #include <sstream>
 
 #include "experiments/figures/figures_traffic.h"
+#include "experiments/figures/gnuplot_run.h"
+#include "experiments/figures/gnuplot_text.h"
 #include "experiments/results/result_writers.h"
 
 namespace dvpr {
@@ -25,8 +24,9 @@ namespace fs = std::filesystem;
 // every run of a config, and draws the figure when rerun by hand).
 std::string Preamble(const fs::path& png, int width = 900, int height = 600) {
   return "set terminal pngcairo size " + std::to_string(width) + "," + std::to_string(height) +
-         " font 'DejaVu Sans,11' noenhanced\nset output (exists('dvpr_output') ? dvpr_output : '../" +
-         png.filename().string() + "')\nset grid lc rgb '#dddddd'\nset border lw 1\nset key box opaque\n";
+         " font 'DejaVu Sans,11' noenhanced\nset output (exists('dvpr_output') ? dvpr_output : " +
+         GnuplotQuote("../" + png.filename().string()) +
+         ")\nset grid lc rgb '#dddddd'\nset border lw 1\nset key box opaque\n";
 }
 
 std::vector<std::string> ReadLines(const fs::path& path) {
@@ -36,20 +36,14 @@ std::vector<std::string> ReadLines(const fs::path& path) {
   return lines;
 }
 
-std::string Escape(const std::string& s) {
-  std::string out;
-  for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return out;
-}
-
 // "plot 'stem.dat' index 0 ... title '...', ..." for every block of a series file.
 std::string PlotSeries(const fs::path& data_dir, const std::string& stem, const std::string& style) {
   const auto titles = ReadLines(data_dir / (stem + ".titles"));
   std::string cmd = "plot ";
   for (std::size_t i = 0; i < titles.size(); ++i) {
     cmd += (i ? ", \\\n     " : "") + std::string("'") + stem + ".dat" +
-           "' index " + std::to_string(i) + " using 1:2 " + style + " title '" +
-           Escape(titles[i]) + "'";
+           "' index " + std::to_string(i) + " using 1:2 " + style + " title " +
+           GnuplotQuote(titles[i]);
   }
   return cmd + "\n";
 }
@@ -91,7 +85,7 @@ std::string RelativeAucScript(const fs::path& data_dir, const fs::path& png) {
   const std::string protocol = ReadLines(data_dir / "relative_auc.protocol").at(0);
   auto panel = [&](const std::string& stem, const std::string& ylabel, const std::string& title) {
     const std::string dat = stem + ".dat";
-    return "set title '" + title + "'\nset xlabel 'robots n'\nset ylabel '" + ylabel +
+    return "set title " + GnuplotQuote(title) + "\nset xlabel 'robots n'\nset ylabel '" + ylabel +
            "'\nplot '" + dat + "' index 0 using 1:2 with points pt 7 ps 0.6 lc rgb '#7f9fcf' "
            "title 'every run', '" + dat + "' index 1 using 1:2 with linespoints lw 2 pt 7 "
            "lc rgb '#1f3f8f' title 'mean over runs'\n";
@@ -106,31 +100,14 @@ std::string RelativeAucScript(const fs::path& data_dir, const fs::path& png) {
          "unset multiplot\n";
 }
 
-// Writes the script, runs gnuplot into a temporary PNG and renames it into place.
-bool Draw(const fs::path& data_dir, const fs::path& png, const std::string& name,
-          const std::function<std::string(const fs::path&, const fs::path&)>& script, std::ostream& log) {
-  // pid in the name: two `dvpr plot` of one folder do not draw into the same temporary.
-  const fs::path tmp = png.parent_path() /
-                       ("." + png.filename().string() + ".tmp" + std::to_string(::getpid()));
+// Writes the script and draws it (gnuplot_run.h); throws when the figure was not drawn.
+void Draw(const fs::path& gnuplot, const fs::path& data_dir, const fs::path& png, const std::string& name,
+          const std::function<std::string(const fs::path&, const fs::path&)>& script) {
   const fs::path gp = data_dir / (name + ".gp");
   WriteFileAtomic(gp, script(data_dir, png));
-  const fs::path err = data_dir / (name + ".log");
   // Run inside the data folder: the scripts name their files relative to it, so they do not
   // depend on where the results folder is (and can be rerun after moving it).
-  const std::string cmd = "cd '" + data_dir.string() + "' && gnuplot -e \"dvpr_output='../" +
-                          tmp.filename().string() + "'\" '" + gp.filename().string() + "' 2> '" +
-                          err.filename().string() + "'";
-  if (std::system(cmd.c_str()) != 0 || !fs::exists(tmp)) {
-    std::error_code ignored;
-    fs::remove(tmp, ignored);  // a half-drawn PNG never replaces the earlier one
-    log << "dvpr: figure " << png.filename().string() << " not drawn (gnuplot failed, see "
-        << err.string() << ")\n";
-    return false;
-  }
-  fs::rename(tmp, png);
-  std::error_code ec;
-  fs::remove(err, ec);
-  return true;
+  DrawWithGnuplot(gnuplot, data_dir, gp, png, data_dir / (name + ".log"));
 }
 
 // Strategy figures compare strategies beyond the paper's two; with only those they repeat
@@ -191,23 +168,34 @@ std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::ostream& log) {
                      strategies ? "no relative AUC in runs.csv" : no_strategies});
   figures.push_back({"strategy_sweep", have8, StrategySweepScript,
                      strategies ? "needs a relative AUC at two or more n" : no_strategies});
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
+  const std::optional<fs::path> gnuplot = FindProgram("gnuplot");
+  if (!gnuplot) {
     log << "dvpr: figures not drawn: gnuplot is not installed (scripts/setup.sh installs it)\n";
     return {};
   }
   std::vector<fs::path> drawn;
+  std::string failed;  // the first figure that was not drawn; the others are still tried
+  int failures = 0;
+  const auto draw = [&](const std::string& name, const auto& script) {
+    const fs::path png = fig / (name + ".png");
+    try {
+      Draw(*gnuplot, data, png, name, script);
+      drawn.push_back(png);
+    } catch (const std::runtime_error& e) {
+      if (failures++ == 0) failed = e.what();
+    }
+  };
   for (const Figure& f : figures) {
-    const fs::path png = fig / (f.name + ".png");
     if (!f.available) {
       log << "dvpr: figure " << f.name << ".png skipped (" << f.missing << ")\n";
       continue;
     }
-    if (Draw(data, png, f.name, f.script, log)) drawn.push_back(png);
+    draw(f.name, f.script);
   }
   // Figure 9 only where bag-of-words ran (no "skipped" line elsewhere).
-  if (WriteBowComparisonData(out_dir, data, rows)) {
-    const fs::path png = fig / "bow_comparison.png";
-    if (Draw(data, png, "bow_comparison", BowComparisonScript, log)) drawn.push_back(png);
+  if (WriteBowComparisonData(out_dir, data, rows)) draw("bow_comparison", BowComparisonScript);
+  if (failures > 0) {
+    throw std::runtime_error(failed + (failures > 1 ? " (and " + std::to_string(failures - 1) + " more figures)" : ""));
   }
   return drawn;
 }

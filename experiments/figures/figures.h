@@ -100,8 +100,10 @@ std::string BowComparisonScript(const std::filesystem::path& data_dir, const std
 
 // Reads out_dir/runs.csv (and per_robot.csv, links.csv), writes the data of figures 3, 5-12, then
 // draws every figure whose data exists; the strategy figures (10, 11) only when runs.csv has a
-// strategy other than decentralized and broadcast. Figures that cannot be drawn (no data, gnuplot missing or failing) are reported on
-// `log` and skipped. Returns the PNGs written.
+// strategy other than decentralized and broadcast. Figures without their data, or every figure
+// when gnuplot is not installed, are reported on `log` and skipped. A figure gnuplot fails to
+// draw (gnuplot_run.h) is an error: the others are still drawn, then std::runtime_error names
+// the first that failed and its log; its earlier PNG stays as it was. Returns the PNGs written.
 std::vector<std::filesystem::path> DrawFigures(const std::filesystem::path& out_dir,
                                                std::ostream& log);
 

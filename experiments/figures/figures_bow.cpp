@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "experiments/figures/figures.h"
+#include "experiments/figures/gnuplot_text.h"
 #include "experiments/results/result_writers.h"
 
 namespace dvpr {
@@ -135,9 +136,9 @@ bool WriteBowComparisonData(const fs::path& out_dir, const fs::path& data_dir, c
 
 std::string BowComparisonScript(const fs::path& data_dir, const fs::path& png) {
   std::string s = "set terminal pngcairo size 1400,1000 font 'DejaVu Sans,11' noenhanced\n"
-                  "set output (exists('dvpr_output') ? dvpr_output : '../" +  // as Preamble (figures.cpp)
-                  png.filename().string() +
-                  "')\nset grid lc rgb '#dddddd'\nset key box opaque\nset multiplot layout 2,2\nset xlabel 'robots n'\n";
+                  "set output (exists('dvpr_output') ? dvpr_output : " +  // as Preamble (figures.cpp)
+                  GnuplotQuote("../" + png.filename().string()) +
+                  ")\nset grid lc rgb '#dddddd'\nset key box opaque\nset multiplot layout 2,2\nset xlabel 'robots n'\n";
   const auto lines = [](const std::string& dat, const std::vector<int>& columns) {
     std::string p = "plot ";
     for (int c : columns) {
@@ -161,7 +162,7 @@ std::string BowComparisonScript(const fs::path& data_dir, const fs::path& png) {
        "set ylabel 'share of partial queries'\nset yrange [0:*]\nset logscale x\nset key top right\nplot ";
   for (std::size_t i = 0; i < ns.size(); ++i) {
     s += std::string(i ? ", " : "") + "'bow_sizes.dat' index " + std::to_string(i) +
-         " using 1:2 with steps lw 2 title 'n = " + ns[i] + "'";
+         " using 1:2 with steps lw 2 title " + GnuplotQuote("n = " + ns[i]);
   }
   s += (ns.empty() ? "NaN notitle" : "") + std::string("\nunset logscale x\nset xlabel 'robots n'\n");
   s += "set title 'Vote (step 4) returns another frame than the centralized BoW best'\n"

@@ -10,6 +10,7 @@
 
 #include "experiments/figures/figure_style.h"
 #include "experiments/figures/figures.h"
+#include "experiments/figures/gnuplot_text.h"
 #include "experiments/results/result_writers.h"
 
 namespace dvpr {
@@ -239,7 +240,7 @@ std::string LabelLines(const StrategyTable& t, int n, const TradeoffAxes& a) {
         << FormatDouble((l.point.py + l.where.dy) / ph, 4) << ' '
         << (l.where.align == 1 ? "left" : l.where.align == -1 ? "right" : "center") << ' '
         << (leader ? 1 : 0) << ' ' << Num(l.point.x) << ' ' << Num(l.point.y) << ' '
-        << l.point.text << '\n';
+        << OneLineText(l.point.text) << '\n';
   }
   return out.str();
 }
@@ -263,11 +264,8 @@ std::map<std::string, std::string> ReadMeta(const fs::path& path) {
   return meta;
 }
 
-std::string Quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return out + "'";
-}
+// Names from runs.csv reach the scripts only single-quoted (gnuplot_text.h).
+std::string Quote(const std::string& s) { return GnuplotQuote(s); }
 
 std::string Margins(double l, double r, double b, double t) {
   std::ostringstream s;
@@ -279,8 +277,8 @@ std::string Margins(double l, double r, double b, double t) {
 std::string Terminal(const fs::path& png, int width, int height) {
   return "set terminal pngcairo size " + std::to_string(width) + "," + std::to_string(height) +
          " font 'DejaVu Sans,11' noenhanced\nset encoding utf8\n"
-         "set output (exists('dvpr_output') ? dvpr_output : '../" +  // as Preamble (figures.cpp)
-         png.filename().string() + "')\nset datafile missing 'NaN'\nset border lw 1\n";
+         "set output (exists('dvpr_output') ? dvpr_output : " +  // as Preamble (figures.cpp)
+         GnuplotQuote("../" + png.filename().string()) + ")\nset datafile missing 'NaN'\nset border lw 1\n";
 }
 
 std::string RunsText(const std::string& runs) {
@@ -365,14 +363,14 @@ bool WriteStrategyTradeoffData(const fs::path& data_dir, const std::vector<RunRe
       dat << ' ' << Num(b.mean / 1000) << ' ' << Num(b.min / 1000) << ' ' << Num(b.max / 1000);
     }
     dat << '\n';
-    names << t.strategies[i] << '\n';
+    names << OneLineText(t.strategies[i]) << '\n';
   }
   meta << "robots";
   for (int n : ns) meta << ' ' << n;
   meta << "\nmissing_0" << MissingRows(t, ns, [](const StrategyStats& s) { return s.relative_auc; })
        << "\nmissing_3" << MissingRows(t, ns, [](const StrategyStats& s) { return s.worst_balance; })
        << "\nmissing_6" << MissingRows(t, ns, [](const StrategyStats& s) { return s.bytes_per_query; })
-       << "\nprotocol " << t.accuracy_protocol << "\nnetwork " << t.bytes_network
+       << "\nprotocol " << t.accuracy_protocol << "\nnetwork " << OneLineText(t.bytes_network)
        << "\nruns " << MaxRuns(t) << "\nauc_lo " << FormatDouble(axes.auc_lo, 2)
        << "\nbalance_hi " << FormatDouble(axes.balance_hi, 0) << "\nkb_hi "
        << FormatDouble(axes.kb_hi, 0) << "\n";
@@ -453,13 +451,13 @@ bool WriteStrategySweepData(const fs::path& data_dir, const std::vector<RunResul
                     blocks([](const StrategyStats& s) { return s.bytes_per_query; }, 1000));
   }
   std::ostringstream names, meta;
-  for (const auto& s : t.strategies) names << s << '\n';
+  for (const auto& s : t.strategies) names << OneLineText(s) << '\n';
   meta << "robots";
   for (int n : t.robots) meta << ' ' << n;
-  meta << "\nprotocol " << t.accuracy_protocol << "\nnetwork " << (bytes ? t.bytes_network : "")
+  meta << "\nprotocol " << t.accuracy_protocol << "\nnetwork " << (bytes ? OneLineText(t.bytes_network) : "")
        << "\nruns " << MaxRuns(t) << "\nbalance_hi "
        << FormatDouble(ChooseAxes(t, t.robots).balance_hi, 0) << "\n";
-  for (const auto& g : CoincidingBalance(t)) meta << "same_balance " << g << '\n';
+  for (const auto& g : CoincidingBalance(t)) meta << "same_balance " << OneLineText(g) << '\n';
   WriteFileAtomic(data_dir / "strategy_sweep.titles", names.str());
   WriteFileAtomic(data_dir / "strategy_sweep.meta", meta.str());
   return true;
@@ -648,19 +646,20 @@ std::string SweepPanel(const std::string& file, const std::vector<std::string>& 
 // The groups of equal balance (strategy_sweep.meta) as a note under the legend, one strategy per
 // line since the legend column is narrow; "" when there are none.
 std::string CoincidingNote(const fs::path& data_dir, double left) {
-  std::string same;
+  std::vector<std::string> lines = {"Same worst balance at every n", "(their lines coincide):"};
   for (const auto& line : Lines(data_dir / "strategy_sweep.meta")) {
     if (line.rfind("same_balance ", 0) != 0) continue;
-    std::string group = line.substr(13);
-    for (std::size_t at = group.find(" = "); at != std::string::npos; at = group.find(" = ", at + 8)) {
-      group.replace(at, 3, "\\n    = ");  // 8 characters, the last three " = " again
+    const std::string group = line.substr(13);
+    std::size_t from = 0;
+    for (std::size_t at = group.find(" = "); at != std::string::npos; at = group.find(" = ", from)) {
+      lines.push_back((from ? "    = " : "") + group.substr(from, at - from));
+      from = at + 3;
     }
-    same += "\\n" + group;
+    lines.push_back((from ? "    = " : "") + group.substr(from));
   }
-  if (same.empty()) return "";
+  if (lines.size() == 2) return "";
   std::ostringstream s;
-  s << "set label \"Same worst balance at every n\\n(their lines coincide):" << same
-    << "\" at screen " << left << ", 0.40 left font ',10' tc rgb '#444444'\n";
+  s << "set label " << GnuplotTitle(lines) << " at screen " << left << ", 0.40 left font ',10' tc rgb '#444444'\n";
   return s.str();
 }
 
@@ -676,11 +675,12 @@ std::string StrategySweepScript(const fs::path& data_dir, const fs::path& png) {
   std::ostringstream s, tics;
   for (std::size_t i = 0; i < ns.size(); ++i) tics << (i ? ", " : "") << ns[i];
   s << Terminal(png, 1750, 640) << SweepLinetypes(names.size())
-    << "set multiplot title \"Routing strategies vs team size: relative AUC and worst balance "
-    << (meta.at("protocol") == "paper" ? "from the paper (static) protocol" : "from the simulation")
-    << (bytes ? ", bytes per query from the simulation (" + meta.at("network") + ")" : "")
-    << "; " << (meta.at("runs") == "1" ? "1 run" : "mean of " + meta.at("runs") + " runs")
-    << "\" font ',14'\nset grid lc rgb '#dddddd'\nset xlabel 'robots n'\nset xtics ("
+    << "set multiplot title "
+    << GnuplotTitle({std::string("Routing strategies vs team size: relative AUC and worst balance ") +
+                    (meta.at("protocol") == "paper" ? "from the paper (static) protocol" : "from the simulation") +
+                    (bytes ? ", bytes per query from the simulation (" + meta.at("network") + ")" : "") + "; " +
+                    (meta.at("runs") == "1" ? "1 run" : "mean of " + meta.at("runs") + " runs")})
+    << " font ',14'\nset grid lc rgb '#dddddd'\nset xlabel 'robots n'\nset xtics ("
     << tics.str() << ")\nset xrange [" << ns.front() - 1 << ':' << ns.back() + 1 << "]\nunset key\n";
   auto panel = [&](int i) {
     const double left = 0.02 + i * width + 0.045;

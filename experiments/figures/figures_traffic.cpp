@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "experiments/figures/figure_style.h"
+#include "experiments/figures/gnuplot_text.h"
 #include "experiments/results/result_writers.h"
 
 namespace dvpr {
@@ -16,18 +17,8 @@ namespace fs = std::filesystem;
 using figure_style::NetworkDash;
 using figure_style::NetworkPoint;
 
-std::string Quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return out + "'";
-}
-
-// A gnuplot string in double quotes, where "\\n" breaks the line.
-std::string DQuote(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\\\"") : std::string(1, c);
-  return out + "\"";
-}
+// Names from runs.csv reach the scripts only single-quoted (gnuplot_text.h).
+std::string Quote(const std::string& s) { return GnuplotQuote(s); }
 
 std::string Xtics(const std::vector<int>& robots) {
   std::string s = "set xtics (";
@@ -51,7 +42,7 @@ std::vector<int> CommonRobots(const TrafficTable& t, const std::vector<std::stri
 }
 
 std::string Block(const std::string& title, const std::vector<std::pair<double, double>>& points) {
-  std::string s = "# " + title + "\n";
+  std::string s = "# " + OneLineText(title) + "\n";
   for (const auto& [x, y] : points) s += FormatDouble(x) + " " + FormatDouble(y) + "\n";
   return s + "\n\n";
 }
@@ -71,12 +62,12 @@ std::string PrBytesPanel(const fs::path& dir, const TrafficTable& t, int v, cons
   const int n = robots.back();
   const double ratio = t.Find("broadcast", v, n)->pr_bytes_per_query / t.Find("decentralized", v, n)->pr_bytes_per_query;
   std::ostringstream s;
-  s << "set title " << DQuote("Place-recognition bytes per query (query + reply, every copy)\\n" +
-                              NetworkName(*t.Network(v)) + ", mean over runs")
+  s << "set title " << GnuplotTitle({"Place-recognition bytes per query (query + reply, every copy)",
+                                    NetworkName(*t.Network(v)) + ", mean over runs"})
     << "\nset xlabel 'robots n'\nset ylabel 'wire bytes per query'\nset logscale y\n"
     << Xtics(t.robots) << "set key at graph 0.02, graph 0.84 left top\n"
-    << "set label 1 " << DQuote("measured at n = " + std::to_string(n) + ": broadcast / decentralized = " +
-                                FormatDouble(ratio, 1) + "\\n(n - 1 = " + std::to_string(n - 1) + ")")
+    << "set label 1 " << GnuplotTitle({"measured at n = " + std::to_string(n) + ": broadcast / decentralized = " +
+                                           FormatDouble(ratio, 1), "(n - 1 = " + std::to_string(n - 1) + ")"})
     << " at graph 0.03, graph 0.93 left front\n"
     << "plot 'pr_bytes.dat' index 0 using 1:2 with linespoints lw 2 pt 7 " << Colour(t, "decentralized")
     << " title 'decentralized (one owner)', \\\n     '' index 1 using 1:2 with linespoints lw 2 pt 5 "
@@ -214,17 +205,18 @@ std::optional<FigureScript> WriteRoleFigure(const fs::path& dir, const TrafficTa
 
 namespace {
 
-// Rows of one run of `csv` (protocol sim, variant v, n, run 0) for `strategy`.
-std::vector<const std::vector<std::string>*> RunRows(const CsvTable& csv, const std::string& strategy, int v, int n) {
-  std::vector<const std::vector<std::string>*> out;
+// Rows of one run of `csv` (protocol sim, variant v, n, run 0) for `strategy`, by index.
+std::vector<std::size_t> RunRows(const CsvTable& csv, const std::string& strategy, int v, int n) {
+  std::vector<std::size_t> out;
   if (csv.header.empty()) return out;
   const std::size_t p = csv.Column("protocol"), s = csv.Column("strategy"), r = csv.Column("robots"),
                     run = csv.Column("run"), net = csv.Column("network_variant");
-  for (const auto& row : csv.rows) {
+  for (std::size_t i = 0; i < csv.rows.size(); ++i) {
+    const auto& row = csv.rows[i];
     if (row.size() != csv.header.size()) continue;
     if (row[p] == "sim" && row[s] == strategy && row[r] == std::to_string(n) && row[run] == "0" &&
         row[net] == std::to_string(v)) {
-      out.push_back(&row);
+      out.push_back(i);
     }
   }
   return out;
@@ -245,13 +237,15 @@ std::string LoadPanel(const fs::path& dir, const TrafficTable& t, const CsvTable
   std::string dat;
   double sum = 0, most = -1;
   std::string busiest;
-  for (const auto* row : RunRows(per_robot, s, v, n)) {
-    const double q = std::stod((*row)[served]);
-    dat += (*row)[robot] + " " + (*row)[served] + "\n";
+  // Numbers only, parsed: the robot id is also the label's position in the script.
+  for (const std::size_t i : RunRows(per_robot, s, v, n)) {
+    const std::string id = std::to_string(per_robot.Integer(i, robot, 0, n - 1));
+    const double q = per_robot.Count(i, served);
+    dat += id + " " + FormatDouble(q) + "\n";
     sum += q;
     if (q > most) {
       most = q;
-      busiest = (*row)[robot];
+      busiest = id;
     }
   }
   const std::string file = "load_" + std::to_string(t.StrategyIndex(s)) + ".dat";
@@ -299,8 +293,9 @@ namespace {
 double WriteMatrix(const fs::path& file, const CsvTable& links, const std::string& strategy, int v, int n) {
   std::vector<double> kb(static_cast<std::size_t>(n * n), 0.0);
   const std::size_t src = links.Column("src"), dst = links.Column("dst"), wire = links.Column("wire_bytes");
-  for (const auto* row : RunRows(links, strategy, v, n)) {
-    kb[static_cast<std::size_t>(std::stoi((*row)[src]) * n + std::stoi((*row)[dst]))] = std::stod((*row)[wire]) / 1e3;
+  for (const std::size_t i : RunRows(links, strategy, v, n)) {
+    const int from = links.Integer(i, src, 0, n - 1), to = links.Integer(i, dst, 0, n - 1);
+    kb[static_cast<std::size_t>(from * n + to)] = links.Count(i, wire) / 1e3;
   }
   std::string dat;
   for (int r = 0; r < n; ++r) {

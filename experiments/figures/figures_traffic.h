@@ -45,9 +45,16 @@ TrafficTable TabulateTraffic(const std::vector<RunResult>& rows);
 
 // A CSV file as strings, for the per-run files (per_robot.csv, links.csv). Empty if unreadable.
 struct CsvTable {
+  std::filesystem::path path;
   std::vector<std::string> header;
   std::vector<std::vector<std::string>> rows;
+  std::vector<long> lines;  // the file's line number of each row
   std::size_t Column(const std::string& name) const;  // throws if absent
+  // Field `column` of rows[row] as an integer in [lo, hi], or as a finite number >= 0 (a robot id
+  // or a count goes into a script or an index: nothing else is let through). Throws
+  // std::runtime_error naming the file, line and column.
+  int Integer(std::size_t row, std::size_t column, int lo, int hi) const;
+  double Count(std::size_t row, std::size_t column) const;
 };
 CsvTable ReadCsvTable(const std::filesystem::path& path);
 

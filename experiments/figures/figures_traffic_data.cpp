@@ -1,6 +1,7 @@
 // The numbers of the traffic figures (figures_traffic.cpp): runs.csv's bytes by role, and the
 // per_robot.csv and links.csv rows of one run, read by their header names.
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -100,16 +101,49 @@ CsvTable ReadCsvTable(const std::filesystem::path& path) {
     if (!l.empty() && l.back() == ',') f.emplace_back();
     return f;
   };
+  t.path = path;
   if (!std::getline(in, line)) return t;
   t.header = split(line);
-  while (std::getline(in, line)) t.rows.push_back(split(line));
+  for (long number = 2; std::getline(in, line); ++number) {
+    t.rows.push_back(split(line));
+    t.lines.push_back(number);
+  }
   return t;
 }
 
 std::size_t CsvTable::Column(const std::string& name) const {
   const auto it = std::find(header.begin(), header.end(), name);
-  if (it == header.end()) throw std::runtime_error("no column " + name);
+  if (it == header.end()) throw std::runtime_error(path.string() + ": no column " + name);
   return static_cast<std::size_t>(it - header.begin());
+}
+
+namespace {
+
+[[noreturn]] void BadField(const CsvTable& t, std::size_t row, std::size_t column, const std::string& expected) {
+  throw std::runtime_error(t.path.string() + ": line " + std::to_string(t.lines[row]) + ": " + t.header[column] +
+                           ": expected " + expected + ", got '" + t.rows[row][column] + "'");
+}
+
+}  // namespace
+
+int CsvTable::Integer(std::size_t row, std::size_t column, int lo, int hi) const {
+  const std::string& s = rows[row][column];
+  int v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size() || s.empty() || v < lo || v > hi) {
+    BadField(*this, row, column, "an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
+  }
+  return v;
+}
+
+double CsvTable::Count(std::size_t row, std::size_t column) const {
+  const std::string& s = rows[row][column];
+  double v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size() || s.empty() || !std::isfinite(v) || v < 0) {
+    BadField(*this, row, column, "a number >= 0");
+  }
+  return v;
 }
 
 }  // namespace dvpr

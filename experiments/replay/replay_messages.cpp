@@ -58,6 +58,15 @@ class Row {
   }
   bool Empty(Column c) const { return Text(c).empty(); }
   std::size_t size() const { return fields_.size(); }
+  // A robot of a team of `robots`: the page draws it at that index.
+  int Robot(Column c, int robots) const {
+    const int id = Number<int>(c);
+    if (id < 0 || id >= robots) {
+      Fail(c, "a robot of the team of " + std::to_string(robots) + " (0 to " + std::to_string(robots - 1) + ")",
+           std::to_string(id));
+    }
+    return id;
+  }
 
  private:
   [[noreturn]] void Fail(Column c, const std::string& expected, const std::string& got) const {
@@ -84,12 +93,12 @@ std::array<std::size_t, kColumns> HeaderIndex(std::string_view header, const std
   return index;
 }
 
-Message MessageOf(const Row& row) {
+Message MessageOf(const Row& row, int robots) {
   Message m;
   m.sent_ns = row.Number<std::int64_t>(kSent);
   if (!row.Empty(kDelivered)) m.delivered_ns = row.Number<std::int64_t>(kDelivered);
-  m.src = row.Number<int>(kSrc);
-  m.dst = row.Number<int>(kDst);
+  m.src = row.Robot(kSrc, robots);
+  m.dst = row.Robot(kDst, robots);
   const std::string_view channel = row.Text(kChannel);
   m.role = channels::RoleOf(channel);
   m.queue = QueueEffectOfChannel(channel);
@@ -130,7 +139,7 @@ void Take(Scan& scan, const Row& row, const RunId& id) {
   const std::string strategy(row.Text(kStrategy));
   auto [it, added] = scan.by_strategy.try_emplace(strategy);
   if (added) scan.order.push_back(strategy);
-  Message m = MessageOf(row);
+  Message m = MessageOf(row, std::get<0>(id));
   // A shared-medium broadcast is one transmission: its copies follow each other in the file.
   std::string& last = scan.last_channel[strategy];
   const std::string channel(row.Text(kChannel));

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string_view>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "experiments/results/result_writers.h"
@@ -15,19 +16,74 @@ namespace dvpr::replay {
 
 namespace {
 
+// The code point of the valid UTF-8 sequence at s[i] and its length, or length 0 when the bytes
+// there are not one (a stray or cut sequence, an overlong form, a surrogate, above U+10FFFF).
+std::pair<char32_t, std::size_t> DecodeUtf8(std::string_view s, std::size_t i) {
+  const auto b = [&](std::size_t k) { return static_cast<unsigned char>(s[i + k]); };
+  const unsigned char c = b(0);
+  std::size_t n = 0;
+  char32_t cp = 0;
+  if (c >= 0xc2 && c <= 0xdf) {
+    n = 2;
+    cp = c & 0x1f;
+  } else if (c >= 0xe0 && c <= 0xef) {
+    n = 3;
+    cp = c & 0x0f;
+  } else if (c >= 0xf0 && c <= 0xf4) {
+    n = 4;
+    cp = c & 0x07;
+  } else {
+    return {0, 0};
+  }
+  if (i + n > s.size()) return {0, 0};
+  for (std::size_t k = 1; k < n; ++k) {
+    if ((b(k) & 0xc0) != 0x80) return {0, 0};
+    cp = (cp << 6) | (b(k) & 0x3f);
+  }
+  constexpr char32_t kSmallest[5] = {0, 0, 0x80, 0x800, 0x10000};
+  if (cp < kSmallest[n] || cp > 0x10ffff || (cp >= 0xd800 && cp <= 0xdfff)) return {0, 0};
+  return {cp, n};
+}
+
+void AppendEscape(std::string& out, unsigned value) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "\\u%04x", value);
+  out += buf;
+}
+
+// A JSON string that is plain ASCII and safe inside the page's <script> element: quotes and
+// backslashes escaped, and as \uXXXX every control character, '<', '>' and '&' (so no
+// "</script>" or "<!--" can end or change the element) and every non-ASCII character (so
+// U+2028 and U+2029, line ends to older JavaScript, never appear raw). Bytes that are not valid
+// UTF-8 become U+FFFD, the replacement character.
 std::string JsonString(std::string_view s) {
   std::string out = "\"";
-  for (const char c : s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const char c = s[i];
     const auto u = static_cast<unsigned char>(c);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (u < 0x20 || c == '<' || c == '>' || c == '&' || u >= 0x80) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", u);  // bytes >= 0x80 shown as Latin-1: names are ASCII
-      out += buf;
+    if (u < 0x80) {
+      if (c == '"' || c == '\\') {
+        out += '\\';
+        out += c;
+      } else if (u < 0x20 || u == 0x7f || c == '<' || c == '>' || c == '&') {
+        AppendEscape(out, u);
+      } else {
+        out += c;
+      }
+      ++i;
+      continue;
+    }
+    const auto [cp, n] = DecodeUtf8(s, i);
+    if (n == 0) {
+      AppendEscape(out, 0xfffd);
+      ++i;
+    } else if (cp >= 0x10000) {  // a UTF-16 surrogate pair
+      AppendEscape(out, 0xd800 + ((cp - 0x10000) >> 10));
+      AppendEscape(out, 0xdc00 + ((cp - 0x10000) & 0x3ff));
+      i += n;
     } else {
-      out += c;
+      AppendEscape(out, cp);
+      i += n;
     }
   }
   return out + "\"";

@@ -1,0 +1,181 @@
+#include "experiments/figures/gnuplot_run.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <stdexcept>
+
+#include "experiments/figures/gnuplot_text.h"
+
+extern char** environ;
+
+namespace dvpr {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A file descriptor closed when it goes out of scope.
+class Fd {
+ public:
+  explicit Fd(int fd) : fd_(fd) {}
+  ~Fd() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  Fd(const Fd&) = delete;
+  Fd& operator=(const Fd&) = delete;
+  int get() const { return fd_; }
+
+ private:
+  int fd_;
+};
+
+// posix_spawn's file actions and attributes, destroyed with the object.
+struct SpawnSetup {
+  posix_spawn_file_actions_t actions;
+  posix_spawnattr_t attr;
+  SpawnSetup() {
+    posix_spawn_file_actions_init(&actions);
+    posix_spawnattr_init(&attr);
+  }
+  ~SpawnSetup() {
+    posix_spawn_file_actions_destroy(&actions);
+    posix_spawnattr_destroy(&attr);
+  }
+  SpawnSetup(const SpawnSetup&) = delete;
+  SpawnSetup& operator=(const SpawnSetup&) = delete;
+};
+
+std::string Errno(int e) { return std::strerror(e); }
+
+// A new file in `dir` that nobody else had: O_EXCL and O_NOFOLLOW, so a file or link planted at
+// the name is never opened (another name is tried), with a random part in the name.
+std::pair<fs::path, int> CreatePrivate(const fs::path& dir, const std::string& stem) {
+  std::random_device random;
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const fs::path p = dir / ("." + stem + ".tmp" + std::to_string(::getpid()) + "-" + std::to_string(random() % 1000000));
+    const int fd = ::open(p.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);  // read back by WholePng
+    if (fd >= 0) return {p, fd};
+    if (errno != EEXIST) throw std::runtime_error(p.string() + ": cannot create it: " + Errno(errno));
+  }
+  throw std::runtime_error((dir / stem).string() + ": cannot find a free temporary name beside it");
+}
+
+// A whole PNG: the 8-byte signature first, the 12-byte IEND chunk last (a full disk or a killed
+// gnuplot leaves a file cut short or empty).
+bool WholePng(int fd) {
+  static constexpr std::array<unsigned char, 8> kSignature = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  static constexpr std::array<unsigned char, 12> kIend = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || st.st_size < 8 + 12) return false;
+  std::array<unsigned char, 8> head{};
+  std::array<unsigned char, 12> tail{};
+  return ::pread(fd, head.data(), head.size(), 0) == 8 && head == kSignature &&
+         ::pread(fd, tail.data(), tail.size(), st.st_size - 12) == 12 && tail == kIend;
+}
+
+// gnuplot's first lines that say something, as one line (its errors quote the script line
+// and point at it with a caret on the next).
+std::string FirstWords(const fs::path& log) {
+  std::ifstream in(log);
+  std::string words;
+  for (std::string line; std::getline(in, line) && words.size() < 200;) {
+    if (line.find_first_not_of(" \t^") == std::string::npos) continue;
+    words += (words.empty() ? "" : " / ") + line.substr(line.find_first_not_of(" \t"));
+  }
+  if (words.size() > 200) words = words.substr(0, 200) + "...";
+  return OneLineText(words);
+}
+
+}  // namespace
+
+std::optional<fs::path> FindProgram(std::string_view name) {
+  const char* env = std::getenv("PATH");
+  const std::string path = env != nullptr ? env : "/usr/bin:/bin";
+  for (std::size_t start = 0; start <= path.size();) {
+    std::size_t end = path.find(':', start);
+    if (end == std::string::npos) end = path.size();
+    const std::string folder = path.substr(start, end - start);
+    start = end + 1;
+    if (folder.empty()) continue;
+    std::error_code ec;
+    const fs::path candidate = fs::absolute(fs::path(folder) / name, ec);
+    if (!ec && fs::is_regular_file(candidate, ec) && ::access(candidate.c_str(), X_OK) == 0) return candidate;
+  }
+  return std::nullopt;
+}
+
+std::string RunProgram(const fs::path& program, const std::vector<std::string>& argv, const fs::path& dir, int out_fd,
+                       int err_fd) {
+  SpawnSetup s;
+  // The child starts with default signal handling and no blocked signals, whatever the caller set.
+  sigset_t none, all;
+  sigemptyset(&none);
+  sigfillset(&all);
+  posix_spawnattr_setsigmask(&s.attr, &none);
+  posix_spawnattr_setsigdefault(&s.attr, &all);
+  posix_spawnattr_setflags(&s.attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+  posix_spawn_file_actions_addchdir_np(&s.actions, dir.c_str());
+  posix_spawn_file_actions_addopen(&s.actions, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_adddup2(&s.actions, out_fd, 1);
+  posix_spawn_file_actions_adddup2(&s.actions, err_fd, 2);
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  pid_t pid = 0;
+  if (const int e = posix_spawn(&pid, program.c_str(), &s.actions, &s.attr, args.data(), environ); e != 0) {
+    return "cannot start it: " + Errno(e);
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) return "cannot wait for it: " + Errno(errno);
+  }
+  if (WIFEXITED(status)) return WEXITSTATUS(status) == 0 ? "" : "exit status " + std::to_string(WEXITSTATUS(status));
+  if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status));
+  return "status " + std::to_string(status);
+}
+
+void DrawWithGnuplot(const fs::path& gnuplot, const fs::path& data_dir, const fs::path& gp, const fs::path& png,
+                     const fs::path& log) {
+  const Fd err(::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644));
+  if (err.get() < 0) throw std::runtime_error(log.string() + ": cannot write it: " + Errno(errno));
+  auto [tmp, fd] = CreatePrivate(png.parent_path(), png.filename().string());
+  const Fd out(fd);
+  // The PNG goes to gnuplot's standard output, the private file opened above: gnuplot never opens
+  // an output path itself. The script's own `set output` (its PNG by name, for a rerun by hand)
+  // yields to dvpr_output; the value is a fixed string, single-quoted.
+  const std::string failure = RunProgram(gnuplot, {"gnuplot", "-e", "dvpr_output='/dev/stdout'", gp.filename().string()},
+                                         data_dir, out.get(), err.get());
+  const std::string what = !failure.empty() ? "gnuplot failed (" + failure + ")"
+                           : !WholePng(out.get()) ? "gnuplot wrote no whole PNG (a full disk?)"
+                                                  : "";
+  std::error_code ec;
+  if (!what.empty()) {
+    fs::remove(tmp, ec);  // a half-drawn PNG never replaces the earlier one
+    const std::string words = FirstWords(log);
+    throw std::runtime_error("figure " + png.filename().string() + ": " + what +
+                             (words.empty() ? "" : ": " + words) + "; its log: " + log.string());
+  }
+  if (::fsync(out.get()) != 0) {
+    fs::remove(tmp, ec);
+    throw std::runtime_error(png.string() + ": cannot write it: " + Errno(errno));
+  }
+  fs::rename(tmp, png, ec);
+  if (ec) {
+    const std::string why = ec.message();
+    fs::remove(tmp, ec);
+    throw std::runtime_error(png.string() + ": cannot put it in place: " + why);
+  }
+  fs::remove(log, ec);
+}
+
+}  // namespace dvpr
