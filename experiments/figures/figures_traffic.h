@@ -47,8 +47,7 @@ TrafficTable TabulateTraffic(const std::vector<RunResult>& rows);
 struct CsvTable {
   std::filesystem::path path;
   std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-  std::vector<long> lines;  // the file's line number of each row
+  std::vector<std::vector<std::string>> rows;  // rows[i] is line i + 2 of the file
   std::size_t Column(const std::string& name) const;  // throws if absent
   // Field `column` of rows[row] as an integer in [lo, hi], or as a finite number >= 0 (a robot id
   // or a count goes into a script or an index: nothing else is let through). Throws

@@ -104,10 +104,7 @@ CsvTable ReadCsvTable(const std::filesystem::path& path) {
   t.path = path;
   if (!std::getline(in, line)) return t;
   t.header = split(line);
-  for (long number = 2; std::getline(in, line); ++number) {
-    t.rows.push_back(split(line));
-    t.lines.push_back(number);
-  }
+  while (std::getline(in, line)) t.rows.push_back(split(line));
   return t;
 }
 
@@ -120,7 +117,7 @@ std::size_t CsvTable::Column(const std::string& name) const {
 namespace {
 
 [[noreturn]] void BadField(const CsvTable& t, std::size_t row, std::size_t column, const std::string& expected) {
-  throw std::runtime_error(t.path.string() + ": line " + std::to_string(t.lines[row]) + ": " + t.header[column] +
+  throw std::runtime_error(t.path.string() + ": line " + std::to_string(row + 2) + ": " + t.header[column] +
                            ": expected " + expected + ", got '" + t.rows[row][column] + "'");
 }
 

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "experiments/figures/figures.h"
+#include "experiments/figures/gnuplot_run.h"
 #include "experiments/results/result_writers.h"
 #include "tests/descriptor_support.h"
 #include "tests/test_support.h"
@@ -184,7 +185,7 @@ TEST_F(StrategyFigures, NothingWrittenWithoutData) {
 }
 
 TEST_F(StrategyFigures, DrawFiguresSaysWhyTheSweepIsSkipped) {
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
+  if (!FindProgram("gnuplot")) {
     GTEST_SKIP() << "gnuplot is not installed";
   }
   WriteRunsCsv(dir_ / "runs.csv", {Paper("decentralized", 10, 0, 0.8, 4.0),

@@ -1,6 +1,5 @@
 // The traffic figures (figures_traffic.h): the numbers they plot, from hand-made runs.csv rows
 // with bytes by role, and which figures are drawn for which configs. Pixels are not tested.
-#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
@@ -8,6 +7,7 @@
 
 #include "experiments/figures/figures.h"
 #include "experiments/figures/figures_traffic.h"
+#include "experiments/figures/gnuplot_run.h"
 #include "experiments/results/result_writers.h"
 #include "tests/test_support.h"
 
@@ -119,8 +119,38 @@ TEST_F(TrafficFigures, RobotLoadMarksTheBusiestRobotAndTheFairShare) {
   EXPECT_NE(f->body.find("fair share (all searches / n = 25)"), std::string::npos);
 }
 
+// The robot id is the busiest robot's label position in the script, and src x dst indexes the
+// traffic matrix: anything but a robot of the team is refused, naming file, line and column.
+TEST_F(TrafficFigures, RobotIdsOutsideTheTeamAreRefused) {
+  CsvTable per_robot;
+  per_robot.path = "per_robot.csv";
+  per_robot.header = {"protocol", "strategy", "robots", "run", "robot", "queries_received", "network_variant"};
+  per_robot.rows = {{"sim", "decentralized", "4", "0", "0", "10", "0"},
+                    {"sim", "decentralized", "4", "0", "1; system('touch x')", "70", "0"}};
+  std::string why;
+  try {
+    WriteRobotLoadFigure(dir_, TabulateTraffic(Rows()), per_robot, why);
+    ADD_FAILURE() << "accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "per_robot.csv: line 3: robot: expected an integer from 0 to 3, got '1; system('touch x')'");
+  }
+  CsvTable links;
+  links.path = "links.csv";
+  links.header = {"protocol", "strategy", "robots", "run", "src", "dst", "wire_bytes", "network_variant"};
+  links.rows = {{"sim", "decentralized", "4", "0", "0", "4", "100", "0"}};
+  try {
+    WriteMatrixFigure(dir_, TabulateTraffic(Rows()), links, why);
+    ADD_FAILURE() << "accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "links.csv: line 2: dst: expected an integer from 0 to 3, got '4'");
+  }
+  links.rows = {{"sim", "decentralized", "4", "0", "0", "1", "-5", "0"}};
+  EXPECT_THROW(WriteMatrixFigure(dir_, TabulateTraffic(Rows()), links, why), std::runtime_error);
+}
+
 TEST_F(TrafficFigures, StrategyFiguresOnlyBeyondThePapersTwo) {
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) GTEST_SKIP() << "gnuplot is not installed";
+  if (!FindProgram("gnuplot")) GTEST_SKIP() << "gnuplot is not installed";
   WriteRunsCsv(dir_ / "runs.csv", Rows());
   std::ostringstream log;
   DrawFigures(dir_, log);

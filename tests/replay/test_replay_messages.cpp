@@ -139,5 +139,19 @@ TEST_F(ReplayMessagesTest, FilesThatCannotBeReplayedAreOneLineNamingTheFile) {
   EXPECT_EQ(ErrorOf([&] { ReadReplayRun(dir_ / "absent.csv", {}); }), (dir_ / "absent.csv").string() + ": cannot open it");
 }
 
+// The page draws src and dst as indexes into the team: a robot outside it is refused (the page's
+// script failed on it), naming file, line and column.
+TEST_F(ReplayMessagesTest, RobotsOutsideTheTeamAreRefused) {
+  const auto dst = Write("dst.csv", std::string(kHeader) +
+      "sim,broadcast,3,0,0,10,0,1,DVPR_QUERY_ALL,x,query_t,536,589,0,0,point_to_point,1e+07,2,none,q\n"
+      "sim,broadcast,3,0,0,10,0,3,DVPR_QUERY_ALL,x,query_t,536,589,0,0,point_to_point,1e+07,2,none,q\n");
+  EXPECT_EQ(ErrorOf([&] { ReadReplayRun(dst, {}); }),
+            dst.string() + ": line 3: dst: expected a robot of the team of 3 (0 to 2), got 3");
+  const auto src = Write("src.csv", std::string(kHeader) +
+      "sim,broadcast,3,0,0,10,-1,1,DVPR_QUERY_ALL,x,query_t,536,589,0,0,point_to_point,1e+07,2,none,q\n");
+  EXPECT_EQ(ErrorOf([&] { ReadReplayRun(src, {}); }),
+            src.string() + ": line 2: src: expected a robot of the team of 3 (0 to 2), got -1");
+}
+
 }  // namespace
 }  // namespace dvpr::replay

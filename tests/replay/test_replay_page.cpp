@@ -54,6 +54,23 @@ TEST(ReplayPageTest, NamesCannotCloseTheScriptElement) {
   EXPECT_NE(data.find("\"name\":\"a\\u003c/script\\u003e\\\"b\\\\\""), std::string::npos) << data;
 }
 
+// Every string of the page's JSON is ASCII: non-ASCII characters as \\uXXXX (U+2028 and U+2029
+// are line ends to older JavaScript, so never raw), a character beyond U+FFFF as its UTF-16
+// surrogate pair, bytes that are not UTF-8 as U+FFFD; '&', '>' and control characters escaped.
+TEST(ReplayPageTest, NamesAreAsciiJsonWhateverTheirBytes) {
+  Tracks t = TinyTracks();
+  // é, U+2028, U+2029, U+1F600 (F0 9F 98 80 = D83D DE00), a stray FF, a cut E2 82, a newline.
+  t.name = "caf\xc3\xa9\xe2\x80\xa8\xe2\x80\xa9\xf0\x9f\x98\x80|\xff|\xe2\x82|&>\n<!--";
+  ReplayRun run = TinyRun();
+  run.strategies[0].strategy = "it's `x` $(y); \"z\"";
+  const std::string data = PageData(run, t);
+  EXPECT_NE(data.find("\"name\":\"caf\\u00e9\\u2028\\u2029\\ud83d\\ude00|\\ufffd|\\ufffd\\ufffd|"
+                      "\\u0026\\u003e\\u000a\\u003c!--\""),
+            std::string::npos) << data;
+  EXPECT_NE(data.find("{\"name\":\"it's `x` $(y); \\\"z\\\"\""), std::string::npos) << data;
+  for (const char c : data) EXPECT_LT(static_cast<unsigned char>(c), 0x80);
+}
+
 TEST(ReplayPageTest, NetworkNames) {
   ReplayRun run = TinyRun();
   EXPECT_EQ(NetworkName(run), "point-to-point, 10 Mbit/s, 2 ms");
