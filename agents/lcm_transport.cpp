@@ -105,9 +105,18 @@ SimTime LcmTransport::Now() const {
 }
 
 void LcmTransport::SetEpoch(std::chrono::system_clock::time_point epoch) {
-  // steady_clock cannot be set, system_clock can: convert once, now.
-  const auto from_now = epoch - std::chrono::system_clock::now();
-  zero_ = WallClock::now() + std::chrono::duration_cast<WallClock::duration>(from_now);
+  // steady_clock cannot be set, system_clock can: convert once, now. The two clocks are read
+  // between two steady readings, and again when the process was preempted in between (the
+  // conversion would be off by the preemption: a team's clocks must agree to well under a frame).
+  WallClock::time_point before, after;
+  std::chrono::system_clock::time_point system;
+  for (int attempt = 0; attempt < 10; ++attempt) {
+    before = WallClock::now();
+    system = std::chrono::system_clock::now();
+    after = WallClock::now();
+    if (after - before < std::chrono::microseconds(100)) break;
+  }
+  zero_ = before + (after - before) / 2 + std::chrono::duration_cast<WallClock::duration>(epoch - system);
   zero_utime_ = SystemUtime(epoch);
 }
 
@@ -168,6 +177,10 @@ void LcmTransport::DoUnsubscribe(std::uint64_t id) {
 
 void LcmTransport::ReceiveWaiting() {
   for (int n = 0; n < kDatagramsPerWait && !stopped_; ++n) {
+    // A timer due now runs before the next datagram is read, as the simulation orders events by
+    // time: a robot whose dropout is due does not answer a query that came after it, however
+    // late its process was scheduled.
+    if (!timers_.empty() && timers_.top().due <= WallClock::now()) return;
     const std::optional<udpm::Socket::Received> got = socket_.Receive(datagram_);
     if (!got) return;
     const std::span<const std::uint8_t> bytes(datagram_.data(), got->size);

@@ -426,7 +426,11 @@ std::unique_ptr<TeamAgent> MakeAgent(const AgentProcessOptions& o, const Team& t
 void ScheduleDropout(const ExperimentConfig& c, int robot, Transport& transport) {
   for (const Dropout& d : c.dropout) {
     if (d.robot != robot) continue;
-    transport.ScheduleAfter(std::max(SimTime::Zero(), d.at - transport.Now()), [] { raise(SIGKILL); });
+    // Called before the team's start: a timer set then counts from the start (agent time 0), so
+    // the delay is `at` itself (it was `at` - Now(), which added the wait for the start: the
+    // robot died 1.5 s of agent time late at speedup 5).
+    transport.ScheduleAfter(std::max(SimTime::Zero(), d.at - std::max(transport.Now(), SimTime::Zero())),
+                            [] { raise(SIGKILL); });
   }
 }
 

@@ -2,13 +2,21 @@
 // namespace: a launched team matches the simulation on the ideal network; a
 // team survives one of its agents being SIGKILLed; garbage and foreign
 // messages on every channel are counted and ignored.
+#include <arpa/inet.h>
+#include <netinet/ip.h>
+#include <netinet/udp.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <set>
+#include <thread>
 #include <functional>
 #include <fstream>
 #include <iostream>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <sstream>
 
 #include "agents/bow_vector.h"
@@ -25,6 +33,7 @@
 #include "experiments/protocols/paper/static_protocol.h"
 #include "experiments/strategies/run_centroids.h"
 #include "lcm_test_support.h"
+#include "tests/agents/udpm/datagram_builder.h"
 
 namespace dvpr {
 namespace {
@@ -68,6 +77,17 @@ std::vector<Row> ReadCsv(const fs::path& path) {
     rows.push_back(row);
   }
   return rows;
+}
+
+// Datagrams the kernel dropped at the agents of `strategy` because a receive buffer was full
+// (agents.csv, SO_RXQ_OVFL): UDP may lose datagrams on a loaded machine, and the receiving side
+// counts every one. A test of a real team tolerates a loss only when it is counted.
+std::int64_t KernelDropped(const fs::path& agents_csv, const std::string& strategy) {
+  std::int64_t n = 0;
+  for (const Row& r : ReadCsv(agents_csv)) {
+    if (r.at("strategy") == strategy && !r.at("kernel_dropped").empty()) n += std::stoll(r.at("kernel_dropped"));
+  }
+  return n;
 }
 
 // A query has one correct answer when its best candidate among the frames
@@ -194,14 +214,20 @@ TEST_F(LcmTeamTest, LaunchedTeamMatchesTheIdealSimulation) {
     const CentroidTable* routed = strategy == "decentralized" ? &table : nullptr;
     ASSERT_EQ(lcm_rows[strategy].size(), data.size());
     std::vector<Logged> times(data.size());
+    const std::int64_t kernel_dropped = KernelDropped(dir_ / "lcm" / "agents.csv", strategy);
+    int missing = 0;
     for (const auto& [frame, r] : lcm_rows[strategy]) {
       EXPECT_EQ(r.at("protocol"), "lcm");
-      EXPECT_FALSE(r.at("latency_ns").empty()) << "frame " << frame << ": a reply is missing";
+      missing += r.at("latency_ns").empty() ? 1 : 0;
       Logged& t = times[static_cast<std::size_t>(frame)];
       t.sent = std::stoll(r.at("sent_ns"));
       // latency_ns is wall time; the agents' clock runs kSpeedup times faster.
       if (!r.at("latency_ns").empty()) t.done = t.sent + std::llround(std::stod(r.at("latency_ns")) * kSpeedup);
     }
+    // A reply may be missing only when the team counted a datagram lost to a full buffer.
+    if (missing > 0) {
+    EXPECT_GT(kernel_dropped, 0) << missing << " replies missing, no loss counted";
+  }
     const std::vector<Reference> logged = LoggedReferences(data, routed, 20, times);
     const std::vector<Reference> timed = TimedReferences(data, routed, kRobots, 20, 1);
     int checked = 0, compared = 0, late = 0;
@@ -248,7 +274,8 @@ TEST_F(LcmTeamTest, LaunchedTeamMatchesTheIdealSimulation) {
     EXPECT_EQ(r.at("protocol"), "lcm");
     // The first 300 frames hold no revisit, so AUC is 0; the reference is still filled.
     EXPECT_FALSE(r.at("auc_reference").empty());
-    EXPECT_EQ(r.at("dropped_messages"), "0");
+    // Every message that did not arrive was dropped by a receiver's full buffer, and counted.
+    EXPECT_LE(std::stoll(r.at("dropped_messages")), KernelDropped(dir_ / "lcm" / "agents.csv", r.at("strategy")));
   }
 }
 
@@ -336,12 +363,17 @@ TEST_F(LcmTeamTest, LaunchedBowTeamMatchesTheIdealSimulation) {
   ASSERT_EQ(sim_rows.size(), data.size());
 
   std::vector<Logged> times(data.size());
+  const std::int64_t kernel_dropped = KernelDropped(dir_ / "lcm" / "agents.csv", "bow_decentralized");
+  int missing = 0;
   for (const auto& [frame, r] : lcm_rows) {
     EXPECT_EQ(r.at("strategy"), "bow_decentralized");
-    EXPECT_FALSE(r.at("latency_ns").empty()) << "frame " << frame << ": a reply is missing";
+    missing += r.at("latency_ns").empty() ? 1 : 0;
     Logged& t = times[static_cast<std::size_t>(frame)];
     t.sent = std::stoll(r.at("sent_ns"));
     if (!r.at("latency_ns").empty()) t.done = t.sent + std::llround(std::stod(r.at("latency_ns")) * kSpeedup);
+  }
+  if (missing > 0) {
+    EXPECT_GT(kernel_dropped, 0) << missing << " replies missing, no loss counted";
   }
   constexpr std::int64_t kMargin = 1'000'000;  // as LoggedReferences: the agents' clock offsets
   const std::vector<Reference> logged = BowReferences(inputs.bow, kRobots, 20, [&](int f, int g) {
@@ -391,56 +423,58 @@ TEST_F(LcmTeamTest, LaunchedBowTeamMatchesTheIdealSimulation) {
   const std::vector<Row> runs = ReadCsv(dir_ / "lcm" / "runs.csv");
   ASSERT_EQ(runs.size(), 1u);
   EXPECT_EQ(runs[0].at("protocol"), "lcm");
-  EXPECT_EQ(runs[0].at("dropped_messages"), "0");
+  EXPECT_LE(std::stoll(runs[0].at("dropped_messages")), kernel_dropped);
 }
 
-// Starts a broadcast team of 4 (every query is searched by every robot, so
-// the victim matters whatever the routing's balance), SIGKILLs robot 2 once
-// it has taken some frames; the others must still finish (at their deadline:
-// robot 2 never announces done), and their queries it never answered are
-// counted as lost.
+// A broadcast team of 4 (every query is searched by every robot, so the victim matters whatever
+// the routing's balance) whose robot 2 is SIGKILLed by its own process at 2.05 s of agent time
+// (`dropout:`, between its frames 20 and 21: agent time is the team's shared clock, so nothing
+// depends on when the test or any process happens to be scheduled; a timer due runs before a
+// datagram is read, so the victim answers nothing sent after it). The others must still finish
+// (at their deadline: robot 2 never announces done), and each of their queries taken after
+// 2.05 s (frames 21..74 of each: 3 x 54 = 162) is counted as lost.
 TEST_F(LcmTeamTest, KilledAgentDoesNotHangTheOthers) {
   constexpr int kRobots = 4, kVictim = 2, kPort = 7702;
+  const SimTime kDeath = SimTime::Millis(2050);
   const std::string strategy = "broadcast";
   std::vector<pid_t> pids;
   for (int r = 0; r < kRobots; ++r) {
     // Grace 10 s: the survivors wait for robot 2 until then. A survivor whose process was starved
     // on a loaded machine has answered its backlog long before, so no message between survivors
     // is still under way when they leave (with 2 s, one was now and then, and counted dropped).
-    pids.push_back(Spawn(AgentArgv(r, kRobots, strategy, kPort, 5.0, dir_ / ("r" + std::to_string(r) + ".log"), 10.0),
-                         dir_ / ("r" + std::to_string(r) + ".out")));
+    std::vector<std::string> argv = AgentArgv(r, kRobots, strategy, kPort, 5.0, dir_ / ("r" + std::to_string(r) + ".log"), 10.0);
+    argv.push_back("--set");
+    argv.push_back("dropout=[{robot: " + std::to_string(kVictim) + ", at: 2050ms}]");
+    pids.push_back(Spawn(argv, dir_ / ("r" + std::to_string(r) + ".out")));
   }
-  // Watch the heartbeats until the victim is well into its frames.
-  LcmTransport watcher(Url(kPort));
-  int victim_frames = 0;
-  Subscription sub = watcher.Subscribe<agent_status_t>("DVPR_STATUS", [&](const agent_status_t& s) {
-    if (s.robot == kVictim) victim_frames = std::max(victim_frames, s.frames_taken);
-  });
-  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(240);
-  while (victim_frames < 20 && std::chrono::steady_clock::now() < give_up) {
-    watcher.RunUntilWall(std::chrono::steady_clock::now() + std::chrono::milliseconds(20));
-  }
-  ASSERT_GE(victim_frames, 20) << "the team never started; see " << dir_;
-  ASSERT_EQ(kill(pids[kVictim], SIGKILL), 0);
-  EXPECT_EQ(WaitFor(pids[kVictim], std::chrono::seconds(10)), SIGKILL);
+  const int victim_status = WaitFor(pids[kVictim], std::chrono::seconds(240));
+  ASSERT_TRUE(WIFSIGNALED(victim_status) && WTERMSIG(victim_status) == SIGKILL) << "see " << dir_;
 
   std::vector<std::optional<AgentLog>> logs(kRobots);
+  int after_death = 0;
   for (int r = 0; r < kRobots; ++r) {
     if (r == kVictim) continue;
     // Deadline: the team's last frame (75 frames at 50 fps: 1.5 s) + 10 s grace, after start-up.
-    const int status = WaitFor(pids[static_cast<std::size_t>(r)], std::chrono::seconds(120), &watcher);
+    const int status = WaitFor(pids[static_cast<std::size_t>(r)], std::chrono::seconds(240));
     ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "robot " << r << " hung or failed; see " << dir_;
     logs[static_cast<std::size_t>(r)] = ReadAgentLog(dir_ / ("r" + std::to_string(r) + ".log"));
-    EXPECT_EQ(logs[static_cast<std::size_t>(r)]->end_reason, "deadline");
-    EXPECT_EQ(logs[static_cast<std::size_t>(r)]->queries.size(), 75u);  // every frame taken
+    const AgentLog& log = *logs[static_cast<std::size_t>(r)];
+    EXPECT_EQ(log.end_reason, "deadline");
+    EXPECT_EQ(log.queries.size(), 75u);  // every frame taken
+    for (const QueryRecord& q : log.queries) {
+      if (q.sent <= kDeath) continue;
+      ++after_death;
+      EXPECT_FALSE(q.Complete()) << "robot " << r << " frame " << q.frame.value << " answered by the dead robot";
+    }
   }
+  EXPECT_EQ(after_death, 3 * 54);
+  EXPECT_FALSE(fs::exists(dir_ / ("r" + std::to_string(kVictim) + ".log")));
   const ExperimentConfig config = Config();
   const SharedInputs inputs = LoadSharedInputs(config, ConfigPath());
   const GatheredRun g = GatherTeam(config, inputs, strategy, kRobots, 0, logs, kNotApplicable);
   EXPECT_EQ(g.missing_robots, std::vector<int>{kVictim});
   EXPECT_EQ(g.queries, 3 * 75);
-  // Every survivor query after the kill waited for robot 2 in vain.
-  EXPECT_GE(g.incomplete, 3 * (75 - 20 - 5)) << "queries the dead robot never answered must be counted as lost";
+  EXPECT_GE(g.incomplete, 3 * 54) << "queries the dead robot never answered must be counted as lost";
   EXPECT_EQ(g.rows.runs.front().queries, 3 * 75);
   std::int64_t dropped_to_victim = 0;
   for (const LinkRow& l : g.rows.links) {
@@ -454,9 +488,11 @@ TEST_F(LcmTeamTest, KilledAgentDoesNotHangTheOthers) {
 }
 
 // Failover in a real team under `dvpr launch`: decentralized, 4 robots, 75 frames each (7.5 s of
-// agent time at speedup 2). `dropout:` makes the victim's process SIGKILL itself at 1 s of agent
-// time (after its frame 10); failover declares a robot lost after 2 s of agent time (1 s of
-// wall time) without a heartbeat. No timing is assumed beyond that: each survivor's own log says
+// agent time at speedup 1). `dropout:` makes the victim's process SIGKILL itself at 1 s of agent
+// time (after its frame 10); failover declares a robot lost after 2 s of agent time without a
+// heartbeat; the detector's timers and the frames run in agent-time order (a timer due runs
+// before a datagram is read), so a starved survivor still declares the victim lost before its
+// later frames, which leave 4.5 s of queries to check. No timing is assumed beyond that: each survivor's own log says
 // when it declared the victim lost, and every query of its own that the table routes to the
 // victim and that it took after that instant must have been answered (by the successor). A
 // survivor that was starved on a loaded machine and suspected for a moment is routed around,
@@ -486,7 +522,7 @@ TEST_F(LcmTeamTest, KilledAgentsClustersAreServedByItsSuccessorAfterDetection) {
   sets.push_back("dropout=[{robot: " + std::to_string(victim) + ", at: 1s}]");
 
   std::vector<std::string> launch{Dvpr(), "launch", "--config", ConfigPath(), "--robots", std::to_string(kRobots),
-                                  "--speedup", "2", "--lcm", Url(7704), "--out", (dir_ / "lcm").string(),
+                                  "--speedup", "1", "--lcm", Url(7704), "--out", (dir_ / "lcm").string(),
                                   "--timeout", "300", "--grace", "15"};
   for (const auto& s : sets) {
     launch.push_back("--set");
@@ -576,18 +612,294 @@ TEST_F(LcmTeamTest, GarbageOnEveryChannelIsCountedAndIgnored) {
       }
     }
   }
+  std::vector<AgentLog> logs;
+  std::uint64_t kernel_dropped = 0;
   for (int r = 0; r < kRobots; ++r) {
     if (status[static_cast<std::size_t>(r)] == -2) status[static_cast<std::size_t>(r)] = WaitFor(pids[static_cast<std::size_t>(r)], std::chrono::seconds(1));
     ASSERT_TRUE(WIFEXITED(status[static_cast<std::size_t>(r)]) && WEXITSTATUS(status[static_cast<std::size_t>(r)]) == 0)
         << "robot " << r << "; see " << dir_;
-    const AgentLog log = ReadAgentLog(dir_ / ("r" + std::to_string(r) + ".log"));
-    EXPECT_EQ(log.end_reason, "all_done") << "robot " << r;
+    logs.push_back(ReadAgentLog(dir_ / ("r" + std::to_string(r) + ".log")));
+    kernel_dropped += logs.back().kernel_dropped;
+  }
+  for (int r = 0; r < kRobots; ++r) {
+    const AgentLog& log = logs[static_cast<std::size_t>(r)];
+    // The noise can fill a starved agent's receive buffer: a query may then miss a reply (and its
+    // robot end at the deadline), but only when the loss was counted.
+    const auto incomplete = std::count_if(log.queries.begin(), log.queries.end(), [](const QueryRecord& q) { return !q.Complete(); });
+    if (incomplete > 0 || log.end_reason != "all_done") {
+      EXPECT_GT(kernel_dropped, 0u) << "robot " << r << ": " << incomplete << " queries incomplete, no loss counted";
+    }
     EXPECT_EQ(log.queries.size(), 100u);
-    for (const QueryRecord& q : log.queries) EXPECT_TRUE(q.Complete()) << "robot " << r << " frame " << q.frame.value;
     EXPECT_GT(log.malformed, 0u) << "robot " << r;
     EXPECT_GT(log.foreign, 0u) << "robot " << r;
-    std::cout << "robot " << r << ": " << log.malformed << " malformed, " << log.foreign << " foreign, over " << rounds
-              << " rounds of noise\n";
+    std::cout << "robot " << r << ": " << log.malformed << " malformed, " << log.foreign << " foreign, " << incomplete
+              << " incomplete, over " << rounds << " rounds of noise (" << kernel_dropped << " dropped by full buffers)\n";
+  }
+}
+
+// --- hostile networks ---
+
+// The frames each robot of a decentralized team stores: those the table of run 0 routes to it
+// (each query is kept by its cluster's owner, and only there).
+std::vector<std::int64_t> StoredByRouting(const ExperimentConfig& config, int robots) {
+  const SharedInputs inputs = LoadSharedInputs(config, ConfigPath());
+  const CentroidTable table = CentroidTable::RoundRobin(
+      RunCentroids(inputs.training, config.training.run_centroids, robots, 0), robots);
+  std::vector<std::int64_t> stored(static_cast<std::size_t>(robots), 0);
+  for (int f = 0; f < static_cast<int>(inputs.deployment.size()); ++f) {
+    ++stored[static_cast<std::size_t>(table.RouteOf(inputs.deployment.descriptors.row(f).data()).value)];
+  }
+  return stored;
+}
+
+std::vector<std::string> SmallLaunch(const fs::path& out, int port, int robots, const std::vector<std::string>& extra) {
+  std::vector<std::string> launch{Dvpr(), "launch", "--config", ConfigPath(), "--robots", std::to_string(robots),
+                                  "--speedup", "5", "--lcm", Url(port), "--out", out.string(),
+                                  "--timeout", "240", "--grace", "60"};
+  std::vector<std::string> sets = SmallConfigSets();
+  sets.insert(sets.end(), extra.begin(), extra.end());
+  for (const auto& s : sets) {
+    launch.push_back("--set");
+    launch.push_back(s);
+  }
+  return launch;
+}
+
+// What a launched decentralized team stored, per robot (per_robot.csv), and its agents' rows.
+void ExpectTheTeamsOwnResults(const fs::path& out, const std::vector<std::int64_t>& stored, std::size_t frames) {
+  std::vector<std::int64_t> got;
+  for (const Row& r : ReadCsv(out / "per_robot.csv")) got.push_back(std::stoll(r.at("stored")));
+  EXPECT_EQ(got, stored) << out;
+  EXPECT_EQ(ReadCsv(out / "queries.csv").size(), frames) << out;
+  for (const Row& r : ReadCsv(out / "queries.csv")) EXPECT_FALSE(r.at("latency_ns").empty()) << out << " frame " << r.at("frame");
+}
+
+// Two launches of one config on one URL at once: each launch draws its own team nonce, so the two
+// teams take neither each other's heartbeats nor each other's messages (each robot's sender is
+// learned from its own team's heartbeats). Each stores exactly what its own table routes to each
+// robot (merged, robots stored both teams' frames: issue 31 saw 376 instead of 248), and every
+// agent counts the other team as foreign.
+TEST_F(LcmTeamTest, TwoLaunchesOfOneConfigOnOneUrlAreTwoTeams) {
+  constexpr int kRobots = 3;
+  const std::vector<std::string> extra{"strategies=[decentralized]", "dataset.frames=150"};
+  const pid_t a = Spawn(SmallLaunch(dir_ / "a", 7706, kRobots, extra), dir_ / "a.out");
+  const pid_t b = Spawn(SmallLaunch(dir_ / "b", 7706, kRobots, extra), dir_ / "b.out");
+  for (const auto& [pid, name] : {std::pair{a, "a"}, std::pair{b, "b"}}) {
+    const int status = WaitFor(pid, std::chrono::seconds(300));
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "see " << (dir_ / (std::string(name) + ".out"));
+  }
+  std::vector<ConfigOverride> overrides;
+  for (const auto& s : SmallConfigSets()) overrides.push_back(ParseOverride(s));
+  for (const auto& s : extra) overrides.push_back(ParseOverride(s));
+  const std::vector<std::int64_t> stored = StoredByRouting(LoadConfig(ConfigPath(), overrides), kRobots);
+  ASSERT_EQ(std::accumulate(stored.begin(), stored.end(), std::int64_t{0}), 150);
+  for (const char* name : {"a", "b"}) {
+    SCOPED_TRACE(name);
+    ExpectTheTeamsOwnResults(dir_ / name, stored, 150);
+    for (const Row& r : ReadCsv(dir_ / name / "agents.csv")) {
+      EXPECT_GT(std::stoll(r.at("foreign")), 0) << "robot " << r.at("robot") << " never heard the other team";
+    }
+  }
+}
+
+// Sends every datagram of the group once more, from its own sender (a raw socket writes the IP
+// and UDP headers, so the copy has the original's source address and port): a network that
+// duplicates every packet.
+class DuplicatingRelay {
+ public:
+  explicit DuplicatingRelay(int port) : port_(port) {
+    listen_ = socket(AF_INET, SOCK_DGRAM, 0);
+    raw_ = socket(AF_INET, SOCK_RAW, IPPROTO_RAW);
+    const int on = 1;
+    setsockopt(listen_, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);
+    ip_mreq m{};
+    inet_pton(AF_INET, "239.255.76.67", &m.imr_multiaddr);
+    setsockopt(listen_, IPPROTO_IP, IP_ADD_MEMBERSHIP, &m, sizeof m);
+    sockaddr_in at{};
+    at.sin_family = AF_INET;
+    at.sin_addr = m.imr_multiaddr;
+    at.sin_port = htons(static_cast<std::uint16_t>(port));
+    ok_ = listen_ >= 0 && raw_ >= 0 && bind(listen_, reinterpret_cast<sockaddr*>(&at), sizeof at) == 0;
+    if (ok_) thread_ = std::thread([this] { Loop(); });
+  }
+  ~DuplicatingRelay() {
+    stop_ = true;
+    if (thread_.joinable()) thread_.join();
+    close(listen_);
+    close(raw_);
+  }
+  bool ok() const { return ok_; }
+  std::uint64_t copies() const { return copies_; }
+
+ private:
+  void Loop() {
+    std::vector<std::uint8_t> buffer(65536);
+    std::set<std::string> seen;  // sender, size and LCM header of each datagram relayed
+    while (!stop_) {
+      pollfd p{listen_, POLLIN, 0};
+      timespec wait{0, 20000000};
+      if (ppoll(&p, 1, &wait, nullptr) <= 0) continue;
+      sockaddr_in from{};
+      socklen_t length = sizeof from;
+      const ssize_t n = recvfrom(listen_, buffer.data(), buffer.size(), 0, reinterpret_cast<sockaddr*>(&from), &length);
+      if (n <= 0) continue;
+      std::string key(reinterpret_cast<const char*>(&from.sin_addr), 4);
+      key.append(reinterpret_cast<const char*>(&from.sin_port), 2);
+      key += std::to_string(n) + ":";
+      key.append(reinterpret_cast<const char*>(buffer.data()), static_cast<std::size_t>(std::min<ssize_t>(n, 20)));
+      if (!seen.insert(key).second) continue;  // our own copy coming back
+      std::vector<std::uint8_t> packet(sizeof(iphdr) + sizeof(udphdr) + static_cast<std::size_t>(n));
+      auto* ip = reinterpret_cast<iphdr*>(packet.data());
+      ip->version = 4;
+      ip->ihl = 5;
+      ip->ttl = 1;
+      ip->protocol = IPPROTO_UDP;
+      ip->saddr = from.sin_addr.s_addr;
+      inet_pton(AF_INET, "239.255.76.67", &ip->daddr);
+      auto* udp = reinterpret_cast<udphdr*>(packet.data() + sizeof(iphdr));
+      udp->source = from.sin_port;
+      udp->dest = htons(static_cast<std::uint16_t>(port_));
+      udp->len = htons(static_cast<std::uint16_t>(sizeof(udphdr) + static_cast<std::size_t>(n)));
+      std::copy(buffer.begin(), buffer.begin() + n, packet.begin() + sizeof(iphdr) + sizeof(udphdr));
+      sockaddr_in to{};
+      to.sin_family = AF_INET;
+      to.sin_addr.s_addr = ip->daddr;
+      if (sendto(raw_, packet.data(), packet.size(), 0, reinterpret_cast<sockaddr*>(&to), sizeof to) > 0) ++copies_;
+    }
+  }
+
+  int port_;
+  int listen_ = -1, raw_ = -1;
+  bool ok_ = false;
+  std::atomic<bool> stop_{false};
+  std::atomic<std::uint64_t> copies_{0};
+  std::thread thread_;
+};
+
+// Every datagram arrives twice (the relay's copy has the original's sender and sequence
+// number): each agent recognises and counts the copies and takes each message once, so the team
+// stores exactly what a clean network gives (its table's routing, worked out here).
+TEST_F(LcmTeamTest, ADuplicatingNetworkGivesTheCountsOfACleanOne) {
+  constexpr int kRobots = 3;
+  DuplicatingRelay relay(7707);
+  if (!relay.ok()) GTEST_SKIP() << "no raw socket for the duplicating relay";
+  const std::vector<std::string> extra{"strategies=[decentralized]", "dataset.frames=150"};
+  const int status = WaitFor(Spawn(SmallLaunch(dir_ / "lcm", 7707, kRobots, extra), dir_ / "launch.out"),
+                             std::chrono::seconds(300));
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "see " << (dir_ / "launch.out");
+  EXPECT_GT(relay.copies(), 0u);
+  std::vector<ConfigOverride> overrides;
+  for (const auto& s : SmallConfigSets()) overrides.push_back(ParseOverride(s));
+  for (const auto& s : extra) overrides.push_back(ParseOverride(s));
+  ExpectTheTeamsOwnResults(dir_ / "lcm", StoredByRouting(LoadConfig(ConfigPath(), overrides), kRobots), 150);
+  for (const Row& r : ReadCsv(dir_ / "lcm" / "agents.csv")) {
+    EXPECT_GT(std::stoll(r.at("duplicates")), 0) << "robot " << r.at("robot");
+    EXPECT_EQ(r.at("malformed_datagrams"), "0") << "robot " << r.at("robot");
+  }
+  const std::vector<Row> links = ReadCsv(dir_ / "lcm" / "links.csv");
+  for (const Row& l : links) {
+    EXPECT_LE(std::stoll(l.at("dropped")), 0) << "a message was lost or, taken twice, hid a loss";
+  }
+}
+
+// The UDP sockets of `pid` (inodes from /proc/PID/fd), with their receive queues and drop counts
+// from /proc/net/udp: what the kernel still holds for the process, and what it dropped.
+struct SocketQueue {
+  std::int64_t queued = 0;
+  std::int64_t drops = 0;
+};
+std::vector<SocketQueue> UdpQueuesOf(pid_t pid, int port) {
+  std::set<std::string> inodes;
+  const fs::path fds = "/proc/" + std::to_string(pid) + "/fd";
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(fds, ec)) {
+    const std::string target = fs::read_symlink(e.path(), ec).string();
+    if (target.rfind("socket:[", 0) == 0) inodes.insert(target.substr(8, target.size() - 9));
+  }
+  std::vector<SocketQueue> queues;
+  std::ifstream udp("/proc/net/udp");
+  std::string line;
+  std::getline(udp, line);
+  char hex_port[8];
+  std::snprintf(hex_port, sizeof hex_port, ":%04X", port);
+  while (std::getline(udp, line)) {
+    std::istringstream in(line);
+    std::string slot, local, remote, state, queues_text, timer, retransmits, uid, timeout, inode, ref, pointer, drops;
+    in >> slot >> local >> remote >> state >> queues_text >> timer >> retransmits >> uid >> timeout >> inode >> ref >>
+        pointer >> drops;
+    if (inodes.count(inode) == 0 || local.size() < 5 || local.substr(local.size() - 5) != hex_port) continue;
+    queues.push_back({std::stoll(queues_text.substr(queues_text.find(':') + 1), nullptr, 16), std::stoll(drops)});
+  }
+  return queues;
+}
+
+// The crafted fragment of issue 31 (2^28 bytes claimed, offset 0xFFFFFFF0) and 10^5 datagrams
+// malformed by construction reach the agents of a team, which count every one and go on to a
+// complete run. Two of a team of three wait in the start barrier (their third is not started
+// yet) while the test sends, 200 datagrams at a time, each batch once the kernel holds nothing
+// more for them (/proc/net/udp: an event, not a time); then robot 2 starts and the team runs.
+TEST_F(LcmTeamTest, TheWrappingFragmentAndAHundredThousandHostileDatagramsAreCountedAndSurvived) {
+  constexpr int kRobots = 3, kPort = 7708;
+  std::vector<pid_t> pids;
+  const auto argv = [&](int r) {
+    std::vector<std::string> a = AgentArgv(r, kRobots, "decentralized", kPort, 5.0, dir_ / ("r" + std::to_string(r) + ".log"), 60.0);
+    a.insert(a.end(), {"--barrier-timeout", "1000", "--set", "dataset.frames=150"});
+    return a;
+  };
+  for (int r = 0; r < 2; ++r) pids.push_back(Spawn(argv(r), dir_ / ("r" + std::to_string(r) + ".out")));
+  const int sender = socket(AF_INET, SOCK_DGRAM, 0);
+  ASSERT_GE(sender, 0);
+  sockaddr_in group{};
+  group.sin_family = AF_INET;
+  inet_pton(AF_INET, "239.255.76.67", &group.sin_addr);
+  group.sin_port = htons(kPort);
+  const auto send = [&](const std::vector<std::uint8_t>& d) {
+    sendto(sender, d.data(), d.size(), 0, reinterpret_cast<const sockaddr*>(&group), sizeof group);
+  };
+  // Both receive sockets open (an agent opens its socket before loading its inputs).
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(240);
+  const auto drained = [&] {
+    for (const pid_t pid : {pids[0], pids[1]}) {
+      const std::vector<SocketQueue> q = UdpQueuesOf(pid, kPort);
+      if (q.size() != 1 || q[0].queued != 0) return false;
+    }
+    return true;
+  };
+  const auto wait_until_drained = [&] {
+    while (!drained() && std::chrono::steady_clock::now() < give_up) {
+      timespec ts{0, 1000000};
+      ppoll(nullptr, 0, &ts, nullptr);
+    }
+    return std::chrono::steady_clock::now() < give_up;
+  };
+  ASSERT_TRUE(wait_until_drained()) << "the agents never opened their sockets; see " << dir_;
+  send(udpm_test::WrappingFragment());
+  udpm_test::HostileDatagrams hostile(31);
+  for (int sent = 0; sent < 100000;) {
+    for (int k = 0; k < 200; ++k, ++sent) send(hostile.Next());
+    ASSERT_TRUE(wait_until_drained()) << "after " << sent << " datagrams; see " << dir_;
+  }
+  close(sender);
+  for (int r = 0; r < 2; ++r) {
+    const pid_t pid = pids[static_cast<std::size_t>(r)];
+    EXPECT_EQ(waitpid(pid, nullptr, WNOHANG), 0) << "robot " << r << " did not survive the flood; see " << dir_;
+  }
+  pids.push_back(Spawn(argv(2), dir_ / "r2.out"));
+  for (int r = 0; r < kRobots; ++r) {
+    const int status = WaitFor(pids[static_cast<std::size_t>(r)], std::chrono::seconds(300));
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "robot " << r << "; see " << dir_;
+    const AgentLog log = ReadAgentLog(dir_ / ("r" + std::to_string(r) + ".log"));
+    EXPECT_EQ(log.queries.size(), 50u);
+    for (const QueryRecord& q : log.queries) EXPECT_TRUE(q.Complete()) << "robot " << r << " frame " << q.frame.value;
+    if (r < 2) {
+      // Every one counted: read and found malformed, or dropped by a full buffer (and counted).
+      EXPECT_LE(log.malformed_datagrams, 100001u) << "robot " << r;
+      EXPECT_GE(log.malformed_datagrams + log.kernel_dropped, 100001u) << "robot " << r;
+    } else {
+      EXPECT_EQ(log.malformed_datagrams, 0u);  // it started after the flood
+    }
+    std::cout << "robot " << r << ": " << log.malformed_datagrams << " malformed datagrams, " << log.kernel_dropped
+              << " dropped by a full buffer, " << log.datagrams << " datagrams\n";
   }
 }
 

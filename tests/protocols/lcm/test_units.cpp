@@ -27,6 +27,31 @@ TEST(TeamSync, StartsAtTheLatestReadyInstantPlusMarginOnceAllAreHeard) {
   EXPECT_FALSE(a.AllDone());
 }
 
+// Each robot's sender is the first one heard announcing it; another sender for the same robot
+// (a second process started as robot 1, a copy of the team), or one sender speaking for two
+// robots, is foreign, and messages are taken only from the robot's own sender.
+TEST(TeamSync, ARobotsSenderIsTheFirstHeardAndNoOtherSpeaksForIt) {
+  TeamSync a(RobotId(0), 3, 7);
+  const agent_status_t s1 = TeamSync(RobotId(1), 3, 7).Announce(1, agent_status_t::READY, 10, 0);
+  const agent_status_t s2 = TeamSync(RobotId(2), 3, 7).Announce(1, agent_status_t::READY, 20, 0);
+  EXPECT_TRUE(a.OnStatus(s1, 1001));
+  EXPECT_TRUE(a.OnStatus(s1, 1001));    // the same sender again
+  EXPECT_FALSE(a.OnStatus(s1, 2002));   // another process claims robot 1
+  EXPECT_FALSE(a.OnStatus(s2, 1001));   // robot 1's process claims robot 2
+  EXPECT_TRUE(a.OnStatus(s2, 3003));
+  EXPECT_TRUE(a.OnStatus(a.Announce(1, agent_status_t::READY, 5, 0)));  // our own, taken directly
+  EXPECT_EQ(a.foreign(), 2u);
+  EXPECT_EQ(a.HeardCount(), 3);
+  EXPECT_TRUE(a.FromMember(RobotId(1), 1001));
+  EXPECT_FALSE(a.FromMember(RobotId(1), 2002));
+  EXPECT_FALSE(a.FromMember(RobotId(2), 1001));
+  EXPECT_FALSE(a.FromMember(RobotId(0), 0));   // no sender is never a member
+  EXPECT_FALSE(a.FromMember(RobotId(5), 1001));  // out of range
+  EXPECT_FALSE(a.FromMember(RobotId(0), 4004));  // robot 0's own echo not heard yet
+  EXPECT_TRUE(a.OnStatus(a.Announce(2, agent_status_t::READY, 5, 0), 4004));
+  EXPECT_TRUE(a.FromMember(RobotId(0), 4004));
+}
+
 TEST(TeamSync, ForeignHeartbeatsAreCountedNotTaken) {
   TeamSync a(RobotId(0), 2, 7);
   agent_status_t s = TeamSync(RobotId(1), 2, 8).Announce(1, agent_status_t::DONE, 1, 0);  // other key
@@ -134,9 +159,11 @@ TEST_F(LcmTransportTest, DeliversCountsGarbageAndKeepsTimersOnSchedule) {
   for (std::size_t i = 0; i < fired.size(); ++i) {
     EXPECT_GE(fired[i], SimTime::Millis(100) * static_cast<std::int64_t>(i + 1));  // never early
   }
-  // The epoch moves agent time 0 into the future; a timer set now fires after it.
-  t.SetEpoch(std::chrono::system_clock::now() + std::chrono::milliseconds(30));
+  // The epoch moves agent time 0 into the future (an hour: no scheduling delay reaches it); a
+  // timer set before a nearer epoch fires after it, however late the loop runs.
+  t.SetEpoch(std::chrono::system_clock::now() + std::chrono::hours(1));
   EXPECT_LT(t.Now(), SimTime::Zero());
+  t.SetEpoch(std::chrono::system_clock::now() + std::chrono::milliseconds(30));
   bool after_epoch = false;
   t.ScheduleAfter(SimTime::Zero(), [&] { after_epoch = t.Now() >= SimTime::Zero(); t.Stop(); });
   EXPECT_TRUE(t.Run(SimTime::Seconds(10.0)));
