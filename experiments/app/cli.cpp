@@ -20,11 +20,17 @@
 #include "experiments/mpi/mpi_world.h"
 #include "experiments/protocols/lcm/lcm_launch.h"
 #include "experiments/replay/replay.h"
+#include "experiments/results/one_line_text.h"
 #include "experiments/sweep/run_executor.h"
 
 namespace dvpr {
 
 namespace {
+
+// A message kept to one line: it may quote a name, a path or a library's text, so line breaks,
+// control characters (a terminal's escape sequences) and bytes that are not UTF-8 are shown as
+// visible escapes (one_line_text.h).
+std::string OneLine(std::string_view message) { return OneLineText(message); }
 
 constexpr const char* kUsage = R"(dvpr: discrete-event simulator of decentralized visual place recognition
 
@@ -130,10 +136,10 @@ int Run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   try {
     a = ParseRunArgs(args);
   } catch (const std::invalid_argument& e) {
-    err << "dvpr run: " << e.what() << " (see dvpr --help)\n";
+    err << "dvpr run: " << OneLine(e.what()) << " (see dvpr --help)\n";
     return kExitUsage;
   } catch (const ConfigError& e) {  // a malformed --set
-    err << "dvpr run: " << e.what() << " (see dvpr --help)\n";
+    err << "dvpr run: " << OneLine(e.what()) << " (see dvpr --help)\n";
     return kExitUsage;
   }
   const auto run = [&a](const ExecutorOptions& options, std::ostream& summary) {
@@ -156,21 +162,8 @@ int Plot(const std::vector<std::string>& args, std::ostream& out, std::ostream& 
     err << "dvpr plot: expected one folder (see dvpr --help)\n";
     return kExitUsage;
   }
-  for (const auto& png : PlotFolder(args[1], err)) out << png.string() << "\n";
+  for (const auto& png : PlotFolder(args[1], err)) out << OneLineText(png.string()) << "\n";
   return kExitOk;
-}
-
-// A message that spans lines (some library's, or one quoting a file) kept to one line, "\n" shown.
-std::string OneLine(std::string_view message) {
-  std::string out;
-  for (const char c : message) {
-    if (c == '\n') {
-      out += "\\n";
-    } else if (c != '\r') {
-      out.push_back(c);
-    }
-  }
-  return out;
 }
 
 // Parses a subcommand's options; bad usage is exit status 2, as for dvpr run.
@@ -180,10 +173,10 @@ int WithOptions(const char* name, const std::vector<std::string>& args, std::ost
   try {
     options = parse(args);
   } catch (const std::invalid_argument& e) {
-    err << "dvpr " << name << ": " << e.what() << " (see dvpr --help)\n";
+    err << "dvpr " << name << ": " << OneLine(e.what()) << " (see dvpr --help)\n";
     return kExitUsage;
   } catch (const ConfigError& e) {  // a malformed --set
-    err << "dvpr " << name << ": " << e.what() << " (see dvpr --help)\n";
+    err << "dvpr " << name << ": " << OneLine(e.what()) << " (see dvpr --help)\n";
     return kExitUsage;
   }
   return body(options);
@@ -258,7 +251,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   } catch (...) {
     return ReportError(std::current_exception(), err);
   }
-  err << "dvpr: unknown command '" << cmd << "' (see dvpr --help)\n";
+  err << "dvpr: unknown command '" << OneLine(cmd) << "' (see dvpr --help)\n";
   return kExitUsage;
 }
 

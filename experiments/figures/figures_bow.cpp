@@ -1,6 +1,7 @@
 // Figure 9 (see figures.h): the bag-of-words comparison of docs/bow.md. Its data come from
 // runs.csv (relative AUC, paper protocol), bow.csv (query bytes, votes) and bow_sizes.csv
-// (partial-query sizes), all written only when a bow_ strategy ran.
+// (partial-query sizes), all written only when a bow_ strategy ran; its data files go through
+// the one writer (safe_output.h), as every figure's do.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include "experiments/figures/figures.h"
 #include "experiments/figures/gnuplot_text.h"
 #include "experiments/results/result_writers.h"
+#include "experiments/results/safe_output.h"
 
 namespace dvpr {
 
@@ -70,7 +72,7 @@ std::string Mean(const Means& m, const std::string& strategy, int robots) {
 
 // One line per n, one column per design (NaN where it did not run).
 void WriteTable(const fs::path& file, const Means& m, const std::set<int>& robots, const std::string& what) {
-  std::ofstream out(file);
+  std::ostringstream out;
   out << "# n, then " << what << " of:";
   for (const auto& [name, title] : kDesigns) out << ' ' << name;
   out << '\n';
@@ -79,6 +81,7 @@ void WriteTable(const fs::path& file, const Means& m, const std::set<int>& robot
     for (const auto& [name, title] : kDesigns) out << ' ' << Mean(m, name, n);
     out << '\n';
   }
+  WriteFileAtomic(file, out.str());
 }
 
 // Partial-query sizes of bow_decentralized at up to four n, in bins of 5 words (40 bytes):
@@ -97,7 +100,7 @@ std::vector<int> WriteSizes(const fs::path& data_dir, const fs::path& out_dir) {
     if (std::find(shown.begin(), shown.end(), it->first) == shown.end()) shown.push_back(it->first);
   }
   std::sort(shown.begin(), shown.end());
-  std::ofstream out(data_dir / "bow_sizes.dat");
+  std::ostringstream out;
   for (int n : shown) {
     double total = 0;
     for (const auto& [bin, count] : bins[n]) total += count;
@@ -105,6 +108,7 @@ std::vector<int> WriteSizes(const fs::path& data_dir, const fs::path& out_dir) {
     for (const auto& [bin, count] : bins[n]) out << 26 + 8 * (5 * bin + 2) << ' ' << FormatDouble(count / total) << '\n';
     out << "\n\n";
   }
+  WriteFileAtomic(data_dir / "bow_sizes.dat", out.str());
   return shown;
 }
 
@@ -129,8 +133,9 @@ bool WriteBowComparisonData(const fs::path& out_dir, const fs::path& data_dir, c
   WriteTable(data_dir / "bow_auc.dat", auc, robots, "mean relative AUC (paper protocol)");
   WriteTable(data_dir / "bow_bytes.dat", bytes, robots, "mean query bytes per query");
   WriteTable(data_dir / "bow_vote.dat", vote, robots, "share of votes not the centralized BoW best");
-  std::ofstream titles(data_dir / "bow_sizes.titles");
-  for (int n : WriteSizes(data_dir, out_dir)) titles << n << '\n';
+  std::string titles;
+  for (int n : WriteSizes(data_dir, out_dir)) titles += std::to_string(n) + '\n';
+  WriteFileAtomic(data_dir / "bow_sizes.titles", titles);
   return true;
 }
 

@@ -11,10 +11,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <random>
 #include <stdexcept>
 
 #include "experiments/figures/gnuplot_text.h"
+#include "experiments/results/safe_output.h"
 
 extern char** environ;
 
@@ -23,21 +23,6 @@ namespace dvpr {
 namespace {
 
 namespace fs = std::filesystem;
-
-// A file descriptor closed when it goes out of scope.
-class Fd {
- public:
-  explicit Fd(int fd) : fd_(fd) {}
-  ~Fd() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  Fd(const Fd&) = delete;
-  Fd& operator=(const Fd&) = delete;
-  int get() const { return fd_; }
-
- private:
-  int fd_;
-};
 
 // posix_spawn's file actions and attributes, destroyed with the object.
 struct SpawnSetup {
@@ -56,19 +41,6 @@ struct SpawnSetup {
 };
 
 std::string Errno(int e) { return std::strerror(e); }
-
-// A new file in `dir` that nobody else had: O_EXCL and O_NOFOLLOW, so a file or link planted at
-// the name is never opened (another name is tried), with a random part in the name.
-std::pair<fs::path, int> CreatePrivate(const fs::path& dir, const std::string& stem) {
-  std::random_device random;
-  for (int attempt = 0; attempt < 100; ++attempt) {
-    const fs::path p = dir / ("." + stem + ".tmp" + std::to_string(::getpid()) + "-" + std::to_string(random() % 1000000));
-    const int fd = ::open(p.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);  // read back by WholePng
-    if (fd >= 0) return {p, fd};
-    if (errno != EEXIST) throw std::runtime_error(p.string() + ": cannot create it: " + Errno(errno));
-  }
-  throw std::runtime_error((dir / stem).string() + ": cannot find a free temporary name beside it");
-}
 
 // A whole PNG: the 8-byte signature first, the 12-byte IEND chunk last (a full disk or a killed
 // gnuplot leaves a file cut short or empty).
@@ -146,36 +118,29 @@ std::string RunProgram(const fs::path& program, const std::vector<std::string>& 
 
 void DrawWithGnuplot(const fs::path& gnuplot, const fs::path& data_dir, const fs::path& gp, const fs::path& png,
                      const fs::path& log) {
-  const Fd err(::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644));
-  if (err.get() < 0) throw std::runtime_error(log.string() + ": cannot write it: " + Errno(errno));
-  auto [tmp, fd] = CreatePrivate(png.parent_path(), png.filename().string());
-  const Fd out(fd);
+  // Both files go through the one writer (safe_output.h): private temporaries created O_EXCL and
+  // O_NOFOLLOW relative to their open folders, renamed into place, so a link planted at a final
+  // or a temporary name is never followed. The log reaches its name only when the figure failed.
+  AtomicFile err(OutputDir::Open(log.parent_path()), log.filename().string());
+  AtomicFile out(OutputDir::Open(png.parent_path()), png.filename().string());
   // The PNG goes to gnuplot's standard output, the private file opened above: gnuplot never opens
   // an output path itself. The script's own `set output` (its PNG by name, for a rerun by hand)
   // yields to dvpr_output; the value is a fixed string, single-quoted.
   const std::string failure = RunProgram(gnuplot, {"gnuplot", "-e", "dvpr_output='/dev/stdout'", gp.filename().string()},
-                                         data_dir, out.get(), err.get());
+                                         data_dir, out.fd(), err.fd());
   const std::string what = !failure.empty() ? "gnuplot failed (" + failure + ")"
-                           : !WholePng(out.get()) ? "gnuplot wrote no whole PNG (a full disk?)"
-                                                  : "";
-  std::error_code ec;
+                           : !WholePng(out.fd()) ? "gnuplot wrote no whole PNG (a full disk?)"
+                                                 : "";
   if (!what.empty()) {
-    fs::remove(tmp, ec);  // a half-drawn PNG never replaces the earlier one
+    err.Commit();  // the PNG's temporary goes with `out`: a half-drawn PNG never replaces the earlier one
     const std::string words = FirstWords(log);
     throw std::runtime_error("figure " + png.filename().string() + ": " + what +
                              (words.empty() ? "" : ": " + words) + "; its log: " + log.string());
   }
-  if (::fsync(out.get()) != 0) {
-    fs::remove(tmp, ec);
-    throw std::runtime_error(png.string() + ": cannot write it: " + Errno(errno));
-  }
-  fs::rename(tmp, png, ec);
-  if (ec) {
-    const std::string why = ec.message();
-    fs::remove(tmp, ec);
-    throw std::runtime_error(png.string() + ": cannot put it in place: " + why);
-  }
-  fs::remove(log, ec);
+  if (::fsync(out.fd()) != 0) throw std::runtime_error(png.string() + ": cannot write it: " + Errno(errno));
+  out.Commit();
+  std::error_code ec;
+  fs::remove(log, ec);  // an earlier failure's log (a link there is removed, not followed)
 }
 
 }  // namespace dvpr

@@ -24,8 +24,9 @@ std::string RunProgram(const std::filesystem::path& program, const std::vector<s
 
 // Runs gnuplot on script `gp` (a file in `data_dir`, run there) and puts its PNG at `png`,
 // replacing an earlier one only when gnuplot exited with status 0 and wrote a whole PNG (the
-// signature first, the IEND chunk last). gnuplot's stderr goes to `log`, which is removed when
-// the figure was drawn. Throws std::runtime_error naming `png` and `log`, with gnuplot's first
+// signature first, the IEND chunk last). Both files are written through safe_output.h's
+// AtomicFile (a private temporary renamed into place; no link is followed): gnuplot's stderr
+// reaches `log` only when the figure was not drawn, and an earlier `log` is removed when it was. Throws std::runtime_error naming `png` and `log`, with gnuplot's first
 // words, when it was not; the earlier PNG then stays as it was.
 void DrawWithGnuplot(const std::filesystem::path& gnuplot, const std::filesystem::path& data_dir,
                      const std::filesystem::path& gp, const std::filesystem::path& png,

@@ -11,13 +11,9 @@
 #include <string_view>
 #include <vector>
 
-namespace dvpr {
+#include "experiments/results/one_line_text.h"  // OneLineText: a script line, a .titles line
 
-// `s` as one line of valid UTF-8, for a script line or a line-based data file (.titles):
-// control characters (0x00-0x1f, 0x7f) are shown as the two characters \n, \r or \t, or as \xNN
-// for the others, and so is every byte that is not part of a valid UTF-8 sequence (gnuplot's
-// cairo terminal garbles such bytes and warns on stderr). Valid UTF-8 is kept as it is.
-std::string OneLineText(std::string_view s);
+namespace dvpr {
 
 // `s` as a gnuplot single-quoted string: OneLineText(s), quotes doubled, in single quotes.
 std::string GnuplotQuote(std::string_view s);

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "experiments/mpi/rank_share.h"
+#include "experiments/results/safe_output.h"
 #include "experiments/results/termination_cleanup.h"
 #include "experiments/sweep/run_progress.h"
 
@@ -59,10 +60,11 @@ void WriteRunFile(const fs::path& out_dir, const RunFile& file) {
   if (rel.empty() || rel.is_absolute() || std::find(rel.begin(), rel.end(), "..") != rel.end()) {
     throw std::logic_error("a run file outside the result folder from another rank: '" + file.path + "'");
   }
-  fs::create_directories((out_dir / rel).parent_path());
-  std::ofstream out(out_dir / rel, std::ios::binary);
-  out.write(file.contents.data(), static_cast<std::streamsize>(file.contents.size()));
-  if (!out.flush()) throw std::runtime_error((out_dir / rel).string() + ": cannot write");
+  // Through the one writer (safe_output.h): each folder below out_dir made or opened without
+  // following a link, the file a private temporary renamed into place.
+  OutputDir dir = OutputDir::Open(out_dir);
+  for (const fs::path& part : rel.parent_path()) dir = dir.Sub(part.string());
+  WriteFileAt(dir, rel.filename().string(), file.contents);
 }
 
 std::string HostName() {

@@ -12,6 +12,7 @@
 #include "experiments/replay/replay_page.h"
 #include "experiments/replay/replay_tracks.h"
 #include "experiments/results/manifest.h"
+#include "experiments/results/one_line_text.h"
 #include "experiments/results/result_writers.h"
 #include "experiments/results/safe_output.h"
 
@@ -99,9 +100,12 @@ std::filesystem::path WriteReplay(const ReplayOptions& options, std::ostream& ou
   }
   std::size_t messages = 0;
   for (const auto& s : run.strategies) messages += s.messages.size();
-  out << "replay of " << tracks.name << ": " << run.robots << " robots, run " << run.run << ", network "
-      << run.network_variant << " (" << NetworkName(run) << "), " << Strategies(run) << ", " << messages
-      << " messages: " << file.string() << " (" << (page.size() + 512) / 1024 << " KiB)\n";
+  // The names come from the folder (config.yaml, messages.csv) and the path from the user: shown
+  // on one line, control characters and bytes that are not UTF-8 as visible escapes.
+  out << "replay of " << OneLineText(tracks.name) << ": " << run.robots << " robots, run " << run.run
+      << ", network " << run.network_variant << " (" << OneLineText(NetworkName(run)) << "), "
+      << OneLineText(Strategies(run)) << ", " << messages << " messages: " << OneLineText(file.string()) << " ("
+      << (page.size() + 512) / 1024 << " KiB)\n";
   return file;
 }
 

@@ -190,7 +190,8 @@ AtomicFile::AtomicFile(const OutputDir& dir, std::string name)
   for (int attempt = 0; attempt < kAttempts && fd_ < 0; ++attempt) {
     // Short and not derived from the name: a valid 255-byte name still has a valid temporary.
     tmp_ = ".dvpr-" + RandomSuffix() + ".tmp";
-    fd_ = ::openat(dir_fd_, tmp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    // O_RDWR: a caller may read back what another program wrote (a PNG is checked whole).
+    fd_ = ::openat(dir_fd_, tmp_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
     if (fd_ < 0 && errno != EEXIST) {
       const int error = errno;
       ::close(dir_fd_);

@@ -162,7 +162,39 @@ TEST_F(HostileNamesTest, RunAndReplayTakeNamesAndPathsAsText) {
   EXPECT_NE(html.find("{\"name\":\"\\u003c/script\\u003e\\u003c!-- `touch PWNED` \\u2028 \\ufffd\","),
             std::string::npos);
   EXPECT_EQ(html.find("</script><!--"), std::string::npos);
+  // What replay prints is one line: the config name as given (valid UTF-8 kept), the strategy's
+  // byte 0xFF and the page path's newline and 0xFF shown as escapes.
+  const std::string said = Stdout();
+  EXPECT_EQ(std::count(said.begin(), said.end(), '\n'), 1) << said;
+  EXPECT_EQ(said.rfind("replay of it's \"q\" `touch PWNED` $(touch PWNED); touch PWNED; ' \xc3\xa9: ", 0), 0u) << said;
+  EXPECT_NE(said.find("</script><!-- `touch PWNED` \xe2\x80\xa8 \\xFF"), std::string::npos) << said;
+  EXPECT_NE(said.find("page it's `touch PWNED` $(touch PWNED);\\n\\xFF.html ("), std::string::npos) << said;
   ExpectNoCanary();
+}
+
+// A terminal control sequence (ESC), a tab and a byte that is not UTF-8 in a path and in a
+// strategy name of messages.csv reach the terminal as visible escapes, in dvpr replay's line
+// and in the error line.
+TEST_F(HostileNamesTest, TheTerminalSeesEscapesNotControlCharacters) {
+  const Result missing = DvprArgv({"run", (dir_ / "x\x1b[2J\ty\xff.yaml").string()});
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_EQ(missing.err, "dvpr: error: " + dir_.string() + "/x\\x1B[2J\\ty\\xFF.yaml: cannot read the config file\n");
+  // config.yaml's name may hold none of these (the config reader refuses them), a path and
+  // messages.csv's strategy names may.
+  const path out = CleanRun(false);
+  std::string csv = Slurp(out / "messages.csv");
+  for (std::size_t at = csv.find(",broadcast,"); at != std::string::npos; at = csv.find(",broadcast,", at + 1)) {
+    csv.replace(at, 11, ",b\x1b[31mc\td,");
+  }
+  Write(out / "messages.csv", csv);
+  const Result replay = DvprArgv({"replay", out.string(), "--out", (dir_ / "page\x1b]0;t\x07.html").string()});
+  ASSERT_EQ(replay.status, 0) << replay.err;
+  const std::string said = Stdout();
+  EXPECT_EQ(said.rfind("replay of plain: ", 0), 0u) << said;
+  EXPECT_NE(said.find("decentralized vs b\\x1B[31mc\\td vs multi_probe_2, "), std::string::npos) << said;
+  EXPECT_NE(said.find("/page\\x1B]0;t\\x07.html ("), std::string::npos) << said;
+  EXPECT_EQ(said.find('\x1b'), std::string::npos) << said;
+  EXPECT_EQ(std::count(said.begin(), said.end(), '\n'), 1) << said;
 }
 
 // A robot outside the team in messages.csv: one error line naming file, line and column.

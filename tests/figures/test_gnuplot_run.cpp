@@ -91,6 +91,28 @@ TEST_F(GnuplotRun, APngCutShortOrEmptyIsAFailureEvenWithStatusZero) {
   }
 }
 
+// The PNG and the log go through the one writer: links planted at their names (a PNG drawn, a
+// log written on failure) are replaced, their target untouched.
+TEST_F(GnuplotRun, LinksAtThePngAndLogNamesAreReplacedNotFollowed) {
+  fs::create_directories(dir_ / "elsewhere");
+  const fs::path victim = dir_ / "elsewhere" / "victim.txt";
+  std::ofstream(victim) << "precious";
+  std::ofstream(dir_ / "good.png") << kWholePng;
+  fs::remove(png());
+  fs::create_symlink(victim, png());
+  fs::create_symlink(victim, data() / "f.log");
+  EXPECT_EQ(Draw(Program("ok", "echo drawn >&2; cat " + (dir_ / "good.png").string())), "");
+  EXPECT_FALSE(fs::is_symlink(png()));
+  EXPECT_EQ(Slurp(png()), kWholePng);
+  EXPECT_FALSE(fs::exists(fs::symlink_status(data() / "f.log")));  // the link is removed, not its target
+  fs::create_symlink(victim, data() / "f.log");
+  EXPECT_NE(Draw(Program("fails", "echo oops >&2; exit 1")), "");
+  EXPECT_FALSE(fs::is_symlink(data() / "f.log"));
+  EXPECT_EQ(Slurp(data() / "f.log"), "oops\n");
+  EXPECT_EQ(Slurp(victim), "precious");
+  EXPECT_EQ(Names(data()), (std::vector<std::string>{"f.gp", "f.log"}));  // no temporary left
+}
+
 TEST_F(GnuplotRun, AProgramThatCannotStart) {
   EXPECT_EQ(Draw(dir_ / "bin" / "missing"), "figure f.png: gnuplot failed (cannot start it: No such file or directory); "
                                             "its log: " + (data() / "f.log").string());
