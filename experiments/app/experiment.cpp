@@ -17,6 +17,7 @@
 #include "experiments/sweep/run_distributor.h"
 #include "experiments/sweep/run_sweep.h"
 #include "experiments/sweep/sweep_checks.h"
+#include "experiments/sweep/sweep_size.h"
 
 namespace dvpr {
 
@@ -83,13 +84,23 @@ struct RowFiles {
   std::optional<AtomicFile> queries, messages, failover, bow, bow_sizes;
 };
 
+// synthetic_bow's vectors are made while the inputs load (hours at its largest parameters): a
+// sweep too large is refused before that when dataset.frames bounds the frames; CheckSweepInputs
+// checks again with the frames the dataset has.
+void CheckSizeBeforeLoading(const ExperimentConfig& config, const std::string& origin, const ExecutorOptions& options) {
+  if (options.allow_large || !config.dataset.frames) return;
+  CheckSweepSize(EstimateSweepSize(config, *config.dataset.frames, config.dataset.dim),
+                 SweepMachine::ThisOne(options.threads), origin);
+}
+
 // A process of a distributed sweep that does not write the results (run_distributor.h): the
 // same inputs and checks, its runs write into the distributor's run folder, its outputs go to
 // the process that writes.
 void RunShare(const ExperimentConfig& config, const std::string& origin, const ProtocolRegistry& protocols,
               const ExecutorOptions& options) {
+  CheckSizeBeforeLoading(config, origin, options);
   SharedInputs inputs = LoadSharedInputs(config, origin);
-  CheckSweepInputs(inputs, origin, options.allow_large);
+  CheckSweepInputs(inputs, origin, options.allow_large, options.threads);
   inputs.out_dir = options.distributor->run_folder();
   RunSweep(inputs, protocols, options, [](const RunSpec&, RunOutput&&) {
     throw std::logic_error("RunShare: an output handed on to a process that does not write results");
@@ -108,8 +119,9 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
     return {};
   }
   CheckOutputFolder(out_dir);  // before the inputs load: a refused --out fails at once
+  CheckSizeBeforeLoading(config, origin, options);
   SharedInputs inputs = LoadSharedInputs(config, origin);
-  CheckSweepInputs(inputs, origin, options.allow_large);  // what would fail a run fails here, before anything is written
+  CheckSweepInputs(inputs, origin, options.allow_large, options.threads);  // what would fail a run fails here, before anything is written
   // Everything is written into folder.dir() and moved to out_dir only when all succeeded.
   ResultFolder folder(out_dir);
   const std::filesystem::path dir = folder.dir();

@@ -199,12 +199,12 @@ void CheckBowProtocols(const ExperimentConfig& c, const std::string& origin) {
 
 }  // namespace
 
-void CheckSweepInputs(const SharedInputs& inputs, const std::string& origin, bool allow_large) {
+void CheckSweepInputs(const SharedInputs& inputs, const std::string& origin, bool allow_large, int threads) {
   if (inputs.config == nullptr) throw std::invalid_argument("CheckSweepInputs: the shared inputs have no config");
   // First: the other checks list the network variants, which a hostile config makes too many.
   if (!allow_large) {
     CheckSweepSize(EstimateSweepSize(*inputs.config, inputs.deployment.size(), inputs.deployment.dim()),
-                   PhysicalMemoryBytes(), origin);
+                   SweepMachine::ThisOne(threads), origin);
   }
   CheckBowProtocols(*inputs.config, origin);
   CheckNetworks(*inputs.config, origin);

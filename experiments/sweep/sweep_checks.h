@@ -20,8 +20,10 @@ namespace dvpr {
 //  - with failover on in the sim protocol, failover.timeout is shorter than heartbeat_period plus
 //    the worst delay of a heartbeat on a network variant (docs/failover.md);
 //  - a dropout is at or after the end of the run of a team that has its robot;
-//  - unless allow_large, the sweep has more than kMaxSweepRuns runs or a run may need more than
-//    the machine's memory (sweep_size.h).
-void CheckSweepInputs(const SharedInputs& inputs, const std::string& origin, bool allow_large = false);
+//  - unless allow_large, the sweep has more than kMaxSweepRuns runs, its runs in flight at once
+//    (`threads`, 0: one per core) may need more than the machine's memory, or it would take more
+//    than kMaxSweepHours on this machine's cores (sweep_size.h).
+void CheckSweepInputs(const SharedInputs& inputs, const std::string& origin, bool allow_large = false,
+                      int threads = 0);
 
 }  // namespace dvpr

@@ -116,7 +116,7 @@ TEST(SweepSizeTest, ASweepOfBillionsOfRunsIsRefusedWithItsCount) {
   const SweepSize size = EstimateSweepSize(huge, 4541, 128);
   EXPECT_EQ(size.runs, 99999.0 * 100000 * 2 * 2);
   try {
-    CheckSweepSize(size, 1e12, "c.yaml");
+    CheckSweepSize(size, {.memory_bytes = 1e12}, "c.yaml");
     FAIL() << "accepted";
   } catch (const ConfigError& e) {
     EXPECT_EQ(std::string(e.what()),
@@ -125,23 +125,26 @@ TEST(SweepSizeTest, ASweepOfBillionsOfRunsIsRefusedWithItsCount) {
               "to run it anyway");
   }
   EXPECT_EQ(EstimateSweepSize(Config("seed: 1\n"), 4541, 128).runs, 760.0);
-  EXPECT_NO_THROW(CheckSweepSize(EstimateSweepSize(Config("seed: 1\n"), 4541, 128), 1e12, "c.yaml"));
+  EXPECT_NO_THROW(CheckSweepSize(EstimateSweepSize(Config("seed: 1\n"), 4541, 128), {.memory_bytes = 1e12}, "c.yaml"));
 }
 
 // 4 GiB of descriptors (8 robots x 2^20 frames x 128 x 4 = 2^32 bytes, sim only) on a 2 GiB machine.
 TEST(SweepSizeTest, ARunLargerThanTheMachinesMemoryIsRefusedWithTheEstimate) {
-  const SweepSize size = EstimateSweepSize(Config("robots: [8]\nprotocols: [sim]\n"), 1 << 20, 128);
+  // One run (1.96 h by the time model: 2^40 / 2 x 128 x 1e-10 s of search, 16.8 s of messages).
+  const SweepSize size =
+      EstimateSweepSize(Config("robots: [8]\nruns: 1\nstrategies: [decentralized]\nprotocols: [sim]\n"), 1 << 20, 128);
+  EXPECT_EQ(size.runs, 1.0);
   EXPECT_EQ(size.bytes_per_run, 4294967296.0);
   try {
-    CheckSweepSize(size, 2147483648.0, "c.yaml");
+    CheckSweepSize(size, {.memory_bytes = 2147483648.0}, "c.yaml");
     FAIL() << "accepted";
   } catch (const ConfigError& e) {
     EXPECT_EQ(std::string(e.what()).substr(0, 98),
               "c.yaml: robots, dataset: a run may need up to 4 GiB (largest team x frames x dim x 4 bytes of desc");
     EXPECT_NE(std::string(e.what()).find("more than this machine's 2 GiB of memory"), std::string::npos);
   }
-  EXPECT_NO_THROW(CheckSweepSize(size, 4294967296.0, "c.yaml"));
-  EXPECT_NO_THROW(CheckSweepSize(size, 0, "c.yaml"));  // memory unknown: not checked
+  EXPECT_NO_THROW(CheckSweepSize(size, {.memory_bytes = 4294967296.0}, "c.yaml"));
+  EXPECT_NO_THROW(CheckSweepSize(size, {.memory_bytes = 0}, "c.yaml"));  // memory unknown: not checked
 }
 
 // Every shipped config (KITTI 00: 4541 frames at most) runs without --allow-large, even on a
@@ -158,10 +161,102 @@ TEST(SweepSizeTest, EveryShippedConfigPassesWithoutTheFlag) {
     }
     const ExperimentConfig c = LoadConfig(entry.path(), overrides);
     const SweepSize size = EstimateSweepSize(c, c.dataset.frames.value_or(4541), c.dataset.dim);
-    EXPECT_NO_THROW(CheckSweepSize(size, 1024.0 * 1024 * 1024, entry.path().string())) << entry.path();
+    EXPECT_NO_THROW(CheckSweepSize(size, {.memory_bytes = 1024.0 * 1024 * 1024, .cores = 2}, entry.path().string()))
+        << entry.path();
     ++checked;
   }
   EXPECT_GE(checked, 6);
+}
+
+// The message of the ConfigError CheckSweepSize throws, "" when it accepts.
+std::string SizeError(const SweepSize& size, const SweepMachine& machine) {
+  try {
+    CheckSweepSize(size, machine, "c.yaml");
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// 8 robots x 2^18 frames x 128 x 4 bytes = 2^30 bytes (1 GiB) a run, 4 runs, on 3 GiB: two or
+// three at once fit, four do not (threads 4, and threads 8 runs only the 4 runs there are).
+TEST(SweepSizeTest, TheRunsInFlightAtOnceShareTheMemory) {
+  const SweepSize size =
+      EstimateSweepSize(Config("robots: [8]\nruns: 4\nprotocols: [sim]\nstrategies: [decentralized]\n"
+                               "network: {model: [ideal]}\n"),
+                        1 << 18, 128);
+  EXPECT_EQ(size.runs, 4.0);
+  EXPECT_EQ(size.bytes_per_run, 1073741824.0);
+  const double memory = 3.0 * 1073741824.0;
+  EXPECT_EQ(SizeError(size, {.memory_bytes = memory, .cores = 2}), "");  // one run a core: 2 GiB
+  EXPECT_EQ(SizeError(size, {.memory_bytes = memory, .cores = 2, .threads = 3}), "");
+  const std::string four =
+      "c.yaml: robots, dataset: 4 runs at once (one a thread) may need up to 4 GiB, each up to 1 GiB (largest team "
+      "x frames x dim x 4 bytes of descriptors, and the paper protocol's neighbour lists), more than this machine's "
+      "3 GiB of memory; lower dataset.frames, dataset.dim or robots, run fewer at once (--threads), or pass "
+      "--allow-large to run it anyway";
+  EXPECT_EQ(SizeError(size, {.memory_bytes = memory, .cores = 2, .threads = 4}), four);
+  EXPECT_EQ(SizeError(size, {.memory_bytes = memory, .cores = 2, .threads = 8}), four);
+  EXPECT_EQ(SizeError(size, {.memory_bytes = memory, .cores = 4}), four);  // threads 0: one a core
+}
+
+// 100000 runs x 2 strategies of 10 robots on 10000 frames of dim 100, sim: a run is 10000^2 / 2 x 100
+// multiply-adds x 1e-10 s = 0.5 s of search plus 2 x 10000 x 10 messages x 1e-6 s = 0.2 s.
+// 200000 x 0.7 s = 140000 s: 38.9 h on one core (refused), 19.4 h on two.
+TEST(SweepSizeTest, ASweepOfMoreThanADayOnTheseCoresIsRefusedWithTheEstimate) {
+  const SweepSize size = EstimateSweepSize(
+      Config("robots: [10]\nruns: 100000\nprotocols: [sim]\nstrategies: [broadcast, decentralized]\nnetwork: {model: [ideal]}\n"),
+      10000, 100);
+  EXPECT_EQ(size.runs, 200000.0);
+  EXPECT_NEAR(size.seconds_per_run, 0.7, 1e-12);
+  EXPECT_EQ(size.input_seconds, 0.0);
+  const std::string one_core =
+      "c.yaml: robots, runs, strategies, network, dataset: the sweep would take about 38.9 h on 1 core (2e+05 runs "
+      "of up to 0.7 s each), more than 24 h; narrow it, or pass --allow-large to run it anyway";
+  EXPECT_EQ(SizeError(size, {.cores = 1}), one_core);
+  EXPECT_EQ(SizeError(size, {.cores = 2, .threads = 1}), one_core);  // one thread: one core's worth
+  EXPECT_EQ(SizeError(size, {.cores = 2}), "");
+  // The paper protocol alone: the search only, 0.5 s a run, 27.8 h on one core.
+  const SweepSize paper = EstimateSweepSize(
+      Config("robots: [10]\nruns: 100000\nprotocols: [paper]\nstrategies: [broadcast, decentralized]\n"), 10000, 100);
+  EXPECT_NEAR(paper.seconds_per_run, 0.5, 1e-12);
+  EXPECT_NE(SizeError(paper, {.cores = 1}).find("about 27.8 h on 1 core (2e+05 runs of up to 0.5 s each)"),
+            std::string::npos);
+}
+
+// synthetic_bow examines every landmark of the square of side 2 x range_m around a frame:
+// (2 x 1000)^2 x 10 = 4e7 at its maxima, 1.7 s a frame; 60000 frames take 102000 s (28.3 h)
+// before the one run (60000^2 / 2 x 16 x 1e-10 = 2.88 s). Its defaults (range 40 m, 0.2
+// landmarks per m^2): 80^2 x 0.2 = 1280 landmarks, 54.4 us a frame, 0.247 s for 4541 frames.
+TEST(SweepSizeTest, SyntheticBowAtItsMaximaIsCountedBeforeTheRuns) {
+  const std::string maxima =
+      "robots: [2]\nruns: 1\nprotocols: [paper]\nstrategies: [bow_decentralized]\n"
+      "dataset: {dim: 16, synthetic_bow: {features: 100000, vocabulary: 10000000, landmark_density: 10, "
+      "range_m: 1000, field_of_view_deg: 360}}\n";
+  const SweepSize one_frame = EstimateSweepSize(Config(maxima), 1, 16);
+  EXPECT_NEAR(one_frame.input_seconds, 1.7, 1e-9);
+  const SweepSize size = EstimateSweepSize(Config(maxima), 60000, 16);
+  EXPECT_NEAR(size.input_seconds, 102000.0, 1e-6);
+  EXPECT_NEAR(size.seconds_per_run, 2.88, 1e-9);
+  EXPECT_EQ(SizeError(size, {.cores = 2}),
+            "c.yaml: robots, runs, strategies, network, dataset: the sweep would take about 28.3 h on 1 core (1 run of "
+            "up to 2.88 s each, and 1.02e+05 s to make dataset.synthetic_bow's vectors), more than 24 h; narrow it, "
+            "or pass --allow-large to run it anyway");
+  EXPECT_EQ(SizeError(EstimateSweepSize(Config(maxima), 4541, 16), {.cores = 2}), "");  // 2.14 h
+  const SweepSize defaults = EstimateSweepSize(
+      Config("robots: [2]\nruns: 1\nprotocols: [paper]\nstrategies: [bow_decentralized]\n"), 4541, 16);
+  EXPECT_NEAR(defaults.input_seconds, 0.247, 1e-3);
+  // Descriptor strategies make no BoW vectors.
+  EXPECT_EQ(EstimateSweepSize(Config("robots: [2]\n"), 60000, 16).input_seconds, 0.0);
+}
+
+// The default sweep (robots 2..20, paper and sim): the largest team's run is 4541^2 / 2 x 128 x
+// 1e-10 = 0.132 s of search plus 2 x 4541 x 20 x 1e-6 = 0.182 s of messages, 0.314 s (0.21 s
+// measured on average); its 760 runs take 2.0 min on two cores by the model.
+TEST(SweepSizeTest, TheDefaultSweepsEstimateWorkedByHand) {
+  const SweepSize size = EstimateSweepSize(Config("seed: 1\n"), 4541, 128);
+  EXPECT_NEAR(size.seconds_per_run, 0.31361, 1e-5);
+  EXPECT_EQ(SizeError(size, {.memory_bytes = 1024.0 * 1024 * 1024, .cores = 1}), "");
 }
 
 }  // namespace
