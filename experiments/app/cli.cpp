@@ -133,13 +133,15 @@ RunArgs ParseRunArgs(const std::vector<std::string>& args) {
 
 int Run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   RunArgs a;
+  // Under an MPI launcher every rank parses the same arguments: rank 0 alone says what is wrong.
+  const bool speaks = LauncherRank() == 0;
   try {
     a = ParseRunArgs(args);
   } catch (const std::invalid_argument& e) {
-    err << "dvpr run: " << OneLine(e.what()) << " (see dvpr --help)\n";
+    if (speaks) err << "dvpr run: " << OneLine(e.what()) << " (see dvpr --help)\n";
     return kExitUsage;
   } catch (const ConfigError& e) {  // a malformed --set
-    err << "dvpr run: " << OneLine(e.what()) << " (see dvpr --help)\n";
+    if (speaks) err << "dvpr run: " << OneLine(e.what()) << " (see dvpr --help)\n";
     return kExitUsage;
   }
   const auto run = [&a](const ExecutorOptions& options, std::ostream& summary) {

@@ -13,6 +13,7 @@ int RunOnRanks(const MpiWorld& world, ExecutorOptions options,
                const std::function<int(const ExecutorOptions&, std::ostream&)>& run, std::ostream& out,
                std::ostream& err) {
   int status = kExitOk;
+  bool clean_stop = false;
   {
     const MpiRunDistributor distributor(world);
     options.distributor = &distributor;
@@ -22,11 +23,27 @@ int RunOnRanks(const MpiWorld& world, ExecutorOptions options,
     try {
       status = run(options, world.rank() == 0 ? out : unused);
     } catch (...) {
-      distributor.ReportFailure(std::current_exception());  // returns on rank 0 (and when too late)
-      status = ReportError(std::current_exception(), err);
+      std::exception_ptr error = std::current_exception();
+      if (!distributor.agreed()) {  // failed before the runs: the other ranks learn it collectively
+        try {
+          distributor.AgreeBeforeStart(error);
+        } catch (...) {
+          error = std::current_exception();
+        }
+      }
+      if (distributor.stopped_before_start()) {
+        // Every rank stops here: rank 0 says it once, the others return the status silently, and
+        // nobody aborts (MPI_Abort's text would follow the error line).
+        clean_stop = true;
+        std::ostringstream silent;
+        status = ReportError(error, world.rank() == 0 ? err : silent);
+      } else {
+        distributor.ReportFailure(error);  // returns on rank 0 (and when too late)
+        status = ReportError(error, err);
+      }
     }
   }
-  if (status != kExitOk) {
+  if (status != kExitOk && !clean_stop) {
     out.flush();
     err.flush();
     world.Abort(status);

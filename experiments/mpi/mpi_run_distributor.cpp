@@ -137,6 +137,7 @@ void MpiRunDistributor::Execute(const std::vector<RunSpec>& specs,
     if (specs[i].index != i) throw std::logic_error("MpiRunDistributor: spec " + std::to_string(i) + " has index " +
                                                     std::to_string(specs[i].index));
   }
+  AgreeBeforeStart(nullptr);
   if (world_.rank() == 0) {
     Gather(specs, run_functions, out_dir, consume, options);
   } else {
@@ -225,6 +226,25 @@ void MpiRunDistributor::ReportFailure(std::exception_ptr error) const {
     return;  // rank 0 cannot be told: the caller reports and aborts
   }
   for (;;) std::this_thread::sleep_for(std::chrono::milliseconds(50));  // until rank 0 aborts the job
+}
+
+void MpiRunDistributor::AgreeBeforeStart(std::exception_ptr error) const {
+  if (agreed_) throw std::logic_error("MpiRunDistributor::AgreeBeforeStart called twice");
+  agreed_ = true;
+  const int first = world_.FirstFailedRank(error != nullptr);
+  if (first == world_.size()) return;
+  stopped_before_start_ = true;
+  if (world_.rank() == 0) {
+    if (first == 0) std::rethrow_exception(error);
+    for (;;) {  // the first failed rank sends its error right after the agreement
+      if (const std::optional<RankMessage> m = world_.TryReceive(); m && m->tag == RankTag::kFailure && m->source == first) {
+        ThrowFromRank(DecodeFailure(m->bytes), first, world_.size());
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  }
+  if (world_.rank() == first) world_.Send(0, RankTag::kFailure, EncodeFailure(FailureOf(error)));
+  throw RanksStoppedBeforeStart();
 }
 
 int MachineCores() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }

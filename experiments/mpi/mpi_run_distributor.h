@@ -6,7 +6,11 @@
 // so it writes the result folder a single process writes, byte for byte. The others write
 // nothing of it (their runs write into a temporary run folder, removed at the end).
 //
-// A failure on any rank ends the sweep: a rank whose run (or anything before it) failed sends
+// A failure before the runs start (a config error, which every rank finds, or a rank's own)
+// stops every rank cleanly: each passes AgreeBeforeStart once (at Execute's start, or where it
+// failed), rank 0 reports the first failed rank's error as the one error line, and every rank
+// returns its exit status, with no MPI_Abort (whose text Open MPI prints).
+// A failure on any rank once the runs started ends the sweep: a rank whose run failed sends
 // the error to rank 0 and waits; rank 0 throws it, naming the run and the rank, its result
 // folder is removed as for any failed run, and the job is aborted (RunOnRanks in
 // experiments/app/). A rank that dies is noticed by the launcher, which ends the others (rank 0
@@ -15,6 +19,7 @@
 #include <exception>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "experiments/mpi/mpi_world.h"
@@ -43,6 +48,14 @@ class MpiRunDistributor final : public RunDistributor {
   // rank 0 it is done (rank 0 may have finished): the caller then reports and aborts itself.
   void ReportFailure(std::exception_ptr error) const;
 
+  // The ranks agree whether any failed before the runs start; every rank calls it exactly once:
+  // Execute calls it with nullptr, a rank that fails before Execute with its error. Returns when
+  // none failed. Else throws: on rank 0 the error to report (its own, or the first failed rank's,
+  // named "rank r of K: ..."), on the others RanksStoppedBeforeStart (rank 0 reports).
+  void AgreeBeforeStart(std::exception_ptr error) const;
+  bool agreed() const { return agreed_; }
+  bool stopped_before_start() const { return stopped_before_start_; }
+
  private:
   void Gather(const std::vector<RunSpec>& specs, const std::map<std::string, RunFunction>& run_functions,
               const std::filesystem::path& out_dir,
@@ -57,6 +70,14 @@ class MpiRunDistributor final : public RunDistributor {
   const MpiWorld& world_;
   std::filesystem::path run_folder_;  // empty on rank 0
   mutable bool sent_done_ = false;
+  mutable bool agreed_ = false;
+  mutable bool stopped_before_start_ = false;
+};
+
+// What AgreeBeforeStart throws on a rank other than 0 when a rank failed before the runs: that
+// rank's error is rank 0's to report; this one ends with exit status 1 and says nothing.
+struct RanksStoppedBeforeStart : std::runtime_error {
+  RanksStoppedBeforeStart() : std::runtime_error("a rank failed before the runs started (rank 0 reports it)") {}
 };
 
 // The threads of each rank's pool: `requested` when given (--threads); else the cores the rank

@@ -21,6 +21,17 @@ bool StartedByMpiLauncher() {
   return false;
 }
 
+int LauncherRank() {
+  for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"}) {
+    const char* value = std::getenv(name);
+    if (value == nullptr) continue;
+    char* end = nullptr;
+    const long rank = std::strtol(value, &end, 10);
+    if (end != value && *end == '\0' && rank >= 0) return static_cast<int>(rank);
+  }
+  return 0;
+}
+
 #ifdef DVPR_HAVE_MPI
 
 namespace {
@@ -78,6 +89,13 @@ std::optional<RankMessage> MpiWorld::TryReceive() const {
   return m;
 }
 
+int MpiWorld::FirstFailedRank(bool failed) const {
+  const int mine = failed ? rank_ : size_;
+  int first = size_;
+  Check(MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD), "MPI_Allreduce");
+  return first;
+}
+
 void MpiWorld::Abort(int status) const {
   MPI_Abort(MPI_COMM_WORLD, status);
   std::_Exit(status);  // MPI_Abort does not return; should it, end this rank at least
@@ -101,6 +119,8 @@ void MpiWorld::Send(int, RankTag, const Bytes8&) const {
 }
 
 std::optional<RankMessage> MpiWorld::TryReceive() const { return std::nullopt; }
+
+int MpiWorld::FirstFailedRank(bool failed) const { return failed ? 0 : 1; }
 
 void MpiWorld::Abort(int status) const { std::_Exit(status); }
 

@@ -39,6 +39,9 @@ class MpiWorld {
   void Send(int dest, RankTag tag, const Bytes8& bytes) const;
   // A message from any rank that has arrived, received; nullopt when none has.
   std::optional<RankMessage> TryReceive() const;
+  // A collective: every rank calls it once at the same point. The lowest rank that passed
+  // `failed` true, or size() when none did (MPI_Allreduce, MPI_MIN).
+  int FirstFailedRank(bool failed) const;
   // Ends every rank of the job with `status` (MPI_Abort): what a rank does when the job failed
   // and the others may be waiting for it.
   [[noreturn]] void Abort(int status) const;
@@ -52,5 +55,9 @@ class MpiWorld {
 
 // True when an MPI launcher started this process (Open MPI's mpirun, or PMI/PMIx as srun sets).
 bool StartedByMpiLauncher();
+
+// This process's rank as the launcher's environment gives it (before MPI is joined), 0 when it
+// gives none: a usage error found before joining is printed by rank 0 only.
+int LauncherRank();
 
 }  // namespace dvpr

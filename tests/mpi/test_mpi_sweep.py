@@ -17,6 +17,10 @@ fail-input / fail-internal / die: tests/app/mpi_fault_sweep.cpp under 3 ranks wi
   gone (this script adopts and reaps them), accepts as leftovers only folders of those dead
   processes, of the two kinds the next job removes, and checks that the next job removes them.
   It prints how many ranks cleaned up on SIGTERM.
+config-error: an error found before the runs start, under 3 ranks: a config error (every rank
+  finds it), rank 0's refused --out (a user's file in it) and a usage error are each one line,
+  said once by rank 0; every rank exits with the status on its own (no MPI_Abort, whose text Open
+  MPI prints; mpirun --quiet keeps out mpirun's own note on a non-zero status), nothing written.
 
 Usage: test_mpi_sweep.py MODE MPIRUN DVPR FAULT_SWEEP SOURCE_DIR WORK_DIR
 """
@@ -170,6 +174,39 @@ def failing(mode, index, status):
     print(f"{mode} on rank {rank}: exit {proc.returncode}, nothing written")
 
 
+def config_error():
+    bad = WORK / "bad.yaml"
+    bad.write_text("robots: [2, 3]\nruns: abc\n")
+    out = WORK / "out"
+    line = f"dvpr: error: {bad}: runs: expected an integer, got 'abc'\n"
+    proc = mpirun(3, "--quiet", DVPR, "run", str(bad), "--quiet", "--out", str(out))
+    check(proc.returncode == 1, "a config error under 3 ranks: expected exit status 1", proc)
+    check(proc.stderr == line, "a config error under 3 ranks: not one line from rank 0", proc)
+    # Without --quiet mpirun adds its note that a rank exited with status 1, but the ranks ended
+    # on their own: no MPI_ABORT text, and still one line of dvpr's.
+    proc = mpirun(3, DVPR, "run", str(bad), "--quiet", "--out", str(out))
+    check(proc.returncode == 1 and proc.stderr.startswith(line) and proc.stderr.count("dvpr") == 1,
+          "without --quiet: not dvpr's one line first", proc)
+    check("MPI_ABORT" not in proc.stderr + proc.stdout, "a config error aborted the job (MPI_ABORT)", proc)
+    check(not out.exists(), "a config error wrote the result folder", proc)
+    # Rank 0 alone refuses the --out (the other ranks do not check it): they learn it and end.
+    user = WORK / "user"
+    user.mkdir()
+    (user / "NOTES.txt").write_text("mine")
+    proc = mpirun(3, "--quiet", DVPR, "run", str(CONFIG), "--quiet", "--out", str(user))
+    check(proc.returncode == 1 and proc.stderr.count("\n") == 1 and proc.stderr.startswith("dvpr: error: ")
+          and "NOTES.txt" in proc.stderr, "rank 0's refused --out: not one error line naming the file", proc)
+    check(sorted(p.name for p in user.iterdir()) == ["NOTES.txt"] and (user / "NOTES.txt").read_text() == "mine",
+          "rank 0's refused --out: the folder changed", proc)
+    proc = mpirun(3, "--quiet", DVPR, "run", str(CONFIG), "--bogus")
+    check(proc.returncode == 2 and proc.stderr == "dvpr run: unknown option --bogus (see dvpr --help)\n",
+          "a usage error under 3 ranks: not one line from rank 0 with status 2", proc)
+    check(not any(TMP.iterdir()), f"left in TMPDIR: {sorted(p.name for p in TMP.iterdir())}")
+    check(sorted(p.name for p in WORK.iterdir() if p.name.startswith(".")) == [],
+          "a temporary result folder left beside the output")
+    print("config error, refused --out and usage error under 3 ranks: one line each, nothing written")
+
+
 adopt_orphans()
 shutil.rmtree(WORK, ignore_errors=True)
 TMP.mkdir(parents=True)
@@ -179,6 +216,8 @@ elif MODE == "fail-input":
     failing("input", 5, 1)      # rank 2, a worker
 elif MODE == "fail-internal":
     failing("internal", 3, 3)   # rank 0, the one that writes
+elif MODE == "config-error":
+    config_error()
 elif MODE == "die":
     failing("die", 4, None)     # rank 1
 else:
