@@ -18,7 +18,6 @@
 // - robots >= 2, runs >= 1, dim >= 1, probabilities in [0, 1].
 // Checks that need the data (dim larger than the descriptors, frame counts) happen when the data
 // is loaded (experiments/protocols/inputs.h) and name the same key paths.
-#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -94,11 +93,6 @@ struct SweepConfig {
   // Parsed when the config is loaded: an unknown or malformed name is a ConfigError.
   std::vector<StrategySpec> strategies{ParseStrategy("decentralized"), ParseStrategy("broadcast")};
   bool operator==(const SweepConfig&) const = default;
-  // A protocol of the sweep sends messages: every one but the paper's static evaluation. What
-  // only a message limits (int16 lengths on the wire) is checked for such a sweep alone.
-  bool SendsMessages() const {
-    return std::any_of(protocols.begin(), protocols.end(), [](const std::string& p) { return p != "paper"; });
-  }
 };
 
 // The `network:` section. model, bandwidth, latency, queue_packets and mtu may each be a list;

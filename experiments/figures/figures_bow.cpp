@@ -11,6 +11,7 @@
 
 #include "experiments/figures/figures.h"
 #include "experiments/figures/gnuplot_text.h"
+#include "experiments/results/protocol_traits.h"
 #include "experiments/results/result_writers.h"
 #include "experiments/results/safe_output.h"
 
@@ -89,7 +90,10 @@ void WriteTable(const fs::path& file, const Means& m, const std::set<int>& robot
 std::vector<int> WriteSizes(const fs::path& data_dir, const fs::path& out_dir) {
   std::map<int, std::map<std::int64_t, double>> bins;  // n -> bin -> messages (run 0)
   for (const auto& row : ReadCsv(out_dir / "bow_sizes.csv")) {
-    if (row.at("strategy") != "bow_decentralized" || row.at("protocol") != "paper" || row.at("run") != "0") continue;
+    if (row.at("strategy") != "bow_decentralized" || !RowTraits(row.at("protocol")).static_evaluation ||
+        row.at("run") != "0") {
+      continue;
+    }
     const int n = std::stoi(row.at("robots"));
     const std::int64_t words = (std::stoll(row.at("payload_bytes")) - 26) / 8;
     bins[n][words / 5] += std::stod(row.at("messages"));
@@ -119,12 +123,12 @@ bool WriteBowComparisonData(const fs::path& out_dir, const fs::path& data_dir, c
   Means auc, bytes, vote;
   std::set<int> robots;
   for (const RunResult& r : rows) {
-    if (r.key.protocol != "paper") continue;
+    if (!RowTraits(r.key.protocol).static_evaluation) continue;
     Add(auc, r.key.strategy, r.key.robots, r.relative_auc);
     robots.insert(r.key.robots);
   }
   for (const auto& row : ReadCsv(out_dir / "bow.csv")) {
-    if (row.at("protocol") != "paper") continue;
+    if (!RowTraits(row.at("protocol")).static_evaluation) continue;
     const int n = std::stoi(row.at("robots"));
     Add(bytes, row.at("strategy"), n, Number(row, "query_bytes_per_query"));
     Add(vote, row.at("strategy"), n, Number(row, "vote_not_centralized_fraction"));

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "experiments/figures/figures.h"
+#include "experiments/results/protocol_traits.h"
 #include "experiments/results/result_writers.h"
 
 namespace dvpr {
@@ -127,15 +128,19 @@ void WriteFigureData(const std::filesystem::path& out_dir, const FigureData& dat
 
 bool WriteRelativeAucData(const std::filesystem::path& data_dir,
                           const std::vector<RunResult>& rows) {
-  // The paper's figure: the static protocol's decentralized rows; the sim's if there are none.
-  std::string protocol = "paper";
-  auto has = [&](const std::string& p) {
-    return std::any_of(rows.begin(), rows.end(), [&](const RunResult& r) {
-      return r.key.protocol == p && r.key.strategy == "decentralized" && !std::isnan(r.relative_auc);
+  // The paper's figure: the static protocol's decentralized rows; the simulation's if there are
+  // none (the first protocol with the trait that has such rows).
+  std::string protocol;
+  for (bool ProtocolTraits::*trait : {&ProtocolTraits::static_evaluation, &ProtocolTraits::simulated_network}) {
+    const auto it = std::find_if(rows.begin(), rows.end(), [&](const RunResult& r) {
+      return RowTraits(r.key.protocol).*trait && r.key.strategy == "decentralized" && !std::isnan(r.relative_auc);
     });
-  };
-  if (!has(protocol)) protocol = "sim";
-  if (!has(protocol)) return false;
+    if (it != rows.end()) {
+      protocol = it->key.protocol;
+      break;
+    }
+  }
+  if (protocol.empty()) return false;
   auto pick = [&](const RunResult& r) {
     return r.key.protocol == protocol && r.key.strategy == "decentralized" &&
            r.key.network.variant == 0;

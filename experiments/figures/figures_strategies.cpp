@@ -11,6 +11,7 @@
 #include "experiments/figures/figure_style.h"
 #include "experiments/figures/figures.h"
 #include "experiments/figures/gnuplot_text.h"
+#include "experiments/results/protocol_traits.h"
 #include "experiments/results/result_writers.h"
 
 namespace dvpr {
@@ -51,10 +52,11 @@ void Finish(RunSpread& s) {
   if (s.runs > 0) s.mean /= s.runs;
 }
 
+// The static evaluation's rows (exact accuracy), else the simulation's.
 std::string ChooseAccuracyProtocol(const std::vector<RunResult>& rows) {
-  for (const char* p : {"paper", "sim"}) {
+  for (bool ProtocolTraits::*trait : {&ProtocolTraits::static_evaluation, &ProtocolTraits::simulated_network}) {
     for (const auto& r : rows) {
-      if (r.key.protocol == p && !std::isnan(r.relative_auc)) return p;
+      if (RowTraits(r.key.protocol).*trait && !std::isnan(r.relative_auc)) return r.key.protocol;
     }
   }
   return "";
@@ -298,7 +300,7 @@ StrategyTable TabulateStrategies(const std::vector<RunResult>& rows) {
   StrategyTable t;
   t.accuracy_protocol = ChooseAccuracyProtocol(rows);
   for (const auto& r : rows) {
-    if (r.key.protocol == "sim" && !std::isnan(r.bytes_per_query) &&
+    if (RowTraits(r.key.protocol).simulated_network && !std::isnan(r.bytes_per_query) &&
         (t.bytes_variant < 0 || r.key.network.variant < t.bytes_variant)) {
       t.bytes_variant = r.key.network.variant;
       t.bytes_network = NetworkText(r.key.network);
@@ -315,11 +317,11 @@ StrategyTable TabulateStrategies(const std::vector<RunResult>& rows) {
     s.strategy = r.key.strategy;
     s.robots = r.key.robots;
     if (r.key.protocol == t.accuracy_protocol &&
-        (r.key.protocol == "paper" || r.key.network.variant == first_sim_variant)) {
+        (!RowTraits(r.key.protocol).simulated_network || r.key.network.variant == first_sim_variant)) {
       Accumulate(s.relative_auc, r.relative_auc);
       Accumulate(s.worst_balance, r.worst_balance_ratio);
     }
-    if (r.key.protocol == "sim" && r.key.network.variant == t.bytes_variant) {
+    if (RowTraits(r.key.protocol).simulated_network && r.key.network.variant == t.bytes_variant) {
       Accumulate(s.bytes_per_query, r.bytes_per_query);
     }
   }
@@ -542,7 +544,7 @@ std::string TradeoffDotPanels(const std::map<std::string, std::string>& meta,
            ", graph 1 offset 0.4,-0.9 tc rgb '#c0392b' font ',9'\n";
   };
   s << DotPanelScript({0.19, 0.43, 0, "Relative AUC (higher is better)",
-                       "AUC / AUC(" + std::string(protocol == "paper" ? "centralized" : "broadcast") + ")",
+                       "AUC / AUC(" + std::string(RowTraits(protocol).relative_auc_reference) + ")",
                        "set xrange [" + meta.at("auc_lo") + ":1.02]\n" + target_at(kTargetAuc)},
                       ns, true, meta.at("missing_0"));
   s << DotPanelScript({0.47, 0.71, 3, "Worst balance ratio (lower is better)",
@@ -606,8 +608,7 @@ std::string StrategyTradeoffScript(const fs::path& data_dir, const fs::path& png
   const std::vector<int> ns = ParseInts(meta.at("robots"));
   std::string at = "n = " + std::to_string(ns.at(0));
   if (ns.size() > 1) at += " and n = " + std::to_string(ns[1]);
-  const std::string protocol = meta.at("protocol") == "paper" ? "paper (static) protocol"
-                                                              : "simulation";
+  const std::string protocol(RowTraits(meta.at("protocol")).title);
   std::ostringstream s;
   s << Terminal(png, kTradeoffWidth, kTradeoffHeight)
     << "set multiplot title \"Routing strategies at " << at << "\\n"
@@ -677,7 +678,7 @@ std::string StrategySweepScript(const fs::path& data_dir, const fs::path& png) {
   s << Terminal(png, 1750, 640) << SweepLinetypes(names.size())
     << "set multiplot title "
     << GnuplotTitle({std::string("Routing strategies vs team size: relative AUC and worst balance ") +
-                    (meta.at("protocol") == "paper" ? "from the paper (static) protocol" : "from the simulation") +
+                    "from the " + std::string(RowTraits(meta.at("protocol")).title) +
                     (bytes ? ", bytes per query from the simulation (" + meta.at("network") + ")" : "") + "; " +
                     (meta.at("runs") == "1" ? "1 run" : "mean of " + meta.at("runs") + " runs")})
     << " font ',14'\nset grid lc rgb '#dddddd'\nset xlabel 'robots n'\nset xtics ("

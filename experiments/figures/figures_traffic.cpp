@@ -7,6 +7,7 @@
 
 #include "experiments/figures/figure_style.h"
 #include "experiments/figures/gnuplot_text.h"
+#include "experiments/results/protocol_traits.h"
 #include "experiments/results/result_writers.h"
 
 namespace dvpr {
@@ -205,7 +206,7 @@ std::optional<FigureScript> WriteRoleFigure(const fs::path& dir, const TrafficTa
 
 namespace {
 
-// Rows of one run of `csv` (protocol sim, variant v, n, run 0) for `strategy`, by index.
+// Rows of one run of `csv` (on the simulated network: protocol sim; variant v, n, run 0) for `strategy`, by index.
 std::vector<std::size_t> RunRows(const CsvTable& csv, const std::string& strategy, int v, int n) {
   std::vector<std::size_t> out;
   if (csv.header.empty()) return out;
@@ -214,7 +215,7 @@ std::vector<std::size_t> RunRows(const CsvTable& csv, const std::string& strateg
   for (std::size_t i = 0; i < csv.rows.size(); ++i) {
     const auto& row = csv.rows[i];
     if (row.size() != csv.header.size()) continue;
-    if (row[p] == "sim" && row[s] == strategy && row[r] == std::to_string(n) && row[run] == "0" &&
+    if (RowTraits(row[p]).simulated_network && row[s] == strategy && row[r] == std::to_string(n) && row[run] == "0" &&
         row[net] == std::to_string(v)) {
       out.push_back(i);
     }

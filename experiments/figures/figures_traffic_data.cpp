@@ -9,13 +9,14 @@
 #include <stdexcept>
 
 #include "experiments/figures/figures_traffic.h"
+#include "experiments/results/protocol_traits.h"
 #include "experiments/results/result_writers.h"
 
 namespace dvpr {
 
 namespace {
 
-bool IsSimWithRoles(const RunResult& r) { return r.key.protocol == "sim" && r.roles.has_value(); }
+bool IsSimWithRoles(const RunResult& r) { return RowTraits(r.key.protocol).simulated_network && r.roles.has_value(); }
 
 double Role(const RunResult& r, MessageRole role) {
   return static_cast<double>(r.roles->copies[static_cast<std::size_t>(role)].wire);

@@ -7,6 +7,7 @@
 #include "experiments/data/bow_file.h"
 #include "experiments/data/loaders.h"
 #include "experiments/data/synthetic_bow.h"
+#include "experiments/results/protocol_traits.h"
 
 namespace dvpr {
 
@@ -106,7 +107,7 @@ SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string&
     throw ConfigError(origin + ": robots: " + std::to_string(largest) + " robots but only " +
                       std::to_string(in.deployment.size()) + " frames (dataset.frames)");
   }
-  if (config.sweep.SendsMessages()) CheckDescriptorsFitTheWire(in.deployment, origin);
+  if (AnyProtocol(config.sweep.protocols, &ProtocolTraits::sends_messages)) CheckDescriptorsFitTheWire(in.deployment, origin);
   in.training = LoadTraining(config, in.deployment, origin);
   const RunCentroidParams& centroids = config.training.run_centroids;
   const auto k = static_cast<Eigen::Index>(largest) * centroids.clusters_per_robot;

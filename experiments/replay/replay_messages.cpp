@@ -10,6 +10,8 @@
 #include <string_view>
 #include <tuple>
 
+#include "experiments/results/protocol_traits.h"
+
 namespace dvpr::replay {
 
 namespace {
@@ -175,7 +177,7 @@ Scan ScanFile(const std::filesystem::path& file, const Selection& selection) {
                                std::to_string(columns) + " fields as in the header, got " +
                                std::to_string(row.size()) + " (a cut or edited file?)");
     }
-    if (row.Text(kProtocol) != "sim") continue;
+    if (!RowTraits(row.Text(kProtocol)).simulated_network) continue;
     ++scan.sim_rows;
     const RunId id{row.Number<int>(kRobots), row.Number<int>(kRun), row.Number<int>(kVariant)};
     scan.robots.insert(std::get<0>(id));

@@ -5,11 +5,15 @@
 #include <utility>
 
 #include "experiments/parallel/parallel_for_in_order.h"
+#include "experiments/results/protocol_traits.h"
 #include "experiments/sweep/run_progress.h"
 
 namespace dvpr {
 
 void ProtocolRegistry::Add(const std::string& name, ProtocolFactory factory) {
+  // A protocol declares its traits before it runs: whatever asks about a run's protocol (the
+  // sweep's expansion and checks, the figures, the replay) asks them, never its name.
+  static_cast<void>(TraitsOf(name));  // throws std::invalid_argument for a name without traits
   factories_[name] = std::move(factory);
 }
 

@@ -23,6 +23,7 @@ namespace dvpr {
 
 class ProtocolRegistry {
  public:
+  // `name` must have traits (TraitsOf, experiments/results/protocol_traits.h); std::invalid_argument if not.
   void Add(const std::string& name, ProtocolFactory factory);
   const ProtocolFactory* Find(const std::string& name) const;
   std::vector<std::string> Names() const;

@@ -1,5 +1,6 @@
 #include "experiments/sweep/sweep.h"
 
+#include "experiments/results/protocol_traits.h"
 #include "experiments/strategies/run_centroids.h"
 
 namespace dvpr {
@@ -56,10 +57,10 @@ std::vector<RunSpec> ExpandSweep(const ExperimentConfig& config,
   std::vector<RunSpec> specs;
   for (const std::string& protocol : config.sweep.protocols) {
     std::vector<const NetworkVariant*> variants;
-    if (protocol == "sim") {
+    if (TraitsOf(protocol).simulated_network) {
       for (const auto& v : networks) variants.push_back(&v);
     } else {
-      variants.push_back(nullptr);  // the static protocol has no network
+      variants.push_back(nullptr);  // no network of the sweep's (the static protocol has none)
     }
     for (const NetworkVariant* variant : variants) {
       for (int robots : config.sweep.robots) {

@@ -11,6 +11,7 @@
 #include "agents/ids.h"
 #include "agents/team_sync.h"
 #include "experiments/protocols/strategy_inputs.h"
+#include "experiments/results/protocol_traits.h"
 #include "experiments/strategies/run_routing.h"
 #include "experiments/sweep/sweep.h"
 #include "experiments/sweep/sweep_size.h"
@@ -29,7 +30,7 @@ std::string Robots(const SweepConfig& sweep) {
 // Link overrides (and every other network parameter) hold for a team of n robots if they hold
 // for the smallest: a pair lies in every larger team too.
 void CheckNetworks(const ExperimentConfig& c, const std::string& origin) {
-  if (std::find(c.sweep.protocols.begin(), c.sweep.protocols.end(), "sim") == c.sweep.protocols.end()) return;
+  if (!AnyProtocol(c.sweep.protocols, &ProtocolTraits::simulated_network)) return;
   const int smallest = *std::min_element(c.sweep.robots.begin(), c.sweep.robots.end());
   for (const NetworkVariant& v : ExpandNetworks(c.network)) {
     try {
@@ -69,8 +70,7 @@ SimTime WorstHeartbeatDelay(const NetworkModelParams& p, int robots) {
 // timeout shorter than period + the worst delay declares robots lost with nobody gone
 // (docs/failover.md). Real agents (dvpr launch) run on a real network, which no config describes.
 void CheckFailoverTimeout(const ExperimentConfig& c, const std::string& origin) {
-  const auto& protocols = c.sweep.protocols;
-  if (!c.failover.enabled || std::find(protocols.begin(), protocols.end(), "sim") == protocols.end()) return;
+  if (!c.failover.enabled || !AnyProtocol(c.sweep.protocols, &ProtocolTraits::simulated_network)) return;
   for (const NetworkVariant& v : ExpandNetworks(c.network)) {
     for (const int n : c.sweep.robots) {
       const SimTime delay = WorstHeartbeatDelay(v.params, n);
@@ -165,7 +165,7 @@ void CheckStrategies(const SharedInputs& in, const std::string& origin) {
   // A re-clustering leader sends its table in a centroid_table_t, whose k is an int16 (the paper
   // protocol evaluates the plan without messages).
   const int largest = *std::max_element(c.sweep.robots.begin(), c.sweep.robots.end());
-  const bool sends = c.sweep.SendsMessages();
+  const bool sends = AnyProtocol(c.sweep.protocols, &ProtocolTraits::sends_messages);
   for (std::size_t i = 0; i < c.sweep.strategies.size(); ++i) {
     const StrategySpec& spec = c.sweep.strategies[i];
     if (sends && spec.reclusters() && static_cast<std::int64_t>(largest) * spec.clusters_per_robot > kMaxWireInt16) {
@@ -182,12 +182,12 @@ void CheckStrategies(const SharedInputs& in, const std::string& origin) {
   if (!c.training.run_centroids.centroids_pattern.empty()) CheckCentroidFilesOf(in, centroid_readers, origin);
 }
 
-// The bag-of-words strategies run in the static protocol and the simulation (docs/bow.md); a
-// protocol registered besides them would not know them.
+// The bag-of-words strategies run only in the protocols whose traits say so (the static protocol
+// and the simulation; docs/bow.md).
 void CheckBowProtocols(const ExperimentConfig& c, const std::string& origin) {
   const auto& protocols = c.sweep.protocols;
   const auto other = std::find_if(protocols.begin(), protocols.end(),
-                                  [](const std::string& p) { return p != "paper" && p != "sim"; });
+                                  [](const std::string& p) { return !TraitsOf(p).bow_strategies; });
   for (std::size_t i = 0; i < c.sweep.strategies.size() && other != protocols.end(); ++i) {
     const StrategySpec& s = c.sweep.strategies[i];
     if (s.bag_of_words()) {

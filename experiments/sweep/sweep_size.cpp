@@ -6,6 +6,7 @@
 #include <sstream>
 #include <thread>
 
+#include "experiments/results/protocol_traits.h"
 #include "experiments/sweep/sweep.h"
 
 namespace dvpr {
@@ -21,10 +22,6 @@ std::string Figure(double x) {
 }
 
 std::string GiB(double bytes) { return Figure(bytes / (1024.0 * 1024.0 * 1024.0)) + " GiB"; }
-
-bool Has(const std::vector<std::string>& protocols, const char* name) {
-  return std::find(protocols.begin(), protocols.end(), name) != protocols.end();
-}
 
 // The number of network variants ExpandNetworks gives, without listing them (a hostile config's
 // lists multiply to more variants than memory holds).
@@ -43,16 +40,18 @@ double NetworkVariants(const NetworkConfig& n) {
 SweepSize EstimateSweepSize(const ExperimentConfig& c, std::int64_t frames, std::int64_t dim) {
   const SweepConfig& s = c.sweep;
   SweepSize size;
-  const double per_run_and_count = (Has(s.protocols, "paper") ? 1.0 : 0.0) +
-                                   (Has(s.protocols, "sim") ? NetworkVariants(c.network) : 0.0);
+  // One run per (robots, run) for each protocol, times the network variants of one on the
+  // sweep's simulated network.
+  double per_run_and_count = 0;
+  for (const std::string& p : s.protocols) per_run_and_count += TraitsOf(p).simulated_network ? NetworkVariants(c.network) : 1.0;
   size.runs = static_cast<double>(s.robots.size()) * s.runs * static_cast<double>(s.strategies.size()) *
               per_run_and_count;
   const int largest = *std::max_element(s.robots.begin(), s.robots.end());
   size.bytes_per_run = static_cast<double>(largest) * static_cast<double>(frames) * static_cast<double>(dim) * 4.0;
-  if (Has(s.protocols, "paper")) size.bytes_per_run += static_cast<double>(frames) * 64 * 8;
+  if (AnyProtocol(s.protocols, &ProtocolTraits::static_evaluation)) size.bytes_per_run += static_cast<double>(frames) * 64 * 8;
   const double f = static_cast<double>(frames);
   size.seconds_per_run = f * f / 2 * static_cast<double>(dim) * kSecondsPerMultiplyAdd;
-  if (Has(s.protocols, "sim")) size.seconds_per_run += 2 * f * largest * kSecondsPerMessage;
+  if (AnyProtocol(s.protocols, &ProtocolTraits::simulated_network)) size.seconds_per_run += 2 * f * largest * kSecondsPerMessage;
   const bool bow = std::any_of(s.strategies.begin(), s.strategies.end(), [](const StrategySpec& x) { return x.bag_of_words(); });
   if (bow && !c.dataset.bow) {
     const SyntheticBowParams p = c.dataset.synthetic_bow.value_or(SyntheticBowParams{});

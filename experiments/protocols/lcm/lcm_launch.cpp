@@ -20,6 +20,7 @@
 #include "experiments/protocols/lcm/agent_process.h"
 #include "experiments/protocols/inputs.h"
 #include "experiments/config/option_reader.h"
+#include "experiments/results/protocol_traits.h"
 #include "experiments/results/result_folder.h"
 #include "experiments/results/result_writers.h"
 #include "experiments/protocols/sim/sim_protocol.h"
@@ -226,7 +227,7 @@ GatheredRun GatherTeam(const ExperimentConfig& config, const SharedInputs& input
   NetworkVariant network;
   network.label.model = "lcm";
   RunSpec spec;
-  spec.protocol = "lcm";
+  spec.protocol = kLcmProtocol;
   spec.strategies = {ParseStrategy(strategy)};
   spec.robots = robots;
   spec.run = run;

@@ -6,6 +6,7 @@
 
 #include "agents/bow_query.h"
 #include "experiments/data/split.h"
+#include "experiments/results/protocol_traits.h"
 
 namespace dvpr {
 
@@ -173,7 +174,7 @@ BowRunResult BowEvaluator::Reference(const std::string& name, int robots, bool b
   const std::vector<BowVector>& frames = bow_.frames;
   BowRunResult out;
   RunResult& row = out.paper.row;
-  row.key.protocol = "paper";
+  row.key.protocol = kPaperProtocol;
   row.key.strategy = name;
   row.key.robots = robots;
   row.auc = centralized_.auc;

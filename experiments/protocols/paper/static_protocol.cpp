@@ -6,6 +6,7 @@
 #include <string>
 
 #include "experiments/data/npy.h"
+#include "experiments/results/protocol_traits.h"
 #include "experiments/results/safe_output.h"
 #include "experiments/strategies/run_routing.h"
 
@@ -98,7 +99,7 @@ void PaperEvaluator::FillResult(const std::string& strategy, PrResult pr, const 
                                 PaperRunResult& result) const {
   const int robots = static_cast<int>(searches.size());
   RunResult& row = result.row;
-  row.key.protocol = "paper";
+  row.key.protocol = kPaperProtocol;
   row.key.strategy = strategy;
   row.key.robots = robots;
   row.auc = pr.auc;

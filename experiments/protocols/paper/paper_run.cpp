@@ -1,0 +1,166 @@
+#include "experiments/protocols/paper/paper_run.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <iterator>
+#include <memory>
+
+#include "experiments/config/config.h"
+#include "experiments/protocols/paper/static_bow.h"
+#include "experiments/protocols/paper/static_protocol.h"
+#include "experiments/protocols/paper/static_recluster.h"
+#include "experiments/protocols/paper/static_strategies.h"
+#include "experiments/protocols/strategy_inputs.h"
+#include "experiments/strategies/run_routing.h"
+
+namespace dvpr {
+
+namespace {
+
+int PrRobots(const ExperimentConfig& c) {
+  if (c.outputs.pr_robots) return *c.outputs.pr_robots;
+  const auto& robots = c.sweep.robots;
+  if (std::find(robots.begin(), robots.end(), 10) != robots.end()) return 10;
+  return *std::max_element(robots.begin(), robots.end());
+}
+
+PaperProtocolParams ToPaperParams(const SharedInputs& in) {
+  const ExperimentConfig& c = *in.config;
+  PaperProtocolParams p;
+  static_cast<RunCentroidParams&>(p) = c.training.run_centroids;
+  p.evaluation = c.evaluation;
+  // Given centroids are the user's files; only trained ones are saved.
+  if (p.centroids_pattern.empty() && !in.out_dir.empty()) p.centroids_out_dir = in.out_dir / "centroids";
+  p.Validate();
+  return p;
+}
+
+// In the static protocol, broadcast ranks every query against every other robot's frames and
+// keeps the best: exactly the centralized ranking. Its row says so (relative AUC 1, or undefined
+// like every other row's when the reference AUC is 0: a run without a revisit); balance is not
+// defined for it (every robot receives every query).
+RunResult PaperBroadcastRow(const RunSpec& spec, const PaperEvaluator& evaluator,
+                            std::int64_t queries) {
+  RunResult row;
+  row.key = spec.Key("broadcast");
+  row.seed = spec.seed;
+  row.auc = evaluator.centralized().auc;
+  row.auc_reference = row.auc;
+  row.relative_auc = row.auc_reference == 0 ? kNotApplicable : 1.0;
+  row.queries = queries;
+  return row;
+}
+
+// A strategy in the static protocol: its table and routing for this run, then the paper's own
+// evaluation of its table (decentralized; writes the run's centroids), of its re-clustering plan,
+// or of any routing.
+PaperRunResult PaperStrategyRun(const StrategySpec& spec, const RunSpec& run, const PaperEvaluator& evaluator,
+                                const StrategyInputs& inputs, const PaperProtocolParams& params) {
+  const RunRouting routing = BuildRunRouting(spec, inputs, run.robots, run.run);
+  const DescriptorMatrix& deployment = evaluator.deployment().descriptors;
+  PaperRunResult r;
+  if (spec.paper_method()) {
+    r = EvaluatePaperRun(evaluator, *routing.table, params, run.run);
+  } else if (routing.recluster) {
+    r = EvaluateRecluster(evaluator, PlanStaticRecluster(deployment, routing.table, *routing.recluster), spec.name,
+                          params.keep_curves);
+  } else {
+    r = EvaluateRouting(evaluator, *routing.stateless, spec.name, params.keep_curves);
+  }
+  r.row.key = run.Key(spec.name);
+  r.row.seed = params.centroids_pattern.empty() ? RunSeed(params.seed, run.robots, run.run) : 0;
+  for (auto& load : r.per_robot) load.key = r.row.key;
+  r.curve.run = run.run;
+  return r;
+}
+
+// A bow_ strategy in the static protocol (experiments/protocols/paper/static_bow.h): its row,
+// per-robot load, bow.csv row and partial-query sizes.
+// Its PR curve is not kept: figure 2 compares the descriptor strategies with their centralized one.
+void AppendBowRun(const StrategySpec& strategy, const RunSpec& spec, const BowEvaluator& bow,
+                  const StrategyInputs& inputs, RunOutput& out) {
+  const RunRouting routing = BuildRunRouting(strategy, inputs, spec.robots, spec.run);
+  BowRunResult r = routing.words ? bow.Evaluate(*routing.words, strategy.name, false)
+                                 : bow.Reference(strategy.name, spec.robots,
+                                                 strategy.bow == StrategySpec::Bow::kBroadcast);
+  r.paper.row.key = spec.Key(strategy.name);
+  r.paper.row.seed = spec.seed;
+  out.runs.push_back(r.paper.row);
+  for (auto& load : r.paper.per_robot) {
+    load.key = r.paper.row.key;
+    out.per_robot.push_back(std::move(load));
+  }
+  r.bow.key = r.paper.row.key;
+  out.bow.push_back(r.bow);
+  for (const auto& [bytes, count] : r.part_sizes) out.bow_sizes.push_back({r.paper.row.key, bytes, count});
+}
+
+// Beside the bow_ strategies, a descriptor strategy's query messages in the same terms
+// (bow.csv), so the comparison sets the bytes of the three designs side by side.
+void AppendDescriptorTraffic(const StrategySpec& strategy, const RunSpec& spec, const StrategyInputs& inputs,
+                             RunOutput& out) {
+  const DescriptorMatrix& x = *inputs.deployment;
+  BowRunResult r;
+  if (strategy.broadcast()) {
+    r = DescriptorQueryTraffic(nullptr, spec.robots, x);
+  } else {
+    const RunRouting routing = BuildRunRouting(strategy, inputs, spec.robots, spec.run);
+    if (routing.stateless == nullptr) return;  // re-clustering: its traffic is the simulation's to count
+    r = DescriptorQueryTraffic(routing.stateless, spec.robots, x);
+  }
+  r.bow.key = spec.Key(strategy.name);
+  out.bow.push_back(r.bow);
+  for (const auto& [bytes, count] : r.part_sizes) out.bow_sizes.push_back({r.bow.key, bytes, count});
+}
+
+bool AnyBow(const ExperimentConfig& c) {
+  return std::any_of(c.sweep.strategies.begin(), c.sweep.strategies.end(),
+                     [](const StrategySpec& s) { return s.bag_of_words(); });
+}
+
+}  // namespace
+
+RunFunction MakePaperRun(const SharedInputs& in) {
+  PaperProtocolParams params = ToPaperParams(in);
+  if (!params.centroids_out_dir.empty()) std::filesystem::create_directories(params.centroids_out_dir);
+  auto evaluator = std::make_shared<const PaperEvaluator>(in.deployment, params.evaluation);
+  const int pr_robots = PrRobots(*in.config);
+  const StrategyInputs strategy_inputs = StrategyInputsOf(in);
+  const std::int64_t frames = in.deployment.size();  // every frame is one query
+  // The BoW index and its centralized ranking, once for all runs; only when a bow_ strategy runs.
+  std::shared_ptr<const BowEvaluator> bow;
+  if (AnyBow(*in.config)) bow = std::make_shared<const BowEvaluator>(*evaluator, in.bow);
+  return [params, evaluator, bow, pr_robots, strategy_inputs, frames](const RunSpec& spec) {
+    RunOutput out;
+    PaperProtocolParams run_params = params;
+    run_params.keep_curves = spec.robots == pr_robots && spec.run == 0;
+    RunCentroidCache centroids;  // the run's strategies on the paper's table cluster once
+    StrategyInputs run_inputs = strategy_inputs;
+    run_inputs.cache = &centroids;
+    for (const StrategySpec& strategy : spec.strategies) {
+      if (strategy.bag_of_words()) {
+        AppendBowRun(strategy, spec, *bow, run_inputs, out);
+        continue;
+      }
+      if (bow) AppendDescriptorTraffic(strategy, spec, run_inputs, out);
+      if (strategy.broadcast()) {
+        out.runs.push_back(PaperBroadcastRow(spec, *evaluator, frames));
+        continue;
+      }
+      PaperRunResult r = PaperStrategyRun(strategy, spec, *evaluator, run_inputs, run_params);
+      out.runs.push_back(r.row);
+      std::move(r.per_robot.begin(), r.per_robot.end(), std::back_inserter(out.per_robot));
+      if (run_params.keep_curves) {
+        const PrResult& central = evaluator->centralized();
+        const bool first = out.curves.empty();  // the centralized curve once, however many strategies
+        if (first) {
+          out.curves.push_back(PrCurve{"centralized", spec.robots, spec.run, central.recall, central.precision});
+        }
+        out.curves.push_back(std::move(r.curve));
+      }
+    }
+    return out;
+  };
+}
+
+}  // namespace dvpr
