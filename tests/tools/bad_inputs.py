@@ -7,7 +7,9 @@
 
 Each case is one bad input (a --set value, a config file, a data file, a flag, a result folder
 that already exists), grouped by category (a: quantities, b: YAML structure, c: files, d: robots,
-e: command line, f: result folders). The harness runs `dvpr run` on it in its own folder under
+e: command line, f: result folders, g: later keys, h: checks before work, i: hostile input: names
+and paths with shell syntax, planted links, foreign files, LCM URLs, output places; these also
+run dvpr plot, replay, launch or agent). The harness runs dvpr on it in its own folder under
 SCRATCH_DIR and records the exit code, the stderr lines, whether stderr names what the case says
 it should (the key, file or flag), whether anything was left behind (a result folder, temporary
 files), whether an earlier result folder was changed, and any sanitizer report or signal.
@@ -61,6 +63,8 @@ CATEGORIES = {
     "e": "command line",
     "f": "result folders",
     "g": "later keys (start_time, failover, BoW files)",
+    "h": "checks before work",
+    "i": "hostile input (names, links, foreign files, URLs, output places)",
 }
 TIMEOUT_S = 60
 SANITIZER = re.compile(
@@ -175,6 +179,8 @@ def prepare_case(case, scratch, priors):
     elif case.prior:
         shutil.copytree(priors[case.prior], case_dir / "out", symlinks=True)
     (case_dir / "tmpdir").mkdir()
+    if case.setup:
+        case.setup(case_dir)
     return case_dir, config
 
 
@@ -293,8 +299,8 @@ def classify_success(r, after):
     c = r.case
     if r.rc == 0:
         problems = []
-        if "out/runs.csv" not in after:
-            problems.append("no runs.csv")
+        if not any(k == "out/runs.csv" or (k.startswith("out/") and k.endswith("/runs.csv")) for k in after):
+            problems.append("no runs.csv")  # in out/, or in a folder inside it (--out out/NAME)
         if c.check:
             problems += c.check(r.out_dir)
         temps = [k for k in r.new if TEMPORARY.search(Path(k).name) or k.split("/")[0] != "out"]

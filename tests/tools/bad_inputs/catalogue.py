@@ -96,6 +96,7 @@ class Case:
     success: bool = False          # the input is fine: it must run and leave a whole folder
     check: Optional[Callable] = None  # check(out_dir) -> problems, for success cases
     interrupt: bool = False        # SIGINT at the run's first write
+    setup: Optional[Callable] = None  # setup(case_dir): after the inputs and the earlier folder
     why: str = ""                  # why the expectation (debatable cases say so)
 
     @property
@@ -505,6 +506,86 @@ def checks_before_work_cases():
     ]
 
 
+# ---------------------------------------------------------------------------------------------
+# Issue 31: hostile input. The canary file an injected command would create.
+CANARY = "PWNED"
+INJECT = "'; touch PWNED; ' `touch PWNED` $(touch PWNED)"
+
+
+def no_canary(out_dir):
+    """A success check: no command of a name or path ran (the canary is nowhere in the case)."""
+    return ["an injected command ran (%s)" % p.relative_to(out_dir.parent)
+            for p in out_dir.parent.rglob(CANARY)]
+
+
+def with_name(name):
+    """edit: the config's name, double-quoted in YAML (the name holds no backslash or double quote)."""
+    return lambda text: re.sub(r"(?m)^name: .*$", lambda m: 'name: "' + name + '"', text)
+
+
+def link(target, at):
+    """setup: a symbolic link at case_dir/at to case_dir/target (made if absent)."""
+    def make(case_dir):
+        t = case_dir / target
+        if not t.exists():
+            t.mkdir(parents=True)
+        p = case_dir / at
+        if p.is_symlink() or p.is_file():
+            p.unlink()
+        elif p.exists():
+            import shutil
+            shutil.rmtree(p)
+        p.symlink_to(t)
+    return make
+
+
+def hostile_cases():
+    """Issue 31: names and paths with shell syntax, planted links, foreign files in a result
+    folder, outputs onto a run's own files, LCM URLs that are not a team's, output places that
+    cannot work, a sweep too large; each one line naming what it should, nothing written."""
+    figures = ("outputs.figures=true",)
+    return [
+        Case("i01", "config name with quotes, backquotes, $(...) and ';' (figures drawn)", success=True,
+             edit=with_name("it's" + INJECT), sets=S(*figures), check=no_canary,
+             why="the name is text: nothing runs, the figures are drawn"),
+        Case("i02", "config path and --out with quotes, backquotes, $(...) and ';' (figures drawn)", success=True,
+             argv=["run", "{in}/c" + INJECT + ".yaml", "--quiet", "--out", "out/o" + INJECT, "--set", figures[0]],
+             files=lambda d: write(d / ("c" + INJECT + ".yaml"), (d / "base.yaml").read_text()),
+             setup=lambda d: (d / "out").mkdir(), check=no_canary),
+        Case("i03", "dvpr plot of a folder whose figures is a link out of it", ("figures",),
+             argv=["plot", "out"], prior="base.yaml", setup=link("elsewhere", "out/figures")),
+        Case("i04", "dvpr replay --out onto a link to the run's config.yaml", ("page.html",),
+             argv=["replay", "out", "--out", "out/page.html"], prior="base.yaml+messages",
+             setup=lambda d: (d / "out" / "page.html").symlink_to(d / "out" / "config.yaml")),
+        Case("i05", "a user's NOTES.txt in the result folder a rerun would replace", ("NOTES.txt",),
+             prior="base.yaml", setup=lambda d: write(d / "out" / "NOTES.txt", "mine\n")),
+        Case("i06", "a user's analysis/ folder in the result folder", ("analysis",),
+             prior="base.yaml", setup=lambda d: write(d / "out" / "analysis" / "a.txt", "mine\n")),
+        Case("i07", "dvpr replay --out onto the run's own runs.csv", ("runs.csv",),
+             argv=["replay", "out", "--out", "out/runs.csv"], prior="base.yaml+messages"),
+        Case("i08", "dvpr launch --lcm memq:// (not a team's provider)", ("--lcm", "udpm"), exit=2,
+             argv=["launch", "--config", "{config}", "--robots", "2", "--out", "out", "--lcm", "memq://"]),
+        Case("i09", "dvpr agent --lcm file://X?mode=w (would overwrite X)", ("--lcm", "udpm"), exit=2,
+             argv=["agent", "--config", "{config}", "--robot", "0", "--robots", "2",
+                   "--lcm", "file://{case}/x.log?mode=w"]),
+        Case("i10", "--out a mount point (/proc)", ("/proc", "mount point"),
+             argv=["run", "{config}", "--quiet", "--out", "/proc"]),
+        Case("i11", "--out where nothing can be made (/sys/dvpr_out)", ("/sys/dvpr_out",),
+             argv=["run", "{config}", "--quiet", "--out", "/sys/dvpr_out"]),
+        Case("i12", "--out inside a file (in/poses.txt/out)", ("poses.txt",),
+             argv=["run", "{config}", "--quiet", "--out", "{in}/poses.txt/out"]),
+        Case("i13", "a valid 250-character --out", success=True,
+             argv=["run", "{config}", "--quiet", "--out", "out/" + "n" * 250],
+             setup=lambda d: (d / "out").mkdir(), check=lambda o: [] if (o / ("n" * 250) / "runs.csv").exists()
+             else ["no runs.csv in the 250-character folder"],
+             why="the temporary name beside it must stay short"),
+        Case("i14", "a sweep of 8e5 runs of 100 robots on 4541 frames (about 100 h on 2 cores)",
+             ("--allow-large",), sets=S("dataset.frames=4541", "robots=[100]", "runs=100000",
+                                       "strategies=[decentralized, broadcast, multi_probe_2, sample_c4]"),
+             why="under 10^6 runs, but 8e5 x 0.93 s by the time model (docs/config.md 'Sweep size')"),
+    ]
+
+
 def catalogue():
     return quantities() + yaml_structure() + files_cases() + robots_cases() + cli_cases() + \
-        result_folder_cases() + later_keys_cases() + checks_before_work_cases()
+        result_folder_cases() + later_keys_cases() + checks_before_work_cases() + hostile_cases()

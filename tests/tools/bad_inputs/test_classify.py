@@ -103,6 +103,12 @@ class ClassifyTest(unittest.TestCase):
         self.assertEqual(outcome(REPLACE, 1, refused, prior_changed=["out/runs.csv"]).cls,
                          "partial output")
 
+    def test_a_run_into_a_folder_inside_out_is_whole_with_its_runs_csv(self):
+        inside = Case("t09", "--out out/NAME", success=True)
+        self.assertEqual(outcome(inside, 0, after={"out": "/", "out/n": "/", "out/n/runs.csv": "h"}).cls, "ok")
+        self.assertEqual(outcome(inside, 0, after={"out": "/", "out/n": "/", "out/n/x.csv": "h"}).cls,
+                         "partial output")
+
 
 if __name__ == "__main__":
     unittest.main()
