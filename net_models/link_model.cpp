@@ -10,6 +10,8 @@ std::string_view ToString(DropReason reason) {
     case DropReason::kQueueFull: return "queue_full";
     case DropReason::kLoss: return "loss";
     case DropReason::kOffline: return "offline";
+    case DropReason::kNoRoute: return "no_route";
+    case DropReason::kOutOfRange: return "out_of_range";
   }
   return "unknown";
 }

@@ -1,7 +1,11 @@
 #pragma once
-// The link layer as the Network sees it: given one message (as its link
+// The link layer as the Network sees it, the medium access of its stack
+// (network_stack.h: who may send when): given one message (as its link
 // frames) from a node to one or more nodes at time `now`, when does it arrive
-// at each destination, or why is it dropped? Models are small state machines
+// at each destination, or why is it dropped? Today's models (an own FIFO
+// transmitter per link, the ideal shared bus, no limit at all) are the
+// default; a contending MAC (CSMA, 802.11 DCF) is one more model, built over
+// the stack's PropagationModel to know who senses whom. Models are small state machines
 // over virtual time; they compute arrival times analytically instead of
 // scheduling an event per packet, which keeps the message path fast.
 //
@@ -24,6 +28,8 @@ enum class DropReason : std::uint8_t {
   kQueueFull,  // a frame found the sender's drop-tail queue full
   kLoss,       // a frame was lost on the channel (loss model)
   kOffline,    // the sender or the receiver was offline
+  kNoRoute,    // the routing model found no way to the destination (next_hop_routing.h)
+  kOutOfRange, // the receiver did not hear the transmission (propagation_model.h)
 };
 std::string_view ToString(DropReason reason);
 

@@ -26,10 +26,24 @@ void ObserverSubscription::Reset() {
   observer_ = nullptr;
 }
 
+namespace {
+
+NetworkStack WithAccess(std::unique_ptr<LinkModel> link) {
+  NetworkStack stack;
+  stack.access = std::move(link);
+  return stack;
+}
+
+}  // namespace
+
 Network::Network(Simulator& sim, int nodes, std::unique_ptr<LinkModel> link, WireParams wire)
-    : sim_(sim), nodes_(nodes), link_(std::move(link)), wire_(wire), pairs_(std::max(nodes, 1)) {
+    : Network(sim, nodes, WithAccess(std::move(link)), wire) {}
+
+Network::Network(Simulator& sim, int nodes, NetworkStack stack, WireParams wire)
+    : sim_(sim), nodes_(nodes), stack_(std::move(stack)), wire_(wire), pairs_(std::max(nodes, 1)) {
   if (nodes <= 0) throw std::invalid_argument("robots = " + std::to_string(nodes) + ": need at least one node");
-  if (!link_) throw std::invalid_argument("Network: no link model");
+  if (!stack_.access) throw std::invalid_argument("Network: no link model");
+  stack_.CompleteDefaults(nodes);
   wire_.Validate();
   const auto n = static_cast<std::size_t>(nodes);
   endpoints_.assign(n, nullptr);
@@ -205,18 +219,66 @@ void Network::DeliverCopies(std::uint32_t slot, std::uint32_t first, std::uint32
   }
 }
 
-// Fills outcomes_ for dsts_ and frames_; the sender counts what its message
-// put on the medium (nothing when it is offline).
+// Fills outcomes_ for dsts_ and frames_, asking the stack's layers in turn: routing (which copies
+// have a way), medium access (when they arrive), propagation (whether they are heard). The
+// sender counts what its message put on the medium (nothing when it is offline).
 LinkModel::MediumUse Network::TransmitFrom(NodeId src, SimTime now, NodeCounters& sender) {
   outcomes_.resize(dsts_.size());
   if (!IsOnline(src, now)) {
     std::fill(outcomes_.begin(), outcomes_.end(), LinkDelivery{now, DropReason::kOffline});
     return {};
   }
-  const LinkModel::MediumUse use = link_->Transmit(LinkTransmission{src, dsts_, now, frames_}, outcomes_);
+  const LinkModel::MediumUse use = TransmitRouted(LinkTransmission{src, dsts_, now, frames_});
+  ApplyPropagation(src, now);
   sender.transmissions += use.transmissions;
   sender.medium_bytes += use.bytes.value();
   return use;
+}
+
+// The medium access gets the copies that have a route; a copy without one never goes on the
+// medium (DropReason::kNoRoute). A copy whose next hop is another node would be relayed: no
+// model of this network answers that yet, and the relay's transmissions are not modelled.
+LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t) {
+  hops_.resize(dsts_.size());
+  stack_.routing->NextHops(t.src, dsts_, t.now, nodes_, hops_);
+  bool direct = true;
+  for (std::size_t i = 0; i < dsts_.size(); ++i) {
+    if (hops_[i] == dsts_[i]) continue;
+    if (hops_[i] != kNoRoute) {
+      throw std::logic_error("Network: routing '" + std::string(stack_.routing->Name()) + "' relays " +
+                             std::to_string(t.src.value) + "->" + std::to_string(dsts_[i].value) + " through node " +
+                             std::to_string(hops_[i].value) + "; relaying is not modelled yet");
+    }
+    direct = false;
+  }
+  if (direct) return stack_.access->Transmit(t, outcomes_);
+  routed_.clear();
+  for (std::size_t i = 0; i < dsts_.size(); ++i) {
+    if (hops_[i] != kNoRoute) routed_.push_back(dsts_[i]);
+  }
+  routed_outcomes_.resize(routed_.size());
+  LinkModel::MediumUse use;
+  if (!routed_.empty()) use = stack_.access->Transmit(LinkTransmission{t.src, routed_, t.now, t.frames}, routed_outcomes_);
+  for (std::size_t i = 0, k = 0; i < dsts_.size(); ++i) {
+    outcomes_[i] = hops_[i] == kNoRoute ? LinkDelivery{t.now, DropReason::kNoRoute} : routed_outcomes_[k++];
+  }
+  return use;
+}
+
+// A copy the medium delivered but its receiver does not hear is lost out of range; one it hears
+// arrives the propagation delay later. The full mesh changes nothing.
+void Network::ApplyPropagation(NodeId src, SimTime now) {
+  receptions_.resize(dsts_.size());
+  stack_.propagation->Reach(src, dsts_, now, receptions_);
+  for (std::size_t i = 0; i < dsts_.size(); ++i) {
+    LinkDelivery& d = outcomes_[i];
+    if (d.drop != DropReason::kNone) continue;
+    if (!receptions_[i].reaches) {
+      d.drop = DropReason::kOutOfRange;
+    } else {
+      d.arrival += receptions_[i].delay;
+    }
+  }
 }
 
 void Network::NotifyMedium(const Payload& p, const LinkModel::MediumUse& use) {

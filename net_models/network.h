@@ -6,10 +6,14 @@
 // (network_observer.h), which record whatever they need; the network writes
 // nothing itself.
 //
-// Routing follows LCM's publish/subscribe semantics: a message published on a
-// channel goes to every node that has joined that channel, except the sender.
+// Destinations follow LCM's publish/subscribe semantics: a message published on
+// a channel goes to every node that has joined that channel, except the sender.
 // dvpr's unicast channels are per destination robot (only that robot joins
-// DVPR_QUERY_3), and the broadcast channel is joined by all robots.
+// DVPR_QUERY_3), and the broadcast channel is joined by all robots. How each
+// copy gets there is the network stack's (network_stack.h): the routing model
+// names its next hop, the medium access (LinkModel) when it arrives, the
+// propagation model whether it is heard and what delay the air adds; the
+// defaults (direct, full mesh) leave the link model's answer as it is.
 //
 // Hot path, for ~1 million messages per second: channel and type names are
 // interned to small ids once; the payload is moved in and shared by all its
@@ -29,6 +33,7 @@
 #include <vector>
 
 #include "net_models/link_model.h"
+#include "net_models/network_stack.h"
 #include "net_models/network_observer.h"
 #include "net_models/node_id.h"
 #include "net_models/pair_map.h"
@@ -98,6 +103,9 @@ class [[nodiscard]] ObserverSubscription {
 
 class Network {
  public:
+  // The stack's empty layers get their defaults (NetworkStack::CompleteDefaults).
+  Network(Simulator& sim, int nodes, NetworkStack stack, WireParams wire = {});
+  // `link` as the medium access, every other layer its default.
   Network(Simulator& sim, int nodes, std::unique_ptr<LinkModel> link, WireParams wire = {});
   ~Network();
   Network(const Network&) = delete;
@@ -105,7 +113,10 @@ class Network {
 
   int nodes() const { return nodes_; }
   Simulator& simulator() { return sim_; }
-  const LinkModel& link() const { return *link_; }
+  const LinkModel& link() const { return *stack_.access; }
+  const MobilityModel& mobility() const { return *stack_.mobility; }
+  const PropagationModel& propagation() const { return *stack_.propagation; }
+  const NextHopRouting& routing() const { return *stack_.routing; }
   const WireParams& wire() const { return wire_; }
 
   // --- names --------------------------------------------------------------
@@ -185,6 +196,8 @@ class Network {
   void CheckNames(ChannelId channel, MessageTypeId type) const;
   void Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::vector<std::uint8_t>&& payload);
   LinkModel::MediumUse TransmitFrom(NodeId src, SimTime now, NodeCounters& sender);
+  LinkModel::MediumUse TransmitRouted(const LinkTransmission& t);
+  void ApplyPropagation(NodeId src, SimTime now);
   void NotifyMedium(const Payload& p, const LinkModel::MediumUse& use);
   std::uint32_t AllocatePayload(std::vector<std::uint8_t>&& bytes);
   void ReleasePayload(std::uint32_t slot);
@@ -197,7 +210,7 @@ class Network {
 
   Simulator& sim_;
   int nodes_;
-  std::unique_ptr<LinkModel> link_;
+  NetworkStack stack_;
   WireParams wire_;
 
   NameMap channel_ids_;
@@ -235,6 +248,10 @@ class Network {
   std::vector<NodeId> dsts_;
   std::vector<Bytes> frames_;
   std::vector<LinkDelivery> outcomes_;
+  std::vector<NodeId> hops_;
+  std::vector<Reception> receptions_;
+  std::vector<NodeId> routed_;              // the destinations that have a route, when some have none
+  std::vector<LinkDelivery> routed_outcomes_;
 };
 
 }  // namespace dvpr

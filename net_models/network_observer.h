@@ -6,8 +6,9 @@
 //
 // Every copy of a message (one per destination) is reported sent once, at its
 // send time, then delivered or dropped once - or neither, if the run ends
-// while it is in flight. A copy the link refuses or loses, or that an offline
-// sender never puts on the medium, is reported dropped right after its send;
+// while it is in flight. A copy the link refuses or loses, that has no route
+// or is not heard (network_stack.h), or that an offline sender never puts on
+// the medium, is reported dropped right after its send;
 // one that reaches an offline receiver, at its arrival time.
 #include <cstdint>
 #include <span>

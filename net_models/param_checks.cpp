@@ -29,6 +29,12 @@ void CheckNonNegativeCount(std::string_view field, std::int64_t n) {
   if (n < 0) InvalidParam(field, "must not be negative, got " + std::to_string(n));
 }
 
+void CheckFinitePosition(std::string_view field, const Position& p) {
+  if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) return;
+  InvalidParam(field, "a position must be finite, got (" + FormatNumber(p.x) + ", " + FormatNumber(p.y) + ", " +
+                          FormatNumber(p.z) + ")");
+}
+
 std::string FormatNumber(double v) {
   char buf[64];
   const bool whole = std::isfinite(v) && v == std::trunc(v) && std::fabs(v) < 1e15;

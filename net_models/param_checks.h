@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "net_models/position.h"
 #include "net_models/units.h"
 #include "sim/sim_time.h"
 
@@ -20,6 +21,8 @@ void CheckProbability(std::string_view field, double p);
 void CheckPositiveRate(std::string_view field, DataRate rate);
 void CheckNonNegativeDuration(std::string_view field, SimTime t);
 void CheckNonNegativeCount(std::string_view field, std::int64_t n);
+// Every coordinate finite (a NaN or an infinity would make every distance meaningless).
+void CheckFinitePosition(std::string_view field, const Position& p);
 
 // A number as the range errors write it: whole numbers below 1e15 in full ("1000000"), others in
 // the shortest form that reads back to the same double ("0.1", "3.4028234663852886e+38").

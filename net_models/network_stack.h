@@ -1,0 +1,42 @@
+#pragma once
+// The network's four concerns (docs/design.md section 4.1), lowest first, one model each and
+// each model one file: where the nodes are (MobilityModel), what a transmission reaches
+// (PropagationModel), who may send when and when a copy arrives (the medium access: a
+// LinkModel), and which way a copy goes (NextHopRouting). The Network owns the stack and asks
+// its layers in the order routing, medium access, propagation; the agents see none of it.
+//
+// A layer left empty gets dvpr's default, which together are today's network exactly: nodes
+// fixed at the origin, the full mesh, direct one-hop routing. A model of one layer that needs a
+// lower one (a range model the positions, a CSMA model who senses whom) is built with a
+// reference to it: the stack owns them all and keeps the lower layers alive longer (members are
+// destroyed in reverse order).
+#include <cstdint>
+#include <memory>
+
+#include "net_models/link_factory.h"
+#include "net_models/link_model.h"
+#include "net_models/mobility_model.h"
+#include "net_models/next_hop_routing.h"
+#include "net_models/propagation_model.h"
+
+namespace dvpr {
+
+struct NetworkStack {
+  std::unique_ptr<MobilityModel> mobility;        // null: FixedMobility::AtOrigin
+  std::unique_ptr<PropagationModel> propagation;  // null: FullMeshPropagation
+  std::unique_ptr<LinkModel> access;              // the medium access; required
+  std::unique_ptr<NextHopRouting> routing;        // null: DirectRouting
+
+  // Fills each empty layer but `access` with its default for `nodes` nodes. Throws
+  // std::invalid_argument when access is empty or mobility places a different number of nodes.
+  void CompleteDefaults(int nodes);
+};
+
+// The configured stack for `nodes` nodes: the link model of `params` (MakeLinkModel, seeded by
+// run_seed) as the medium access over `mobility` (null: fixed at the origin), the full mesh and
+// direct routing. Where the next models plug in: a propagation, medium access or routing kind
+// in NetworkModelParams, made here.
+NetworkStack MakeNetworkStack(const NetworkModelParams& params, int nodes, std::uint64_t run_seed,
+                              std::unique_ptr<MobilityModel> mobility = nullptr);
+
+}  // namespace dvpr
