@@ -64,10 +64,10 @@ inline std::shared_ptr<const CentroidTable> Table(int robots, int iterations, Tr
 
 inline SimRunParams PointToPoint(int robots) {
   SimRunParams p;
-  p.robots = robots;
-  p.network.model = LinkModelKind::kPointToPoint;
-  p.network.bandwidth = DataRate::Mbps(10);
-  p.network.latency = SimTime::Millis(2);
+  p.scenario.robots = robots;
+  p.scenario.network.model = LinkModelKind::kPointToPoint;
+  p.scenario.network.bandwidth = DataRate::Mbps(10);
+  p.scenario.network.latency = SimTime::Millis(2);
   return p;
 }
 

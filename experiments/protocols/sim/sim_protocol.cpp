@@ -15,21 +15,23 @@ namespace dvpr {
 
 namespace {
 
+// The run's scenario (physics) from the config and the spec, then what it measures and writes.
 SimRunParams ToSimParams(const ExperimentConfig& c, const RunSpec& spec) {
   SimRunParams p;
-  p.robots = spec.robots;
-  p.seed = spec.seed;
-  p.agent = c.agent;
-  p.network = spec.network->params;
+  ScenarioParams& s = p.scenario;
+  s.robots = spec.robots;
+  s.seed = spec.seed;
+  s.agent = c.agent;
+  s.network = spec.network->params;
   // Whether the links lie in this team is known only now; the error names the config key.
-  ValidateNested("network.", [&] { p.network.Validate(spec.robots); });
-  p.gt_radius_m = c.evaluation.radius_m;
+  ValidateNested("network.", [&] { s.network.Validate(spec.robots); });
   // A dropout applies to the teams that have that robot.
   for (const Dropout& d : c.dropout) {
-    if (d.robot < spec.robots) p.dropouts.push_back({RobotId(d.robot), d.at});
+    if (d.robot < spec.robots) s.dropouts.push_back({RobotId(d.robot), d.at});
   }
-  p.record_messages = c.outputs.messages;
-  p.start_utime = c.start_utime;
+  s.start_utime = c.start_utime;
+  p.evaluation.gt_radius_m = c.evaluation.radius_m;
+  p.outputs.record_messages = c.outputs.messages;
   return p;
 }
 
@@ -142,7 +144,7 @@ RunFunction MakeSimRun(const SharedInputs& in) {
     StrategyInputs run_inputs = strategy_inputs;
     run_inputs.cache = &centroids;
     const auto run_one = [&](const StrategySpec& strategy) {
-      params.lcm_log = log_dir.empty() ? std::filesystem::path() : log_dir / LogName(spec, strategy.name);
+      params.outputs.lcm_log = log_dir.empty() ? std::filesystem::path() : log_dir / LogName(spec, strategy.name);
       const RunRouting routing = BuildRunRouting(strategy, run_inputs, spec.robots, spec.run);
       SimRunLog log = routing.bow_team ? RunBowSimulation(*data, bow->frames, *routing.bow_team, params)
                                        : RunSimulation(*data, *routing.team, params);

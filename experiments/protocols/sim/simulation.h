@@ -1,8 +1,9 @@
 #pragma once
 // One simulation run (docs/design.md section 3): n robot agents drive their
 // sub-sequences from t = 0, exchange LCM messages through the network model in
-// virtual time, and record what happened. Metrics come afterwards, from the
-// returned log (SummarizeSimRun).
+// virtual time, and record what happened. The team is a Scenario (scenario.h,
+// physics only); the ground-truth oracle, the recorders and the log attach to
+// it. Metrics come afterwards, from the returned log (SummarizeSimRun).
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -11,6 +12,7 @@
 #include "agents/agent_routing.h"
 #include "agents/bow_robot_agent.h"
 #include "agents/robot_agent.h"
+#include "experiments/protocols/sim/scenario.h"
 #include "experiments/data/dataset.h"
 #include "experiments/results/results.h"
 #include "experiments/evaluation/sim_metrics.h"
@@ -19,22 +21,17 @@
 
 namespace dvpr {
 
-struct RobotDropout {
-  RobotId robot;
-  SimTime at;  // from this time on the robot is offline
-};
-
+// A simulation run: the scenario (physics), what is measured, what is written.
 struct SimRunParams {
-  int robots = 2;
-  std::uint64_t seed = 1;                 // seeds the network's random streams (loss)
-  AgentParams agent;
-  NetworkModelParams network;
-  double gt_radius_m = 5.0;               // the verification oracle accepts matches this close
-  std::vector<RobotDropout> dropouts;
-  bool record_messages = false;           // keep one MessageRow per message and destination
-  std::filesystem::path lcm_log;          // non-empty: write every delivered message there
-  std::int64_t start_utime = 0;           // virtual time 0 in microseconds since 1970 (messages' utime)
-  void Validate(const Dataset& data) const;
+  ScenarioParams scenario;
+  struct Evaluation {
+    double gt_radius_m = 5.0;             // the verification oracle accepts matches this close
+  } evaluation;
+  struct Outputs {
+    bool record_messages = false;         // keep one MessageRow per message and destination
+    std::filesystem::path lcm_log;        // non-empty: write every delivered message there
+  } outputs;
+  void Validate(const Dataset& data) const { scenario.Validate(data); }
 };
 
 // What became of a dropped robot (docs/failover.md).
@@ -68,7 +65,7 @@ struct SimRunLog {
   std::int64_t verify_accepted = 0;
   std::uint64_t events = 0;
   SimTime end;
-  std::vector<DropoutOutcome> dropouts;   // one per params.dropouts entry, in its order
+  std::vector<DropoutOutcome> dropouts;   // one per params.scenario.dropouts entry, in its order
 };
 
 // Every robot routes through its own component made by `routing` (a stateless strategy or one

@@ -65,16 +65,16 @@ TEST_P(LargeTeamTest, EveryMatchIsTheExactNearestTheResponderCanHaveStored) {
   const auto table = DeploymentTrainedTable(robots);
   const DecentralizedRouting routing(table);
   SimRunParams params;
-  params.robots = robots;
-  params.network.model = LinkModelKind::kIdeal;  // a frame is stored at its capture time
-  params.agent.service.fixed = SimTime::Zero();
-  params.agent.service.per_comparison = SimTime::Zero();
+  params.scenario.robots = robots;
+  params.scenario.network.model = LinkModelKind::kIdeal;  // a frame is stored at its capture time
+  params.scenario.agent.service.fixed = SimTime::Zero();
+  params.scenario.agent.service.per_comparison = SimTime::Zero();
   const SimRunLog log = RunSimulation(data, routing, params);
   ASSERT_EQ(log.queries.size(), static_cast<std::size_t>(kFrames));
 
   std::vector<RobotId> owner(kFrames);
   for (int f = 0; f < kFrames; ++f) owner[static_cast<std::size_t>(f)] = table->RouteOf(data.descriptors.row(f).data());
-  const int window = params.agent.suppression_frames;
+  const int window = params.scenario.agent.suppression_frames;
   int exact = 0;
   int with_match = 0;
   for (const QueryRecord& q : log.queries) {

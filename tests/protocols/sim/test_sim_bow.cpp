@@ -67,12 +67,12 @@ TEST_F(TwoLapsTest, SimulatedDistributedIndexMatchesTheStaticProtocolWhereCausal
   const BowRunResult reference = BowEvaluator(paper, bow_).Evaluate(*owners, "bow_decentralized", false);
 
   SimRunParams params;
-  params.robots = kRobots;
-  params.network.model = LinkModelKind::kIdeal;
-  params.agent.suppression_frames = 1;
-  params.agent.service.fixed = SimTime::Micros(10);
-  params.agent.service.per_comparison = SimTime::Nanos(1);
-  params.agent.verification.bow_max_distance = 0.0;  // no verification traffic
+  params.scenario.robots = kRobots;
+  params.scenario.network.model = LinkModelKind::kIdeal;
+  params.scenario.agent.suppression_frames = 1;
+  params.scenario.agent.service.fixed = SimTime::Micros(10);
+  params.scenario.agent.service.per_comparison = SimTime::Nanos(1);
+  params.scenario.agent.verification.bow_max_distance = 0.0;  // no verification traffic
   const SimRunLog log = RunBowSimulation(data_, bow_.frames, BowTeamPlan{kRobots, owners}, params);
   ASSERT_EQ(log.queries.size(), static_cast<std::size_t>(kFrames));
 

@@ -43,13 +43,13 @@ std::shared_ptr<const CentroidTable> ThreeCentroids() {
 // Ideal network (no delay), free service; robot 2 drops at 1.05 s, after its frame 10 (1.0 s).
 SimRunParams Params() {
   SimRunParams p;
-  p.robots = kRobots;
-  p.network.model = LinkModelKind::kIdeal;
-  p.agent.suppression_frames = 0;
-  p.agent.service.fixed = SimTime::Zero();
-  p.agent.service.per_comparison = SimTime::Zero();
-  p.agent.verification.max_distance = 0.0;
-  p.dropouts.push_back({RobotId(2), SimTime::Millis(1050)});
+  p.scenario.robots = kRobots;
+  p.scenario.network.model = LinkModelKind::kIdeal;
+  p.scenario.agent.suppression_frames = 0;
+  p.scenario.agent.service.fixed = SimTime::Zero();
+  p.scenario.agent.service.per_comparison = SimTime::Zero();
+  p.scenario.agent.verification.max_distance = 0.0;
+  p.scenario.dropouts.push_back({RobotId(2), SimTime::Millis(1050)});
   return p;
 }
 

@@ -297,11 +297,11 @@ TEST_F(SimReclusterTeam, LeaderStopsWaitingForADroppedRobotAndGivesItNoClusters)
   data.trajectory.positions = Positions::Zero(240, 3);
   data.trajectory.headings = Positions::Zero(240, 3);
   SimRunParams p;
-  p.robots = 4;
-  p.network.model = LinkModelKind::kIdeal;
-  p.agent = QuietAgent(10);
-  p.record_messages = true;
-  p.dropouts.push_back({RobotId(2), SimTime::Seconds(2.0)});
+  p.scenario.robots = 4;
+  p.scenario.network.model = LinkModelKind::kIdeal;
+  p.scenario.agent = QuietAgent(10);
+  p.outputs.record_messages = true;
+  p.scenario.dropouts.push_back({RobotId(2), SimTime::Seconds(2.0)});
   const SimRunLog log = RunSimulation(data, routing, p);
   // Samples: 3 at 1.5 s; robots 1 and 3 only at 3.0 and 4.5 s: 7. The leader waits its 0.5 s
   // timeout at the last two, so those tables go out at 3.5 and 5.0 s; their copies to robot 2 drop.

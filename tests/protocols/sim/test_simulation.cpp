@@ -48,13 +48,13 @@ std::shared_ptr<const CentroidTable> TrainTable(const Dataset& d, int robots) {
 
 SimRunParams IdealParams(int robots) {
   SimRunParams p;
-  p.robots = robots;
-  p.network.model = LinkModelKind::kIdeal;
-  p.agent.suppression_frames = 10;
-  p.agent.service.fixed = SimTime::Zero();
-  p.agent.service.per_comparison = SimTime::Zero();
-  p.agent.verification.max_distance = 0.0;  // random descriptors: no verification traffic
-  p.record_messages = true;
+  p.scenario.robots = robots;
+  p.scenario.network.model = LinkModelKind::kIdeal;
+  p.scenario.agent.suppression_frames = 10;
+  p.scenario.agent.service.fixed = SimTime::Zero();
+  p.scenario.agent.service.per_comparison = SimTime::Zero();
+  p.scenario.agent.verification.max_distance = 0.0;  // random descriptors: no verification traffic
+  p.outputs.record_messages = true;
   return p;
 }
 
@@ -146,7 +146,7 @@ TEST_F(SimulationTest, DecentralizedMatchesEqualTheCausalStaticReference) {
     const SimTime t = log.capture_time[static_cast<std::size_t>(i)];
     Reference ref;
     for (int j = 0; j < data_.size(); ++j) {
-      if (owner[j] != owner[i] || std::abs(i - j) <= params.agent.suppression_frames) continue;
+      if (owner[j] != owner[i] || std::abs(i - j) <= params.scenario.agent.suppression_frames) continue;
       if (!(log.capture_time[static_cast<std::size_t>(j)] < t)) continue;
       const double d = (data_.descriptors.row(i).cast<double>() - data_.descriptors.row(j).cast<double>()).squaredNorm();
       if (d < ref.distance) ref = {j, d};
@@ -173,7 +173,7 @@ TEST_F(SimulationTest, DecentralizedMatchesEqualTheCausalStaticReference) {
 TEST_F(SimulationTest, SameSeedSameLogAndBusyRobotsQueue) {
   const BroadcastRouting routing(kRobots);
   SimRunParams p = IdealParams(kRobots);
-  p.agent.service.fixed = SimTime::Millis(30);  // 3 robots' queries per 100 ms frame: 90 ms of work
+  p.scenario.agent.service.fixed = SimTime::Millis(30);  // 3 robots' queries per 100 ms frame: 90 ms of work
   const SimRunLog a = RunSimulation(data_, routing, p);
   const SimRunLog b = RunSimulation(data_, routing, p);
   ASSERT_EQ(a.queries.size(), b.queries.size());
@@ -194,7 +194,7 @@ TEST_F(SimulationTest, SameSeedSameLogAndBusyRobotsQueue) {
 TEST_F(SimulationTest, DroppedRobotLosesItsMessagesAndOthersFinish) {
   const BroadcastRouting routing(kRobots);
   SimRunParams p = IdealParams(kRobots);
-  p.dropouts.push_back({RobotId(2), SimTime::Seconds(3.0)});
+  p.scenario.dropouts.push_back({RobotId(2), SimTime::Seconds(3.0)});
   const SimRunLog log = RunSimulation(data_, routing, p);
   // Robot 2 took frames at 0.0 .. 2.9 s: 30 of its 60.
   std::int64_t robot2 = 0, incomplete = 0;
@@ -215,10 +215,10 @@ TEST_F(SimulationTest, DroppedRobotLosesItsMessagesAndOthersFinish) {
 TEST_F(SimulationTest, BytesByRoleSumToTheNetworksTotals) {
   const BroadcastRouting routing(kRobots);
   SimRunParams p = IdealParams(kRobots);
-  p.network.model = LinkModelKind::kSharedMedium;
-  p.network.bandwidth = DataRate::Kbps(100);
-  p.network.queue_packets = 4;
-  p.agent.verification.max_distance = 1e9;  // every match is verified
+  p.scenario.network.model = LinkModelKind::kSharedMedium;
+  p.scenario.network.bandwidth = DataRate::Kbps(100);
+  p.scenario.network.queue_packets = 4;
+  p.scenario.agent.verification.max_distance = 1e9;  // every match is verified
   const SimRunLog log = RunSimulation(data_, routing, p);
   const SimRunSummary s = SummarizeSimRun(log, data_.trajectory.positions, 5.0, 10);
   CopyBytes copies;

@@ -1,0 +1,106 @@
+#include "experiments/protocols/sim/scenario.h"
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "agents/frame_stream.h"
+#include "net_models/network_stack.h"
+
+namespace dvpr {
+
+void ScenarioParams::Validate(const Dataset& data) const {
+  if (robots < 2) throw std::invalid_argument("robots: at least 2 robots are needed, got " + std::to_string(robots));
+  if (robots > data.size()) {
+    throw std::invalid_argument("robots: " + std::to_string(robots) + " robots but only " +
+                                std::to_string(data.size()) + " frames");
+  }
+  if (robots > kMaxWireInt16) throw std::invalid_argument("robots: at most 32767 (int16 robot ids on the wire)");
+  if (data.dim() > kMaxWireInt16) {
+    throw std::invalid_argument("dataset.dim: at most 32767 values per descriptor (query_t's int16 dim), got " +
+                                std::to_string(data.dim()));
+  }
+  if (data.trajectory.size() != data.size()) {
+    throw std::invalid_argument("dataset: " + std::to_string(data.trajectory.size()) + " poses for " +
+                                std::to_string(data.size()) + " frames (the robots drive the poses)");
+  }
+  agent.Validate();
+  network.Validate(robots);
+  for (const auto& d : dropouts) {
+    if (d.robot.value < 0 || d.robot.value >= robots) {
+      throw std::invalid_argument("dropout.robot: " + std::to_string(d.robot.value) + " is not a robot of 0.." +
+                                  std::to_string(robots - 1));
+    }
+  }
+}
+
+namespace {
+
+FrameStream FramesOf(const Dataset& data, const FrameRange& range) {
+  return FrameStream{&data.descriptors, range.begin, range.size(), data.fps};
+}
+
+const ScenarioParams& Validated(const ScenarioParams& params, const Dataset& data) {
+  params.Validate(data);
+  return params;
+}
+
+}  // namespace
+
+TrackMobility RobotTracks(const Dataset& data, const SequenceSplit& split) {
+  std::vector<std::vector<Waypoint>> tracks(split.ranges.size());
+  for (std::size_t r = 0; r < split.ranges.size(); ++r) {
+    const FrameRange range = split.ranges[r];
+    const FrameStream frames = FramesOf(data, range);
+    for (int k = 0; k < range.size(); ++k) {
+      const auto row = data.trajectory.positions.row(range.begin.value + k);
+      tracks[r].push_back(Waypoint{frames.TimeOf(k), Position{row(0), row(1), row(2)}});
+    }
+  }
+  return TrackMobility(std::move(tracks));
+}
+
+Scenario::Scenario(const Dataset& data, const ScenarioParams& params, const AgentFactory& make_agent)
+    : data_(data),
+      params_(Validated(params, data)),
+      split_(SplitSequence(static_cast<int>(data.size()), params.robots)),
+      network_(sim_, params.robots,
+               MakeNetworkStack(params.network, params.robots, params.seed,
+                                std::make_unique<TrackMobility>(RobotTracks(data, split_))),
+               params.network.wire) {
+  for (int r = 0; r < params_.robots; ++r) {
+    auto& transport = transports_.emplace_back(std::make_unique<SimTransport>(network_, NodeId(r), params_.start_utime));
+    transport->UseBuffers(&network_.payload_buffers());
+    transport->ShareDecodes(&decoded_);
+    const AgentSetup setup{RobotId(r), params_.robots, params_.agent, FramesOf(data_, split_.ranges[static_cast<std::size_t>(r)])};
+    agents_.push_back(make_agent(setup, *transport));
+  }
+}
+
+void Scenario::Run() {
+  for (auto& agent : agents_) agent->Start();
+  for (const auto& d : params_.dropouts) {
+    network_.SetOffline(NodeId(d.robot.value), d.at);
+    TeamAgent* agent = agents_[static_cast<std::size_t>(d.robot.value)].get();
+    sim_.ScheduleAt(d.at, [agent] { agent->GoOffline(); });
+  }
+  sim_.Run();
+}
+
+bool Scenario::IsDropped(RobotId robot) const {
+  for (const auto& d : params_.dropouts) {
+    if (d.robot == robot) return true;
+  }
+  return false;
+}
+
+std::vector<SimTime> Scenario::CaptureTimes() const {
+  std::vector<SimTime> times(static_cast<std::size_t>(data_.size()));
+  for (const FrameRange& range : split_.ranges) {
+    const FrameStream frames = FramesOf(data_, range);
+    for (int k = 0; k < range.size(); ++k) times[static_cast<std::size_t>(range.begin.value + k)] = frames.TimeOf(k);
+  }
+  return times;
+}
+
+}  // namespace dvpr
