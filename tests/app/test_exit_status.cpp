@@ -50,9 +50,12 @@ TEST(ReportErrorTest, EverythingElseIsAnInternalErrorStatusThree) {
                                                       "please report it)\n")));
 }
 
+// Line breaks and other control characters are shown as escapes (one_line_text.h), \r too.
 TEST(ReportErrorTest, AMessageOverSeveralLinesIsKeptToOne) {
   EXPECT_EQ(Report(std::runtime_error("f.npy: bad\nheader\r\n")),
-            std::make_pair(1, std::string("dvpr: error: f.npy: bad\\nheader\\n\n")));
+            std::make_pair(1, std::string("dvpr: error: f.npy: bad\\nheader\\r\\n\n")));
+  EXPECT_EQ(Report(std::runtime_error("x\x1b[2J\ty\xff")),
+            std::make_pair(1, std::string("dvpr: error: x\\x1B[2J\\ty\\xFF\n")));
 }
 
 TEST_F(CliTest, HelpDocumentsTheExitStatuses) {
