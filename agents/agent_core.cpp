@@ -3,8 +3,8 @@
 #include <stdexcept>
 #include <utility>
 
-#include "agents/channels.h"
-#include "agents/verification_payload.h"
+#include "agents/messages/channels.h"
+#include "agents/messages/verification_payload.h"
 
 namespace dvpr {
 

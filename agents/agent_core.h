@@ -22,14 +22,14 @@
 #include <vector>
 
 #include "agents/agent_params.h"
-#include "agents/frame_stream.h"
-#include "agents/geometric_verifier.h"
-#include "agents/ids.h"
-#include "agents/query_record.h"
-#include "agents/robot_load.h"
+#include "agents/algorithms/frame_stream.h"
+#include "agents/algorithms/geometric_verifier.h"
+#include "agents/algorithms/ids.h"
+#include "agents/algorithms/query_record.h"
+#include "agents/algorithms/robot_load.h"
 #include "agents/team_agent.h"
-#include "agents/transport.h"
-#include "agents/verify_messages.h"
+#include "agents/messages/transport.h"
+#include "agents/messages/verify_messages.h"
 #include "sim/sim_time.h"
 
 namespace dvpr {
@@ -67,7 +67,7 @@ class AgentCore : public TeamAgent {
   // BeginQuery and its queries are sent or queued.
   virtual void TakeFrame(int k) = 0;
   // The features a verification request carries for own frame `frame`
-  // (agents/verification_payload.h).
+  // (agents/messages/verification_payload.h).
   virtual std::span<const float> VerificationFeatures(FrameId frame) = 0;
   // All replies of own frame k are in (its record's best is set by the method unless the method
   // sets it here: the vote): called before the best is verified.

@@ -4,9 +4,9 @@
 #include <stdexcept>
 #include <utility>
 
-#include "agents/bow_query.h"
-#include "agents/channels.h"
-#include "agents/reply_message.h"
+#include "agents/messages/bow_query.h"
+#include "agents/messages/channels.h"
+#include "agents/messages/reply_message.h"
 
 namespace dvpr {
 

@@ -10,7 +10,7 @@
 // (channels::BowQuery), scores its own part locally, and waits for the replies. A responder
 // scores the part against what it stored (BowIndex), replies with its best frame, the robot that
 // observed it and the partial score (bow_match_t on channels::BowMatch), then stores the part.
-// With every reply in, the querying robot votes (Vote, agents/bow_words.h; the answers in
+// With every reply in, the querying robot votes (Vote, agents/algorithms/bow_words.h; the answers in
 // responder order, so the sum of the scores does not depend on arrival order), records the voted
 // frame with distance 1 - the voters' summed partial scores, and verifies it as RobotAgent does
 // when that distance is at most verification.bow_max_distance (1 - a score has another scale
@@ -30,11 +30,11 @@
 #include <vector>
 
 #include "agents/agent_core.h"
-#include "agents/bow_index.h"
-#include "agents/bow_vector.h"
-#include "agents/bow_words.h"
+#include "agents/algorithms/bow_index.h"
+#include "agents/algorithms/bow_vector.h"
+#include "agents/algorithms/bow_words.h"
 #include "agents/task_server.h"
-#include "agents/transport.h"
+#include "agents/messages/transport.h"
 
 namespace dvpr {
 

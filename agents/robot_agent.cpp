@@ -5,7 +5,7 @@
 #include <string>
 #include <utility>
 
-#include "agents/reply_message.h"
+#include "agents/messages/reply_message.h"
 
 namespace dvpr {
 

@@ -20,12 +20,12 @@
 #include <vector>
 
 #include "agents/agent_core.h"
-#include "agents/agent_routing.h"
-#include "agents/channels.h"
-#include "agents/decoded_messages.h"
-#include "agents/descriptor_index.h"
+#include "agents/routing/agent_routing.h"
+#include "agents/messages/channels.h"
+#include "agents/messages/decoded_messages.h"
+#include "agents/algorithms/descriptor_index.h"
 #include "agents/task_server.h"
-#include "agents/transport.h"
+#include "agents/messages/transport.h"
 
 namespace dvpr {
 

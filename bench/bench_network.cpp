@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "agents/channels.h"
-#include "agents/sim_transport.h"
-#include "agents/verification_payload.h"
+#include "agents/messages/channels.h"
+#include "agents/messages/sim_transport.h"
+#include "agents/messages/verification_payload.h"
 #include "experiments/protocols/sim/message_rows.h"
 #include "net_models/network.h"
 #include "net_models/point_to_point_link.h"

@@ -12,7 +12,7 @@
 
 #include "bench/bench_main.h"
 
-#include "agents/kmeans.h"
+#include "agents/algorithms/kmeans.h"
 #include "experiments/config/config.h"
 #include "experiments/data/loaders.h"
 #include "experiments/data/synthetic.h"

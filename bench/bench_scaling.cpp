@@ -16,7 +16,7 @@
 #include "bench/bench_main.h"
 #include "bench/sim_inputs.h"
 
-#include "agents/decentralized_routing.h"
+#include "agents/routing/decentralized_routing.h"
 
 namespace dvpr {
 namespace {

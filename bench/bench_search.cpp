@@ -17,7 +17,7 @@
 #include "bench/bench_main.h"
 #include "bench/sim_inputs.h"
 
-#include "agents/descriptor_index.h"
+#include "agents/algorithms/descriptor_index.h"
 
 namespace dvpr {
 namespace {

@@ -14,7 +14,7 @@
 #include <memory>
 #include <type_traits>
 
-#include "agents/decentralized_routing.h"
+#include "agents/routing/decentralized_routing.h"
 
 namespace dvpr {
 namespace {

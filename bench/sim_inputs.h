@@ -7,8 +7,8 @@
 #include <memory>
 #include <string>
 
-#include "agents/centroid_table.h"
-#include "agents/kmeans.h"
+#include "agents/algorithms/centroid_table.h"
+#include "agents/algorithms/kmeans.h"
 #include "experiments/data/loaders.h"
 #include "experiments/data/synthetic.h"
 #include "experiments/protocols/sim/simulation.h"

@@ -22,6 +22,9 @@ the module whose folder is the longest prefix of its path. Checked:
    linked PRIVATE. (Not for a folder of executables: nothing links them.)
 4. Nothing unused. Every module and package a row names is included by some file of the module
    (packages whose headers are "-", such as Threads::Threads, excepted).
+5. Kept apart. The "Kept apart" table, `| module | never reaches |`: nothing in the module's
+   closure (what it may use, through any number of rows, and their packages) is one of those
+   named, so that, say, the evaluation never links liblcm.
 
 Usage: scripts/check_layers.py [REPO_ROOT]    exit 0: clean, 1: violations, 2: bad table
 """
@@ -112,9 +115,13 @@ def closure(name, modules):
 
 
 def package_of(header, packages):
+    """The package a header is of: one naming the file itself before one naming its folder."""
+    exact = [n for n, patterns in packages.items() if header in patterns]
+    if exact:
+        return exact[0]
     for name, patterns in packages.items():
         for p in patterns:
-            if (p.endswith("/") and header.startswith(p)) or header == p:
+            if p.endswith("/") and header.startswith(p):
                 return name
     return None
 
@@ -288,6 +295,25 @@ def check_cmake(modules, packages, uses_seen, header_needs):
     return violations
 
 
+def check_kept_apart(modules, packages):
+    """Rule 5."""
+    violations = []
+    for cells in table_rows(DOC.read_text(), "Kept apart"):
+        if len(cells) != 2:
+            raise BadTable(f"{DOC_NAME}: Kept apart row needs 2 cells (module, never reaches): {cells}")
+        name, never = cells[0].strip("`"), names(cells[1])
+        unknown = ({name} | never) - modules.keys() - packages.keys()
+        if unknown:
+            raise BadTable(f"{DOC_NAME}: Kept apart names unknown {sorted(unknown)}")
+        reach = closure(name, modules)
+        reach |= {p for m in reach for p in modules[m]["packages"]}
+        for t in sorted(never & reach):
+            path = next(m for m in sorted(closure(name, modules))
+                        if t == m or t in modules[m]["packages"])
+            violations.append(f"{DOC_NAME}: {name} reaches {t} (through {path}), which Kept apart forbids")
+    return violations
+
+
 def main():
     try:
         modules, packages = read_tables()
@@ -297,6 +323,11 @@ def main():
     uses_seen, header_needs = {}, {}
     violations = check_includes(modules, packages, uses_seen, header_needs)
     violations += check_cmake(modules, packages, uses_seen, header_needs)
+    try:
+        violations += check_kept_apart(modules, packages)
+    except BadTable as e:
+        print(e, file=sys.stderr)
+        return 2
     for v in violations:
         print(v, file=sys.stderr)
     if violations:

@@ -3,8 +3,8 @@
 #include <initializer_list>
 #include <vector>
 
-#include "agents/descriptors.h"
-#include "agents/ids.h"
+#include "agents/algorithms/descriptors.h"
+#include "agents/algorithms/ids.h"
 
 namespace dvpr::testing_support {
 

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "agents/load_balanced_table.h"
+#include "agents/algorithms/load_balanced_table.h"
 #include "sim/random_bits.h"
 
 namespace dvpr {

@@ -13,10 +13,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "agents/centroid_table.h"
-#include "agents/descriptors.h"
-#include "agents/ids.h"
-#include "agents/kmeans.h"
+#include "agents/algorithms/centroid_table.h"
+#include "agents/algorithms/descriptors.h"
+#include "agents/algorithms/ids.h"
+#include "agents/algorithms/kmeans.h"
 
 namespace dvpr {
 

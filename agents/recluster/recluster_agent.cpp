@@ -5,10 +5,10 @@
 #include <utility>
 #include <vector>
 
-#include "agents/descriptor_index.h"
-#include "agents/frame_stream.h"
+#include "agents/algorithms/descriptor_index.h"
+#include "agents/algorithms/frame_stream.h"
 #include "agents/recluster/recluster_messages.h"
-#include "agents/routing.h"
+#include "agents/routing/routing.h"
 
 namespace dvpr {
 

@@ -28,10 +28,10 @@
 #include <dvpr/centroid_table_t.hpp>
 #include <dvpr/descriptor_batch_t.hpp>
 
-#include "agents/agent_routing.h"
-#include "agents/centroid_table.h"
+#include "agents/routing/agent_routing.h"
+#include "agents/algorithms/centroid_table.h"
 #include "agents/recluster/recluster_routing.h"
-#include "agents/transport.h"
+#include "agents/messages/transport.h"
 
 namespace dvpr {
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "agents/ids.h"
+#include "agents/algorithms/ids.h"
 #include "lcmtypes/channels/channels.h"
 
 namespace dvpr {

@@ -6,9 +6,9 @@
 #include <string_view>
 #include <vector>
 
-#include "agents/agent_routing.h"
-#include "agents/centroid_table.h"
-#include "agents/ids.h"
+#include "agents/routing/agent_routing.h"
+#include "agents/algorithms/centroid_table.h"
+#include "agents/algorithms/ids.h"
 #include "agents/recluster/recluster.h"
 #include "sim/sim_time.h"
 

@@ -6,7 +6,7 @@ The peer of dvpr's `BM_KMeans/11` (bench/bench_paper_sweep.cpp); see bench/peers
   /usr/bin/python3 bench/peers/kmeans_faiss.py            # single-threaded, as dvpr's fit
   /usr/bin/python3 bench/peers/kmeans_faiss.py --threads 2
 
-dvpr's fit (agents/kmeans.cpp): k-means++ seeding, Lloyd (Hamerly-accelerated, same fixed
+dvpr's fit (agents/algorithms/kmeans.cpp): k-means++ seeding, Lloyd (Hamerly-accelerated, same fixed
 points), at most 300 iterations, stop when the summed squared centroid shift <= 1e-4 x mean
 per-dimension variance, or when no label changes; one restart. scikit-learn's KMeans with
 init='k-means++', n_init=1, max_iter=300, tol=1e-4, algorithm='lloyd' is the same algorithm and

@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "agents/agent_params.h"
-#include "agents/failure_detector.h"
+#include "agents/routing/failure_detector.h"
 #include "experiments/data/synthetic.h"
 #include "experiments/data/synthetic_bow.h"
 #include "experiments/evaluation/ground_truth.h"

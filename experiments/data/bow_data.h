@@ -3,7 +3,7 @@
 // synthetic (synthetic_bow.h) or the user's file (bow_file.h). Read only when a bow_ strategy runs.
 #include <vector>
 
-#include "agents/bow_vector.h"
+#include "agents/algorithms/bow_vector.h"
 
 namespace dvpr {
 

@@ -4,7 +4,7 @@
 
 #include <Eigen/Core>
 
-#include "agents/descriptors.h"
+#include "agents/algorithms/descriptors.h"
 
 namespace dvpr {
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "agents/descriptors.h"
+#include "agents/algorithms/descriptors.h"
 #include "experiments/data/dataset.h"
 
 namespace dvpr {

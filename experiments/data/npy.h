@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-#include "agents/descriptors.h"
+#include "agents/algorithms/descriptors.h"
 
 namespace dvpr {
 

@@ -3,7 +3,7 @@
 // contiguous frames [floor(r N / n), floor((r + 1) N / n)), so lengths differ by at most one.
 #include <vector>
 
-#include "agents/ids.h"
+#include "agents/algorithms/ids.h"
 
 namespace dvpr {
 

@@ -12,7 +12,7 @@
 // libraries (own PRNG and normal sampler; only libm's cos/log/sqrt are used).
 #include <cstdint>
 
-#include "agents/descriptors.h"
+#include "agents/algorithms/descriptors.h"
 #include "experiments/data/dataset.h"
 
 namespace dvpr {

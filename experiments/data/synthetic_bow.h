@@ -17,7 +17,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "agents/bow_vector.h"
+#include "agents/algorithms/bow_vector.h"
 #include "experiments/data/bow_data.h"
 #include "experiments/data/dataset.h"
 #include "experiments/data/synthetic.h"

@@ -13,7 +13,7 @@
 #include <span>
 #include <vector>
 
-#include "agents/ids.h"
+#include "agents/algorithms/ids.h"
 #include "experiments/data/dataset.h"
 #include "experiments/evaluation/ground_truth.h"
 

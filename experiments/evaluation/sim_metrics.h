@@ -5,8 +5,8 @@
 #include <optional>
 #include <vector>
 
-#include "agents/ids.h"
-#include "agents/query_record.h"
+#include "agents/algorithms/ids.h"
+#include "agents/algorithms/query_record.h"
 #include "experiments/data/dataset.h"
 #include "sim/sim_time.h"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-#include "agents/l2.h"
+#include "agents/algorithms/l2.h"
 #include "experiments/parallel/parallel_for.h"
 
 namespace dvpr {

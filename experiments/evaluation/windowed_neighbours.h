@@ -15,8 +15,8 @@
 #include <span>
 #include <vector>
 
-#include "agents/descriptors.h"
-#include "agents/ids.h"
+#include "agents/algorithms/descriptors.h"
+#include "agents/algorithms/ids.h"
 #include "experiments/evaluation/metrics.h"
 
 namespace dvpr {

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "agents/descriptors.h"
+#include "agents/algorithms/descriptors.h"
 #include "experiments/results/results.h"
 
 namespace dvpr {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "agents/ids.h"
+#include "agents/algorithms/ids.h"
 #include "experiments/data/bow_file.h"
 #include "experiments/data/loaders.h"
 #include "experiments/data/synthetic_bow.h"

@@ -2,7 +2,7 @@
 // The deployment sample the team shares at start (docs/strategies.md): every kSampleStride-th
 // deployment frame, about 5% of the sequence. The load-balanced tables take their expected loads
 // from it (nearest-centroid counts), the sample_* tables cluster it.
-#include "agents/descriptors.h"
+#include "agents/algorithms/descriptors.h"
 
 namespace dvpr {
 

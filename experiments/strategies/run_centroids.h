@@ -14,8 +14,8 @@
 #include <tuple>
 #include <vector>
 
-#include "agents/descriptors.h"
-#include "agents/kmeans.h"
+#include "agents/algorithms/descriptors.h"
+#include "agents/algorithms/kmeans.h"
 
 namespace dvpr {
 

@@ -4,13 +4,13 @@
 #include <stdexcept>
 #include <utility>
 
-#include "agents/balanced_kmeans.h"
-#include "agents/decentralized_routing.h"
-#include "agents/kmeans.h"
-#include "agents/load_balanced_table.h"
-#include "agents/probe_routing.h"
+#include "agents/algorithms/balanced_kmeans.h"
+#include "agents/routing/decentralized_routing.h"
+#include "agents/algorithms/kmeans.h"
+#include "agents/algorithms/load_balanced_table.h"
+#include "agents/routing/probe_routing.h"
 #include "agents/recluster/recluster_routing.h"
-#include "agents/frame_stream.h"
+#include "agents/algorithms/frame_stream.h"
 #include "experiments/data/split.h"
 #include "experiments/strategies/deployment_sample.h"
 

@@ -13,12 +13,12 @@
 #include <optional>
 
 #include "agents/bow_robot_agent.h"
-#include "agents/bow_words.h"
-#include "agents/centroid_table.h"
-#include "agents/agent_routing.h"
-#include "agents/failover_routing.h"
+#include "agents/algorithms/bow_words.h"
+#include "agents/algorithms/centroid_table.h"
+#include "agents/routing/agent_routing.h"
+#include "agents/routing/failover_routing.h"
 #include "agents/recluster/recluster.h"
-#include "agents/routing.h"
+#include "agents/routing/routing.h"
 #include "experiments/data/bow_data.h"
 #include "experiments/strategies/run_centroids.h"
 #include "experiments/strategies/strategy_spec.h"

@@ -17,12 +17,12 @@
 //   sample_cC                 C clusters per robot from k-means on the shared deployment sample
 //                             (not the training set), packed by LPT on the sample's counts
 //   balanced_cC               C clusters per robot from balanced (size-constrained) k-means on the
-//                             training set, round robin (agents/balanced_kmeans.h)
+//                             training set, round robin (agents/algorithms/balanced_kmeans.h)
 //   balanced_sample_cC        balanced k-means on the shared deployment sample, packed by LPT on
 //                             the sample's nearest-centroid counts
 //   recluster_cC_pP           starts as lpt_cC_train; every P frames of each robot's stream the
 //                             leader re-clusters (k = C n) a sample of the descriptors seen so far
-//                             and the robots move what they no longer own (agents/recluster.h)
+//                             and the robots move what they no longer own (agents/recluster/recluster.h)
 //   bow_centralized           bag-of-words reference: one index of every frame's tf-idf vector
 //   bow_broadcast             the full BoW vector to every robot, each answers from its own frames
 //   bow_decentralized         the distributed inverted index (Cieslewski and Scaramuzza, ICRA
@@ -40,8 +40,8 @@
 #include <string>
 #include <string_view>
 
-#include "agents/load_balanced_table.h"
-#include "agents/probe_routing.h"
+#include "agents/algorithms/load_balanced_table.h"
+#include "agents/routing/probe_routing.h"
 
 namespace dvpr {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "agents/descriptors.h"
+#include "agents/algorithms/descriptors.h"
 #include "experiments/config/config.h"
 #include "experiments/data/dataset.h"
 #include "experiments/results/results.h"

@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "agents/ids.h"
-#include "agents/team_sync.h"
+#include "agents/algorithms/ids.h"
+#include "agents/messages/team_sync.h"
 #include "experiments/protocols/strategy_inputs.h"
 #include "experiments/results/protocol_traits.h"
 #include "experiments/strategies/run_routing.h"

@@ -20,7 +20,7 @@ namespace {
 using K = ChannelKind;
 using R = MessageRole;
 
-// Constant-initialised, so the agents' channel constants (agents/channels.h) may be made from it
+// Constant-initialised, so the agents' channel constants (agents/messages/channels.h) may be made from it
 // during static initialisation.
 constexpr std::array<ChannelSpec, kChannelKinds> kCatalogue = {{
     {K::kQuery, "DVPR_QUERY_", true, R::kQuery, true, false},

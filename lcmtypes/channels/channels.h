@@ -1,8 +1,8 @@
 #pragma once
 // The message catalogue: every channel dvpr's agents publish on, the LCM type it carries and
 // what its receiver does with it. The one home of the channel names: the agents name their
-// channels through it (agents/channels.h, agents/recluster/recluster_messages.h,
-// agents/team_sync.h), and the simulation's recorders, the LCM agent process and `dvpr replay`
+// channels through it (agents/messages/channels.h, agents/recluster/recluster_messages.h,
+// agents/messages/team_sync.h), and the simulation's recorders, the LCM agent process and `dvpr replay`
 // read a channel's role from it, so the four cannot drift apart.
 //
 // A unicast channel is a prefix and the receiving robot's id ("<prefix>3"); the others are one

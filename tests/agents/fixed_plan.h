@@ -3,8 +3,8 @@
 // own index.
 #include <utility>
 
-#include "agents/agent_routing.h"
-#include "agents/descriptor_index.h"
+#include "agents/routing/agent_routing.h"
+#include "agents/algorithms/descriptor_index.h"
 
 namespace dvpr::testing_support {
 

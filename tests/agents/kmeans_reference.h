@@ -1,5 +1,5 @@
 #pragma once
-// Two references for agents/kmeans.cpp, written out here so the tests do not trust the code
+// Two references for agents/algorithms/kmeans.cpp, written out here so the tests do not trust the code
 // they check:
 //   kPlain   Lloyd's algorithm without bounds: every iteration scores every point against every
 //            centroid with the full pass's GEMM (blocks of 512 rows from row 0) and takes the
@@ -8,7 +8,7 @@
 //            b3ce8c3), verbatim: Hamerly's bounds, the points they do not clear gathered and
 //            re-measured in GEMM blocks of 512.
 // Both share the seeding, the empty-cluster re-seed and the centroid update of KMeansDetailed
-// (agents/kmeans.h), and keep the per-cluster sums the way it does (summed afresh on a full
+// (agents/algorithms/kmeans.h), and keep the per-cluster sums the way it does (summed afresh on a full
 // pass, then the points that move subtracted and added in index order): a fresh sum rounds
 // differently in double and could move a float centroid by one ulp.
 #include <algorithm>
@@ -17,8 +17,8 @@
 #include <numeric>
 #include <vector>
 
-#include "agents/kmeans.h"
-#include "agents/l2.h"
+#include "agents/algorithms/kmeans.h"
+#include "agents/algorithms/l2.h"
 #include "sim/random_bits.h"
 
 namespace dvpr::kmeans_reference {

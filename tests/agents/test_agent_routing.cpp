@@ -11,11 +11,11 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/channels.h"
-#include "agents/decentralized_routing.h"
-#include "agents/probe_routing.h"
+#include "agents/messages/channels.h"
+#include "agents/routing/decentralized_routing.h"
+#include "agents/routing/probe_routing.h"
 #include "agents/robot_agent.h"
-#include "agents/sim_transport.h"
+#include "agents/messages/sim_transport.h"
 #include "net_models/ideal_link.h"
 #include "sim/simulator.h"
 #include "tests/descriptor_support.h"

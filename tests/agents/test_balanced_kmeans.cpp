@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/balanced_kmeans.h"
-#include "agents/kmeans.h"
+#include "agents/algorithms/balanced_kmeans.h"
+#include "agents/algorithms/kmeans.h"
 #include "sim/random_bits.h"
 #include "tests/descriptor_support.h"
 

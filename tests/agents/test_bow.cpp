@@ -1,6 +1,6 @@
 // Bag-of-words vectors, DBoW2's L1 score, the word-to-robot assignments, the vote of the
-// distributed inverted index and the partial query's LCM size (agents/bow_vector.h,
-// agents/bow_words.h, agents/bow_query.h). Every expected number is worked by hand below.
+// distributed inverted index and the partial query's LCM size (agents/algorithms/bow_vector.h,
+// agents/algorithms/bow_words.h, agents/messages/bow_query.h). Every expected number is worked by hand below.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,10 +8,10 @@
 #include <cstring>
 #include <vector>
 
-#include "agents/bow_query.h"
-#include "agents/bow_vector.h"
-#include "agents/bow_words.h"
-#include "agents/lcm_codec.h"
+#include "agents/messages/bow_query.h"
+#include "agents/algorithms/bow_vector.h"
+#include "agents/algorithms/bow_words.h"
+#include "agents/messages/lcm_codec.h"
 
 namespace dvpr {
 namespace {

@@ -1,4 +1,4 @@
-// The bag-of-words robot agent (agents/bow_robot_agent.h) and its store (agents/bow_index.h):
+// The bag-of-words robot agent (agents/bow_robot_agent.h) and its store (agents/algorithms/bow_index.h):
 // the responder's partial scoring and storing, the reply's LCM size, and a three-robot team on
 // an ideal network whose messages, sizes, votes and verifications are all worked out by hand.
 #include <gtest/gtest.h>
@@ -9,12 +9,12 @@
 #include <tuple>
 #include <vector>
 
-#include "agents/bow_index.h"
+#include "agents/algorithms/bow_index.h"
 #include "agents/bow_robot_agent.h"
-#include "agents/channels.h"
-#include "agents/lcm_codec.h"
-#include "agents/sim_transport.h"
-#include "agents/verification_payload.h"
+#include "agents/messages/channels.h"
+#include "agents/messages/lcm_codec.h"
+#include "agents/messages/sim_transport.h"
+#include "agents/messages/verification_payload.h"
 #include "net_models/ideal_link.h"
 #include "net_models/network_observer.h"
 #include "sim/simulator.h"
@@ -207,7 +207,7 @@ TEST_F(ThreeRobotBowTeam, SendsTheHandWorkedMessages) {
 // in microseconds from 0) to verify its F1 against F2; robot 1 answers 1 ms later, rejected
 // (the verifier accepts only F4; it counts no inliers). The request's 100 payload bytes stand
 // for F1's keypoints: derived from its BoW weights in word order, .25 .25 .5
-// (agents/verification_payload.h).
+// (agents/messages/verification_payload.h).
 TEST_F(ThreeRobotBowTeam, VerificationMessagesCarryTheQueryAndTheMatch) {
   Run(BowTeamPlan{3, std::make_shared<const WordOwners>(WordOwners::Modulo(9, 3))});
   ASSERT_EQ(log_.requests.size(), 1u);

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/centroid_table.h"
-#include "agents/l2.h"
+#include "agents/algorithms/centroid_table.h"
+#include "agents/algorithms/l2.h"
 #include "sim/random_bits.h"
 
 namespace dvpr {

@@ -3,7 +3,7 @@
 
 #include <array>
 
-#include "agents/descriptor_index.h"
+#include "agents/algorithms/descriptor_index.h"
 
 namespace dvpr {
 namespace {

@@ -1,13 +1,13 @@
 // Failover's pure parts, on tables small enough to work every distance by hand: which robot
-// succeeds a lost one for a query (agents/failover_routing.h) and when a silent robot is
-// declared lost (agents/failure_detector.h).
+// succeeds a lost one for a query (agents/routing/failover_routing.h) and when a silent robot is
+// declared lost (agents/routing/failure_detector.h).
 #include <optional>
 #include <stdexcept>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "agents/failover_routing.h"
+#include "agents/routing/failover_routing.h"
 #include "tests/descriptor_support.h"
 
 namespace dvpr {

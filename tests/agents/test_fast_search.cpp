@@ -14,8 +14,8 @@
 
 #include <Eigen/Core>
 
-#include "agents/descriptor_index.h"
-#include "agents/gemv_row.h"
+#include "agents/algorithms/descriptor_index.h"
+#include "agents/algorithms/gemv_row.h"
 
 namespace dvpr {
 namespace {

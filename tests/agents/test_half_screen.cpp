@@ -1,4 +1,4 @@
-// The half-precision screen (agents/half_screen.h): its bounds never rule out a row that lies
+// The half-precision screen (agents/algorithms/half_screen.h): its bounds never rule out a row that lies
 // within the given exact distance, its sums are those worked out by hand, and values a half
 // cannot hold switch the bound off instead of breaking it.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "agents/half_screen.h"
+#include "agents/algorithms/half_screen.h"
 
 namespace dvpr {
 namespace {

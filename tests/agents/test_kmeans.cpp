@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/kmeans.h"
+#include "agents/algorithms/kmeans.h"
 #include "sim/random_bits.h"
 
 namespace dvpr {

@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/kmeans_dots.h"
-#include "agents/l2.h"
+#include "agents/algorithms/kmeans_dots.h"
+#include "agents/algorithms/l2.h"
 #include "sim/random_bits.h"
 
 namespace dvpr {

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/kmeans.h"
+#include "agents/algorithms/kmeans.h"
 #include "sim/random_bits.h"
 #include "tests/agents/kmeans_reference.h"
 

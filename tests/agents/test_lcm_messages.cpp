@@ -10,7 +10,7 @@
 #include <span>
 #include <vector>
 
-#include "agents/lcm_codec.h"
+#include "agents/messages/lcm_codec.h"
 
 namespace dvpr {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/load_balanced_table.h"
+#include "agents/algorithms/load_balanced_table.h"
 #include "tests/descriptor_support.h"
 
 namespace dvpr {

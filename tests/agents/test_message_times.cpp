@@ -5,10 +5,10 @@
 #include <memory>
 #include <vector>
 
-#include "agents/channels.h"
+#include "agents/messages/channels.h"
 #include "agents/robot_agent.h"
-#include "agents/routing.h"
-#include "agents/sim_transport.h"
+#include "agents/routing/routing.h"
+#include "agents/messages/sim_transport.h"
 #include "net_models/ideal_link.h"
 #include "sim/simulator.h"
 #include "tests/descriptor_support.h"

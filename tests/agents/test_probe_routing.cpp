@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/probe_routing.h"
+#include "agents/routing/probe_routing.h"
 #include "tests/descriptor_support.h"
 
 namespace dvpr {

@@ -7,10 +7,10 @@
 #include <utility>
 #include <vector>
 
-#include "agents/channels.h"
-#include "agents/descriptor_index.h"
+#include "agents/messages/channels.h"
+#include "agents/algorithms/descriptor_index.h"
 #include "agents/robot_agent.h"
-#include "agents/sim_transport.h"
+#include "agents/messages/sim_transport.h"
 #include "net_models/ideal_link.h"
 #include "sim/simulator.h"
 #include "tests/agents/fixed_plan.h"

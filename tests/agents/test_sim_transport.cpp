@@ -1,4 +1,4 @@
-#include "agents/sim_transport.h"
+#include "agents/messages/sim_transport.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "agents/channels.h"
+#include "agents/messages/channels.h"
 #include "net_models/point_to_point_link.h"
 #include "sim/simulator.h"
 

@@ -1,7 +1,7 @@
-// Transport's typed subscriptions (agents/transport.h), on a loopback transport written here that
+// Transport's typed subscriptions (agents/messages/transport.h), on a loopback transport written here that
 // calls the handlers from inside Publish: the hardest case for the message each subscription
 // decodes into and reuses.
-#include "agents/transport.h"
+#include "agents/messages/transport.h"
 
 #include <gtest/gtest.h>
 

@@ -13,7 +13,7 @@
 #include <array>
 #include <vector>
 
-#include "agents/verification_payload.h"
+#include "agents/messages/verification_payload.h"
 
 namespace dvpr {
 namespace {

@@ -1,5 +1,5 @@
 // The LCM decoders as the agents use them: a datagram from the network goes to Decode<Msg>
-// (agents/lcm_codec.h) of the type its channel carries. The input is the datagram, decoded as
+// (agents/messages/lcm_codec.h) of the type its channel carries. The input is the datagram, decoded as
 // every dvpr message type. Properties:
 // - Decode never crashes, reads out of bounds or allocates more than the datagram can describe
 //   (libFuzzer's -malloc_limit_mb turns a huge allocation into a failure);
@@ -12,7 +12,7 @@
 
 #include <dvpr/agent_status_t.hpp>
 
-#include "agents/lcm_codec.h"
+#include "agents/messages/lcm_codec.h"
 #include "tests/fuzz/fuzz_support.h"
 
 namespace {

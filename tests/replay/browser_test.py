@@ -27,7 +27,7 @@ def check(ok, what):
         print("FAIL:", what, file=sys.stderr)
 
 
-def role(channel):  # agents/channels.h and agents/recluster/recluster_messages.h, by hand
+def role(channel):  # agents/messages/channels.h and agents/recluster/recluster_messages.h, by hand
     for prefix, name in (("DVPR_QUERY_", "query"), ("DVPR_PROBE_", "query"), ("DVPR_STORE_", "query"),
                          ("DVPR_MATCH_", "reply"), ("DVPR_VREQ_", "verify request"),
                          ("DVPR_VRES_", "verify result"), ("DVPR_SAMPLE_", "re-clustering"),

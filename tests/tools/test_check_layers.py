@@ -12,7 +12,9 @@ that it is refused (exit 1) with a message naming the file and what is wrong:
 4. a test of tests/sim/ including an agents header (tests link only their module);
 5. a dependency missing from a module's CMake links (dvpr_replay without dvpr_channels), one
    the row does not name, and a row naming a module no file of it includes;
-6. a PUBLIC link only .cpp files need, and a PRIVATE link a header needs.
+6. a PUBLIC link only .cpp files need, and a PRIVATE link a header needs;
+7. a module the "Kept apart" table keeps from liblcm reaching it (dvpr_evaluation allowed
+   dvpr_lcm_log in its row).
 """
 import pathlib
 import re
@@ -88,8 +90,8 @@ def main():
         planted(root, "sim/planted.cpp", '#include "bench/bench_main.h"\n',
                 "sim/planted.cpp:1: dvpr_sim includes bench/bench_main.h of dvpr_bench", "of bench/")
         # 4. Tests.
-        planted(root, "tests/sim/test_planted.cpp", '#include "agents/descriptor_index.h"\n',
-                "tests/sim/test_planted.cpp:1: dvpr_sim includes agents/descriptor_index.h", "in tests/sim/")
+        planted(root, "tests/sim/test_planted.cpp", '#include "agents/algorithms/descriptor_index.h"\n',
+                "tests/sim/test_planted.cpp:1: dvpr_sim includes agents/algorithms/descriptor_index.h", "in tests/sim/")
         # 5. CMake links against the table.
         replay = "experiments/replay/CMakeLists.txt"
         edited(root, replay, "PUBLIC dvpr_channels ", "",
@@ -105,6 +107,12 @@ def main():
                f"{replay}: dvpr_replay links dvpr_data PUBLIC, but none of its headers", "PUBLIC for a .cpp")
         edited(root, replay, "PUBLIC dvpr_channels PRIVATE", "PRIVATE dvpr_channels",
                f"{replay}: dvpr_replay links dvpr_channels PRIVATE, but its header includes it", "PRIVATE for a header")
+
+        # 7. Kept apart: the evaluation may not reach liblcm, not even through a row.
+        row = re.search(r"^\| `dvpr_evaluation` \|.*$", (root / doc).read_text(), re.M).group(0)
+        edited(root, doc, row, row.replace("`dvpr_data` |", "`dvpr_data`, `dvpr_lcm_log` |"),
+               "dvpr_evaluation reaches PkgConfig::LCM (through dvpr_lcm_log), which Kept apart forbids",
+               "liblcm under the evaluation")
 
         code, err = run(root)
         assert code == 0, f"the copy after the plants were removed: exit {code}\n{err}"

@@ -34,7 +34,7 @@
 #include <string>
 #include <vector>
 
-#include "agents/query_record.h"
+#include "agents/algorithms/query_record.h"
 #include "agents/robot_agent.h"
 
 namespace dvpr {

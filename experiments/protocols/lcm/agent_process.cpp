@@ -11,12 +11,12 @@
 #include <memory>
 #include <stdexcept>
 
-#include "agents/ids.h"
+#include "agents/algorithms/ids.h"
 #include "agents/bow_robot_agent.h"
-#include "agents/channels.h"
-#include "agents/lcm_transport.h"
+#include "agents/messages/channels.h"
+#include "agents/lcm/lcm_transport.h"
 #include "agents/robot_agent.h"
-#include "agents/team_sync.h"
+#include "agents/messages/team_sync.h"
 #include "agents/udpm/udpm_url.h"
 #include "experiments/protocols/lcm/agent_log.h"
 #include "experiments/protocols/sim/pose_oracle.h"

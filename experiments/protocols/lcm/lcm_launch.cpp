@@ -16,7 +16,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "agents/lcm_transport.h"
+#include "agents/lcm/lcm_transport.h"
 #include "experiments/protocols/lcm/agent_process.h"
 #include "experiments/protocols/inputs.h"
 #include "experiments/config/option_reader.h"

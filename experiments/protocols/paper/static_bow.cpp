@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "agents/bow_query.h"
+#include "agents/messages/bow_query.h"
 #include "experiments/data/split.h"
 #include "experiments/results/protocol_traits.h"
 

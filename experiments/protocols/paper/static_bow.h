@@ -7,7 +7,7 @@
 // stored (non-causal). Centralized: the frame of highest L1 score. Distributed: the words are
 // assigned to robots (WordOwners); robot r scores the query's part on its words against the
 // parts of every frame it stored, returns its best frame (highest partial score, ties the lower
-// frame id); the querying robot takes the vote of agents/bow_words.h. A query's score for the
+// frame id); the querying robot takes the vote of agents/algorithms/bow_words.h. A query's score for the
 // ranking is 1 - the L1 score (centralized) or 1 - the voters' summed partial scores.
 //
 // Bytes: every part goes to its owner as one bow_query_t (the querying robot keeps its own part,
@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "agents/bow_words.h"
-#include "agents/routing.h"
+#include "agents/algorithms/bow_words.h"
+#include "agents/routing/routing.h"
 #include "experiments/data/bow_data.h"
 #include "experiments/results/bow_rows.h"
 #include "experiments/protocols/paper/static_protocol.h"

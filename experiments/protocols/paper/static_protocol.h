@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "agents/centroid_table.h"
-#include "agents/kmeans.h"
+#include "agents/algorithms/centroid_table.h"
+#include "agents/algorithms/kmeans.h"
 #include "experiments/data/dataset.h"
 #include "experiments/evaluation/ground_truth.h"
 #include "experiments/evaluation/metrics.h"

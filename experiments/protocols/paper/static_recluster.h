@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "agents/centroid_table.h"
+#include "agents/algorithms/centroid_table.h"
 #include "agents/recluster/recluster.h"
 #include "experiments/protocols/paper/static_protocol.h"
 

@@ -13,7 +13,7 @@
 // Ground truth, R and the centralized reference are the evaluator's.
 #include <string>
 
-#include "agents/routing.h"
+#include "agents/routing/routing.h"
 #include "experiments/protocols/paper/static_protocol.h"
 
 namespace dvpr {

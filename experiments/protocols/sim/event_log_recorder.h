@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "experiments/results/lcm_event_log.h"
+#include "experiments/results/lcm_log/lcm_event_log.h"
 #include "net_models/network_observer.h"
 
 namespace dvpr {

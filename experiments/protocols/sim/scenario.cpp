@@ -4,7 +4,7 @@
 #include <string>
 #include <utility>
 
-#include "agents/frame_stream.h"
+#include "agents/algorithms/frame_stream.h"
 #include "net_models/network_stack.h"
 
 namespace dvpr {

@@ -11,9 +11,9 @@
 
 #include "agents/agent_core.h"
 #include "agents/agent_params.h"
-#include "agents/decoded_messages.h"
-#include "agents/ids.h"
-#include "agents/sim_transport.h"
+#include "agents/messages/decoded_messages.h"
+#include "agents/algorithms/ids.h"
+#include "agents/messages/sim_transport.h"
 #include "agents/team_agent.h"
 #include "experiments/data/dataset.h"
 #include "experiments/data/split.h"

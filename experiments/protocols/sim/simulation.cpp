@@ -7,13 +7,13 @@
 #include <stdexcept>
 #include <string>
 
-#include "agents/ids.h"
+#include "agents/algorithms/ids.h"
 #include "experiments/protocols/sim/event_log_recorder.h"
 #include "experiments/protocols/sim/message_roles.h"
 #include "experiments/protocols/sim/message_rows.h"
 #include "experiments/protocols/sim/pose_oracle.h"
 #include "experiments/evaluation/metrics.h"
-#include "experiments/results/lcm_event_log.h"
+#include "experiments/results/lcm_log/lcm_event_log.h"
 
 namespace dvpr {
 

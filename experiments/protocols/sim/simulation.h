@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-#include "agents/agent_routing.h"
+#include "agents/routing/agent_routing.h"
 #include "agents/bow_robot_agent.h"
 #include "agents/robot_agent.h"
 #include "experiments/protocols/sim/scenario.h"

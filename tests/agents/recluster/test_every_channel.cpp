@@ -1,6 +1,6 @@
 // Every channel of every message type, in one place. Each LCM type of lcmtypes/dvpr/*.lcm travels
-// on at least one channel; every channel the agents publish on (agents/channels.h,
-// agents/team_sync.h, agents/recluster/recluster_messages.h) is one of the message catalogue's
+// on at least one channel; every channel the agents publish on (agents/messages/channels.h,
+// agents/messages/team_sync.h, agents/recluster/recluster_messages.h) is one of the message catalogue's
 // (lcmtypes/channels/channels.h), with the LCM type it carries and the role that the simulation's
 // recorders, the LCM agent process and `dvpr replay` all read from the catalogue. The names, types
 // and roles below are written by hand from the protocol (docs/design.md section 1, docs/bow.md).
@@ -11,9 +11,9 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/channels.h"
+#include "agents/messages/channels.h"
 #include "agents/recluster/recluster_messages.h"
-#include "agents/team_sync.h"
+#include "agents/messages/team_sync.h"
 #include "lcmtypes/channels/channels.h"
 
 namespace dvpr {

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/descriptor_index.h"
+#include "agents/algorithms/descriptor_index.h"
 #include "agents/recluster/recluster.h"
 #include "tests/descriptor_support.h"
 

@@ -9,11 +9,11 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/descriptor_index.h"
-#include "agents/frame_stream.h"
+#include "agents/algorithms/descriptor_index.h"
+#include "agents/algorithms/frame_stream.h"
 #include "agents/recluster/recluster_agent.h"
 #include "agents/recluster/recluster_messages.h"
-#include "agents/sim_transport.h"
+#include "agents/messages/sim_transport.h"
 #include "net_models/ideal_link.h"
 #include "sim/simulator.h"
 #include "tests/descriptor_support.h"

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/lcm_codec.h"
+#include "agents/messages/lcm_codec.h"
 #include "agents/recluster/recluster_messages.h"
 
 namespace dvpr {

@@ -17,7 +17,7 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/lcm_transport.h"
+#include "agents/lcm/lcm_transport.h"
 
 namespace dvpr::lcm_test {
 

@@ -19,11 +19,11 @@
 #include <numeric>
 #include <sstream>
 
-#include "agents/bow_vector.h"
-#include "agents/bow_words.h"
-#include "agents/centroid_table.h"
-#include "agents/failure_detector.h"
-#include "agents/team_sync.h"
+#include "agents/algorithms/bow_vector.h"
+#include "agents/algorithms/bow_words.h"
+#include "agents/algorithms/centroid_table.h"
+#include "agents/routing/failure_detector.h"
+#include "agents/messages/team_sync.h"
 #include "experiments/protocols/lcm/agent_log.h"
 #include "experiments/config/config.h"
 #include "experiments/protocols/inputs.h"
@@ -281,8 +281,8 @@ TEST_F(LcmTeamTest, LaunchedTeamMatchesTheIdealSimulation) {
 
 // The bag-of-words counterpart of References: query f's parts (words w mod n) go to their
 // owners, each scores its part against the parts of the frames it stored (the sum over shared
-// words of min weights, agents/bow_vector.h) and returns its best; the querying robot votes
-// (agents/bow_words.h). A responder's answer is certain when its best among the frames surely
+// words of min weights, agents/algorithms/bow_vector.h) and returns its best; the querying robot votes
+// (agents/algorithms/bow_words.h). A responder's answer is certain when its best among the frames surely
 // stored beats every open frame's partial score (an open frame scoring as much could win or tie);
 // the query's answer is unambiguous when every responder's is.
 std::vector<Reference> BowReferences(const BowData& bow, int robots, int window, const Order& order) {

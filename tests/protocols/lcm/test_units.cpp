@@ -4,7 +4,7 @@
 #include <chrono>
 #include <fstream>
 
-#include "agents/team_sync.h"
+#include "agents/messages/team_sync.h"
 #include "experiments/protocols/lcm/agent_log.h"
 #include "lcm_test_support.h"
 

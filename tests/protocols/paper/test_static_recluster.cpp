@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/decentralized_routing.h"
+#include "agents/routing/decentralized_routing.h"
 #include "experiments/protocols/paper/static_recluster.h"
 #include "experiments/protocols/paper/static_strategies.h"
 

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/decentralized_routing.h"
-#include "agents/probe_routing.h"
+#include "agents/routing/decentralized_routing.h"
+#include "agents/routing/probe_routing.h"
 #include "experiments/protocols/paper/static_strategies.h"
 #include "experiments/evaluation/windowed_neighbours.h"
 

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "agents/decentralized_routing.h"
-#include "agents/kmeans.h"
+#include "agents/routing/decentralized_routing.h"
+#include "agents/algorithms/kmeans.h"
 #include "experiments/data/loaders.h"
 #include "experiments/data/synthetic.h"
 #include "experiments/protocols/sim/simulation.h"

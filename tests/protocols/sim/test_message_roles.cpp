@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "agents/channels.h"
-#include "agents/lcm_codec.h"
+#include "agents/messages/channels.h"
+#include "agents/messages/lcm_codec.h"
 #include "agents/recluster/recluster_messages.h"
 #include "experiments/protocols/sim/message_roles.h"
 #include "net_models/network.h"

@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "agents/channels.h"
-#include "agents/sim_transport.h"
+#include "agents/messages/channels.h"
+#include "agents/messages/sim_transport.h"
 #include "experiments/protocols/sim/event_log_recorder.h"
 #include "experiments/protocols/sim/message_rows.h"
 #include "experiments/results/result_writers.h"

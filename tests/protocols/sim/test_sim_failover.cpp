@@ -4,9 +4,9 @@
 
 #include <memory>
 
-#include "agents/decentralized_routing.h"
-#include "agents/failover_routing.h"
-#include "agents/probe_routing.h"
+#include "agents/routing/decentralized_routing.h"
+#include "agents/routing/failover_routing.h"
+#include "agents/routing/probe_routing.h"
 #include "experiments/protocols/sim/simulation.h"
 
 namespace dvpr {

@@ -11,11 +11,11 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/kmeans.h"
+#include "agents/algorithms/kmeans.h"
 #include "agents/recluster/recluster_agent.h"
 #include "agents/recluster/recluster_messages.h"
 #include "agents/robot_agent.h"
-#include "agents/sim_transport.h"
+#include "agents/messages/sim_transport.h"
 #include "experiments/protocols/sim/message_rows.h"
 #include "experiments/protocols/sim/simulation.h"
 #include "experiments/data/split.h"

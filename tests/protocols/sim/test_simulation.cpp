@@ -9,8 +9,8 @@
 #include <memory>
 #include <utility>
 
-#include "agents/decentralized_routing.h"
-#include "agents/kmeans.h"
+#include "agents/routing/decentralized_routing.h"
+#include "agents/algorithms/kmeans.h"
 #include "experiments/protocols/sim/simulation.h"
 #include "experiments/data/split.h"
 #include "sim/random.h"

@@ -9,7 +9,7 @@ i64; channel length, i32; data length, i32), the channel name, then the data.
 Each event must carry the fingerprint of exactly one dvpr type, decode, and encode back to the
 same bytes (LCM's own LCM_SELF_TEST messages, which lcm-logger records, are skipped). A
 verification request's payload must be the bytes derived from its query frame's descriptor
-(agents/verification_payload.h), computed here independently. With --live, every message's utime must lie within a second of the instant the
+(agents/messages/verification_payload.h), computed here independently. With --live, every message's utime must lie within a second of the instant the
 logger received it (the event's timestamp, wall clock), and a query's capture_utime must not be
 after its utime.
 
@@ -59,7 +59,7 @@ def dvpr_types(python_dir):
 
 
 def verification_payload(frame, descriptor, size):
-    """The bytes dvpr sends in a verify_request_t for `frame` (agents/verification_payload.h):
+    """The bytes dvpr sends in a verify_request_t for `frame` (agents/messages/verification_payload.h):
     SplitMix64 seeded with the 64-bit FNV-1a hash of the frame id and descriptor, little-endian."""
     mask = (1 << 64) - 1
     h = 0xCBF29CE484222325

@@ -1,0 +1,20 @@
+#pragma once
+// The frames a robot takes (docs/design.md section 3): rows [first, first + count) of the full
+// sequence, the k-th at k / fps from the start of the run.
+#include <cmath>
+
+#include "agents/algorithms/descriptors.h"
+#include "agents/algorithms/ids.h"
+#include "sim/sim_time.h"
+
+namespace dvpr {
+
+struct FrameStream {
+  const DescriptorMatrix* descriptors = nullptr;
+  FrameId first{0};
+  int count = 0;
+  double fps = 10.0;
+  SimTime TimeOf(int k) const { return SimTime::Nanos(std::llround(static_cast<double>(k) * 1e9 / fps)); }
+};
+
+}  // namespace dvpr
