@@ -133,16 +133,19 @@ RunArgs ParseRunArgs(const std::vector<std::string>& args) {
 
 int Run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   RunArgs a;
-  // Under an MPI launcher every rank parses the same arguments: rank 0 alone says what is wrong.
+  // Under an MPI launcher every rank parses the same arguments: rank 0 alone says what is wrong
+  // and returns the usage status. The others return 0: a non-zero status from any of them makes
+  // the launcher end the job, rank 0 too, perhaps before its line is out (seen with 3 ranks under
+  // load: status 2 and no line); the job's status is rank 0's.
   const bool speaks = LauncherRank() == 0;
   try {
     a = ParseRunArgs(args);
   } catch (const std::invalid_argument& e) {
     if (speaks) err << "dvpr run: " << OneLine(e.what()) << " (see dvpr --help)\n";
-    return kExitUsage;
+    return speaks ? kExitUsage : kExitOk;
   } catch (const ConfigError& e) {  // a malformed --set
     if (speaks) err << "dvpr run: " << OneLine(e.what()) << " (see dvpr --help)\n";
-    return kExitUsage;
+    return speaks ? kExitUsage : kExitOk;
   }
   const auto run = [&a](const ExecutorOptions& options, std::ostream& summary) {
     const ExperimentConfig config = LoadConfig(a.config, a.overrides);

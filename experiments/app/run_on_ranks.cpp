@@ -32,11 +32,14 @@ int RunOnRanks(const MpiWorld& world, ExecutorOptions options,
         }
       }
       if (distributor.stopped_before_start()) {
-        // Every rank stops here: rank 0 says it once, the others return the status silently, and
-        // nobody aborts (MPI_Abort's text would follow the error line).
+        // Every rank stops here: rank 0 says it once and returns the status, the others return 0
+        // silently (a non-zero status from one of them makes the launcher end rank 0, perhaps
+        // before its line is out; the job's status is rank 0's), and nobody aborts (MPI_Abort's
+        // text would follow the error line).
         clean_stop = true;
         std::ostringstream silent;
         status = ReportError(error, world.rank() == 0 ? err : silent);
+        if (world.rank() != 0) status = kExitOk;
       } else {
         distributor.ReportFailure(error);  // returns on rank 0 (and when too late)
         status = ReportError(error, err);
