@@ -1,14 +1,22 @@
 #pragma once
-// Small helpers shared by the test files of every module: reading whole output files. Nothing
+// Small helpers shared by the test files of every module: reading whole output files, starting a
+// program without a shell. Nothing
 // here includes a project header, so a test of any layer can use it (descriptor_support.h has
 // the helpers that need agents/).
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
 #include <string>
 #include <vector>
+
+extern char** environ;
 
 namespace dvpr::testing_support {
 
@@ -35,6 +43,47 @@ inline std::vector<std::string> Names(const std::filesystem::path& dir) {
   for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end());
   return names;
+}
+
+// Runs argv[0] with an argument vector (posix_spawn, no shell: quotes, `$(...)` and ';' in an
+// argument reach the program as they are), stdout and stderr into files (stderr into stdout's
+// when `err` is empty), in folder `cwd` when not empty, with `env` ("NAME=value", replacing a
+// variable of that name) added to this process's environment. Returns the exit status, -1 when
+// the program could not start or did not exit.
+inline int RunProgram(const std::vector<std::string>& argv, const std::filesystem::path& out,
+                      const std::filesystem::path& err = {}, const std::filesystem::path& cwd = {},
+                      const std::vector<std::string>& env = {}) {
+  std::vector<std::string> env_strings;
+  for (char** e = environ; *e != nullptr; ++e) {
+    const std::string entry(*e);
+    const bool replaced = std::any_of(env.begin(), env.end(), [&](const std::string& v) {
+      return entry.compare(0, v.find('=') + 1, v, 0, v.find('=') + 1) == 0;
+    });
+    if (!replaced) env_strings.push_back(entry);
+  }
+  env_strings.insert(env_strings.end(), env.begin(), env.end());
+  std::vector<char*> args, envp;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  for (const std::string& e : env_strings) envp.push_back(const_cast<char*>(e.c_str()));
+  envp.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (err.empty()) {
+    posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  } else {
+    posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  }
+  if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), envp.data());
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return -1;
+  int raw = 0;
+  while (waitpid(pid, &raw, 0) < 0 && errno == EINTR) {
+  }
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
 
 }  // namespace dvpr::testing_support

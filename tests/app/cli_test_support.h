@@ -1,6 +1,6 @@
 #pragma once
-// Runs the dvpr binary the way a user does (a shell command, stderr captured) for the tests of
-// its command line and its errors; each test gets a fresh folder.
+// Runs the dvpr binary the way a user does (its arguments, stderr captured; no shell) for the
+// tests of its command line and its errors; each test gets a fresh folder.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -16,7 +16,7 @@
 
 #include <gtest/gtest.h>
 
-extern char** environ;
+#include "tests/test_support.h"
 
 namespace dvpr::testing_support {
 
@@ -41,57 +41,49 @@ class CliTest : public ::testing::Test {
     std::ofstream(Config()) << yaml;
     return Dvpr("run '" + Config().string() + "' --quiet --out '" + Out().string() + "' " + extra);
   }
+  // Runs dvpr with `args` split into words as a shell would split them, but only at spaces and
+  // with '...' quoting (nothing is expanded, nothing else is special): no shell runs.
   Result Dvpr(const std::string& args) {
-    const path err = dir_ / "stderr.txt";
-    const std::string cmd = std::string("'") + DVPR_BINARY_DIR + "/dvpr' " + args + " > '" +
-                            (dir_ / "stdout.txt").string() + "' 2> '" + err.string() + "'";
-    Result r;
-    const int raw = std::system(cmd.c_str());
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    std::ifstream in(err);
-    r.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    return r;
+    std::vector<std::string> words;
+    std::string word;
+    bool quoted = false, in_word = false;
+    for (const char c : args) {
+      if (c == '\'') {
+        quoted = !quoted;
+        in_word = true;
+      } else if (c == ' ' && !quoted) {
+        if (in_word) words.push_back(word);
+        word.clear();
+        in_word = false;
+      } else {
+        word += c;
+        in_word = true;
+      }
+    }
+    EXPECT_FALSE(quoted) << "unbalanced quote in: " << args;
+    if (in_word) words.push_back(word);
+    return Spawn(words, {}, {});
   }
   // Runs dvpr with an argument vector, without a shell, so paths and names with quotes,
   // backquotes, $(...), ';' or newlines reach it as they are; in folder dir_, stdout and stderr
   // captured as Dvpr() does. `search_path`, when not empty, replaces $PATH (a stand-in gnuplot).
   Result DvprArgv(const std::vector<std::string>& args, const std::string& search_path = "") {
-    const std::string binary = std::string(DVPR_BINARY_DIR) + "/dvpr";
-    std::vector<std::string> env_strings;
-    for (char** e = environ; *e != nullptr; ++e) {
-      if (search_path.empty() || std::string(*e).rfind("PATH=", 0) != 0) env_strings.emplace_back(*e);
-    }
-    if (!search_path.empty()) env_strings.push_back("PATH=" + search_path);
-    std::vector<char*> argv = {const_cast<char*>(binary.c_str())}, envp;
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    for (const std::string& e : env_strings) envp.push_back(const_cast<char*>(e.c_str()));
-    envp.push_back(nullptr);
-    const path err = dir_ / "stderr.txt", out = dir_ / "stdout.txt";
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_addchdir_np(&actions, dir_.c_str());
-    pid_t pid = 0;
-    Result r;
-    const int spawned = posix_spawn(&pid, binary.c_str(), &actions, nullptr, argv.data(), envp.data());
-    posix_spawn_file_actions_destroy(&actions);
-    if (spawned != 0) {
-      ADD_FAILURE() << "cannot start " << binary;
-      return r;
-    }
-    int raw = 0;
-    while (waitpid(pid, &raw, 0) < 0 && errno == EINTR) {
-    }
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    std::ifstream in(err);
-    r.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    return r;
+    return Spawn(args, dir_, search_path.empty() ? std::vector<std::string>{}
+                                                 : std::vector<std::string>{"PATH=" + search_path});
   }
   std::string Stdout() const {
     std::ifstream in(dir_ / "stdout.txt");
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  }
+  // dvpr with `args` (stdout.txt and stderr.txt in dir_), in `cwd` when not empty.
+  Result Spawn(const std::vector<std::string>& args, const path& cwd, const std::vector<std::string>& env) {
+    std::vector<std::string> argv{std::string(DVPR_BINARY_DIR) + "/dvpr"};
+    argv.insert(argv.end(), args.begin(), args.end());
+    Result r;
+    r.status = RunProgram(argv, dir_ / "stdout.txt", dir_ / "stderr.txt", cwd, env);
+    std::ifstream in(dir_ / "stderr.txt");
+    r.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return r;
   }
   path Config() const { return dir_ / "bad.yaml"; }
   path Out() const { return dir_ / "out"; }

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@
 
 namespace {
 
+using dvpr::testing_support::RunProgram;
 using dvpr::testing_support::Slurp;
 
 namespace fs = std::filesystem;
@@ -26,26 +28,28 @@ class DeterminismTest : public ::testing::Test {
   }
   // A small sweep: 900 frames of KITTI 00 (a revisit inside), both protocols and
   // strategies, two network models, every optional output except figures.
-  fs::path Run(const std::string& name, const std::string& extra) {
+  fs::path Run(const std::string& name, const std::vector<std::string>& extra) {
     const fs::path out = dir_ / name;
-    const std::string cmd = std::string("'") + DVPR_BINARY_DIR + "/dvpr' run '" + DVPR_SOURCE_DIR +
-                            "/experiments/configs/paper_kitti00.yaml' --quiet --out '" + out.string() +
-                            "' --set dataset.frames=900 --set evaluation.suppression_frames=50"
-                            " --set 'robots=[2,4]' --set runs=1 --set training.synthetic.samples=2000"
-                            " --set outputs.figures=false --set outputs.queries=true"
-                            " --set outputs.messages=true --set outputs.lcm_log=true " +
-                            extra + " > '" + (dir_ / (name + ".log")).string() + "' 2>&1";
-    const int raw = std::system(cmd.c_str());
-    EXPECT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 0) << Slurp(dir_ / (name + ".log"));
+    std::vector<std::string> argv{std::string(DVPR_BINARY_DIR) + "/dvpr", "run",
+                                  std::string(DVPR_SOURCE_DIR) + "/experiments/configs/paper_kitti00.yaml",
+                                  "--quiet", "--out", out.string()};
+    for (const char* set : {"dataset.frames=900", "evaluation.suppression_frames=50", "robots=[2,4]", "runs=1",
+                            "training.synthetic.samples=2000", "outputs.figures=false", "outputs.queries=true",
+                            "outputs.messages=true", "outputs.lcm_log=true"}) {
+      argv.insert(argv.end(), {"--set", set});
+    }
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    const int status = RunProgram(argv, dir_ / (name + ".log"));
+    EXPECT_EQ(status, 0) << Slurp(dir_ / (name + ".log"));
     return out;
   }
   fs::path dir_;
 };
 
 TEST_F(DeterminismTest, SameSeedSameBytesOtherSeedOtherResults) {
-  const fs::path a = Run("a", "--threads 1");
-  const fs::path b = Run("b", "--threads 2");
-  const fs::path c = Run("c", "--set seed=2");
+  const fs::path a = Run("a", {"--threads", "1"});
+  const fs::path b = Run("b", {"--threads", "2"});
+  const fs::path c = Run("c", {"--set", "seed=2"});
   int compared = 0;
   for (const auto& entry : fs::recursive_directory_iterator(a)) {
     if (!entry.is_regular_file()) continue;

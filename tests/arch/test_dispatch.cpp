@@ -1,11 +1,12 @@
 // The generic executable's choice (experiments/arch/dispatch.h), case by case, and, in a build
 // with DVPR_ARCH=dispatch, what `dvpr --version` says each way.
-#include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "experiments/arch/dispatch.h"
+#include "tests/test_support.h"
 
 namespace dvpr {
 namespace {
@@ -46,14 +47,11 @@ TEST(CompiledArchTest, NamesTheTargetOfThisBuild) {
 }
 
 #ifdef DVPR_DISPATCH_BUILD
+// `dvpr --version` with `env` ("DVPR_ARCH=...") in its environment, started without a shell.
 std::string Version(const std::string& env) {
-  const std::string cmd = env + " '" + std::string(DVPR_BINARY_DIR) + "/dvpr' --version";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  char buf[256];
-  while (p != nullptr && fgets(buf, sizeof buf, p) != nullptr) out += buf;
-  if (p != nullptr) pclose(p);
-  return out;
+  const std::filesystem::path out = std::filesystem::path(DVPR_TEST_TMP) / "dispatch_version.txt";
+  testing_support::RunProgram({std::string(DVPR_BINARY_DIR) + "/dvpr", "--version"}, out, {}, {}, {env});
+  return testing_support::Slurp(out);
 }
 
 TEST(DispatchTest, DvprRunsTheFastBuildWhereTheCpuCanAndTheGenericOneOnRequest) {

@@ -28,6 +28,7 @@
 
 namespace {
 
+using dvpr::testing_support::RunProgram;
 using dvpr::testing_support::Slurp;
 
 namespace fs = std::filesystem;
@@ -53,10 +54,10 @@ TEST(GoldenTest, OutputsEqualTheCommittedFilesByteForByte) {
   const fs::path out = fs::path(DVPR_TEST_TMP) / "golden";
   fs::remove_all(out);
   const fs::path log = fs::path(DVPR_TEST_TMP) / "golden.log";
-  const std::string cmd = "'" + std::string(DVPR_BINARY_DIR) + "/dvpr' run '" + (source / "tests/golden/golden.yaml").string() +
-                          "' --quiet --out '" + out.string() + "' > '" + log.string() + "' 2>&1";
-  const int raw = std::system(cmd.c_str());
-  ASSERT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 0) << Slurp(log);
+  const int status = RunProgram({std::string(DVPR_BINARY_DIR) + "/dvpr", "run", (source / "tests/golden/golden.yaml").string(),
+                                  "--quiet", "--out", out.string()},
+                                 log);
+  ASSERT_EQ(status, 0) << Slurp(log);
 
   const std::set<fs::path> want = FilesBelow(expected);
   const std::set<fs::path> got = FilesBelow(out);

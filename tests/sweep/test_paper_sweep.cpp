@@ -185,11 +185,14 @@ TEST_F(PaperSweepTest, AgreesWithAnIndependentImplementation) {
   ASSERT_EQ(csv.size(), written.size());
 
   const fs::path out = dir_ / "reference.csv";
-  const std::string cmd = "/usr/bin/python3 " DVPR_SOURCE_DIR "/tests/tools/paper_eval.py --poses '" +
-                          (dir_ / "poses.txt").string() + "' --descriptors '" + (dir_ / "descriptors.npy").string() +
-                          "' --centroids '" + (dir_ / "given_n{robots}_r{run}.npy").string() +
-                          "' --robots 2 3 5 8 --runs 2 --radius 5 --window 25 --out '" + out.string() + "'";
-  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  const std::vector<std::string> argv{"/usr/bin/python3", DVPR_SOURCE_DIR "/tests/tools/paper_eval.py",
+                                      "--poses", (dir_ / "poses.txt").string(),
+                                      "--descriptors", (dir_ / "descriptors.npy").string(),
+                                      "--centroids", (dir_ / "given_n{robots}_r{run}.npy").string(),
+                                      "--robots", "2", "3", "5", "8", "--runs", "2", "--radius", "5", "--window", "25",
+                                      "--out", out.string()};
+  const fs::path log = dir_ / "paper_eval.log";
+  ASSERT_EQ(testing_support::RunProgram(argv, log), 0) << testing_support::Slurp(log);
   std::ifstream in(out);
   std::string line;
   ASSERT_TRUE(std::getline(in, line));
