@@ -4,14 +4,17 @@
 # prints how many of the N passed. They wait on the events they need, so a loaded machine must
 # not fail them (README, "Two commands").
 #
-#   scripts/stress_timing_tests.sh BUILD_DIR [N=50] [LOAD=2]
+#   scripts/stress_timing_tests.sh BUILD_DIR [N=50] [LOAD=2] [FIRST=1]
 #
 # BUILD_DIR is a configured and built tree (scripts/test.sh's build/asan). Exit 1 when any run
 # of any test failed; each failing run's output is kept in BUILD_DIR/stress/<test>.<i>.log.
+# FIRST numbers the runs FIRST .. FIRST + N - 1, so that two instances can share the work (and
+# the load: `... 25 2 1 & ... 25 0 26`) without overwriting each other's logs.
 set -u
 build=${1:?usage: scripts/stress_timing_tests.sh BUILD_DIR [N] [LOAD]}
 runs=${2:-50}
 load=${3:-2}
+first=${4:-1}
 lcm_tests=(
   LcmTransportTest.DeliversCountsGarbageAndKeepsTimersOnSchedule
   LcmTransportTest.UtimeIsTheEpochPlusAgentTimeOverSpeedup
@@ -57,7 +60,7 @@ run_one() {  # test run-number
   fi
 }
 for t in "${all[@]}"; do pass[$t]=0; seconds[$t]=0; done
-for i in $(seq "$runs"); do
+for i in $(seq "$first" $(( first + runs - 1 ))); do
   for t in "${all[@]}"; do
     start=$(date +%s)
     if run_one "$t" > "$logs/$t.$i.log" 2>&1; then
@@ -65,8 +68,9 @@ for i in $(seq "$runs"); do
     fi
     seconds[$t]=$(( ${seconds[$t]} + $(date +%s) - start ))
   done
-  echo "stress: round $i of $runs done, load average $(cut -d' ' -f1-3 /proc/loadavg)" >&2
-  for t in "${all[@]}"; do echo "  $t ${pass[$t]} of $i" >&2; done
+  done_runs=$(( i - first + 1 ))
+  echo "stress: round $done_runs of $runs (run $i) done, load average $(cut -d' ' -f1-3 /proc/loadavg)" >&2
+  for t in "${all[@]}"; do echo "  $t ${pass[$t]} of $done_runs" >&2; done
 done
 failed=0
 for t in "${all[@]}"; do

@@ -132,59 +132,68 @@ RunRouting BowRouting(const StrategySpec& spec, const StrategyInputs& in, int ro
   if (in.bow == nullptr || in.bow->empty()) {
     throw std::invalid_argument("strategy " + spec.name + ": the dataset has no bag-of-words vectors");
   }
-  RunRouting r;
+  BowFamily f;
   if (spec.bow == StrategySpec::Bow::kModulo) {
-    r.words = std::make_shared<const WordOwners>(WordOwners::Modulo(in.bow->vocabulary, robots));
+    f.words = std::make_shared<const WordOwners>(WordOwners::Modulo(in.bow->vocabulary, robots));
   } else if (spec.bow == StrategySpec::Bow::kDocumentFrequency) {
-    r.words = std::make_shared<const WordOwners>(
+    f.words = std::make_shared<const WordOwners>(
         WordOwners::ByDocumentFrequency(DocumentFrequency(in.bow->frames, in.bow->vocabulary), robots));
   }
-  r.bow_team = BowTeamPlan{robots, r.words};
+  f.team = BowTeamPlan{robots, f.words};
   if (spec.bow == StrategySpec::Bow::kCentralized) {
-    r.bow_team->words = std::make_shared<const WordOwners>(WordOwners::Server(in.bow->vocabulary, robots, RobotId(0)));
+    f.team.words = std::make_shared<const WordOwners>(WordOwners::Server(in.bow->vocabulary, robots, RobotId(0)));
   }
-  return r;
+  return RunRouting(std::move(f));
 }
 
 }  // namespace
+
+const CentroidTable* RunRouting::table() const {
+  return Visit([](const BowFamily&) -> const CentroidTable* { return nullptr; },
+               [](const auto& descriptor) -> const CentroidTable* { return descriptor.table.get(); });
+}
 
 RunRouting BuildRunRouting(const StrategySpec& spec, const StrategyInputs& in, int robots, int run) {
   if (spec.bag_of_words()) return BowRouting(spec, in, robots);
   if (in.training == nullptr || in.deployment == nullptr) {
     throw std::invalid_argument("BuildRunRouting: StrategyInputs needs the training and deployment descriptors");
   }
-  RunRouting r;
+  std::shared_ptr<const CentroidTable> table;
   std::unique_ptr<RoutingStrategy> stateless;
   if (spec.broadcast()) {  // no table: every robot searches, each keeps its own frames
     stateless = std::make_unique<BroadcastRouting>(robots);
   } else {
-    r.table = std::make_shared<const CentroidTable>(BuildTable(spec, in, robots, run));
+    table = std::make_shared<const CentroidTable>(BuildTable(spec, in, robots, run));
     if (spec.reclusters()) {
       if (in.failover.enabled) {
         throw std::invalid_argument("failover.enabled: '" + spec.name + "' re-clusters, which has no failover");
       }
-      r.recluster = ReclusterParamsOf(spec, in, robots, run);
-      r.team = std::make_unique<ReclusterRouting>(ReclusterPlanOf(*r.recluster, r.table, in, robots));
-      return r;
+      ReclusterFamily f;
+      f.table = table;
+      f.params = ReclusterParamsOf(spec, in, robots, run);
+      f.team = std::make_unique<ReclusterRouting>(ReclusterPlanOf(f.params, table, in, robots));
+      return RunRouting(std::move(f));
     }
     switch (spec.routing) {
-      case StrategySpec::Routing::kNearest: stateless = std::make_unique<DecentralizedRouting>(r.table); break;
-      case StrategySpec::Routing::kProbe: stateless = std::make_unique<MultiProbeRouting>(r.table, spec.probe); break;
+      case StrategySpec::Routing::kNearest: stateless = std::make_unique<DecentralizedRouting>(table); break;
+      case StrategySpec::Routing::kProbe: stateless = std::make_unique<MultiProbeRouting>(table, spec.probe); break;
       case StrategySpec::Routing::kReplicate:
-        stateless = std::make_unique<BoundaryReplicationRouting>(r.table, spec.replicate);
+        stateless = std::make_unique<BoundaryReplicationRouting>(table, spec.replicate);
         break;
       case StrategySpec::Routing::kBroadcast: throw std::logic_error("BuildRunRouting: broadcast with a table");
     }
   }
-  r.stateless = stateless.get();
+  StatelessFamily f;
+  f.table = std::move(table);
+  f.strategy = stateless.get();
   if (in.failover.enabled) {
-    auto team = std::make_unique<FailoverTeam>(std::move(stateless), r.table, in.failover, LastFrameTime(in, robots));
-    r.failover = team.get();
-    r.team = std::move(team);
+    auto team = std::make_unique<FailoverTeam>(std::move(stateless), f.table, in.failover, LastFrameTime(in, robots));
+    f.failover = team.get();
+    f.team = std::move(team);
   } else {
-    r.team = std::move(stateless);
+    f.team = std::move(stateless);
   }
-  return r;
+  return RunRouting(std::move(f));
 }
 
 }  // namespace dvpr

@@ -10,7 +10,8 @@
 // deployment sample (seeded RunSeed as the run's k-means); balanced_ runs balanced k-means on the
 // training set, round robin.
 #include <memory>
-#include <optional>
+#include <utility>
+#include <variant>
 
 #include "agents/bow_robot_agent.h"
 #include "agents/algorithms/bow_words.h"
@@ -38,28 +39,78 @@ struct StrategyInputs {
   const BowData* bow = nullptr;                  // the deployment's BoW vectors: bow_ strategies' word owners
 };
 
-struct RunRouting {
-  std::shared_ptr<const CentroidTable> table;  // null for broadcast; the start table when re-clustering
-  // What each robot's routing component is made from (TeamRouting::MakeAgentRouting).
+// One run's routing, by strategy family (docs/strategies.md). A strategy belongs to exactly one
+// family, and what a protocol runs depends on the family alone, so callers visit it
+// (RunRouting::Visit): a family that a caller does not handle is a compile error, not a null
+// pointer met at run time.
+
+// The descriptor strategies that keep no per-robot state: broadcast, decentralized, multi_probe_,
+// replicate_, on any table (sample_, lpt_, balanced_, ...).
+struct StatelessFamily {
+  std::shared_ptr<const CentroidTable> table;  // null for broadcast
+  // What each robot's routing component is made from (TeamRouting::MakeAgentRouting): the
+  // strategy itself, or the FailoverTeam around it.
   std::unique_ptr<TeamRouting> team;
-  // The same object when the strategy keeps no per-robot state (Route(self, descriptor) answers
-  // for every robot); null when it re-clusters.
-  const RoutingStrategy* stateless = nullptr;
+  // The strategy, owned by `team`: Route(self, descriptor) answers for every robot.
+  const RoutingStrategy* strategy = nullptr;
   // `team` itself when it fails over (StrategyInputs::failover), null otherwise; real agents
   // tell it that their process announces the heartbeats (UseProcessHeartbeats).
   FailoverTeam* failover = nullptr;
-  // Set when the strategy re-clusters: C, P, the sample stride, seed RunSeed(config seed, robots,
-  // run). The static protocol plans the epochs from these and the start table.
-  std::optional<ReclusterParams> recluster;
-  // bow_decentralized*: which robot owns each word (modulo n, or LPT on the document
-  // frequencies of the deployment's vectors, known before deployment like their idf); the
-  // other bow_ strategies and the descriptor strategies leave it null, and bow_ ones set no
-  // table nor team.
+};
+
+// recluster_cC_pP: the team re-clusters its own frames during the run.
+struct ReclusterFamily {
+  std::shared_ptr<const CentroidTable> table;  // the start table
+  // C, P, the sample stride, seed RunSeed(config seed, robots, run). The static protocol plans
+  // the epochs from these and the start table.
+  ReclusterParams params;
+  std::unique_ptr<TeamRouting> team;  // ReclusterRouting: per-robot state, no failover
+};
+
+// bow_ strategies: a team of BoW agents (docs/bow.md); no centroid table.
+struct BowFamily {
+  // How the team (simulated or real) sends its queries: the distributed index as `words`;
+  // bow_broadcast the whole vector to every robot (no owners); bow_centralized one server,
+  // robot 0, that owns every word.
+  BowTeamPlan team;
+  // bow_decentralized*: which robot owns each word (modulo n, or LPT on the document frequencies
+  // of the deployment's vectors, known before deployment like their idf); null for
+  // bow_broadcast and bow_centralized, whose static evaluation is their reference's.
   std::shared_ptr<const WordOwners> words;
-  // bow_ strategies: how a team of BoW agents (simulated or real) sends its queries. The
-  // distributed index as `words`; bow_broadcast the whole vector to every robot (no owners);
-  // bow_centralized one server, robot 0, that owns every word (docs/bow.md).
-  std::optional<BowTeamPlan> bow_team;
+};
+
+namespace detail {
+template <class... F>
+struct Overloaded : F... {
+  using F::operator()...;
+};
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;
+}  // namespace detail
+
+class RunRouting {
+ public:
+  using Family = std::variant<StatelessFamily, ReclusterFamily, BowFamily>;
+
+  explicit RunRouting(Family family) : family_(std::move(family)) {}
+
+  // Calls the one of `handlers` that takes this run's family (a generic lambda may take several).
+  template <class... F>
+  decltype(auto) Visit(F&&... handlers) const {
+    return std::visit(detail::Overloaded{std::forward<F>(handlers)...}, family_);
+  }
+  // The family, or null when the run's strategy is of another.
+  template <class T>
+  const T* As() const { return std::get_if<T>(&family_); }
+  template <class T>
+  T* As() { return std::get_if<T>(&family_); }
+
+  // The centroid table of a descriptor strategy (the start table when re-clustering); null for
+  // broadcast and the bow_ strategies.
+  const CentroidTable* table() const;
+
+ private:
+  Family family_;
 };
 
 // What a strategy's table takes from the training side, so a sweep can check it before any run

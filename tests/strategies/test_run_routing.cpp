@@ -3,6 +3,7 @@
 // descriptor, worked out by hand from the strategy's rule.
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,16 @@ using testing_support::Column;
 using testing_support::Robots;
 
 // Writes centroids as run 0's file for `robots` robots and points the inputs at it.
+// The run's family of the type a test expects; another family fails the test (the exception
+// reaches GoogleTest).
+template <class T>
+const T& FamilyOf(const RunRouting& r) {
+  const T* f = r.As<T>();
+  if (f == nullptr) throw std::runtime_error("the strategy is of another family");
+  return *f;
+}
+const StatelessFamily& Stateless(const RunRouting& r) { return FamilyOf<StatelessFamily>(r); }
+
 class RunRoutingTest : public ::testing::Test {
  protected:
   RunRoutingTest() : dir_(fs::path(DVPR_TEST_TMP) / "strategies" / ::testing::UnitTest::GetInstance()->current_test_info()->name()) {
@@ -48,25 +59,27 @@ class ThreeRobotsTest : public RunRoutingTest {
 
 TEST_F(ThreeRobotsTest, DecentralizedSendsToTheNearestCentroidsOwner) {
   const RunRouting r = Build("decentralized", 3);
-  ASSERT_NE(r.table, nullptr);
-  EXPECT_EQ(r.table->num_centroids(), 3);
-  EXPECT_FALSE(r.recluster);
+  ASSERT_NE(r.table(), nullptr);
+  EXPECT_EQ(r.table()->num_centroids(), 3);
+  EXPECT_EQ(Stateless(r).table.get(), r.table());
+  EXPECT_EQ(r.As<ReclusterFamily>(), nullptr);
+  EXPECT_EQ(Stateless(r).failover, nullptr);  // failover is off
   // 12: nearest 10 (distance 2), owned by robot 1, which searches and stores it.
   const float twelve = 12;
-  const RoutingDecision d = r.stateless->Route(RobotId(0), &twelve);
+  const RoutingDecision d = Stateless(r).strategy->Route(RobotId(0), &twelve);
   EXPECT_EQ(d.search_at, Robots({1}));
   EXPECT_EQ(d.store_at, Robots({1}));
   // 16: nearest 20 (4 < 6): robot 2.
   const float sixteen = 16;
-  EXPECT_EQ(r.stateless->Route(RobotId(0), &sixteen).search_at, Robots({2}));
+  EXPECT_EQ(Stateless(r).strategy->Route(RobotId(0), &sixteen).search_at, Robots({2}));
 }
 
 TEST_F(ThreeRobotsTest, BroadcastSearchesEverywhereAndHasNoTable) {
   const RunRouting r = Build("broadcast", 3);
-  EXPECT_EQ(r.table, nullptr);
-  EXPECT_EQ(r.team->num_robots(), 3);
+  EXPECT_EQ(r.table(), nullptr);
+  EXPECT_EQ(Stateless(r).team->num_robots(), 3);
   const float twelve = 12;
-  const RoutingDecision d = r.stateless->Route(RobotId(1), &twelve);
+  const RoutingDecision d = Stateless(r).strategy->Route(RobotId(1), &twelve);
   EXPECT_EQ(d.search_at, Robots({0, 1, 2}));
   EXPECT_EQ(d.store_at, Robots({1}));  // the querying robot keeps its own frame
 }
@@ -75,12 +88,12 @@ TEST_F(ThreeRobotsTest, MultiProbeTwoSearchesTheTwoNearestOwnersAndStoresAtTheNe
   const RunRouting r = Build("multi_probe_2", 3);
   // 12: 10 (2), 20 (8), 0 (12): robots 1 and 2 search, robot 1 stores.
   const float twelve = 12;
-  const RoutingDecision d = r.stateless->Route(RobotId(0), &twelve);
+  const RoutingDecision d = Stateless(r).strategy->Route(RobotId(0), &twelve);
   EXPECT_EQ(d.search_at, Robots({1, 2}));
   EXPECT_EQ(d.store_at, Robots({1}));
   // 4: 0 (4), 10 (6), 20 (16): robots 0 and 1.
   const float four = 4;
-  EXPECT_EQ(r.stateless->Route(RobotId(2), &four).search_at, Robots({0, 1}));
+  EXPECT_EQ(Stateless(r).strategy->Route(RobotId(2), &four).search_at, Robots({0, 1}));
 }
 
 TEST_F(ThreeRobotsTest, ReplicateStoresAtOwnersWithinOnePlusEpsilonOfTheNearest) {
@@ -88,14 +101,28 @@ TEST_F(ThreeRobotsTest, ReplicateStoresAtOwnersWithinOnePlusEpsilonOfTheNearest)
   // 14.5: 10 at 4.5, 20 at 5.5 <= 1.5 x 4.5 = 6.75, 0 at 14.5 > 6.75: stored at robots 1 and 2,
   // searched at the nearest only.
   const float x = 14.5f;
-  const RoutingDecision d = r.stateless->Route(RobotId(0), &x);
+  const RoutingDecision d = Stateless(r).strategy->Route(RobotId(0), &x);
   EXPECT_EQ(d.search_at, Robots({1}));
   EXPECT_EQ(d.store_at, Robots({1, 2}));
   // 12: 10 at 2, 20 at 8 > 3: robot 1 only.
   const float twelve = 12;
-  EXPECT_EQ(r.stateless->Route(RobotId(0), &twelve).store_at, Robots({1}));
+  EXPECT_EQ(Stateless(r).strategy->Route(RobotId(0), &twelve).store_at, Robots({1}));
   // replicate_3_r2: every centroid is within 4 x 4.5 = 18 of 14.5, but at most 2 are taken.
-  EXPECT_EQ(Build("replicate_3_r2", 3).stateless->Route(RobotId(0), &x).store_at, Robots({1, 2}));
+  EXPECT_EQ(Stateless(Build("replicate_3_r2", 3)).strategy->Route(RobotId(0), &x).store_at, Robots({1, 2}));
+}
+
+// With failover on, a stateless strategy's team is the FailoverTeam around the strategy, which
+// still routes as without it while every robot is alive; re-clustering has no failover.
+TEST_F(ThreeRobotsTest, FailoverWrapsTheStatelessStrategyAndRefusesReclustering) {
+  inputs_.failover.enabled = true;
+  const RunRouting r = Build("decentralized", 3);
+  const StatelessFamily& f = Stateless(r);
+  ASSERT_NE(f.failover, nullptr);
+  EXPECT_EQ(static_cast<const TeamRouting*>(f.failover), f.team.get());
+  EXPECT_NE(static_cast<const TeamRouting*>(f.strategy), f.team.get());
+  const float twelve = 12;
+  EXPECT_EQ(f.strategy->Route(RobotId(0), &twelve).search_at, Robots({1}));
+  EXPECT_THROW(Build("recluster_c1_p50", 3), std::invalid_argument);
 }
 
 TEST_F(ThreeRobotsTest, StrategiesOfOneRunShareTheCachedCentroids) {
@@ -104,7 +131,7 @@ TEST_F(ThreeRobotsTest, StrategiesOfOneRunShareTheCachedCentroids) {
   const RunRouting a = Build("decentralized", 3);
   fs::remove_all(dir_);  // a second read of the file would now fail
   const RunRouting b = Build("multi_probe_2", 3);
-  EXPECT_EQ(b.table->centroids(), a.table->centroids());
+  EXPECT_EQ(b.table()->centroids(), a.table()->centroids());
   inputs_.cache = nullptr;
   EXPECT_THROW(Build("decentralized", 3), std::exception);
 }
@@ -123,12 +150,12 @@ TEST_F(LptTest, LptPacksTheClustersOnTheDeploymentSamplesLoads) {
   deployment_(0, 0) = deployment_(20, 0) = 29;
   deployment_(40, 0) = 1;
   const RunRouting r = Build("lpt_c2", 2);
-  ASSERT_EQ(r.table->num_centroids(), 4);
+  ASSERT_EQ(r.table()->num_centroids(), 4);
   const float one = 1, nineteen = 19, twenty_nine = 29;
-  EXPECT_EQ(r.table->RouteOf(&one), RobotId(1));
-  EXPECT_EQ(r.table->RouteOf(&nineteen), RobotId(0));
-  EXPECT_EQ(r.table->RouteOf(&twenty_nine), RobotId(0));
-  EXPECT_EQ(r.stateless->Route(RobotId(0), &one).search_at, Robots({1}));
+  EXPECT_EQ(r.table()->RouteOf(&one), RobotId(1));
+  EXPECT_EQ(r.table()->RouteOf(&nineteen), RobotId(0));
+  EXPECT_EQ(r.table()->RouteOf(&twenty_nine), RobotId(0));
+  EXPECT_EQ(Stateless(r).strategy->Route(RobotId(0), &one).search_at, Robots({1}));
 }
 
 TEST_F(LptTest, LptTrainTakesTheLoadsFromTheTrainingSet) {
@@ -138,8 +165,8 @@ TEST_F(LptTest, LptTrainTakesTheLoadsFromTheTrainingSet) {
   training_ = Column({1, 1, 1, 29});
   const RunRouting r = Build("lpt_c2_train", 2);
   const float one = 1, nineteen = 19;
-  EXPECT_EQ(r.table->RouteOf(&one), RobotId(0));
-  EXPECT_EQ(r.table->RouteOf(&nineteen), RobotId(1));
+  EXPECT_EQ(r.table()->RouteOf(&one), RobotId(0));
+  EXPECT_EQ(r.table()->RouteOf(&nineteen), RobotId(1));
 }
 
 TEST_F(LptTest, ReclusteringStartsFromItsTableAndCarriesItsParameters) {
@@ -147,14 +174,15 @@ TEST_F(LptTest, ReclusteringStartsFromItsTableAndCarriesItsParameters) {
   training_ = Column({1, 1, 1, 29});
   deployment_ = DescriptorMatrix::Constant(200, 1, 5.0f);
   const RunRouting r = Build("recluster_c2_p50", 2);
-  ASSERT_TRUE(r.recluster);
-  EXPECT_EQ(r.recluster->clusters_per_robot, 2);
-  EXPECT_EQ(r.recluster->period, 50);
-  EXPECT_EQ(r.recluster->seed, RunSeed(1, 2, 0));
-  ASSERT_NE(r.table, nullptr);
+  const ReclusterFamily& f = FamilyOf<ReclusterFamily>(r);
+  EXPECT_EQ(f.params.clusters_per_robot, 2);
+  EXPECT_EQ(f.params.period, 50);
+  EXPECT_EQ(f.params.seed, RunSeed(1, 2, 0));
+  ASSERT_NE(r.table(), nullptr);
+  EXPECT_EQ(f.table.get(), r.table());
   const float nineteen = 19;
-  EXPECT_EQ(r.table->RouteOf(&nineteen), RobotId(1));  // lpt_c2_train's table, as above
-  EXPECT_EQ(r.team->num_robots(), 2);
+  EXPECT_EQ(r.table()->RouteOf(&nineteen), RobotId(1));  // lpt_c2_train's table, as above
+  EXPECT_EQ(f.team->num_robots(), 2);
 }
 
 TEST_F(RunRoutingTest, CentroidFilesMustHaveKRows) {
@@ -182,7 +210,8 @@ TEST(SampleTables, ClusterWhereTheDeploymentIs) {
   for (int i = 0; i < 40; ++i) deployment(i, 0) = i < 20 ? 0.0f : 100.0f;
   const DescriptorMatrix training = DescriptorMatrix::Constant(10, 1, 50.0f);
   const StrategyInputs in = Inputs(training, deployment);
-  const auto table = BuildRunRouting(ParseStrategy("sample_c2"), in, 2, 0).table;
+  const RunRouting routing = BuildRunRouting(ParseStrategy("sample_c2"), in, 2, 0);
+  const CentroidTable* table = routing.table();
   EXPECT_EQ(table->num_centroids(), 2);
   const float a = 1, b = 99;
   EXPECT_NE(table->RouteOf(&a), table->RouteOf(&b));
@@ -198,13 +227,15 @@ TEST(BalancedTables, SplitTheTrainingSetIntoEqualClusters) {
   const DescriptorMatrix training = Lopsided();
   const DescriptorMatrix deployment = DescriptorMatrix::Constant(10, 1, 50.0f);
   const StrategyInputs in = Inputs(training, deployment);
-  const auto balanced = BuildRunRouting(ParseStrategy("balanced_c1"), in, 2, 0).table;
+  const RunRouting balanced_routing = BuildRunRouting(ParseStrategy("balanced_c1"), in, 2, 0);
+  const CentroidTable* balanced = balanced_routing.table();
   ASSERT_EQ(balanced->num_centroids(), 2);
   const float one = 1, thirty = 30, hundred = 100;
   EXPECT_NE(balanced->RouteOf(&thirty), balanced->RouteOf(&one));
   EXPECT_EQ(balanced->RouteOf(&thirty), balanced->RouteOf(&hundred));
   // The paper's table on the same training set sends 30 with 1.
-  const auto paper = BuildRunRouting(ParseStrategy("replicate_0.1"), in, 2, 0).table;
+  const RunRouting paper_routing = BuildRunRouting(ParseStrategy("replicate_0.1"), in, 2, 0);
+  const CentroidTable* paper = paper_routing.table();
   EXPECT_EQ(paper->RouteOf(&thirty), paper->RouteOf(&one));
   EXPECT_NE(paper->RouteOf(&thirty), paper->RouteOf(&hundred));
 }
@@ -218,16 +249,16 @@ TEST(BalancedTables, BalancedSampleSplitsTheDeploymentSample) {
   const DescriptorMatrix training = DescriptorMatrix::Constant(10, 1, -7.0f);
   const StrategyInputs in = Inputs(training, deployment);
   const RunRouting r = BuildRunRouting(ParseStrategy("balanced_sample_c1+replicate_0.5_r5"), in, 2, 0);
-  ASSERT_EQ(r.table->num_centroids(), 2);
+  ASSERT_EQ(r.table()->num_centroids(), 2);
   const float one = 1, thirty = 30, hundred = 100;
-  EXPECT_NE(r.table->RouteOf(&thirty), r.table->RouteOf(&one));
-  EXPECT_EQ(r.table->RouteOf(&thirty), r.table->RouteOf(&hundred));
+  EXPECT_NE(r.table()->RouteOf(&thirty), r.table()->RouteOf(&one));
+  EXPECT_EQ(r.table()->RouteOf(&thirty), r.table()->RouteOf(&hundred));
   // Replication within 1.5 x the nearest distance: 30 is 10.33 from 40.33 and 29 from 1
   // (29 > 15.5): stored at one robot; 20 is 19 from 1 and 20.33 from 40.33 (<= 28.5): at both.
-  EXPECT_EQ(r.stateless->Route(RobotId(0), &thirty).store_at.size(), 1U);
+  EXPECT_EQ(Stateless(r).strategy->Route(RobotId(0), &thirty).store_at.size(), 1U);
   const float twenty = 20;
-  EXPECT_EQ(r.stateless->Route(RobotId(0), &twenty).store_at.size(), 2U);
-  EXPECT_EQ(r.stateless->Route(RobotId(0), &twenty).search_at.size(), 1U);
+  EXPECT_EQ(Stateless(r).strategy->Route(RobotId(0), &twenty).store_at.size(), 2U);
+  EXPECT_EQ(Stateless(r).strategy->Route(RobotId(0), &twenty).search_at.size(), 1U);
 }
 
 TEST(DeploymentSample, TakesEveryTwentiethFrame) {
@@ -248,16 +279,17 @@ TEST_F(RunRoutingTest, BagOfWordsStrategiesAssignWords) {
   bow.frames = {{{0, .5f}, {1, .5f}}, {{0, 1.f}}, {{2, 1.f}}};
   inputs_.bow = &bow;
   const RunRouting modulo = Build("bow_decentralized", 2);
-  ASSERT_TRUE(modulo.words);
-  EXPECT_EQ(modulo.words->OwnerOf(2), RobotId(0));
-  EXPECT_FALSE(modulo.table);
-  EXPECT_FALSE(modulo.team);
+  const auto& words = FamilyOf<BowFamily>(modulo).words;
+  ASSERT_TRUE(words);
+  EXPECT_EQ(words->OwnerOf(2), RobotId(0));
+  EXPECT_FALSE(modulo.table());
   const RunRouting df = Build("bow_decentralized_df", 2);
-  ASSERT_TRUE(df.words);
-  EXPECT_EQ(df.words->OwnerOf(0), RobotId(0));
-  EXPECT_EQ(df.words->OwnerOf(1), RobotId(1));
-  EXPECT_EQ(df.words->OwnerOf(2), RobotId(1));
-  EXPECT_FALSE(Build("bow_broadcast", 2).words);
+  const auto& df_words = FamilyOf<BowFamily>(df).words;
+  ASSERT_TRUE(df_words);
+  EXPECT_EQ(df_words->OwnerOf(0), RobotId(0));
+  EXPECT_EQ(df_words->OwnerOf(1), RobotId(1));
+  EXPECT_EQ(df_words->OwnerOf(2), RobotId(1));
+  EXPECT_FALSE(FamilyOf<BowFamily>(Build("bow_broadcast", 2)).words);
   inputs_.bow = nullptr;
   EXPECT_THROW(Build("bow_decentralized", 2), std::invalid_argument);
 }
@@ -271,19 +303,18 @@ TEST_F(RunRoutingTest, BagOfWordsStrategiesGiveTheirTeamPlan) {
   bow.frames = {{{0, .5f}, {1, .5f}}, {{0, 1.f}}, {{2, 1.f}}};
   inputs_.bow = &bow;
   const RunRouting modulo = Build("bow_decentralized", 3);
-  ASSERT_TRUE(modulo.bow_team);
-  EXPECT_EQ(modulo.bow_team->robots, 3);
-  ASSERT_TRUE(modulo.bow_team->words);
-  EXPECT_EQ(modulo.bow_team->words->OwnerOf(2), RobotId(2));
-  const RunRouting broadcast = Build("bow_broadcast", 3);
-  ASSERT_TRUE(broadcast.bow_team);
-  EXPECT_TRUE(broadcast.bow_team->broadcast());
+  const BowTeamPlan& plan = FamilyOf<BowFamily>(modulo).team;
+  EXPECT_EQ(plan.robots, 3);
+  ASSERT_TRUE(plan.words);
+  EXPECT_EQ(plan.words->OwnerOf(2), RobotId(2));
+  EXPECT_EQ(plan.words, FamilyOf<BowFamily>(modulo).words);  // the distributed index itself
+  EXPECT_TRUE(FamilyOf<BowFamily>(Build("bow_broadcast", 3)).team.broadcast());
   const RunRouting central = Build("bow_centralized", 3);
-  ASSERT_TRUE(central.bow_team);
-  EXPECT_FALSE(central.words);  // the static protocol's reference keeps its own index
-  ASSERT_TRUE(central.bow_team->words);
-  for (const int w : {0, 1, 2}) EXPECT_EQ(central.bow_team->words->OwnerOf(w), RobotId(0)) << w;
-  EXPECT_FALSE(Build("broadcast", 3).bow_team);
+  const BowFamily& c = FamilyOf<BowFamily>(central);
+  EXPECT_FALSE(c.words);  // the static protocol's reference keeps its own index
+  ASSERT_TRUE(c.team.words);
+  for (const int w : {0, 1, 2}) EXPECT_EQ(c.team.words->OwnerOf(w), RobotId(0)) << w;
+  EXPECT_EQ(Build("broadcast", 3).As<BowFamily>(), nullptr);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "agents/algorithms/ids.h"
@@ -314,7 +315,7 @@ struct Team {
   SharedInputs inputs;
   int robots = 0;
   StrategySpec strategy;
-  RunRouting routing;
+  std::optional<RunRouting> routing;  // LoadTeam builds it
   std::int64_t key = 0;
 };
 
@@ -351,11 +352,14 @@ Team LoadTeam(const AgentProcessOptions& o, ExperimentConfig config) {
   CheckDescriptorsFitTheWire(t.inputs.deployment, o.config.string());
   if (o.robot >= t.robots) throw std::invalid_argument("--robot " + std::to_string(o.robot) + " is not in a team of " + std::to_string(t.robots));
   // Built by every process from the same inputs, so the whole team routes alike.
-  t.routing = BuildRunRouting(t.strategy, StrategyInputsOf(t.inputs), t.robots, o.run);
-  t.key = TeamKey(t.config, t.inputs.deployment, t.routing.table.get(), t.routing.bow_team ? &t.inputs.bow : nullptr,
-                  t.strategy.name, t.robots, o.run, o.team_nonce);
+  t.routing.emplace(BuildRunRouting(t.strategy, StrategyInputsOf(t.inputs), t.robots, o.run));
+  t.key = TeamKey(t.config, t.inputs.deployment, t.routing->table(),
+                  t.routing->As<BowFamily>() != nullptr ? &t.inputs.bow : nullptr, t.strategy.name, t.robots, o.run,
+                  o.team_nonce);
   // The process announces the heartbeats (DVPR_STATUS, every kAnnouncePeriod); failover listens.
-  if (t.routing.failover != nullptr) t.routing.failover->UseProcessHeartbeats(t.key);
+  if (StatelessFamily* f = t.routing->As<StatelessFamily>(); f != nullptr && f->failover != nullptr) {
+    f->failover->UseProcessHeartbeats(t.key);
+  }
   return t;
 }
 
@@ -412,13 +416,16 @@ std::unique_ptr<TeamAgent> MakeAgent(const AgentProcessOptions& o, const Team& t
   const Dataset& data = t.inputs.deployment;
   const FrameStream frames{&data.descriptors, range.begin, range.size(), data.fps};
   GeometricVerifier verifier = PoseOracle(data.trajectory.positions, t.config.evaluation.radius_m);
-  if (t.routing.bow_team) {
-    const AgentSetup setup{RobotId(o.robot), t.routing.bow_team->robots, t.config.agent, frames};
-    return std::make_unique<BowRobotAgent>(setup, transport, *t.routing.bow_team, t.inputs.bow.frames,
-                                           std::move(verifier));
-  }
-  const AgentSetup setup{RobotId(o.robot), t.routing.team->num_robots(), t.config.agent, frames};
-  return std::make_unique<RobotAgent>(setup, transport, t.routing.team->MakeAgentRouting(), std::move(verifier));
+  return t.routing->Visit(
+      [&](const BowFamily& f) -> std::unique_ptr<TeamAgent> {
+        const AgentSetup setup{RobotId(o.robot), f.team.robots, t.config.agent, frames};
+        return std::make_unique<BowRobotAgent>(setup, transport, f.team, t.inputs.bow.frames, std::move(verifier));
+      },
+      [&](const auto& descriptor) -> std::unique_ptr<TeamAgent> {
+        const AgentSetup setup{RobotId(o.robot), descriptor.team->num_robots(), t.config.agent, frames};
+        return std::make_unique<RobotAgent>(setup, transport, descriptor.team->MakeAgentRouting(),
+                                            std::move(verifier));
+      });
 }
 
 // `dropout:` in a real team: the robot's process kills itself at that agent time, as the

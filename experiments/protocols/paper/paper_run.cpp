@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iterator>
 #include <memory>
+#include <stdexcept>
 
 #include "experiments/config/config.h"
 #include "experiments/protocols/paper/static_bow.h"
@@ -58,15 +59,18 @@ PaperRunResult PaperStrategyRun(const StrategySpec& spec, const RunSpec& run, co
                                 const StrategyInputs& inputs, const PaperProtocolParams& params) {
   const RunRouting routing = BuildRunRouting(spec, inputs, run.robots, run.run);
   const DescriptorMatrix& deployment = evaluator.deployment().descriptors;
-  PaperRunResult r;
-  if (spec.paper_method()) {
-    r = EvaluatePaperRun(evaluator, *routing.table, params, run.run);
-  } else if (routing.recluster) {
-    r = EvaluateRecluster(evaluator, PlanStaticRecluster(deployment, routing.table, *routing.recluster), spec.name,
-                          params.keep_curves);
-  } else {
-    r = EvaluateRouting(evaluator, *routing.stateless, spec.name, params.keep_curves);
-  }
+  PaperRunResult r = routing.Visit(
+      [&](const StatelessFamily& f) {
+        return spec.paper_method() ? EvaluatePaperRun(evaluator, *f.table, params, run.run)
+                                   : EvaluateRouting(evaluator, *f.strategy, spec.name, params.keep_curves);
+      },
+      [&](const ReclusterFamily& f) {
+        return EvaluateRecluster(evaluator, PlanStaticRecluster(deployment, f.table, f.params), spec.name,
+                                 params.keep_curves);
+      },
+      [&](const BowFamily&) -> PaperRunResult {
+        throw std::logic_error("PaperStrategyRun: " + spec.name + " is a bow_ strategy (AppendBowRun)");
+      });
   r.row.key = run.Key(spec.name);
   r.row.seed = params.centroids_pattern.empty() ? RunSeed(params.seed, run.robots, run.run) : 0;
   for (auto& load : r.per_robot) load.key = r.row.key;
@@ -80,7 +84,9 @@ PaperRunResult PaperStrategyRun(const StrategySpec& spec, const RunSpec& run, co
 void AppendBowRun(const StrategySpec& strategy, const RunSpec& spec, const BowEvaluator& bow,
                   const StrategyInputs& inputs, RunOutput& out) {
   const RunRouting routing = BuildRunRouting(strategy, inputs, spec.robots, spec.run);
-  BowRunResult r = routing.words ? bow.Evaluate(*routing.words, strategy.name, false)
+  const BowFamily* family = routing.As<BowFamily>();
+  if (family == nullptr) throw std::logic_error("AppendBowRun: " + strategy.name + " is not a bow_ strategy");
+  BowRunResult r = family->words ? bow.Evaluate(*family->words, strategy.name, false)
                                  : bow.Reference(strategy.name, spec.robots,
                                                  strategy.bow == StrategySpec::Bow::kBroadcast);
   r.paper.row.key = spec.Key(strategy.name);
@@ -105,8 +111,9 @@ void AppendDescriptorTraffic(const StrategySpec& strategy, const RunSpec& spec, 
     r = DescriptorQueryTraffic(nullptr, spec.robots, x);
   } else {
     const RunRouting routing = BuildRunRouting(strategy, inputs, spec.robots, spec.run);
-    if (routing.stateless == nullptr) return;  // re-clustering: its traffic is the simulation's to count
-    r = DescriptorQueryTraffic(routing.stateless, spec.robots, x);
+    const StatelessFamily* family = routing.As<StatelessFamily>();
+    if (family == nullptr) return;  // re-clustering: its traffic is the simulation's to count
+    r = DescriptorQueryTraffic(family->strategy, spec.robots, x);
   }
   r.bow.key = spec.Key(strategy.name);
   out.bow.push_back(r.bow);

@@ -149,7 +149,7 @@ PaperRunResult RunPaperRun(const PaperEvaluator& evaluator, const DescriptorMatr
   inputs.centroids = static_cast<const RunCentroidParams&>(params);
   const RunRouting paper = BuildRunRouting(ParseStrategy("decentralized"), inputs, robots, run);
   const double kmeans_s = SecondsSince(start);
-  PaperRunResult result = EvaluatePaperRun(evaluator, *paper.table, params, run);
+  PaperRunResult result = EvaluatePaperRun(evaluator, *paper.table(), params, run);
   result.timings.kmeans_s = kmeans_s;
   return result;
 }

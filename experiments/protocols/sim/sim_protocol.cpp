@@ -146,8 +146,9 @@ RunFunction MakeSimRun(const SharedInputs& in) {
     const auto run_one = [&](const StrategySpec& strategy) {
       params.outputs.lcm_log = log_dir.empty() ? std::filesystem::path() : log_dir / LogName(spec, strategy.name);
       const RunRouting routing = BuildRunRouting(strategy, run_inputs, spec.robots, spec.run);
-      SimRunLog log = routing.bow_team ? RunBowSimulation(*data, bow->frames, *routing.bow_team, params)
-                                       : RunSimulation(*data, *routing.team, params);
+      SimRunLog log = routing.Visit(
+          [&](const BowFamily& f) { return RunBowSimulation(*data, bow->frames, f.team, params); },
+          [&](const auto& descriptor) { return RunSimulation(*data, *descriptor.team, params); });
       SimRunSummary summary = SummarizeSimRun(log, data->trajectory.positions, config->evaluation.radius_m,
                                               config->evaluation.suppression_frames);
       return std::make_pair(std::move(log), std::move(summary));
