@@ -1,0 +1,53 @@
+#pragma once
+// The radio's parameters (config: network.model radio, network.radio; docs/network_model.md):
+// which propagation model decides who hears whom, and its numbers. Distances are metres on the
+// ground plane of the trajectory's frame (KITTI's x and z: y points down).
+//
+// The log-distance defaults are ns-3's LogDistancePropagationLossModel (exponent 3, 46.6777 dB
+// at 1 m: free space at 5.15 GHz) with ns-3's default transmit power for Wi-Fi (16.0206 dBm,
+// 40 mW) and a receiver sensitivity of -82 dBm (802.11a's minimum for 6 Mbit/s); with them a
+// transmission is heard up to 10^((16.0206 - 46.6777 + 82) / 30) = 51.5 m.
+#include <string_view>
+
+namespace dvpr {
+
+enum class PropagationKind { kRange, kLogDistance };
+
+// "range" | "log_distance"; Parse throws std::invalid_argument "unknown value '<name>'
+// (expected one of: range, log_distance)".
+PropagationKind ParsePropagationKind(std::string_view name);
+std::string_view ToString(PropagationKind kind);
+
+struct LogDistanceParams {
+  double exponent = 3.0;
+  double reference_distance_m = 1.0;
+  double reference_loss_db = 46.6777;
+  double tx_power_dbm = 16.0206;
+  double sensitivity_dbm = -82.0;
+  // Standard deviation of log-normal shadowing (dB; 0: none). One draw per unordered pair and
+  // window of shadowing_window_s seconds, from the run's seeded stream, so both directions of a
+  // pair and every transmission in a window see the same value and runs stay deterministic.
+  double shadowing_db = 0.0;
+  double shadowing_window_s = 1.0;
+
+  // The largest distance at which a transmission is heard without shadowing (metres).
+  double MeanRangeM() const;
+  // Throws std::invalid_argument "<field>: ..." ("exponent: must be in [1, 10], got 0.5").
+  void Validate() const;
+  bool operator==(const LogDistanceParams&) const = default;
+};
+
+struct RadioParams {
+  static constexpr double kMaxRangeM = 1e9;  // the pose loader's range: farther says nothing more
+
+  PropagationKind propagation = PropagationKind::kRange;
+  double range_m = 200.0;  // range: heard iff the ground-plane distance is at most this
+  LogDistanceParams log_distance;
+
+  // Throws std::invalid_argument "<field>: ..." ("range: must be in (0, 1e9] metres, got -3",
+  // "log_distance.exponent: ...").
+  void Validate() const;
+  bool operator==(const RadioParams&) const = default;
+};
+
+}  // namespace dvpr
