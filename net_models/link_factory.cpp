@@ -9,6 +9,7 @@
 #include "net_models/lossy_link.h"
 #include "net_models/param_checks.h"
 #include "net_models/point_to_point_link.h"
+#include "net_models/radio_link.h"
 #include "net_models/shared_medium_link.h"
 
 namespace dvpr {
@@ -26,10 +27,13 @@ SharedMediumParams ToSharedMedium(const NetworkModelParams& p) {
   return SharedMediumParams{p.bandwidth, p.latency, p.queue_packets};
 }
 
-constexpr std::array<std::pair<LinkModelKind, std::string_view>, 3> kNames{{
+RadioLinkParams ToRadio(const NetworkModelParams& p) { return RadioLinkParams{p.bandwidth, p.latency, p.queue_packets}; }
+
+constexpr std::array<std::pair<LinkModelKind, std::string_view>, 4> kNames{{
     {LinkModelKind::kIdeal, "ideal"},
     {LinkModelKind::kPointToPoint, "point_to_point"},
     {LinkModelKind::kSharedMedium, "shared_medium"},
+    {LinkModelKind::kRadio, "radio"},
 }};
 
 void ValidateLink(const LinkOverrideParams& o, std::size_t i, LinkModelKind model, int nodes) {
@@ -84,6 +88,7 @@ void NetworkModelParams::Validate(int nodes) const {
   wire.Validate();  // its fields (mtu, link_framing) sit at the top of a network section
   ValidateNested("loss.", [&] { loss.Validate(); });
   for (std::size_t i = 0; i < links.size(); ++i) ValidateLink(links[i], i, model, nodes);
+  if (model == LinkModelKind::kRadio) ValidateNested("radio.", [&] { radio.Validate(); });
 }
 
 std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int nodes, std::uint64_t run_seed) {
@@ -97,6 +102,7 @@ std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int n
     case LinkModelKind::kSharedMedium:
       link = std::make_unique<SharedMediumLink>(ToSharedMedium(params), nodes);
       break;
+    case LinkModelKind::kRadio: link = std::make_unique<RadioLink>(ToRadio(params), nodes); break;
   }
   std::vector<PairLossOverride> loss_overrides;
   for (const auto& o : params.links) {

@@ -9,13 +9,15 @@
 
 #include "net_models/link_model.h"
 #include "net_models/loss_params.h"
+#include "net_models/next_hop_routing.h"
+#include "net_models/radio_params.h"
 #include "net_models/wire_format.h"
 
 namespace dvpr {
 
-enum class LinkModelKind { kIdeal, kPointToPoint, kSharedMedium };
+enum class LinkModelKind { kIdeal, kPointToPoint, kSharedMedium, kRadio };
 
-// The one spelling of each kind: "ideal" | "point_to_point" | "shared_medium". Parse throws
+// The one spelling of each kind: "ideal" | "point_to_point" | "shared_medium" | "radio". Parse throws
 // std::invalid_argument "unknown value '<name>' (expected one of: ...)" for anything else.
 LinkModelKind ParseLinkModelKind(std::string_view name);
 std::string_view ToString(LinkModelKind kind);
@@ -47,13 +49,16 @@ struct NetworkModelParams {
   WireParams wire;  // mtu, link framing
   LossParams loss;  // for every pair unless overridden
   std::vector<LinkOverrideParams> links;
+  RadioParams radio;  // model radio: who hears whom (the stack's propagation, MakeNetworkStack)
+  RoutingKind routing = RoutingKind::kDirect;  // which way a copy goes (the stack's routing)
 
   // Throws std::invalid_argument "<field>: ..." naming the value, with the
   // fields spelled as in a config's network section ("bandwidth", "mtu",
   // "loss.p", "links[0].latency"): a bandwidth, latency or queue outside its
   // range above, an MTU outside WireParams', a probability outside [0, 1], an override naming a
-  // node outside [0, nodes) or its own link, or a bandwidth/latency override
-  // on a model other than point_to_point.
+  // node outside [0, nodes) or its own link, a bandwidth/latency override
+  // on a model other than point_to_point, or (model radio) radio parameters out of range
+  // ("radio.range").
   void Validate(int nodes) const;
   bool operator==(const NetworkModelParams&) const = default;
 };

@@ -190,19 +190,25 @@ void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::v
       continue;
     }
     ++p.refs;
-    pending.push_back(PendingCopy{dst, copy, outcomes_[i].arrival});
+    pending.push_back(PendingCopy{dst, hops_[i], copy, outcomes_[i].arrival});
   }
-  if (!observers_.empty()) NotifyMedium(p, use);
+  if (!observers_.empty()) NotifyMedium(p, src, use);
   if (p.refs == 0) {
     ReleasePayload(slot);
     return;
   }
-  // One event per arrival time (usually one for all), the copies sorted by time; stably, so
-  // destination order within a time.
+  ScheduleCopies(slot, 0);
+}
+
+// One event per arrival time (usually one for all), for the slot's copies from `from` on, sorted
+// by time; stably, so destination order within a time.
+void Network::ScheduleCopies(std::uint32_t slot, std::uint32_t from) {
+  std::vector<PendingCopy>& pending = pending_[slot];
   const auto by_time = [](const PendingCopy& a, const PendingCopy& b) { return a.arrival < b.arrival; };
-  if (!std::is_sorted(pending.begin(), pending.end(), by_time)) std::stable_sort(pending.begin(), pending.end(), by_time);
+  const auto begin = pending.begin() + from;
+  if (!std::is_sorted(begin, pending.end(), by_time)) std::stable_sort(begin, pending.end(), by_time);
   const auto count = static_cast<std::uint32_t>(pending.size());
-  for (std::uint32_t first = 0; first < count;) {
+  for (std::uint32_t first = from; first < count;) {
     const SimTime at = pending[first].arrival;
     std::uint32_t end = first + 1;
     while (end < count && pending[end].arrival == at) ++end;
@@ -211,12 +217,62 @@ void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::v
   }
 }
 
+// Copies that reached their destination are delivered, in destination order; those that reached
+// a relay are sent on by it, after the deliveries, one transmission per relay.
 void Network::DeliverCopies(std::uint32_t slot, std::uint32_t first, std::uint32_t end) {
+  std::vector<PendingCopy> relayed;  // allocates only on a network that relays
   for (std::uint32_t k = first; k < end; ++k) {
     // Indexed each time: a delivery may send, and new slots move the vectors (not their contents).
     const PendingCopy c = pending_[slot][k];
-    Deliver(slot, c.dst, c.copy);
+    if (c.at == c.dst) {
+      Deliver(slot, c.dst, c.copy);
+    } else {
+      relayed.push_back(c);
+    }
   }
+  if (relayed.empty()) return;
+  std::stable_sort(relayed.begin(), relayed.end(),
+                   [](const PendingCopy& a, const PendingCopy& b) { return a.at < b.at; });
+  for (std::size_t i = 0; i < relayed.size();) {
+    std::size_t j = i + 1;
+    while (j < relayed.size() && relayed[j].at == relayed[i].at) ++j;
+    Relay(slot, std::span<const PendingCopy>(relayed).subspan(i, j - i));
+    i = j;
+  }
+}
+
+// The relay `copies.front().at` sends the copies it holds on towards their destinations: its own
+// transmission (its queue, its radio, its bytes), routed again from where it is. A copy that
+// cannot go on is dropped here and counted against its original pair.
+void Network::Relay(std::uint32_t slot, std::span<const PendingCopy> copies) {
+  const SimTime now = sim_.Now();
+  const NodeId at = copies.front().at;
+  Payload& p = payloads_[slot];
+  dsts_.clear();
+  for (const PendingCopy& c : copies) dsts_.push_back(c.dst);
+  frames_.clear();
+  AppendLinkFrames(Bytes(static_cast<std::int64_t>(p.bytes.size())),
+                   static_cast<std::int64_t>(ChannelName(p.channel).size()), wire_, frames_);
+  const LinkModel::MediumUse use = TransmitFrom(at, now, senders_[static_cast<std::size_t>(at.value)]);
+  if (!observers_.empty()) NotifyMedium(p, at, use);
+  const auto from = static_cast<std::uint32_t>(pending_[slot].size());
+  std::uint32_t dropped = 0;
+  for (std::size_t i = 0; i < copies.size(); ++i) {
+    const PendingCopy& c = copies[i];
+    if (outcomes_[i].drop == DropReason::kNone) {
+      pending_[slot].push_back(PendingCopy{c.dst, hops_[i], c.copy, outcomes_[i].arrival});
+      continue;
+    }
+    ++pairs_.At(p.src, c.dst).dropped;
+    if (!observers_.empty()) {
+      const MessageCopy m = CopyOf(p, c.dst, c.copy);
+      for (NetworkObserver* o : observers_) o->OnDropped(m, now, outcomes_[i].drop);
+    }
+    ++dropped;
+  }
+  if (pending_[slot].size() > from) ScheduleCopies(slot, from);
+  // Last: releasing the last reference frees the slot.
+  for (std::uint32_t k = 0; k < dropped; ++k) ReleasePayload(slot);
 }
 
 // Fills outcomes_ for dsts_ and frames_, asking the stack's layers in turn: routing (which copies
@@ -229,49 +285,60 @@ LinkModel::MediumUse Network::TransmitFrom(NodeId src, SimTime now, NodeCounters
     return {};
   }
   const LinkModel::MediumUse use = TransmitRouted(LinkTransmission{src, dsts_, now, frames_});
-  ApplyPropagation(src, now);
   sender.transmissions += use.transmissions;
   sender.medium_bytes += use.bytes.value();
   return use;
 }
 
-// The medium access gets the copies that have a route; a copy without one never goes on the
-// medium (DropReason::kNoRoute). A copy whose next hop is another node would be relayed: no
-// model of this network answers that yet, and the relay's transmissions are not modelled.
+// The routing model names each copy's next hop (hops_); the medium access carries the message to
+// the distinct next hops of the copies that have one (a copy without a route never goes on the
+// medium: DropReason::kNoRoute), and the propagation model says which of them hear it. A copy
+// whose next hop is not its destination goes on from that relay when it arrives there (Relay).
 LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t) {
   hops_.resize(dsts_.size());
   stack_.routing->NextHops(t.src, dsts_, t.now, nodes_, hops_);
-  bool direct = true;
+  if (std::equal(hops_.begin(), hops_.end(), dsts_.begin())) {  // one hop each: the usual case
+    const LinkModel::MediumUse use = stack_.access->Transmit(t, outcomes_);
+    ApplyPropagation(t.src, dsts_, t.now, outcomes_);
+    return use;
+  }
+  receivers_.clear();
+  hop_slot_.resize(dsts_.size());
+  receiver_index_.resize(static_cast<std::size_t>(nodes_), -1);
   for (std::size_t i = 0; i < dsts_.size(); ++i) {
-    if (hops_[i] == dsts_[i]) continue;
-    if (hops_[i] != kNoRoute) {
-      throw std::logic_error("Network: routing '" + std::string(stack_.routing->Name()) + "' relays " +
-                             std::to_string(t.src.value) + "->" + std::to_string(dsts_[i].value) + " through node " +
-                             std::to_string(hops_[i].value) + "; relaying is not modelled yet");
+    if (hops_[i] == kNoRoute) {
+      hop_slot_[i] = -1;
+      continue;
     }
-    direct = false;
+    int& index = receiver_index_[static_cast<std::size_t>(hops_[i].value)];
+    if (index < 0) {
+      index = static_cast<int>(receivers_.size());
+      receivers_.push_back(hops_[i]);
+    }
+    hop_slot_[i] = index;
   }
-  if (direct) return stack_.access->Transmit(t, outcomes_);
-  routed_.clear();
-  for (std::size_t i = 0; i < dsts_.size(); ++i) {
-    if (hops_[i] != kNoRoute) routed_.push_back(dsts_[i]);
-  }
-  routed_outcomes_.resize(routed_.size());
+  for (const NodeId r : receivers_) receiver_index_[static_cast<std::size_t>(r.value)] = -1;
+  routed_outcomes_.resize(receivers_.size());
   LinkModel::MediumUse use;
-  if (!routed_.empty()) use = stack_.access->Transmit(LinkTransmission{t.src, routed_, t.now, t.frames}, routed_outcomes_);
-  for (std::size_t i = 0, k = 0; i < dsts_.size(); ++i) {
-    outcomes_[i] = hops_[i] == kNoRoute ? LinkDelivery{t.now, DropReason::kNoRoute} : routed_outcomes_[k++];
+  if (!receivers_.empty()) {
+    use = stack_.access->Transmit(LinkTransmission{t.src, receivers_, t.now, t.frames}, routed_outcomes_);
+    ApplyPropagation(t.src, receivers_, t.now, routed_outcomes_);
+  }
+  for (std::size_t i = 0; i < dsts_.size(); ++i) {
+    outcomes_[i] = hop_slot_[i] < 0 ? LinkDelivery{t.now, DropReason::kNoRoute}
+                                    : routed_outcomes_[static_cast<std::size_t>(hop_slot_[i])];
   }
   return use;
 }
 
 // A copy the medium delivered but its receiver does not hear is lost out of range; one it hears
 // arrives the propagation delay later. The full mesh changes nothing.
-void Network::ApplyPropagation(NodeId src, SimTime now) {
-  receptions_.resize(dsts_.size());
-  stack_.propagation->Reach(src, dsts_, now, receptions_);
-  for (std::size_t i = 0; i < dsts_.size(); ++i) {
-    LinkDelivery& d = outcomes_[i];
+void Network::ApplyPropagation(NodeId src, std::span<const NodeId> receivers, SimTime now,
+                               std::span<LinkDelivery> outcomes) {
+  receptions_.resize(receivers.size());
+  stack_.propagation->Reach(src, receivers, now, receptions_);
+  for (std::size_t i = 0; i < receivers.size(); ++i) {
+    LinkDelivery& d = outcomes[i];
     if (d.drop != DropReason::kNone) continue;
     if (!receptions_[i].reaches) {
       d.drop = DropReason::kOutOfRange;
@@ -281,10 +348,10 @@ void Network::ApplyPropagation(NodeId src, SimTime now) {
   }
 }
 
-void Network::NotifyMedium(const Payload& p, const LinkModel::MediumUse& use) {
+void Network::NotifyMedium(const Payload& p, NodeId sender, const LinkModel::MediumUse& use) {
   const MediumReport m{.message = p.message,
                        .sent = p.sent,
-                       .src = p.src,
+                       .src = sender,
                        .channel = p.channel,
                        .channel_name = ChannelName(p.channel),
                        .transmissions = use.transmissions,

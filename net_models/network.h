@@ -197,12 +197,16 @@ class Network {
   void Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::vector<std::uint8_t>&& payload);
   LinkModel::MediumUse TransmitFrom(NodeId src, SimTime now, NodeCounters& sender);
   LinkModel::MediumUse TransmitRouted(const LinkTransmission& t);
-  void ApplyPropagation(NodeId src, SimTime now);
-  void NotifyMedium(const Payload& p, const LinkModel::MediumUse& use);
+  void ApplyPropagation(NodeId src, std::span<const NodeId> receivers, SimTime now, std::span<LinkDelivery> outcomes);
+  // sender: the node whose transmission it was (the message's source, or a relay).
+  void NotifyMedium(const Payload& p, NodeId sender, const LinkModel::MediumUse& use);
   std::uint32_t AllocatePayload(std::vector<std::uint8_t>&& bytes);
   void ReleasePayload(std::uint32_t slot);
-  // Delivers copies [first, end) of the slot's pending copies (they arrive now).
+  struct PendingCopy;
+  void ScheduleCopies(std::uint32_t slot, std::uint32_t from);
+  // Delivers copies [first, end) of the slot's pending copies (they arrive now), or relays them.
   void DeliverCopies(std::uint32_t slot, std::uint32_t first, std::uint32_t end);
+  void Relay(std::uint32_t slot, std::span<const PendingCopy> copies);
   void Deliver(std::uint32_t slot, NodeId dst, std::uint64_t copy);
   MessageCopy CopyOf(const Payload& p, NodeId dst, std::uint64_t copy) const;
   void NotifySent(const Payload& p, NodeId dst, std::uint64_t copy, DropReason drop);
@@ -224,12 +228,15 @@ class Network {
   std::vector<SimTime> offline_from_;
   std::vector<SimTime> offline_until_;
 
-  // A copy on its way: where to, its number (MessageCopy::copy), when it arrives.
+  // A copy on its way: where to, the node it arrives at next (dst, or a relay), its number
+  // (MessageCopy::copy), when it arrives there.
   struct PendingCopy {
     NodeId dst;
+    NodeId at;
     std::uint64_t copy = 0;
     SimTime arrival;
   };
+  static_assert(sizeof(PendingCopy) <= 24);
 
   std::vector<Payload> payloads_;
   // By payload slot: its copies on their way, by arrival time, then destination order (the
@@ -250,8 +257,10 @@ class Network {
   std::vector<LinkDelivery> outcomes_;
   std::vector<NodeId> hops_;
   std::vector<Reception> receptions_;
-  std::vector<NodeId> routed_;              // the destinations that have a route, when some have none
-  std::vector<LinkDelivery> routed_outcomes_;
+  std::vector<NodeId> receivers_;           // the distinct next hops, when some copy is relayed or has no route
+  std::vector<LinkDelivery> routed_outcomes_;  // by receiver
+  std::vector<int> hop_slot_;               // by destination: its next hop's index in receivers_, -1: no route
+  std::vector<int> receiver_index_;         // by node: its index in receivers_ while they are gathered, else -1
 };
 
 }  // namespace dvpr

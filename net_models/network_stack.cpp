@@ -7,6 +7,9 @@
 #include "net_models/direct_routing.h"
 #include "net_models/fixed_mobility.h"
 #include "net_models/full_mesh_propagation.h"
+#include "net_models/log_distance_propagation.h"
+#include "net_models/range_propagation.h"
+#include "net_models/shortest_path_routing.h"
 
 namespace dvpr {
 
@@ -21,12 +24,36 @@ void NetworkStack::CompleteDefaults(int nodes) {
   if (!routing) routing = std::make_unique<DirectRouting>();
 }
 
+namespace {
+
+// The radio's propagation over the robots' positions (radio_params.h).
+std::unique_ptr<PropagationModel> MakeRadioPropagation(const RadioParams& radio, const MobilityModel& mobility,
+                                                       std::uint64_t run_seed) {
+  switch (radio.propagation) {
+    case PropagationKind::kRange: return std::make_unique<RangePropagation>(mobility, radio.range_m);
+    case PropagationKind::kLogDistance:
+      return std::make_unique<LogDistancePropagation>(mobility, radio.log_distance, run_seed);
+  }
+  throw std::logic_error("MakeRadioPropagation: unknown propagation kind");
+}
+
+}  // namespace
+
 NetworkStack MakeNetworkStack(const NetworkModelParams& params, int nodes, std::uint64_t run_seed,
                               std::unique_ptr<MobilityModel> mobility) {
+  if (params.model == LinkModelKind::kRadio && !mobility) {
+    throw std::invalid_argument("model: radio needs the robots' positions over time (a trajectory)");
+  }
   NetworkStack stack;
   stack.mobility = std::move(mobility);
   stack.access = MakeLinkModel(params, nodes, run_seed);
   stack.CompleteDefaults(nodes);
+  if (params.model == LinkModelKind::kRadio) {
+    stack.propagation = MakeRadioPropagation(params.radio, *stack.mobility, run_seed);
+  }
+  if (params.routing == RoutingKind::kShortestPath) {
+    stack.routing = std::make_unique<ShortestPathRouting>(*stack.propagation, nodes);
+  }
   return stack;
 }
 

@@ -33,9 +33,11 @@ struct NetworkStack {
 };
 
 // The configured stack for `nodes` nodes: the link model of `params` (MakeLinkModel, seeded by
-// run_seed) as the medium access over `mobility` (null: fixed at the origin), the full mesh and
-// direct routing. Where the next models plug in: a propagation, medium access or routing kind
-// in NetworkModelParams, made here.
+// run_seed) as the medium access over `mobility` (null: fixed at the origin); the full mesh,
+// or for model radio the propagation of params.radio (range or log_distance) over `mobility`,
+// which a radio requires (std::invalid_argument without it); the routing of params.routing
+// (direct, or shortest_path over that propagation). Where the next models plug in: a medium
+// access or routing kind in NetworkModelParams, made here.
 NetworkStack MakeNetworkStack(const NetworkModelParams& params, int nodes, std::uint64_t run_seed,
                               std::unique_ptr<MobilityModel> mobility = nullptr);
 

@@ -6,6 +6,20 @@
 
 namespace dvpr {
 
+RoutingKind ParseRoutingKind(std::string_view name) {
+  if (name == "direct") return RoutingKind::kDirect;
+  if (name == "shortest_path") return RoutingKind::kShortestPath;
+  throw std::invalid_argument("unknown value '" + std::string(name) + "' (expected one of: direct, shortest_path)");
+}
+
+std::string_view ToString(RoutingKind kind) {
+  switch (kind) {
+    case RoutingKind::kDirect: return "direct";
+    case RoutingKind::kShortestPath: return "shortest_path";
+  }
+  return "unknown";
+}
+
 void NextHopRouting::NextHops(NodeId at, std::span<const NodeId> dsts, SimTime now, int nodes,
                               std::span<NodeId> hops) {
   if (hops.size() != dsts.size()) throw std::logic_error("NextHopRouting::NextHops: one hop slot per destination expected");

@@ -18,6 +18,13 @@
 
 namespace dvpr {
 
+// The routing models a config names (network.routing; MakeNetworkStack builds them):
+// "direct" (direct_routing.h) | "shortest_path" (shortest_path_routing.h). Parse throws
+// std::invalid_argument "unknown value '<name>' (expected one of: direct, shortest_path)".
+enum class RoutingKind { kDirect, kShortestPath };
+RoutingKind ParseRoutingKind(std::string_view name);
+std::string_view ToString(RoutingKind kind);
+
 // The answer for a destination that cannot be reached now: the copy is dropped
 // (DropReason::kNoRoute). Store-and-forward is a model that answers a hop instead.
 inline constexpr NodeId kNoRoute{-1};

@@ -2,9 +2,11 @@
 
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 namespace dvpr {
 namespace {
@@ -146,6 +148,8 @@ constexpr std::array<UnitEntry, 7> kDurationUnits = {{
     {"min", 60'000'000'000}, {"h", 3'600'000'000'000},
 }};
 
+constexpr std::array<UnitEntry, 4> kLengthUnits = {{{"mm", 1}, {"cm", 10}, {"m", 1000}, {"km", 1000000}}};
+
 constexpr std::array<UnitEntry, 7> kByteUnits = {{
     {"B", 1}, {"kB", 1000}, {"MB", 1000000}, {"GB", 1000000000},
     {"KiB", kKi}, {"MiB", kKi * kKi}, {"GiB", kKi * kKi * kKi},
@@ -189,6 +193,18 @@ Bytes ParseBytes(std::string_view text) {
   return Bytes(ParseQuantity(text, "byte size", kByteUnits,
                              "a number and a size unit: B, kB, MB, GB, KiB, MiB or GiB (e.g. \"64KiB\")",
                              "B"));
+}
+
+double ParseMeters(std::string_view text) {
+  const std::int64_t mm = ParseQuantity(text, "length", kLengthUnits,
+                                        "a number and a length unit: mm, cm, m or km (e.g. \"200m\")", "mm");
+  return static_cast<double>(mm) / 1000.0;
+}
+
+std::string FormatMeters(double metres) {
+  const auto mm = static_cast<std::int64_t>(std::llround(metres * 1000.0));
+  if (mm != 0 && mm % 1000 == 0) return std::to_string(mm / 1000) + "m";
+  return std::to_string(mm) + "mm";
 }
 
 std::string ToString(DataRate rate) {

@@ -78,6 +78,13 @@ SimTime ParseDuration(std::string_view text);
 // SI kB/MB/GB (x1000), IEC KiB/MiB/GiB (x1024). "KB" is rejected as ambiguous.
 Bytes ParseBytes(std::string_view text);
 
+// A length in metres, whole millimetres: "200m", "1.5km", "250 m", "30cm", "5mm". Negative
+// values are rejected.
+double ParseMeters(std::string_view text);
+// A length for ParseMeters, in the largest unit that keeps it whole: "200m", "1.5km" is
+// "1500m", "0.5m" is "500mm".
+std::string FormatMeters(double metres);
+
 // Human-readable forms, in the largest unit that keeps the value whole
 // ("10Mbps", "1500B", "64KiB"); they parse back to the same value.
 std::string ToString(DataRate rate);

@@ -8,8 +8,9 @@
 #
 # BUILD_DIR is a configured and built tree (scripts/test.sh's build/asan). Exit 1 when any run
 # of any test failed; each failing run's output is kept in BUILD_DIR/stress/<test>.<i>.log.
-# FIRST numbers the runs FIRST .. FIRST + N - 1, so that two instances can share the work (and
-# the load: `... 25 2 1 & ... 25 0 26`) without overwriting each other's logs.
+# FIRST numbers the runs FIRST .. FIRST + N - 1, so that a stress run cut short can be continued
+# later without overwriting the logs it kept. Never run two instances at once: the tests' own
+# temporary folders are named after the test, so two runs of one test would share them.
 set -u
 build=${1:?usage: scripts/stress_timing_tests.sh BUILD_DIR [N] [LOAD]}
 runs=${2:-50}

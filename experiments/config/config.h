@@ -106,6 +106,10 @@ struct NetworkConfig {
   std::vector<Bytes> mtu{NetworkModelParams{}.wire.mtu};
   LossParams loss;
   std::vector<LinkOverrideParams> links;  // src != dst, each in a team of the sweep at run time
+  // model radio: one variant per entry (network.radio, a `range` list gives one entry per range);
+  // a radio section without model radio is refused when the config is read.
+  std::vector<RadioParams> radio{RadioParams{}};
+  RoutingKind routing = RoutingKind::kDirect;  // network.routing, for every variant
   bool operator==(const NetworkConfig&) const = default;
 };
 

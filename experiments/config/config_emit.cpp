@@ -106,6 +106,29 @@ void EmitSweep(YAML::Emitter& out, const SweepConfig& s) {
   EmitList(out, s.strategies, [](const StrategySpec& x) { return x.name; });
 }
 
+// The entries differ only in range (ReadRadio), so one map with the list of ranges reads back.
+void EmitRadio(YAML::Emitter& out, const std::vector<RadioParams>& radio) {
+  const RadioParams& r = radio.front();
+  out << YAML::Key << "radio" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "propagation" << YAML::Value << Name(ToString(r.propagation));
+  if (r.propagation == PropagationKind::kRange) {
+    out << YAML::Key << "range" << YAML::Value;
+    EmitList(out, radio, [](const RadioParams& x) { return FormatMeters(x.range_m); });
+  } else {
+    const LogDistanceParams& l = r.log_distance;
+    out << YAML::Key << "log_distance" << YAML::Value << YAML::Flow << YAML::BeginMap
+        << YAML::Key << "exponent" << YAML::Value << Num(l.exponent)
+        << YAML::Key << "reference_distance" << YAML::Value << FormatMeters(l.reference_distance_m)
+        << YAML::Key << "reference_loss_db" << YAML::Value << Num(l.reference_loss_db)
+        << YAML::Key << "tx_power_dbm" << YAML::Value << Num(l.tx_power_dbm)
+        << YAML::Key << "sensitivity_dbm" << YAML::Value << Num(l.sensitivity_dbm)
+        << YAML::Key << "shadowing_db" << YAML::Value << Num(l.shadowing_db)
+        << YAML::Key << "shadowing_window" << YAML::Value
+        << FormatDuration(SimTime::Seconds(l.shadowing_window_s)) << YAML::EndMap;
+  }
+  out << YAML::EndMap;
+}
+
 void EmitNetwork(YAML::Emitter& out, const NetworkConfig& n) {
   out << YAML::Key << "network" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "model" << YAML::Value;
@@ -132,7 +155,12 @@ void EmitNetwork(YAML::Emitter& out, const NetworkConfig& n) {
     }
     out << YAML::EndMap;
   }
-  out << YAML::EndSeq << YAML::EndMap;
+  out << YAML::EndSeq;
+  // Only a radio config has the section (and only a routed one the routing), so every other
+  // config's emitted form stays as it was.
+  if (std::find(n.model.begin(), n.model.end(), LinkModelKind::kRadio) != n.model.end()) EmitRadio(out, n.radio);
+  if (n.routing != RoutingKind::kDirect) out << YAML::Key << "routing" << YAML::Value << Name(ToString(n.routing));
+  out << YAML::EndMap;
 }
 
 void EmitRest(YAML::Emitter& out, const ExperimentConfig& c) {

@@ -2,6 +2,7 @@
 // service, dropout, outputs.
 #include <algorithm>
 #include <cstdint>
+#include <string>
 
 #include "experiments/config/config.h"
 #include "experiments/config/config_reader.h"
@@ -83,12 +84,72 @@ std::vector<T> ReadList(const Field& f, ReadOne read_one) {
   return values;
 }
 
+double ReadRange(const Field& f) {
+  const std::string& text = f.String();
+  double metres = 0;
+  try {
+    metres = ParseMeters(text);
+  } catch (const std::invalid_argument& e) {
+    f.Fail(std::string("expected a length with a unit, e.g. 200m (") + e.what() + ")");
+  }
+  if (!(metres > 0) || metres > RadioParams::kMaxRangeM) f.Fail("must be in (0m, 1000000km], got " + text);
+  return metres;
+}
+
+LogDistanceParams ReadLogDistance(const Field& f) {
+  LogDistanceParams l;
+  if (!f.present()) return l;
+  if (!f.node().IsMap()) f.Fail("expected a map such as {exponent: 3.0, sensitivity_dbm: -82}");
+  f.ExpectMap({"exponent", "reference_distance", "reference_loss_db", "tx_power_dbm", "sensitivity_dbm",
+               "shadowing_db", "shadowing_window"});
+  if (auto c = f.Child("exponent"); c.present()) l.exponent = c.Double();
+  if (auto c = f.Child("reference_distance"); c.present()) l.reference_distance_m = ReadRange(c);
+  if (auto c = f.Child("reference_loss_db"); c.present()) l.reference_loss_db = c.Double();
+  if (auto c = f.Child("tx_power_dbm"); c.present()) l.tx_power_dbm = c.Double();
+  if (auto c = f.Child("sensitivity_dbm"); c.present()) l.sensitivity_dbm = c.Double();
+  if (auto c = f.Child("shadowing_db"); c.present()) l.shadowing_db = c.Double();
+  if (auto c = f.Child("shadowing_window"); c.present()) {
+    l.shadowing_window_s = c.Duration(SimTime::Millis(1), SimTime::Seconds(86400)).ToSeconds();
+  }
+  return l;
+}
+
+// network.radio: {propagation, range, log_distance}; `range` may be a list (one variant each).
+std::vector<RadioParams> ReadRadio(const Field& f) {
+  if (!f.present()) return {RadioParams{}};
+  if (!f.node().IsMap()) f.Fail("expected a map such as {propagation: range, range: 200m}");
+  f.ExpectMap({"propagation", "range", "log_distance"});
+  RadioParams base;
+  if (auto c = f.Child("propagation"); c.present()) base.propagation = c.Named(ParsePropagationKind);
+  const Field range = f.Child("range");
+  const Field log_distance = f.Child("log_distance");
+  if (base.propagation == PropagationKind::kLogDistance && range.present()) {
+    range.Fail("applies to propagation range; log_distance's reach follows from its own keys");
+  }
+  if (base.propagation == PropagationKind::kRange && log_distance.present()) {
+    log_distance.Fail("applies to propagation log_distance, not range");
+  }
+  base.log_distance = ReadLogDistance(log_distance);
+  std::vector<RadioParams> out;
+  if (base.propagation == PropagationKind::kRange && range.present()) {
+    for (const double metres : ReadList<double>(range, ReadRange)) {
+      RadioParams r = base;
+      r.range_m = metres;
+      out.push_back(r);
+    }
+  } else {
+    out.push_back(base);
+  }
+  for (const RadioParams& r : out) f.Validate(r);
+  return out;
+}
+
 }  // namespace
 
 NetworkConfig ReadNetwork(const Field& f) {
   NetworkConfig n;
   if (!f.present()) return n;
-  f.ExpectMap({"model", "bandwidth", "latency", "queue_packets", "mtu", "loss", "links"});
+  f.ExpectMap({"model", "bandwidth", "latency", "queue_packets", "mtu", "loss", "links", "radio", "routing"});
   if (auto c = f.Child("model"); c.present()) {
     n.model = ReadList<LinkModelKind>(c, [](const Field& i) { return i.Named(ParseLinkModelKind); });
   }
@@ -109,6 +170,13 @@ NetworkConfig ReadNetwork(const Field& f) {
   }
   n.loss = ReadLoss(f.Child("loss"));
   n.links = ReadLinks(f.Child("links"));
+  if (const Field radio = f.Child("radio"); radio.present()) {
+    if (std::find(n.model.begin(), n.model.end(), LinkModelKind::kRadio) == n.model.end()) {
+      radio.Fail("applies to model radio, which network.model does not list");
+    }
+    n.radio = ReadRadio(radio);
+  }
+  if (auto c = f.Child("routing"); c.present()) n.routing = c.Named(ParseRoutingKind);
   return n;
 }
 

@@ -8,11 +8,12 @@ namespace dvpr {
 namespace {
 
 NetworkVariant MakeVariant(int index, const NetworkConfig& n, LinkModelKind model, DataRate rate,
-                           SimTime latency, int queue, Bytes mtu) {
+                           SimTime latency, int queue, Bytes mtu, const RadioParams& radio) {
   NetworkVariant v;
   v.index = index;
   v.params = NetworkModelParams{.model = model, .bandwidth = rate, .latency = latency, .queue_packets = queue,
-                                .wire = WireParams{.mtu = mtu}, .loss = n.loss, .links = n.links};
+                                .wire = WireParams{.mtu = mtu}, .loss = n.loss, .links = n.links, .radio = radio,
+                                .routing = n.routing};
   v.label.variant = index;
   v.label.model = ToString(model);
   v.label.loss = ToString(n.loss.model);
@@ -24,6 +25,11 @@ NetworkVariant MakeVariant(int index, const NetworkConfig& n, LinkModelKind mode
     if (n.queue_packets.size() > 1) v.name += " q" + std::to_string(queue);
     if (n.mtu.size() > 1) v.name += " mtu" + std::to_string(mtu.value());
   }
+  if (model == LinkModelKind::kRadio) {
+    v.name += radio.propagation == PropagationKind::kRange ? " range " + FormatMeters(radio.range_m)
+                                                           : " " + std::string(ToString(radio.propagation));
+  }
+  if (n.routing != RoutingKind::kDirect) v.name += " " + std::string(ToString(n.routing));
   if (n.loss.model != LossModelKind::kNone) v.name += " loss:" + v.label.loss;
   return v;
 }
@@ -35,15 +41,19 @@ std::vector<NetworkVariant> ExpandNetworks(const NetworkConfig& n) {
   for (LinkModelKind model : n.model) {
     if (model == LinkModelKind::kIdeal) {
       out.push_back(MakeVariant(static_cast<int>(out.size()), n, model, n.bandwidth.front(),
-                                n.latency.front(), n.queue_packets.front(), n.mtu.front()));
+                                n.latency.front(), n.queue_packets.front(), n.mtu.front(), RadioParams{}));
       continue;
     }
-    for (DataRate rate : n.bandwidth) {
-      for (SimTime latency : n.latency) {
-        for (int queue : n.queue_packets) {
-          for (Bytes mtu : n.mtu) {
-            out.push_back(MakeVariant(static_cast<int>(out.size()), n, model, rate, latency,
-                                      queue, mtu));
+    // Only the radio sweeps its radio entries; every other model has the default one, unused.
+    const std::vector<RadioParams> radios =
+        model == LinkModelKind::kRadio ? n.radio : std::vector<RadioParams>{RadioParams{}};
+    for (const RadioParams& radio : radios) {
+      for (DataRate rate : n.bandwidth) {
+        for (SimTime latency : n.latency) {
+          for (int queue : n.queue_packets) {
+            for (Bytes mtu : n.mtu) {
+              out.push_back(MakeVariant(static_cast<int>(out.size()), n, model, rate, latency, queue, mtu, radio));
+            }
           }
         }
       }

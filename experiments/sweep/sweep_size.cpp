@@ -28,9 +28,12 @@ std::string GiB(double bytes) { return Figure(bytes / (1024.0 * 1024.0 * 1024.0)
 double NetworkVariants(const NetworkConfig& n) {
   double count = 0;
   for (const LinkModelKind model : n.model) {
+    const double radios = model == LinkModelKind::kRadio ? static_cast<double>(n.radio.size()) : 1.0;
     count += model == LinkModelKind::kIdeal ? 1.0
-                                            : static_cast<double>(n.bandwidth.size()) * static_cast<double>(n.latency.size()) *
-                                                  static_cast<double>(n.queue_packets.size()) * static_cast<double>(n.mtu.size());
+                                            : radios * static_cast<double>(n.bandwidth.size()) *
+                                                  static_cast<double>(n.latency.size()) *
+                                                  static_cast<double>(n.queue_packets.size()) *
+                                                  static_cast<double>(n.mtu.size());
   }
   return count;
 }

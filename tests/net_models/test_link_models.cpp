@@ -7,6 +7,7 @@
 #include "net_models/ideal_link.h"
 #include "net_models/link_factory.h"
 #include "net_models/point_to_point_link.h"
+#include "net_models/radio_link.h"
 #include "net_models/shared_medium_link.h"
 
 namespace dvpr {
@@ -132,6 +133,39 @@ TEST_F(LinkModelTest, SharedMediumQueueIsPerSender) {
   EXPECT_EQ(Send(link, 1, {NodeId(2)}, SimTime::Zero(), frame547)[0].drop, DropReason::kNone);  // own queue
 }
 
+// The radio: each robot its own transmitter (two senders at once do not wait for each other,
+// unlike the shared medium above), a broadcast one transmission, the queue per robot.
+TEST_F(LinkModelTest, RadioSendersDoNotWaitForEachOther) {
+  RadioLink link(RadioLinkParams{DataRate::Mbps(1), kLatency, 100}, 3);
+  const auto a = Send(link, 0, {NodeId(2)}, SimTime::Zero(), frame547);
+  const auto b = Send(link, 1, {NodeId(2)}, SimTime::Zero(), frame547);
+  EXPECT_EQ(a[0].arrival, SimTime::Micros(9376));  // 4.376 ms on the air + 5 ms
+  EXPECT_EQ(b[0].arrival, SimTime::Micros(9376));
+  // Robot 0's second message waits for its first: 2 x 4.376 + 5 ms.
+  EXPECT_EQ(Send(link, 0, {NodeId(1)}, SimTime::Zero(), frame547)[0].arrival, SimTime::Micros(13752));
+  // Later, with the radio idle again: 10 ms + 4.376 + 5.
+  EXPECT_EQ(Send(link, 1, {NodeId(0)}, SimTime::Millis(10), frame547)[0].arrival, SimTime::Micros(19376));
+}
+
+TEST_F(LinkModelTest, RadioBroadcastIsOneTransmission) {
+  RadioLink link(RadioLinkParams{DataRate::Mbps(1), kLatency, 100}, 4);
+  const std::vector<Bytes> two{Bytes(547), Bytes(100)};  // 4.376 ms + 0.8 ms
+  const auto out = Send(link, 0, {NodeId(1), NodeId(2), NodeId(3)}, SimTime::Zero(), two);
+  for (const auto& d : out) EXPECT_EQ(d.arrival, SimTime::Micros(4376 + 800 + 5000));
+  EXPECT_EQ(used.transmissions, 1u);
+  EXPECT_EQ(used.bytes, Bytes(647));
+}
+
+TEST_F(LinkModelTest, RadioQueueIsPerRobotAndAFullOneDropsForEveryDestination) {
+  RadioLink link(RadioLinkParams{DataRate::Mbps(1), kLatency, 1}, 3);
+  EXPECT_EQ(Send(link, 0, {NodeId(2)}, SimTime::Zero(), frame547)[0].drop, DropReason::kNone);  // on air
+  EXPECT_EQ(Send(link, 0, {NodeId(2)}, SimTime::Zero(), frame547)[0].drop, DropReason::kNone);  // waits
+  const auto full = Send(link, 0, {NodeId(1), NodeId(2)}, SimTime::Zero(), frame547);
+  EXPECT_EQ(full[0].drop, DropReason::kQueueFull);
+  EXPECT_EQ(full[1].drop, DropReason::kQueueFull);
+  EXPECT_EQ(Send(link, 1, {NodeId(2)}, SimTime::Zero(), frame547)[0].drop, DropReason::kNone);  // own queue
+}
+
 TEST_F(LinkModelTest, IdealDeliversAtOnce) {
   IdealLink link;
   const auto out = Send(link, 0, {NodeId(1), NodeId(2)}, SimTime::Millis(3), frame547);
@@ -185,7 +219,7 @@ TEST(LinkParams, BadValuesNameTheFieldAndTheValue) {
   p.model = LinkModelKind::kSharedMedium;
   p.links.push_back({NodeId(0), NodeId(1), DataRate::Mbps(1), std::nullopt, std::nullopt});
   ExpectInvalid([&] { p.Validate(3); }, "links[0]: bandwidth/latency overrides need model point_to_point");
-  ExpectInvalid([] { ParseLinkModelKind("token_ring"); }, "unknown value 'token_ring' (expected one of: ideal, point_to_point, shared_medium)");
+  ExpectInvalid([] { ParseLinkModelKind("token_ring"); }, "unknown value 'token_ring' (expected one of: ideal, point_to_point, shared_medium, radio)");
   ExpectInvalid([] { ParseLossModelKind("sometimes"); }, "unknown value 'sometimes' (expected one of: none, bernoulli, gilbert_elliott)");
   ExpectInvalid([] { PointToPointLink(PointToPointParams{DataRate(), kLatency, 1, {}}, 2); }, "rate: a data rate must be positive");
   ExpectInvalid([] { SharedMediumLink(SharedMediumParams{DataRate(), kLatency, 1}, 2); }, "rate: a data rate must be positive");
@@ -227,6 +261,8 @@ TEST(LinkFactory, BuildsTheNamedModelWithLossWhenAsked) {
   EXPECT_EQ(MakeLinkModel(p, 3, 1)->Name(), "point_to_point");
   p.model = ParseLinkModelKind("shared_medium");
   EXPECT_EQ(MakeLinkModel(p, 3, 1)->Name(), "shared_medium");
+  p.model = ParseLinkModelKind("radio");
+  EXPECT_EQ(MakeLinkModel(p, 3, 1)->Name(), "radio");
   p.model = ParseLinkModelKind("ideal");
   p.loss.model = ParseLossModelKind("bernoulli");
   p.loss.bernoulli.p = 0.1;
@@ -237,10 +273,12 @@ TEST(LinkFactory, KindNamesAreTheOnesParsed) {
   EXPECT_EQ(ToString(LinkModelKind::kIdeal), "ideal");
   EXPECT_EQ(ToString(LinkModelKind::kPointToPoint), "point_to_point");
   EXPECT_EQ(ToString(LinkModelKind::kSharedMedium), "shared_medium");
+  EXPECT_EQ(ToString(LinkModelKind::kRadio), "radio");
   EXPECT_EQ(ToString(LossModelKind::kNone), "none");
   EXPECT_EQ(ToString(LossModelKind::kBernoulli), "bernoulli");
   EXPECT_EQ(ToString(LossModelKind::kGilbertElliott), "gilbert_elliott");
-  for (LinkModelKind k : {LinkModelKind::kIdeal, LinkModelKind::kPointToPoint, LinkModelKind::kSharedMedium}) {
+  for (LinkModelKind k :
+       {LinkModelKind::kIdeal, LinkModelKind::kPointToPoint, LinkModelKind::kSharedMedium, LinkModelKind::kRadio}) {
     EXPECT_EQ(ParseLinkModelKind(ToString(k)), k);
   }
   for (LossModelKind k : {LossModelKind::kNone, LossModelKind::kBernoulli, LossModelKind::kGilbertElliott}) {

@@ -176,14 +176,45 @@ TEST(NetworkStack, NoRouteToAnyDestinationPutsNothingOnTheMedium) {
   EXPECT_EQ(run.net.Sender(NodeId(0)).medium_bytes, 0);
 }
 
-TEST(NetworkStack, ARelayIsRefusedUntilRelayingIsModelled) {
-  StackRun run(Stack(nullptr, std::make_unique<TestRouting>(kNoRoute, NodeId(2), NodeId(1))));
-  try {
-    run.Broadcast();
-    FAIL() << "relayed";
-  } catch (const std::logic_error& e) {
-    EXPECT_STREQ(e.what(), "Network: routing 'test' relays 0->2 through node 1; relaying is not modelled yet");
+// From node 0 the way to node 2 is through node 1; every other hop is direct.
+class ThroughOne final : public NextHopRouting {
+ private:
+  void DoNextHops(NodeId at, std::span<const NodeId> dsts, SimTime, std::span<NodeId> hops) override {
+    for (std::size_t i = 0; i < dsts.size(); ++i) {
+      if (at == NodeId(0) && dsts[i] == NodeId(2)) hops[i] = NodeId(1);
+    }
   }
+  std::string_view DoName() const override { return "through_one"; }
+};
+
+TEST(NetworkStack, ARelayedCopyIsTheRelaysOwnTransmission) {
+  // 0's broadcast has one next hop, node 1, for both copies: one copy on link 0->1, arriving at
+  // 9.376 ms; node 1 takes its own and sends node 2's on, over link 1->2: 9.376 ms later.
+  StackRun run(Stack(nullptr, std::make_unique<ThroughOne>()));
+  run.Broadcast();
+  EXPECT_EQ(run.drops.lines,
+            (std::vector<std::string>{"0>1 delivered at 9376000ns", "0>2 delivered at 18752000ns"}));
+  EXPECT_EQ(run.net.Sender(NodeId(0)).transmissions, 1u);
+  EXPECT_EQ(run.net.Sender(NodeId(0)).medium_bytes, 547);
+  EXPECT_EQ(run.net.Sender(NodeId(1)).transmissions, 1u);  // the relay's bytes are its own
+  EXPECT_EQ(run.net.Sender(NodeId(1)).medium_bytes, 547);
+  EXPECT_EQ(run.net.Sender(NodeId(1)).published, 0u);
+  // The pair counts the message end to end: once, delivered.
+  EXPECT_EQ(run.net.Counters(NodeId(0), NodeId(2)).messages, 1u);
+  EXPECT_EQ(run.net.Counters(NodeId(0), NodeId(2)).delivered, 1u);
+  EXPECT_EQ(run.net.Counters(NodeId(1), NodeId(2)).messages, 0u);
+}
+
+TEST(NetworkStack, AnOfflineRelayDropsWhatItWouldSendOn) {
+  StackRun run(Stack(nullptr, std::make_unique<ThroughOne>()));
+  run.net.SetOffline(NodeId(1), SimTime::Millis(1));
+  run.Broadcast();
+  // Node 1's own copy arrives while it is offline (dropped at delivery); the relayed one is
+  // dropped when node 1 would send it on.
+  EXPECT_EQ(run.drops.lines,
+            (std::vector<std::string>{"0>1 at 9376000ns: offline", "0>2 at 9376000ns: offline"}));
+  EXPECT_EQ(run.net.Sender(NodeId(1)).transmissions, 0u);
+  EXPECT_EQ(run.net.Counters(NodeId(0), NodeId(2)).dropped, 1u);
 }
 
 TEST(NetworkStack, ANextHopThatIsNoNeighbourIsAnError) {

@@ -47,6 +47,27 @@ TEST(ParseDuration, RejectsUnitless) {
   EXPECT_THROW(ParseDuration("-1ms"), std::invalid_argument);
 }
 
+TEST(ParseMeters, AcceptsLengthUnitsToTheMillimetre) {
+  EXPECT_EQ(ParseMeters("200m"), 200.0);
+  EXPECT_EQ(ParseMeters("250 m"), 250.0);
+  EXPECT_EQ(ParseMeters("1.5km"), 1500.0);
+  EXPECT_EQ(ParseMeters("30cm"), 0.3);
+  EXPECT_EQ(ParseMeters("5mm"), 0.005);
+  EXPECT_EQ(ParseMeters("0.0004m"), 0.0);  // 0.4 mm rounds to 0 mm
+  EXPECT_EQ(FormatMeters(200.0), "200m");
+  EXPECT_EQ(FormatMeters(1500.0), "1500m");
+  EXPECT_EQ(FormatMeters(0.5), "500mm");
+  for (const double m : {200.0, 1500.0, 0.5, 0.001}) EXPECT_EQ(ParseMeters(FormatMeters(m)), m) << m;
+}
+
+TEST(ParseMeters, RejectsUnitlessNegativeAndUnknownUnits) {
+  EXPECT_THROW(ParseMeters("200"), std::invalid_argument);
+  EXPECT_THROW(ParseMeters("-1m"), std::invalid_argument);
+  EXPECT_THROW(ParseMeters("3 furlongs"), std::invalid_argument);
+  EXPECT_THROW(ParseMeters("nanm"), std::invalid_argument);
+  EXPECT_THROW(ParseMeters("1e3m"), std::invalid_argument);
+}
+
 TEST(ParseBytes, AcceptsSiAndIecUnits) {
   EXPECT_EQ(ParseBytes("64KiB"), Bytes(65'536));
   EXPECT_EQ(ParseBytes("1500B"), Bytes(1500));

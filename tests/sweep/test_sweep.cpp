@@ -36,6 +36,28 @@ TEST(Sweep, CrossProductCounts) {
   EXPECT_EQ(specs.back().strategies[1].name, "broadcast");
 }
 
+// The radio sweeps its ranges like bandwidths; other models have no radio entries.
+TEST(Sweep, RadioRangesAreVariantsOfTheRadioOnly) {
+  const ExperimentConfig c = Config(
+      "network: {model: [point_to_point, radio], bandwidth: [1Mbps, 10Mbps], "
+      "radio: {propagation: range, range: [100m, 0.3km]}}\n");
+  const auto v = ExpandNetworks(c.network);
+  ASSERT_EQ(v.size(), 2u + 2u * 2u);  // point_to_point per bandwidth, the radio per range and bandwidth
+  EXPECT_EQ(v[0].name, "point_to_point 1Mbps 2ms");
+  EXPECT_EQ(v[2].name, "radio 1Mbps 2ms range 100m");
+  EXPECT_EQ(v[3].name, "radio 10Mbps 2ms range 100m");
+  EXPECT_EQ(v[5].name, "radio 10Mbps 2ms range 300m");
+  EXPECT_EQ(v[5].params.model, LinkModelKind::kRadio);
+  EXPECT_EQ(v[5].params.radio.range_m, 300.0);
+  EXPECT_EQ(v[2].params.radio.range_m, 100.0);
+  const ExperimentConfig ld =
+      Config("network: {model: radio, radio: {propagation: log_distance, log_distance: {exponent: 2}}}\n");
+  const auto w = ExpandNetworks(ld.network);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].name, "radio 10Mbps 2ms log_distance");
+  EXPECT_EQ(w[0].params.radio.log_distance.exponent, 2.0);
+}
+
 TEST(Sweep, IdealNetworkIsOneVariant) {
   const ExperimentConfig c =
       Config("network: {model: [ideal, point_to_point], bandwidth: [1Mbps, 2Mbps, 3Mbps]}\n");

@@ -100,6 +100,14 @@ void CheckTeamSize(std::int64_t robots, std::int64_t frames) {
   }
 }
 
+void CheckRealNetwork(const ExperimentConfig& config, const std::string& origin) {
+  const auto& models = config.network.model;
+  if (std::find(models.begin(), models.end(), LinkModelKind::kRadio) != models.end()) {
+    throw std::invalid_argument(origin + ": network.model: radio is simulated only (dvpr run); real agents use the "
+                                "real network and do not emulate the radio's range yet");
+  }
+}
+
 AgentProcessOptions ParseAgentArgs(const std::vector<std::string>& args) {
   AgentProcessOptions o;
   OptionReader in(args);
@@ -350,6 +358,7 @@ Team LoadTeam(const AgentProcessOptions& o, ExperimentConfig config) {
   const auto frames = t.inputs.deployment.size();
   CheckTeamSize(t.robots, frames);
   CheckDescriptorsFitTheWire(t.inputs.deployment, o.config.string());
+  CheckRealNetwork(t.config, o.config.string());
   if (o.robot >= t.robots) throw std::invalid_argument("--robot " + std::to_string(o.robot) + " is not in a team of " + std::to_string(t.robots));
   // Built by every process from the same inputs, so the whole team routes alike.
   t.routing.emplace(BuildRunRouting(t.strategy, StrategyInputsOf(t.inputs), t.robots, o.run));

@@ -37,6 +37,10 @@ void CheckWallSeconds(const char* flag, double seconds, double low, bool low_ope
 // Throws std::invalid_argument unless a team of `robots` can split `frames` (2..frames, at
 // most 32767: the LCM messages' int16 robot ids).
 void CheckTeamSize(std::int64_t robots, std::int64_t frames);
+// Throws std::invalid_argument "<origin>: network.model: ..." when the config asks for the radio:
+// real agents talk over the real network, and do not emulate the radio's range yet, so a run
+// would silently be the full mesh.
+void CheckRealNetwork(const ExperimentConfig& config, const std::string& origin);
 
 struct AgentProcessOptions {
   std::filesystem::path config;

@@ -362,6 +362,7 @@ void WriteLaunchFiles(const std::filesystem::path& dir, const ExperimentConfig& 
 int RunLaunch(const LaunchOptions& o, std::ostream& out) {
   o.Validate();
   const ExperimentConfig config = LoadConfig(o.config, o.overrides);
+  CheckRealNetwork(config, o.config.string());
   const auto target = o.out.empty() ? std::filesystem::path("results") / (config.name + "_lcm") : o.out;
   // What every agent would find wrong is found here, once, before a process starts: the inputs
   // (each agent loads the same), the team size against the frames, the LCM URL.

@@ -1,0 +1,44 @@
+#pragma once
+// "radio": each robot has one radio (docs/network_model.md). A robot's messages are serialized
+// one after another at the bandwidth with the wire format's framing, through its own drop-tail
+// queue; a message for several robots (a broadcast) is ONE transmission that every robot in
+// range hears while it is sent. Who is in range is the stack's propagation model's question
+// (range, log_distance over the robots' positions), asked by the Network after this model.
+//
+// Radios do not contend here: two neighbours may transmit at once and both are heard, the
+// optimistic bound that a contending MAC (CSMA, 802.11 DCF) replaces behind the same seam.
+// `latency` is the fixed per-hop processing delay; the air's propagation delay comes from the
+// propagation model.
+#include <vector>
+
+#include "net_models/fifo_transmitter.h"
+#include "net_models/link_model.h"
+
+namespace dvpr {
+
+struct RadioLinkParams {
+  DataRate rate = DataRate::Mbps(10);
+  SimTime latency = SimTime::Millis(2);  // processing, per hop
+  int queue_packets = 100;               // per robot
+  // Throws std::invalid_argument "<field>: ..." naming the value.
+  void Validate() const;
+};
+
+class RadioLink final : public LinkModel {
+ public:
+  RadioLink(const RadioLinkParams& params, int nodes);
+
+ private:
+  struct Radio {
+    FifoTransmitter queue;
+    SimTime busy_until;
+  };
+
+  MediumUse DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) override;
+  std::string_view DoName() const override { return "radio"; }
+
+  RadioLinkParams params_;
+  std::vector<Radio> radios_;  // one per node
+};
+
+}  // namespace dvpr

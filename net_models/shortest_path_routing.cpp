@@ -1,0 +1,68 @@
+#include "net_models/shortest_path_routing.h"
+
+#include <deque>
+#include <stdexcept>
+#include <string>
+
+namespace dvpr {
+
+ShortestPathRouting::ShortestPathRouting(PropagationModel& propagation, int nodes, SimTime refresh)
+    : propagation_(propagation), nodes_(nodes), refresh_(refresh) {
+  if (nodes <= 0) throw std::invalid_argument("ShortestPathRouting: need at least one node, got " + std::to_string(nodes));
+  if (refresh <= SimTime::Zero()) throw std::invalid_argument("ShortestPathRouting: the refresh period must be positive");
+  heard_by_.resize(static_cast<std::size_t>(nodes));
+  first_hop_.resize(static_cast<std::size_t>(nodes));
+}
+
+void ShortestPathRouting::Refresh(SimTime now) {
+  const std::int64_t window = now.ns() / refresh_.ns();
+  if (window == window_) return;
+  window_ = window;
+  const SimTime start = SimTime::Nanos(window * refresh_.ns());
+  for (int u = 0; u < nodes_; ++u) {
+    receivers_.clear();
+    for (int v = 0; v < nodes_; ++v) {
+      if (v != u) receivers_.push_back(NodeId(v));
+    }
+    receptions_.assign(receivers_.size(), Reception{});
+    propagation_.Reach(NodeId(u), receivers_, start, receptions_);
+    std::vector<NodeId>& heard = heard_by_[static_cast<std::size_t>(u)];
+    heard.clear();
+    for (std::size_t i = 0; i < receivers_.size(); ++i) {
+      if (receptions_[i].reaches) heard.push_back(receivers_[i]);
+    }
+    first_hop_[static_cast<std::size_t>(u)].clear();
+  }
+}
+
+// Breadth-first from `at`, neighbours in ascending id: each node's first hop is that of the node
+// it was reached from (or itself when `at` hears it directly), so ties go to the lowest ids.
+const std::vector<NodeId>& ShortestPathRouting::FirstHops(NodeId at) {
+  std::vector<NodeId>& first = first_hop_[static_cast<std::size_t>(at.value)];
+  if (!first.empty()) return first;
+  first.assign(static_cast<std::size_t>(nodes_), kNoRoute);
+  std::deque<NodeId> queue;
+  for (const NodeId v : heard_by_[static_cast<std::size_t>(at.value)]) {
+    first[static_cast<std::size_t>(v.value)] = v;
+    queue.push_back(v);
+  }
+  while (!queue.empty()) {
+    const NodeId u = queue.front();
+    queue.pop_front();
+    for (const NodeId v : heard_by_[static_cast<std::size_t>(u.value)]) {
+      NodeId& hop = first[static_cast<std::size_t>(v.value)];
+      if (hop != kNoRoute || v == at) continue;
+      hop = first[static_cast<std::size_t>(u.value)];
+      queue.push_back(v);
+    }
+  }
+  return first;
+}
+
+void ShortestPathRouting::DoNextHops(NodeId at, std::span<const NodeId> dsts, SimTime now, std::span<NodeId> hops) {
+  Refresh(now);
+  const std::vector<NodeId>& first = FirstHops(at);
+  for (std::size_t i = 0; i < dsts.size(); ++i) hops[i] = first[static_cast<std::size_t>(dsts[i].value)];
+}
+
+}  // namespace dvpr

@@ -1,0 +1,90 @@
+// network.model radio and its network.radio section (docs/config.md): read (a `range` list is
+// one entry per range; tests/sweep expands them into network variants), written back only for
+// a radio config, and every bad value one error naming its key.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "experiments/config/config.h"
+
+namespace dvpr {
+namespace {
+
+ExperimentConfig Parse(const std::string& yaml) { return ParseConfig(yaml, DVPR_SOURCE_DIR, {}, "test.yaml"); }
+
+std::string ErrorOf(const std::string& yaml) {
+  try {
+    Parse(yaml);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(ConfigRadioTest, ARangeListIsOneEntryPerRange) {
+  const ExperimentConfig c = Parse(
+      "network: {model: [point_to_point, radio], bandwidth: 1Mbps, radio: {propagation: range, range: [100m, 0.3km]}}\n");
+  ASSERT_EQ(c.network.radio.size(), 2u);
+  EXPECT_EQ(c.network.radio[0].range_m, 100.0);
+  EXPECT_EQ(c.network.radio[1].range_m, 300.0);
+}
+
+TEST(ConfigRadioTest, LogDistanceKeysAreReadAndDefaultsAreNs3s) {
+  const ExperimentConfig c = Parse(
+      "network: {model: radio, radio: {propagation: log_distance, log_distance: {exponent: 2.5, "
+      "reference_distance: 2m, sensitivity_dbm: -90, shadowing_db: 4, shadowing_window: 500ms}}}\n");
+  ASSERT_EQ(c.network.radio.size(), 1u);
+  const LogDistanceParams& l = c.network.radio[0].log_distance;
+  EXPECT_EQ(c.network.radio[0].propagation, PropagationKind::kLogDistance);
+  EXPECT_EQ(l.exponent, 2.5);
+  EXPECT_EQ(l.reference_distance_m, 2.0);
+  EXPECT_EQ(l.reference_loss_db, 46.6777);  // not given: ns-3's default
+  EXPECT_EQ(l.tx_power_dbm, 16.0206);
+  EXPECT_EQ(l.sensitivity_dbm, -90.0);
+  EXPECT_EQ(l.shadowing_db, 4.0);
+  EXPECT_EQ(l.shadowing_window_s, 0.5);
+}
+
+TEST(ConfigRadioTest, RadioConfigReadsBackAndOthersAreWrittenWithoutTheSection) {
+  for (const char* yaml :
+       {"network: {model: radio, radio: {range: [150m, 1.5km]}, routing: shortest_path}\n",
+        "network: {model: radio, radio: {propagation: log_distance, log_distance: {shadowing_db: 2}}}\n"}) {
+    const ExperimentConfig c = Parse(yaml);
+    const std::string emitted = EmitConfig(c);
+    EXPECT_EQ(ParseConfig(emitted, "/nonexistent", {}, "config.yaml"), c) << emitted;
+  }
+  EXPECT_EQ(EmitConfig(Parse("{}")).find("radio"), std::string::npos);
+}
+
+TEST(ConfigRadioTest, BadRadioValuesNameTheirKey) {
+  const auto starts_with = [](const std::string& error, const std::string& prefix) {
+    EXPECT_EQ(error.rfind(prefix, 0), 0u) << error;
+  };
+  starts_with(ErrorOf("network: {model: radio, radio: {range: 0m}}\n"), "test.yaml: network.radio.range: must be in");
+  starts_with(ErrorOf("network: {model: radio, radio: {range: -5m}}\n"),
+              "test.yaml: network.radio.range: expected a length with a unit");
+  starts_with(ErrorOf("network: {model: radio, radio: {range: 200}}\n"),
+              "test.yaml: network.radio.range: expected a length with a unit");
+  starts_with(ErrorOf("network: {model: radio, radio: {range: .nan}}\n"),
+              "test.yaml: network.radio.range: expected a length with a unit");
+  starts_with(ErrorOf("network: {model: radio, radio: {range: [100m, 100m]}}\n"),
+              "test.yaml: network.radio.range[1]: listed twice");
+  starts_with(ErrorOf("network: {model: radio, radio: {propagation: two_ray}}\n"),
+              "test.yaml: network.radio.propagation: unknown value 'two_ray' (expected one of: range, log_distance)");
+  starts_with(ErrorOf("network: {model: radio, radio: {propagation: log_distance, range: 100m}}\n"),
+              "test.yaml: network.radio.range: applies to propagation range");
+  starts_with(ErrorOf("network: {model: radio, radio: {log_distance: {exponent: 3}}}\n"),
+              "test.yaml: network.radio.log_distance: applies to propagation log_distance");
+  starts_with(ErrorOf("network: {model: radio, radio: {propagation: log_distance, log_distance: {exponent: 0.5}}}\n"),
+              "test.yaml: network.radio.log_distance.exponent: ");
+  starts_with(ErrorOf("network: {model: radio, radio: {propagation: log_distance, log_distance: {gain: 3}}}\n"),
+              "test.yaml: network.radio.log_distance.gain: unknown key");
+  starts_with(ErrorOf("network: {model: point_to_point, radio: {range: 100m}}\n"),
+              "test.yaml: network.radio: applies to model radio, which network.model does not list");
+  starts_with(ErrorOf("network: {model: radio, radio: {colour: red}}\n"), "test.yaml: network.radio.colour: unknown key");
+  starts_with(ErrorOf("network: {model: radio, routing: flooding}\n"),
+              "test.yaml: network.routing: unknown value 'flooding' (expected one of: direct, shortest_path)");
+}
+
+}  // namespace
+}  // namespace dvpr
