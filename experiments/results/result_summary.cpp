@@ -5,6 +5,8 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 
 #include "experiments/results/result_writers.h"
 
@@ -238,6 +240,18 @@ RunResult ParseRunRow(const std::vector<std::string>& f, const std::string& wher
     r.key.network.bandwidth_bps = Parse<double>(f, 19, where);
     r.key.network.latency_ms = Parse<double>(f, 20, where);
     r.key.network.loss = f[21];
+    // The radio and the routing have no column of their own: the name ends with them.
+    const std::string base = NetworkName(r.key.network);
+    if (f[22].size() > base.size() + 1 && f[22].compare(0, base.size() + 1, base + " ") == 0) {
+      std::string rest = f[22].substr(base.size() + 1);
+      constexpr std::string_view kRouted = "shortest_path";
+      if (rest.size() >= kRouted.size() && rest.compare(rest.size() - kRouted.size(), kRouted.size(), kRouted) == 0) {
+        r.key.network.routing = std::string(kRouted);
+        rest.resize(rest.size() - kRouted.size());
+        if (!rest.empty() && rest.back() == ' ') rest.pop_back();
+      }
+      r.key.network.radio = rest;
+    }
   }
   // f[22] is the network's name, made from the fields above.
   r.duration_s = Parse<double>(f, 23, where);

@@ -84,6 +84,8 @@ std::string NetworkName(const NetworkLabel& n) {
   }
   if (!std::isnan(n.latency_ms)) name += " " + FormatDouble(n.latency_ms) + " ms";
   if (!n.loss.empty() && n.loss != "none") name += " " + n.loss + " loss";
+  if (!n.radio.empty()) name += " " + n.radio;
+  if (!n.routing.empty()) name += " " + n.routing;
   return name;
 }
 

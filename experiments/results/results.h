@@ -28,10 +28,12 @@ struct NetworkLabel {
   double bandwidth_bps = kNotApplicable;
   double latency_ms = kNotApplicable;
   std::string loss;           // none | bernoulli | gilbert_elliott
+  std::string radio;          // model radio: "range 200m" | "log_distance"; "" otherwise
+  std::string routing;        // "shortest_path"; "" for direct (the default)
 };
 
-// "point-to-point 10 Mbit/s 2 ms" (+ " bernoulli loss"): how the summary table, the CSVs'
-// network_name column and the figures' legends name a network variant; "" without a network.
+// "point-to-point 10 Mbit/s 2 ms" (+ " bernoulli loss", + " range 200m shortest_path" on a
+// radio): how the summary table, the CSVs' network_name column and the figures' legends name a network variant; "" without a network.
 // No commas, so a CSV field needs no quoting.
 std::string NetworkName(const NetworkLabel& network);
 

@@ -26,10 +26,14 @@ NetworkVariant MakeVariant(int index, const NetworkConfig& n, LinkModelKind mode
     if (n.mtu.size() > 1) v.name += " mtu" + std::to_string(mtu.value());
   }
   if (model == LinkModelKind::kRadio) {
-    v.name += radio.propagation == PropagationKind::kRange ? " range " + FormatMeters(radio.range_m)
-                                                           : " " + std::string(ToString(radio.propagation));
+    v.label.radio = radio.propagation == PropagationKind::kRange ? "range " + FormatMeters(radio.range_m)
+                                                                 : std::string(ToString(radio.propagation));
+    v.name += " " + v.label.radio;
   }
-  if (n.routing != RoutingKind::kDirect) v.name += " " + std::string(ToString(n.routing));
+  if (n.routing != RoutingKind::kDirect) {
+    v.label.routing = ToString(n.routing);
+    v.name += " " + v.label.routing;
+  }
   if (n.loss.model != LossModelKind::kNone) v.name += " loss:" + v.label.loss;
   return v;
 }

@@ -34,7 +34,8 @@ RunResult Sim(const std::string& strategy, int robots, int run, int variant, dou
   r.key = RunKey{.protocol = "sim", .strategy = strategy, .robots = robots, .run = run,
                  .network = NetworkLabel{.variant = variant,
                                          .model = variant == 0 ? "point_to_point" : "shared_medium",
-                                         .bandwidth_bps = 1e7, .latency_ms = 2, .loss = "none"}};
+                                         .bandwidth_bps = 1e7, .latency_ms = 2, .loss = "none",
+                                         .radio = "", .routing = ""}};
   r.relative_auc = 0.5;  // differs from every paper value: must not leak into the paper columns
   r.worst_balance_ratio = 7;
   r.bytes_per_query = bytes;

@@ -18,7 +18,8 @@ using dvpr::testing_support::Slurp;
 namespace fs = std::filesystem;
 
 NetworkLabel Net(int variant, const std::string& model, double bps) {
-  return NetworkLabel{.variant = variant, .model = model, .bandwidth_bps = bps, .latency_ms = 2, .loss = "none"};
+  return NetworkLabel{.variant = variant, .model = model, .bandwidth_bps = bps, .latency_ms = 2, .loss = "none",
+                      .radio = "", .routing = ""};
 }
 
 // A sim run with `query` and `reply` copy wire bytes, 1000 more of verification requests, 100

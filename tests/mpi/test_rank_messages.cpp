@@ -23,7 +23,7 @@ RunKey Key() {
   k.strategy = "multi_probe_2";
   k.robots = 7;
   k.run = 3;
-  k.network = NetworkLabel{2, "shared_medium", 1e7, 2.5, "gilbert_elliott"};
+  k.network = NetworkLabel{2, "shared_medium", 1e7, 2.5, "gilbert_elliott", "range 150m", "shortest_path"};
   return k;
 }
 

@@ -24,7 +24,7 @@ RunResult SimRow(int run, double rel) {
   RunResult r;
   r.key = RunKey{.protocol = "sim", .strategy = "decentralized", .robots = 4, .run = run,
                  .network = NetworkLabel{.variant = 1, .model = "point_to_point",
-                                         .bandwidth_bps = 1e6, .latency_ms = 5, .loss = "none"}};
+                                         .bandwidth_bps = 1e6, .latency_ms = 5, .loss = "none", .radio = "", .routing = ""}};
   r.seed = 99;
   r.auc = 0.5;
   r.auc_reference = 0.625;
@@ -128,15 +128,45 @@ TEST(ResultWriters, LinksCsvBytesByRole) {
 
 TEST(ResultWriters, NetworkNamesSayTheirParameters) {
   EXPECT_EQ(NetworkName(NetworkLabel{.variant = 3, .model = "shared_medium", .bandwidth_bps = 1e7,
-                                     .latency_ms = 2, .loss = "none"}),
+                                     .latency_ms = 2, .loss = "none", .radio = "", .routing = ""}),
             "shared medium 10 Mbit/s 2 ms");
   EXPECT_EQ(NetworkName(NetworkLabel{.variant = 0, .model = "point_to_point", .bandwidth_bps = 2.5e9,
-                                     .latency_ms = 0.5, .loss = "bernoulli"}),
+                                     .latency_ms = 0.5, .loss = "bernoulli", .radio = "", .routing = ""}),
             "point-to-point 2500 Mbit/s 0.5 ms bernoulli loss");
   EXPECT_EQ(NetworkName(NetworkLabel{.variant = 0, .model = "point_to_point", .bandwidth_bps = 64e3,
-                                     .latency_ms = 20, .loss = "none"}),
+                                     .latency_ms = 20, .loss = "none", .radio = "", .routing = ""}),
             "point-to-point 64 kbit/s 20 ms");
   EXPECT_EQ(NetworkName(NetworkLabel{}), "");
+  EXPECT_EQ(NetworkName(NetworkLabel{.variant = 2, .model = "radio", .bandwidth_bps = 1e7, .latency_ms = 2,
+                                     .loss = "none", .radio = "range 200m", .routing = "shortest_path"}),
+            "radio 10 Mbit/s 2 ms range 200m shortest_path");
+}
+
+// A radio's range and routing have no column of their own: runs.csv's network_name carries them
+// and reads back into the label (dvpr plot redraws the legends from it).
+TEST(ResultWriters, RadioLabelsReadBackFromTheNetworkName) {
+  const fs::path dir = fs::path(DVPR_TEST_TMP) / "writers_radio";
+  fs::remove_all(dir);
+  CreateOutputDir(dir);
+  RunResult a = SimRow(0, 0.8);
+  a.key.network.model = "radio";
+  a.key.network.radio = "range 200m";
+  a.key.network.routing = "shortest_path";
+  RunResult b = SimRow(1, 0.6);
+  b.key.network.model = "radio";
+  b.key.network.radio = "log_distance";
+  RunResult c = SimRow(2, 0.7);
+  c.key.network.routing = "shortest_path";
+  WriteRunsCsv(dir / "runs.csv", {a, b, c});
+  const auto rows = ReadRunsCsv(dir / "runs.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0].key.network.radio, "range 200m");
+  EXPECT_EQ(rows[0].key.network.routing, "shortest_path");
+  EXPECT_EQ(rows[1].key.network.radio, "log_distance");
+  EXPECT_EQ(rows[1].key.network.routing, "");
+  EXPECT_EQ(rows[2].key.network.radio, "");
+  EXPECT_EQ(rows[2].key.network.routing, "shortest_path");
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(CsvRow(rows[i]), CsvRow(std::vector<RunResult>{a, b, c}[i])) << i;
 }
 
 // The place-recognition ratio: broadcast over decentralized (query + reply copy wire) per query.
