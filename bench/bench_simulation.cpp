@@ -22,6 +22,7 @@ namespace {
 using bench::Kitti00;
 using bench::PeakRssMiB;
 using bench::PointToPoint;
+using bench::Radio;
 using bench::Table;
 
 // FNV-1a over every output of the run a change of speed must leave alone: each query record,
@@ -94,6 +95,21 @@ void BM_Kitti00_100Robots(benchmark::State& state, const char* strategy) {
 }
 BENCHMARK_CAPTURE(BM_Kitti00_100Robots, broadcast, "broadcast")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Kitti00_100Robots, decentralized, "decentralized")->Unit(benchmark::kMillisecond);
+
+// The 100-robot broadcast on radios of 200 m with shortest-path relays: the cost of positions,
+// propagation, routing and relays against the point-to-point run above (issue: within 3x).
+void BM_Kitti00_100Robots_Radio200m(benchmark::State& state) {
+  static const Dataset data = Kitti00();
+  const int robots = 100;
+  const BroadcastRouting routing(robots);
+  SimRunLog log;
+  for (auto _ : state) {
+    log = RunSimulation(data, routing, Radio(robots, 200.0));
+    benchmark::DoNotOptimize(log.queries.data());
+  }
+  Report(state, log);
+}
+BENCHMARK(BM_Kitti00_100Robots_Radio200m)->Unit(benchmark::kMillisecond);
 
 void BM_Decentralized_1000Robots_100kFrames(benchmark::State& state) {
   static const Dataset data = bench::Tiled(23 * 4541);  // 23 copies: 104 443 frames

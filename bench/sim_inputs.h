@@ -71,6 +71,16 @@ inline SimRunParams PointToPoint(int robots) {
   return p;
 }
 
+// The same team on 10 Mbit/s radios of `range_m` on the ground plane, relayed along shortest paths
+// (docs/network_model.md, "The radio").
+inline SimRunParams Radio(int robots, double range_m) {
+  SimRunParams p = PointToPoint(robots);
+  p.scenario.network.model = LinkModelKind::kRadio;
+  p.scenario.network.radio.range_m = range_m;
+  p.scenario.network.routing = RoutingKind::kShortestPath;
+  return p;
+}
+
 inline double PeakRssMiB() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
