@@ -45,8 +45,8 @@ inline std::vector<std::string> Names(const std::filesystem::path& dir) {
   return names;
 }
 
-// Runs argv[0] with an argument vector (posix_spawn, no shell: quotes, `$(...)` and ';' in an
-// argument reach the program as they are), stdout and stderr into files (stderr into stdout's
+// Runs argv[0] with an argument vector (posix_spawnp, no shell: quotes, `$(...)` and ';' in an
+// argument reach the program as they are; a name without '/' is looked up in PATH), stdout and stderr into files (stderr into stdout's
 // when `err` is empty), in folder `cwd` when not empty, with `env` ("NAME=value", replacing a
 // variable of that name) added to this process's environment. Returns the exit status, -1 when
 // the program could not start or did not exit.
@@ -77,7 +77,7 @@ inline int RunProgram(const std::vector<std::string>& argv, const std::filesyste
   }
   if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
   pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), envp.data());
+  const int spawned = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
   if (spawned != 0) return -1;
   int raw = 0;

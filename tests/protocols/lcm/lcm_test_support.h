@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "agents/lcm/lcm_transport.h"
+#include "tests/test_support.h"
 
 namespace dvpr::lcm_test {
 
@@ -29,9 +30,13 @@ namespace fs = std::filesystem;
 // the reason when that is impossible (then the test skips).
 inline std::string IsolateNetwork() {
   if (unshare(CLONE_NEWNET) != 0) return std::string("unshare(CLONE_NEWNET) failed: ") + std::strerror(errno);
-  const int rc = std::system(
-      "ip link set lo up && ip link set lo multicast on && ip route add 224.0.0.0/4 dev lo");
-  if (rc != 0) return "could not set up loopback multicast in the new namespace (ip failed)";
+  for (const std::vector<std::string>& ip : {std::vector<std::string>{"ip", "link", "set", "lo", "up"},
+                                             std::vector<std::string>{"ip", "link", "set", "lo", "multicast", "on"},
+                                             std::vector<std::string>{"ip", "route", "add", "224.0.0.0/4", "dev", "lo"}}) {
+    if (testing_support::RunProgram(ip, "/dev/null") != 0) {
+      return "could not set up loopback multicast in the new namespace (ip failed)";
+    }
+  }
   return "";
 }
 

@@ -15,6 +15,7 @@ namespace dvpr {
 namespace {
 
 using namespace lcm_test;
+using testing_support::RunProgram;
 using testing_support::Slurp;
 
 std::vector<std::string> LaunchArgv(const std::string& lcm_url, const fs::path& out) {
@@ -96,7 +97,7 @@ TEST(LaunchFailureTest, ProvidersOtherThanUdpmAreRefusedBeforeAnythingIsOpened) 
 // route): the launcher finds it before it starts an agent (each would fail alike) and says so
 // in one line, not LCM's page of advice. No agent, no folder.
 TEST(LaunchFailureTest, AGroupThatCannotBeJoinedIsRefusedInOneLineBeforeAnyAgentStarts) {
-  if (unshare(CLONE_NEWNET) != 0 || std::system("ip link set lo up") != 0) {
+  if (unshare(CLONE_NEWNET) != 0 || RunProgram({"ip", "link", "set", "lo", "up"}, "/dev/null") != 0) {
     GTEST_SKIP() << "cannot make a network namespace without a multicast route";
   }
   const fs::path dir = TestDir();
