@@ -16,18 +16,9 @@ using Adjacency = std::vector<std::vector<int>>;
 Adjacency SymmetricGraph(PropagationModel& propagation, int nodes, SimTime at, int& pairs) {
   const auto n = static_cast<std::size_t>(nodes);
   std::vector<char> hears(n * n, 0);  // hears[a * n + b]: b hears what a sends
-  std::vector<NodeId> receivers;
-  std::vector<Reception> out;
-  for (int a = 0; a < nodes; ++a) {
-    receivers.clear();
-    for (int b = 0; b < nodes; ++b) {
-      if (b != a) receivers.push_back(NodeId(b));
-    }
-    out.assign(receivers.size(), Reception{});
-    propagation.Reach(NodeId(a), receivers, at, out);
-    for (std::size_t i = 0; i < receivers.size(); ++i) {
-      hears[static_cast<std::size_t>(a) * n + static_cast<std::size_t>(receivers[i].value)] = out[i].reaches ? 1 : 0;
-    }
+  const std::vector<std::vector<NodeId>> heard_by = HeardBy(propagation, nodes, at);
+  for (std::size_t a = 0; a < n; ++a) {
+    for (const NodeId b : heard_by[a]) hears[a * n + static_cast<std::size_t>(b.value)] = 1;
   }
   Adjacency adj(n);
   pairs = 0;

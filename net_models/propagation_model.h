@@ -13,6 +13,7 @@
 // outcome to "reaches, no added delay", which is the full mesh; a model changes what differs.
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "net_models/node_id.h"
 #include "sim/sim_time.h"
@@ -39,5 +40,10 @@ class PropagationModel {
   virtual void DoReach(NodeId src, std::span<const NodeId> receivers, SimTime now, std::span<Reception> out) = 0;
   virtual std::string_view DoName() const = 0;
 };
+
+// Who hears whom at `at`: heard_by[u] lists, ascending, the nodes of 0 .. nodes - 1 that hear
+// what u sends (one Reach per node, every other node a receiver). The graph that routing over
+// the radio and the connectivity outputs are built on.
+std::vector<std::vector<NodeId>> HeardBy(PropagationModel& propagation, int nodes, SimTime at);
 
 }  // namespace dvpr

@@ -13,16 +13,12 @@
 
 #include "net_models/fifo_transmitter.h"
 #include "net_models/link_model.h"
+#include "net_models/one_transmission.h"
 
 namespace dvpr {
 
-struct RadioLinkParams {
-  DataRate rate = DataRate::Mbps(10);
-  SimTime latency = SimTime::Millis(2);  // processing, per hop
-  int queue_packets = 100;               // per robot
-  // Throws std::invalid_argument "<field>: ..." naming the value.
-  void Validate() const;
-};
+// rate, latency (the fixed processing delay per hop), queue_packets per robot.
+using RadioLinkParams = TransmitterParams;
 
 class RadioLink final : public LinkModel {
  public:

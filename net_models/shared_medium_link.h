@@ -9,16 +9,12 @@
 
 #include "net_models/fifo_transmitter.h"
 #include "net_models/link_model.h"
+#include "net_models/one_transmission.h"
 
 namespace dvpr {
 
-struct SharedMediumParams {
-  DataRate rate = DataRate::Mbps(10);
-  SimTime latency = SimTime::Millis(2);  // propagation and processing, the same for all pairs
-  int queue_packets = 100;               // per sending node
-  // Throws std::invalid_argument "<field>: ..." naming the value.
-  void Validate() const;
-};
+// rate, latency (propagation and processing, the same for all pairs), queue_packets per node.
+using SharedMediumParams = TransmitterParams;
 
 class SharedMediumLink final : public LinkModel {
  public:

@@ -10,7 +10,6 @@ ShortestPathRouting::ShortestPathRouting(PropagationModel& propagation, int node
     : propagation_(propagation), nodes_(nodes), refresh_(refresh) {
   if (nodes <= 0) throw std::invalid_argument("ShortestPathRouting: need at least one node, got " + std::to_string(nodes));
   if (refresh <= SimTime::Zero()) throw std::invalid_argument("ShortestPathRouting: the refresh period must be positive");
-  heard_by_.resize(static_cast<std::size_t>(nodes));
   first_hop_.resize(static_cast<std::size_t>(nodes));
 }
 
@@ -18,21 +17,8 @@ void ShortestPathRouting::Refresh(SimTime now) {
   const std::int64_t window = now.ns() / refresh_.ns();
   if (window == window_) return;
   window_ = window;
-  const SimTime start = SimTime::Nanos(window * refresh_.ns());
-  for (int u = 0; u < nodes_; ++u) {
-    receivers_.clear();
-    for (int v = 0; v < nodes_; ++v) {
-      if (v != u) receivers_.push_back(NodeId(v));
-    }
-    receptions_.assign(receivers_.size(), Reception{});
-    propagation_.Reach(NodeId(u), receivers_, start, receptions_);
-    std::vector<NodeId>& heard = heard_by_[static_cast<std::size_t>(u)];
-    heard.clear();
-    for (std::size_t i = 0; i < receivers_.size(); ++i) {
-      if (receptions_[i].reaches) heard.push_back(receivers_[i]);
-    }
-    first_hop_[static_cast<std::size_t>(u)].clear();
-  }
+  heard_by_ = HeardBy(propagation_, nodes_, SimTime::Nanos(window * refresh_.ns()));
+  for (std::vector<NodeId>& first : first_hop_) first.clear();
 }
 
 // Breadth-first from `at`, neighbours in ascending id: each node's first hop is that of the node

@@ -38,10 +38,8 @@ class ShortestPathRouting final : public NextHopRouting {
   int nodes_;
   SimTime refresh_;
   std::int64_t window_ = -1;
-  std::vector<std::vector<NodeId>> heard_by_;     // heard_by_[u]: the nodes that hear u, ascending
+  std::vector<std::vector<NodeId>> heard_by_;     // HeardBy at the window's start
   std::vector<std::vector<NodeId>> first_hop_;    // per source, empty until asked in this window
-  std::vector<NodeId> receivers_;                 // scratch
-  std::vector<Reception> receptions_;             // scratch
 };
 
 }  // namespace dvpr

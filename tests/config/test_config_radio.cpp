@@ -6,20 +6,13 @@
 #include <gtest/gtest.h>
 
 #include "experiments/config/config.h"
+#include "tests/config/config_test_support.h"
 
 namespace dvpr {
 namespace {
 
-ExperimentConfig Parse(const std::string& yaml) { return ParseConfig(yaml, DVPR_SOURCE_DIR, {}, "test.yaml"); }
-
-std::string ErrorOf(const std::string& yaml) {
-  try {
-    Parse(yaml);
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+ExperimentConfig Parse(const std::string& yaml) { return testing_support::ParseTestConfig(yaml); }
+std::string ErrorOf(const std::string& yaml) { return testing_support::ConfigErrorOf(yaml); }
 
 TEST(ConfigRadioTest, ARangeListIsOneEntryPerRange) {
   const ExperimentConfig c = Parse(

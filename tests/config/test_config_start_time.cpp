@@ -6,21 +6,14 @@
 #include <gtest/gtest.h>
 
 #include "experiments/config/config.h"
+#include "tests/config/config_test_support.h"
 #include "experiments/config/utc_instant.h"
 
 namespace dvpr {
 namespace {
 
-ExperimentConfig Parse(const std::string& yaml) { return ParseConfig(yaml, DVPR_SOURCE_DIR, {}, "test.yaml"); }
-
-std::string ErrorOf(const std::string& yaml) {
-  try {
-    Parse(yaml);
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+ExperimentConfig Parse(const std::string& yaml) { return testing_support::ParseTestConfig(yaml); }
+std::string ErrorOf(const std::string& yaml) { return testing_support::ConfigErrorOf(yaml); }
 
 TEST(StartTime, DefaultsToAFixedInstantNotTheWallClock) {
   EXPECT_EQ(Parse("name: x\n").start_utime, 1317643200000000);  // 2011-10-03T12:00:00Z

@@ -16,6 +16,7 @@
 #include "net_models/network.h"
 #include "net_models/point_to_point_link.h"
 #include "sim/simulator.h"
+#include "tests/net_models/copy_log.h"
 
 namespace dvpr {
 namespace {
@@ -53,18 +54,7 @@ class TestRouting final : public NextHopRouting {
   NodeId unreachable_, relayed_, hop_;
 };
 
-class Drops : public NetworkObserver {
- public:
-  void OnDropped(const MessageCopy& c, SimTime at, DropReason reason) override {
-    lines.push_back(std::to_string(c.src.value) + ">" + std::to_string(c.dst.value) + " at " +
-                    std::to_string(at.ns()) + "ns: " + std::string(ToString(reason)));
-  }
-  void OnDelivered(const MessageCopy& c, SimTime at) override {
-    lines.push_back(std::to_string(c.src.value) + ">" + std::to_string(c.dst.value) + " delivered at " +
-                    std::to_string(at.ns()) + "ns");
-  }
-  std::vector<std::string> lines;
-};
+using Drops = testing_support::CopyLog;
 
 std::unique_ptr<LinkModel> OneMbps(int nodes) {
   return std::make_unique<PointToPointLink>(PointToPointParams{DataRate::Mbps(1), SimTime::Millis(5), 100, {}}, nodes);

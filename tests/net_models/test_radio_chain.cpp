@@ -18,24 +18,12 @@
 #include "net_models/range_propagation.h"
 #include "net_models/shortest_path_routing.h"
 #include "sim/simulator.h"
+#include "tests/net_models/copy_log.h"
 
 namespace dvpr {
 namespace {
 
-class Log : public NetworkObserver {
- public:
-  void OnDropped(const MessageCopy& c, SimTime at, DropReason reason) override {
-    lines.push_back(std::to_string(c.src.value) + ">" + std::to_string(c.dst.value) + " at " +
-                    std::to_string(at.ns()) + "ns: " + std::string(ToString(reason)));
-  }
-  void OnDelivered(const MessageCopy& c, SimTime at) override {
-    lines.push_back(std::to_string(c.src.value) + ">" + std::to_string(c.dst.value) + " delivered at " +
-                    std::to_string(at.ns()) + "ns");
-  }
-  void OnMedium(const MediumReport& m) override { senders.push_back(m.src.value); }
-  std::vector<std::string> lines;
-  std::vector<int> senders;  // whose transmission each was, in order
-};
+using Log = testing_support::CopyLog;
 
 enum class Routing { kDirect, kShortestPath };
 
@@ -62,15 +50,19 @@ struct Chain {
   Network net;
   Log log;
   ObserverSubscription subscription = net.Subscribe(log);
+  // Robot 0's 505-byte message for robot 3 alone, run to the end.
+  void ZeroToThree() {
+    const NodeId three[] = {NodeId(3)};
+    net.SendTo(NodeId(0), three, channel, type, std::vector<std::uint8_t>(505, 1));
+    sim.Run();
+  }
   ChannelId channel{};
   MessageTypeId type{};
 };
 
 TEST(RadioChain, ShortestPathTakesThreeHopsToTheHandWorkedNanosecond) {
   Chain c(Routing::kShortestPath);
-  const NodeId three[] = {NodeId(3)};
-  c.net.SendTo(NodeId(0), three, c.channel, c.type, std::vector<std::uint8_t>(505, 1));
-  c.sim.Run();
+  c.ZeroToThree();
   EXPECT_EQ(c.log.lines, (std::vector<std::string>{"0>3 delivered at 19129500ns"}));
   EXPECT_EQ(c.log.senders, (std::vector<int>{0, 1, 2}));  // robot 0, then the relays 1 and 2
   for (const int r : {0, 1, 2}) {
@@ -82,9 +74,7 @@ TEST(RadioChain, ShortestPathTakesThreeHopsToTheHandWorkedNanosecond) {
 
 TEST(RadioChain, DirectRoutingLosesItOutOfRange) {
   Chain c(Routing::kDirect);
-  const NodeId three[] = {NodeId(3)};
-  c.net.SendTo(NodeId(0), three, c.channel, c.type, std::vector<std::uint8_t>(505, 1));
-  c.sim.Run();
+  c.ZeroToThree();
   EXPECT_EQ(c.log.lines, (std::vector<std::string>{"0>3 at 0ns: out_of_range"}));
   EXPECT_EQ(c.net.Counters(NodeId(0), NodeId(3)).dropped, 1u);
 }
