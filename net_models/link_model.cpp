@@ -12,6 +12,7 @@ std::string_view ToString(DropReason reason) {
     case DropReason::kOffline: return "offline";
     case DropReason::kNoRoute: return "no_route";
     case DropReason::kOutOfRange: return "out_of_range";
+    case DropReason::kHopLimit: return "hop_limit";
   }
   return "unknown";
 }

@@ -13,6 +13,7 @@
 // the request, resets the outcomes and reports what the message put on the
 // media; each model implements only DoTransmit. A model keeps no totals: the
 // Network counts, per sender, what Transmit reports (one byte counter).
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string_view>
@@ -30,7 +31,9 @@ enum class DropReason : std::uint8_t {
   kOffline,    // the sender or the receiver was offline
   kNoRoute,    // the routing model found no way to the destination (next_hop_routing.h)
   kOutOfRange, // the receiver did not hear the transmission (propagation_model.h)
+  kHopLimit,   // a relayed copy had made Network::kMaxHops transmissions (a routing loop)
 };
+inline constexpr std::size_t kDropReasons = 7;  // the enumerators above, kNone included
 std::string_view ToString(DropReason reason);
 
 // One message handed to the link layer.

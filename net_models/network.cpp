@@ -187,10 +187,11 @@ void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::v
     if (!observers_.empty()) NotifySent(p, dst, copy, outcomes_[i].drop);
     if (outcomes_[i].drop != DropReason::kNone) {
       ++c.dropped;
+      CountDrop(outcomes_[i].drop);
       continue;
     }
     ++p.refs;
-    pending.push_back(PendingCopy{dst, hops_[i], copy, outcomes_[i].arrival});
+    pending.push_back(PendingCopy{dst, hops_[i], copy, 1, outcomes_[i].arrival});
   }
   if (!observers_.empty()) NotifyMedium(p, src, use);
   if (p.refs == 0) {
@@ -225,7 +226,7 @@ void Network::DeliverCopies(std::uint32_t slot, std::uint32_t first, std::uint32
     // Indexed each time: a delivery may send, and new slots move the vectors (not their contents).
     const PendingCopy c = pending_[slot][k];
     if (c.at == c.dst) {
-      Deliver(slot, c.dst, c.copy);
+      Deliver(slot, c);
     } else {
       relayed.push_back(c);
     }
@@ -243,32 +244,50 @@ void Network::DeliverCopies(std::uint32_t slot, std::uint32_t first, std::uint32
 
 // The relay `copies.front().at` sends the copies it holds on towards their destinations: its own
 // transmission (its queue, its radio, its bytes), routed again from where it is. A copy that
-// cannot go on is dropped here and counted against its original pair.
+// cannot go on, or has made kMaxHops transmissions already, is dropped here and counted against
+// its original pair.
 void Network::Relay(std::uint32_t slot, std::span<const PendingCopy> copies) {
   const SimTime now = sim_.Now();
   const NodeId at = copies.front().at;
   Payload& p = payloads_[slot];
-  dsts_.clear();
-  for (const PendingCopy& c : copies) dsts_.push_back(c.dst);
-  frames_.clear();
-  AppendLinkFrames(Bytes(static_cast<std::int64_t>(p.bytes.size())),
-                   static_cast<std::int64_t>(ChannelName(p.channel).size()), wire_, frames_);
-  const LinkModel::MediumUse use = TransmitFrom(at, now, senders_[static_cast<std::size_t>(at.value)]);
-  if (!observers_.empty()) NotifyMedium(p, at, use);
-  const auto from = static_cast<std::uint32_t>(pending_[slot].size());
   std::uint32_t dropped = 0;
-  for (std::size_t i = 0; i < copies.size(); ++i) {
-    const PendingCopy& c = copies[i];
-    if (outcomes_[i].drop == DropReason::kNone) {
-      pending_[slot].push_back(PendingCopy{c.dst, hops_[i], c.copy, outcomes_[i].arrival});
-      continue;
-    }
+  const auto drop = [&](const PendingCopy& c, DropReason reason) {
     ++pairs_.At(p.src, c.dst).dropped;
+    CountDrop(reason);
     if (!observers_.empty()) {
-      const MessageCopy m = CopyOf(p, c.dst, c.copy);
-      for (NetworkObserver* o : observers_) o->OnDropped(m, now, outcomes_[i].drop);
+      const MessageCopy m = CopyOf(p, c.dst, c.copy, static_cast<int>(c.hops));
+      for (NetworkObserver* o : observers_) o->OnDropped(m, now, reason);
     }
     ++dropped;
+  };
+  relay_copies_.clear();
+  dsts_.clear();
+  for (const PendingCopy& c : copies) {
+    if (c.hops >= kMaxHops) {
+      drop(c, DropReason::kHopLimit);
+      continue;
+    }
+    relay_copies_.push_back(c);
+    dsts_.push_back(c.dst);
+  }
+  if (!dsts_.empty()) {
+    frames_.clear();
+    AppendLinkFrames(Bytes(static_cast<std::int64_t>(p.bytes.size())),
+                     static_cast<std::int64_t>(ChannelName(p.channel).size()), wire_, frames_);
+    NodeCounters& relay = senders_[static_cast<std::size_t>(at.value)];
+    const LinkModel::MediumUse use = TransmitFrom(at, now, relay);
+    relay.relay_transmissions += use.transmissions;
+    relay.relay_bytes += use.bytes.value();
+    if (!observers_.empty()) NotifyMedium(p, at, use);
+  }
+  const auto from = static_cast<std::uint32_t>(pending_[slot].size());
+  for (std::size_t i = 0; i < relay_copies_.size(); ++i) {
+    const PendingCopy& c = relay_copies_[i];
+    if (outcomes_[i].drop == DropReason::kNone) {
+      pending_[slot].push_back(PendingCopy{c.dst, hops_[i], c.copy, std::uint64_t{c.hops} + 1, outcomes_[i].arrival});
+    } else {
+      drop(c, outcomes_[i].drop);
+    }
   }
   if (pending_[slot].size() > from) ScheduleCopies(slot, from);
   // Last: releasing the last reference frees the slot.
@@ -359,7 +378,7 @@ void Network::NotifyMedium(const Payload& p, NodeId sender, const LinkModel::Med
   for (NetworkObserver* o : observers_) o->OnMedium(m);
 }
 
-MessageCopy Network::CopyOf(const Payload& p, NodeId dst, std::uint64_t copy) const {
+MessageCopy Network::CopyOf(const Payload& p, NodeId dst, std::uint64_t copy, int hops) const {
   return MessageCopy{.message = p.message,
                      .copy = copy,
                      .sent = p.sent,
@@ -370,11 +389,12 @@ MessageCopy Network::CopyOf(const Payload& p, NodeId dst, std::uint64_t copy) co
                      .type = p.type,
                      .type_name = TypeName(p.type),
                      .payload = p.bytes,
-                     .wire_bytes = p.wire_bytes};
+                     .wire_bytes = p.wire_bytes,
+                     .hops = hops};
 }
 
 void Network::NotifySent(const Payload& p, NodeId dst, std::uint64_t copy, DropReason drop) {
-  const MessageCopy m = CopyOf(p, dst, copy);
+  const MessageCopy m = CopyOf(p, dst, copy, 0);
   for (NetworkObserver* o : observers_) o->OnSent(m);
   if (drop == DropReason::kNone) return;
   for (NetworkObserver* o : observers_) o->OnDropped(m, p.sent, drop);
@@ -404,14 +424,23 @@ void Network::ReleasePayload(std::uint32_t slot) {
   free_payloads_.push_back(slot);
 }
 
-void Network::Deliver(std::uint32_t slot, NodeId dst, std::uint64_t copy) {
+void Network::Deliver(std::uint32_t slot, const PendingCopy& copy) {
   const SimTime now = sim_.Now();
+  const NodeId dst = copy.dst;
+  const auto hops = static_cast<int>(copy.hops);
   Payload& p = payloads_[slot];
   LinkCounters& c = pairs_.At(p.src, dst);
   const bool online = IsOnline(dst, now);
   ++(online ? c.delivered : c.dropped);
+  if (online) {
+    ++routes_.delivered;
+    routes_.delivered_hops += copy.hops;
+    routes_.max_hops = std::max(routes_.max_hops, hops);
+  } else {
+    CountDrop(DropReason::kOffline);
+  }
   if (!observers_.empty()) {
-    const MessageCopy m = CopyOf(p, dst, copy);
+    const MessageCopy m = CopyOf(p, dst, copy.copy, hops);
     for (NetworkObserver* o : observers_) {
       if (online) {
         o->OnDelivered(m, now);

@@ -23,6 +23,7 @@
 // events of single copies, scheduled one after another, would run: nothing can
 // come between them), and it captures only (network, slot, range of copies),
 // so it fits the Simulator's inline callback storage.
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -77,11 +78,24 @@ struct LinkCounters {
   std::uint64_t dropped = 0;
 };
 
-// Per sending node: what it published and what it put on the medium.
+// Per sending node: what it published and what it put on the medium, its relaying for others
+// (multi-hop routing, network_stack.h) included.
 struct NodeCounters {
   std::uint64_t published = 0;       // Send() calls
   std::uint64_t transmissions = 0;   // copies put on a medium (LinkModel::Transmissions)
   std::int64_t medium_bytes = 0;     // frame bytes of those transmissions
+  std::uint64_t relay_transmissions = 0;  // of the transmissions: others' messages it sent on
+  std::int64_t relay_bytes = 0;           // and their frame bytes
+};
+
+// What became of all copies, whatever their pair: delivered ones and the hops they took (1 for
+// a copy that went straight to its destination), dropped ones by DropReason.
+struct RouteCounters {
+  std::uint64_t delivered = 0;
+  std::uint64_t delivered_hops = 0;  // summed over the delivered copies
+  int max_hops = 0;                  // the most any delivered copy took
+  std::array<std::uint64_t, kDropReasons> dropped{};  // by static_cast<std::size_t>(DropReason)
+  bool operator==(const RouteCounters&) const = default;
 };
 
 // Keeps an observer subscribed to a network until destroyed or Reset (RAII).
@@ -103,6 +117,10 @@ class [[nodiscard]] ObserverSubscription {
 
 class Network {
  public:
+  // A copy is sent on at most this many times (IP's usual TTL): routing that changes under a
+  // copy could pass it back and forth; the next relay drops it (DropReason::kHopLimit).
+  static constexpr int kMaxHops = 64;
+
   // The stack's empty layers get their defaults (NetworkStack::CompleteDefaults).
   Network(Simulator& sim, int nodes, NetworkStack stack, WireParams wire = {});
   // `link` as the medium access, every other layer its default.
@@ -159,6 +177,7 @@ class Network {
     pairs_.ForEachSorted(f);
   }
   LinkCounters Totals() const;
+  const RouteCounters& Routes() const { return routes_; }
   const NodeCounters& Sender(NodeId src) const { return senders_[static_cast<std::size_t>(src.value)]; }
 
   // --- observing ----------------------------------------------------------
@@ -207,9 +226,10 @@ class Network {
   // Delivers copies [first, end) of the slot's pending copies (they arrive now), or relays them.
   void DeliverCopies(std::uint32_t slot, std::uint32_t first, std::uint32_t end);
   void Relay(std::uint32_t slot, std::span<const PendingCopy> copies);
-  void Deliver(std::uint32_t slot, NodeId dst, std::uint64_t copy);
-  MessageCopy CopyOf(const Payload& p, NodeId dst, std::uint64_t copy) const;
+  void Deliver(std::uint32_t slot, const PendingCopy& c);
+  MessageCopy CopyOf(const Payload& p, NodeId dst, std::uint64_t copy, int hops) const;
   void NotifySent(const Payload& p, NodeId dst, std::uint64_t copy, DropReason drop);
+  void CountDrop(DropReason reason) { ++routes_.dropped[static_cast<std::size_t>(reason)]; }
   void Unsubscribe(NetworkObserver* observer);
 
   Simulator& sim_;
@@ -229,11 +249,13 @@ class Network {
   std::vector<SimTime> offline_until_;
 
   // A copy on its way: where to, the node it arrives at next (dst, or a relay), its number
-  // (MessageCopy::copy), when it arrives there.
+  // (MessageCopy::copy), the transmissions it has made (the one under way included), when it
+  // arrives there. 48 bits number 2.8e14 copies; hops stay <= kMaxHops.
   struct PendingCopy {
     NodeId dst;
     NodeId at;
-    std::uint64_t copy = 0;
+    std::uint64_t copy : 48;
+    std::uint64_t hops : 16;
     SimTime arrival;
   };
   static_assert(sizeof(PendingCopy) <= 24);
@@ -242,11 +264,13 @@ class Network {
   // By payload slot: its copies on their way, by arrival time, then destination order (the
   // vectors keep their capacity when a slot is reused).
   std::vector<std::vector<PendingCopy>> pending_;
+  std::vector<PendingCopy> relay_copies_;  // Relay's scratch: the copies it sends on
   std::vector<std::uint32_t> free_payloads_;
   PayloadBuffers buffers_;
 
   PairMap<LinkCounters> pairs_;  // only the pairs that carried a message (1000 robots: 10^6 pairs)
   std::vector<NodeCounters> senders_;
+  RouteCounters routes_;
   std::uint64_t messages_ = 0;  // Send/SendTo calls so far: the next MessageCopy::message
   std::uint64_t copies_ = 0;    // copies sent so far: the next MessageCopy::copy
   std::vector<NetworkObserver*> observers_;

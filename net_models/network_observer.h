@@ -38,6 +38,9 @@ struct MessageCopy {
   std::string_view type_name;
   std::span<const std::uint8_t> payload;  // the encoded message, as sent
   std::int64_t wire_bytes = 0;            // what one copy costs on the wire (wire_format.h)
+  // Transmissions the copy completed: 0 when sent; when delivered, the hops it took (1 straight
+  // to its destination, more through relays); when dropped, those it had made before.
+  int hops = 0;
 };
 
 // What one message put on the medium (LinkModel::MediumUse), reported once per Send/SendTo

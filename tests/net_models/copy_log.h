@@ -18,11 +18,13 @@ class CopyLog : public NetworkObserver {
   void OnDelivered(const MessageCopy& c, SimTime at) override {
     lines.push_back(std::to_string(c.src.value) + ">" + std::to_string(c.dst.value) + " delivered at " +
                     std::to_string(at.ns()) + "ns");
+    delivered_hops.push_back(c.hops);
   }
   void OnMedium(const MediumReport& m) override { senders.push_back(m.src.value); }
 
   std::vector<std::string> lines;
   std::vector<int> senders;  // whose transmission each medium use was, in order
+  std::vector<int> delivered_hops;  // MessageCopy::hops of each delivered copy, in order
 };
 
 }  // namespace dvpr::testing_support

@@ -7,6 +7,7 @@
 // rounded) = 6 376 500 ns; three hops 19 129 500 ns.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -70,6 +71,19 @@ TEST(RadioChain, ShortestPathTakesThreeHopsToTheHandWorkedNanosecond) {
     EXPECT_EQ(c.net.Sender(NodeId(r)).medium_bytes, 547) << r;
   }
   EXPECT_EQ(c.net.Sender(NodeId(3)).transmissions, 0u);
+  // Robot 0's transmission is its own message; robots 1 and 2 each relayed once, 547 bytes.
+  EXPECT_EQ(c.net.Sender(NodeId(0)).relay_transmissions, 0u);
+  EXPECT_EQ(c.net.Sender(NodeId(0)).relay_bytes, 0);
+  for (const int r : {1, 2}) {
+    EXPECT_EQ(c.net.Sender(NodeId(r)).relay_transmissions, 1u) << r;
+    EXPECT_EQ(c.net.Sender(NodeId(r)).relay_bytes, 547) << r;
+  }
+  EXPECT_EQ(c.log.delivered_hops, (std::vector<int>{3}));
+  const RouteCounters& routes = c.net.Routes();
+  EXPECT_EQ(routes.delivered, 1u);
+  EXPECT_EQ(routes.delivered_hops, 3u);
+  EXPECT_EQ(routes.max_hops, 3);
+  EXPECT_EQ(routes.dropped, (std::array<std::uint64_t, kDropReasons>{}));
 }
 
 TEST(RadioChain, DirectRoutingLosesItOutOfRange) {
@@ -77,6 +91,10 @@ TEST(RadioChain, DirectRoutingLosesItOutOfRange) {
   c.ZeroToThree();
   EXPECT_EQ(c.log.lines, (std::vector<std::string>{"0>3 at 0ns: out_of_range"}));
   EXPECT_EQ(c.net.Counters(NodeId(0), NodeId(3)).dropped, 1u);
+  std::array<std::uint64_t, kDropReasons> dropped{};
+  dropped[static_cast<std::size_t>(DropReason::kOutOfRange)] = 1;
+  EXPECT_EQ(c.net.Routes().dropped, dropped);
+  EXPECT_EQ(c.net.Routes().delivered, 0u);
 }
 
 // A broadcast travels down the shortest-path tree: robot 1 hears robot 0's one transmission, and
@@ -88,6 +106,43 @@ TEST(RadioChain, ABroadcastIsOneTransmissionPerRelay) {
   EXPECT_EQ(c.log.lines, (std::vector<std::string>{"0>1 delivered at 6376500ns", "0>2 delivered at 12753000ns",
                                                    "0>3 delivered at 19129500ns"}));
   EXPECT_EQ(c.log.senders, (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(c.log.delivered_hops, (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(c.net.Routes().delivered_hops, 6u);
+  EXPECT_EQ(c.net.Routes().max_hops, 3);
+}
+
+// Routing that changes under a copy can pass it back and forth; the copy then stops after
+// Network::kMaxHops transmissions instead of circling for ever. Here robots 0 and 1 each name
+// the other as the way to robot 3: a loop from the first hop.
+class PingPong final : public NextHopRouting {
+ private:
+  void DoNextHops(NodeId at, std::span<const NodeId>, SimTime, std::span<NodeId> hops) override {
+    for (NodeId& h : hops) h = NodeId(at.value == 0 ? 1 : 0);
+  }
+  std::string_view DoName() const override { return "ping_pong"; }
+};
+
+TEST(RadioChain, ALoopingCopyIsDroppedAtTheHopLimit) {
+  NetworkStack s = Chain::Stack(Routing::kDirect);
+  s.routing = std::make_unique<PingPong>();
+  Simulator sim;
+  Network net(sim, 4, std::move(s));
+  Log log;
+  const ObserverSubscription subscription = net.Subscribe(log);
+  const NodeId three[] = {NodeId(3)};
+  net.SendTo(NodeId(0), three, net.InternChannel("ALL"), net.InternType("dvpr.test_t"),
+             std::vector<std::uint8_t>(505, 1));
+  sim.Run();
+  // 64 transmissions of one 150 m hop each (6 376 500 ns, above): robot 0 sends the 1st, 3rd,
+  // ..., 63rd, robot 1 the others; the 64th arrives back at robot 0, which drops it.
+  ASSERT_EQ(Network::kMaxHops, 64);
+  EXPECT_EQ(log.lines, (std::vector<std::string>{"0>3 at 408096000ns: hop_limit"}));
+  EXPECT_EQ(log.senders.size(), 64u);
+  EXPECT_EQ(net.Sender(NodeId(0)).transmissions, 32u);
+  EXPECT_EQ(net.Sender(NodeId(0)).relay_transmissions, 31u);
+  EXPECT_EQ(net.Sender(NodeId(1)).relay_transmissions, 32u);
+  EXPECT_EQ(net.Routes().dropped[static_cast<std::size_t>(DropReason::kHopLimit)], 1u);
+  EXPECT_EQ(net.Counters(NodeId(0), NodeId(3)).dropped, 1u);
 }
 
 }  // namespace
