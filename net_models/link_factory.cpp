@@ -89,6 +89,7 @@ void NetworkModelParams::Validate(int nodes) const {
   ValidateNested("loss.", [&] { loss.Validate(); });
   for (std::size_t i = 0; i < links.size(); ++i) ValidateLink(links[i], i, model, nodes);
   if (model == LinkModelKind::kRadio) ValidateNested("radio.", [&] { radio.Validate(); });
+  ValidateNested("disconnected.", [&] { disconnected.Validate(); });
 }
 
 std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int nodes, std::uint64_t run_seed) {

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "net_models/disconnected_params.h"
 #include "net_models/link_model.h"
 #include "net_models/loss_params.h"
 #include "net_models/next_hop_routing.h"
@@ -51,6 +52,7 @@ struct NetworkModelParams {
   std::vector<LinkOverrideParams> links;
   RadioParams radio;  // model radio: who hears whom (the stack's propagation, MakeNetworkStack)
   RoutingKind routing = RoutingKind::kDirect;  // which way a copy goes (the stack's routing)
+  DisconnectedParams disconnected;  // a copy without a route: dropped, or held (store-and-forward)
 
   // Throws std::invalid_argument "<field>: ..." naming the value, with the
   // fields spelled as in a config's network section ("bandwidth", "mtu",

@@ -13,6 +13,8 @@ std::string_view ToString(DropReason reason) {
     case DropReason::kNoRoute: return "no_route";
     case DropReason::kOutOfRange: return "out_of_range";
     case DropReason::kHopLimit: return "hop_limit";
+    case DropReason::kBufferFull: return "buffer_full";
+    case DropReason::kExpired: return "expired";
   }
   return "unknown";
 }

@@ -32,8 +32,10 @@ enum class DropReason : std::uint8_t {
   kNoRoute,    // the routing model found no way to the destination (next_hop_routing.h)
   kOutOfRange, // the receiver did not hear the transmission (propagation_model.h)
   kHopLimit,   // a relayed copy had made Network::kMaxHops transmissions (a routing loop)
+  kBufferFull, // store-and-forward: the holder's buffer had no room (disconnected_params.h)
+  kExpired,    // store-and-forward: held hold_time without a route
 };
-inline constexpr std::size_t kDropReasons = 7;  // the enumerators above, kNone included
+inline constexpr std::size_t kDropReasons = 9;  // the enumerators above, kNone included
 std::string_view ToString(DropReason reason);
 
 // One message handed to the link layer.

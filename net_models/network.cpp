@@ -44,12 +44,18 @@ Network::Network(Simulator& sim, int nodes, NetworkStack stack, WireParams wire)
   if (nodes <= 0) throw std::invalid_argument("robots = " + std::to_string(nodes) + ": need at least one node");
   if (!stack_.access) throw std::invalid_argument("Network: no link model");
   stack_.CompleteDefaults(nodes);
+  stack_.disconnected.Validate();
   wire_.Validate();
   const auto n = static_cast<std::size_t>(nodes);
   endpoints_.assign(n, nullptr);
   offline_from_.assign(n, SimTime::Max());
   offline_until_.assign(n, SimTime::Max());
   senders_.assign(n, NodeCounters{});
+  if (StoreAndForward()) {
+    held_.resize(n);
+    held_bytes_.assign(n, 0);
+    retry_scheduled_.assign(n, 0);
+  }
 }
 
 Network::~Network() = default;
@@ -184,10 +190,20 @@ void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::v
     ++c.messages;
     c.payload_bytes += payload_bytes;
     c.wire_bytes += p.wire_bytes;
-    if (!observers_.empty()) NotifySent(p, dst, copy, outcomes_[i].drop);
-    if (outcomes_[i].drop != DropReason::kNone) {
+    DropReason drop = outcomes_[i].drop;
+    if (drop == DropReason::kNoRoute && StoreAndForward()) {
+      // The sender keeps it: no transmission yet (0 hops).
+      drop = Hold(slot, PendingCopy{dst, src, copy, 0, now}, now) ? DropReason::kNone : DropReason::kBufferFull;
+      if (drop == DropReason::kNone) {
+        ++p.refs;
+        if (!observers_.empty()) NotifySent(p, dst, copy, drop);
+        continue;
+      }
+    }
+    if (!observers_.empty()) NotifySent(p, dst, copy, drop);
+    if (drop != DropReason::kNone) {
       ++c.dropped;
-      CountDrop(outcomes_[i].drop);
+      CountDrop(drop);
       continue;
     }
     ++p.refs;
@@ -246,7 +262,7 @@ void Network::DeliverCopies(std::uint32_t slot, std::uint32_t first, std::uint32
 // transmission (its queue, its radio, its bytes), routed again from where it is. A copy that
 // cannot go on, or has made kMaxHops transmissions already, is dropped here and counted against
 // its original pair.
-void Network::Relay(std::uint32_t slot, std::span<const PendingCopy> copies) {
+void Network::Relay(std::uint32_t slot, std::span<const PendingCopy> copies, std::span<const SimTime> since) {
   const SimTime now = sim_.Now();
   const NodeId at = copies.front().at;
   Payload& p = payloads_[slot];
@@ -261,13 +277,16 @@ void Network::Relay(std::uint32_t slot, std::span<const PendingCopy> copies) {
     ++dropped;
   };
   relay_copies_.clear();
+  relay_since_.clear();
   dsts_.clear();
-  for (const PendingCopy& c : copies) {
+  for (std::size_t i = 0; i < copies.size(); ++i) {
+    const PendingCopy& c = copies[i];
     if (c.hops >= kMaxHops) {
       drop(c, DropReason::kHopLimit);
       continue;
     }
     relay_copies_.push_back(c);
+    relay_since_.push_back(since.empty() ? now : since[i]);
     dsts_.push_back(c.dst);
   }
   if (!dsts_.empty()) {
@@ -276,15 +295,20 @@ void Network::Relay(std::uint32_t slot, std::span<const PendingCopy> copies) {
                      static_cast<std::int64_t>(ChannelName(p.channel).size()), wire_, frames_);
     NodeCounters& relay = senders_[static_cast<std::size_t>(at.value)];
     const LinkModel::MediumUse use = TransmitFrom(at, now, relay);
-    relay.relay_transmissions += use.transmissions;
-    relay.relay_bytes += use.bytes.value();
-    if (!observers_.empty()) NotifyMedium(p, at, use);
+    if (at != p.src) {  // (a sender that held its own message sends it now: not a relay)
+      relay.relay_transmissions += use.transmissions;
+      relay.relay_bytes += use.bytes.value();
+    }
+    // (a retry that finds no route yet sends nothing, and reports nothing)
+    if (!observers_.empty() && use.transmissions > 0) NotifyMedium(p, at, use);
   }
   const auto from = static_cast<std::uint32_t>(pending_[slot].size());
   for (std::size_t i = 0; i < relay_copies_.size(); ++i) {
     const PendingCopy& c = relay_copies_[i];
     if (outcomes_[i].drop == DropReason::kNone) {
       pending_[slot].push_back(PendingCopy{c.dst, hops_[i], c.copy, std::uint64_t{c.hops} + 1, outcomes_[i].arrival});
+    } else if (outcomes_[i].drop == DropReason::kNoRoute && StoreAndForward()) {
+      if (!Hold(slot, PendingCopy{c.dst, at, c.copy, c.hops, now}, relay_since_[i])) drop(c, DropReason::kBufferFull);
     } else {
       drop(c, outcomes_[i].drop);
     }
@@ -292,6 +316,62 @@ void Network::Relay(std::uint32_t slot, std::span<const PendingCopy> copies) {
   if (pending_[slot].size() > from) ScheduleCopies(slot, from);
   // Last: releasing the last reference frees the slot.
   for (std::uint32_t k = 0; k < dropped; ++k) ReleasePayload(slot);
+}
+
+bool Network::Hold(std::uint32_t slot, const PendingCopy& c, SimTime since) {
+  const auto node = static_cast<std::size_t>(c.at.value);
+  const std::int64_t bytes = payloads_[slot].wire_bytes;
+  if (held_bytes_[node] + bytes > stack_.disconnected.hold_bytes.value()) return false;
+  held_bytes_[node] += bytes;
+  held_[node].push_back(HeldCopy{slot, c, since});
+  if (since == sim_.Now()) ++routes_.held;  // taken now, not held again by a retry
+  if (!retry_scheduled_[node]) {
+    // The next whole multiple of retry after now: every holder asks at the same instants.
+    const std::int64_t retry = stack_.disconnected.retry.ns();
+    const SimTime at = SimTime::Nanos((sim_.Now().ns() / retry + 1) * retry);
+    retry_scheduled_[node] = 1;
+    sim_.ScheduleAt(at, [this, n = c.at] { Retry(n); });
+  }
+  return true;
+}
+
+// Copies held hold_time or longer are dropped; the others are offered to the routing again, one
+// Relay per message (in the order the node took them), which sends on those that now have a way
+// and holds the rest again (since unchanged).
+void Network::Retry(NodeId node) {
+  const auto n = static_cast<std::size_t>(node.value);
+  retry_scheduled_[n] = 0;
+  std::vector<HeldCopy> held = std::move(held_[n]);
+  held_[n].clear();
+  held_bytes_[n] = 0;
+  const SimTime now = sim_.Now();
+  std::vector<PendingCopy> copies;
+  std::vector<SimTime> since;
+  for (std::size_t i = 0; i < held.size(); ++i) {
+    if (held[i].slot == ~0u) continue;  // taken with an earlier copy of its message
+    const std::uint32_t slot = held[i].slot;
+    copies.clear();
+    since.clear();
+    for (std::size_t j = i; j < held.size(); ++j) {
+      if (held[j].slot != slot) continue;
+      HeldCopy& h = held[j];
+      if (now - h.since >= stack_.disconnected.hold_time) {
+        Payload& p = payloads_[slot];
+        ++pairs_.At(p.src, h.copy.dst).dropped;
+        CountDrop(DropReason::kExpired);
+        if (!observers_.empty()) {
+          const MessageCopy m = CopyOf(p, h.copy.dst, h.copy.copy, static_cast<int>(h.copy.hops));
+          for (NetworkObserver* o : observers_) o->OnDropped(m, now, DropReason::kExpired);
+        }
+        ReleasePayload(slot);  // the message's other copies still hold it
+      } else {
+        copies.push_back(h.copy);
+        since.push_back(h.since);
+      }
+      h.slot = ~0u;
+    }
+    if (!copies.empty()) Relay(slot, copies, since);
+  }
 }
 
 // Fills outcomes_ for dsts_ and frames_, asking the stack's layers in turn: routing (which copies

@@ -91,6 +91,7 @@ struct NodeCounters {
 // What became of all copies, whatever their pair: delivered ones and the hops they took (1 for
 // a copy that went straight to its destination), dropped ones by DropReason.
 struct RouteCounters {
+  std::uint64_t held = 0;            // copies a robot took into its buffer (store-and-forward)
   std::uint64_t delivered = 0;
   std::uint64_t delivered_hops = 0;  // summed over the delivered copies
   int max_hops = 0;                  // the most any delivered copy took
@@ -225,11 +226,18 @@ class Network {
   void ScheduleCopies(std::uint32_t slot, std::uint32_t from);
   // Delivers copies [first, end) of the slot's pending copies (they arrive now), or relays them.
   void DeliverCopies(std::uint32_t slot, std::uint32_t first, std::uint32_t end);
-  void Relay(std::uint32_t slot, std::span<const PendingCopy> copies);
+  // since: by copy, when it was first held (store-and-forward), or empty (held from now on).
+  void Relay(std::uint32_t slot, std::span<const PendingCopy> copies, std::span<const SimTime> since = {});
   void Deliver(std::uint32_t slot, const PendingCopy& c);
   MessageCopy CopyOf(const Payload& p, NodeId dst, std::uint64_t copy, int hops) const;
   void NotifySent(const Payload& p, NodeId dst, std::uint64_t copy, DropReason drop);
   void CountDrop(DropReason reason) { ++routes_.dropped[static_cast<std::size_t>(reason)]; }
+  // Store-and-forward (disconnected_params.h): keeps copy c at c.at, held since `since`, and
+  // schedules that node's retry; false when its buffer has no room.
+  bool Hold(std::uint32_t slot, const PendingCopy& c, SimTime since);
+  // The node's retry: expired copies are dropped, the others sent on or held again.
+  void Retry(NodeId node);
+  bool StoreAndForward() const { return stack_.disconnected.kind == DisconnectedKind::kStoreAndForward; }
   void Unsubscribe(NetworkObserver* observer);
 
   Simulator& sim_;
@@ -265,6 +273,18 @@ class Network {
   // vectors keep their capacity when a slot is reused).
   std::vector<std::vector<PendingCopy>> pending_;
   std::vector<PendingCopy> relay_copies_;  // Relay's scratch: the copies it sends on
+  std::vector<SimTime> relay_since_;       // and when each was first held
+
+  // Store-and-forward: by node, the copies it holds (in the order it took them), their bytes,
+  // whether its retry is scheduled.
+  struct HeldCopy {
+    std::uint32_t slot = 0;
+    PendingCopy copy;
+    SimTime since;
+  };
+  std::vector<std::vector<HeldCopy>> held_;
+  std::vector<std::int64_t> held_bytes_;
+  std::vector<char> retry_scheduled_;
   std::vector<std::uint32_t> free_payloads_;
   PayloadBuffers buffers_;
 

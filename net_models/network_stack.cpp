@@ -47,6 +47,7 @@ NetworkStack MakeNetworkStack(const NetworkModelParams& params, int nodes, std::
   NetworkStack stack;
   stack.mobility = std::move(mobility);
   stack.access = MakeLinkModel(params, nodes, run_seed);
+  stack.disconnected = params.disconnected;
   stack.CompleteDefaults(nodes);
   if (params.model == LinkModelKind::kRadio) {
     stack.propagation = MakeRadioPropagation(params.radio, *stack.mobility, run_seed);

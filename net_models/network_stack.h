@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "net_models/disconnected_params.h"
 #include "net_models/link_factory.h"
 #include "net_models/link_model.h"
 #include "net_models/mobility_model.h"
@@ -26,6 +27,8 @@ struct NetworkStack {
   std::unique_ptr<PropagationModel> propagation;  // null: FullMeshPropagation
   std::unique_ptr<LinkModel> access;              // the medium access; required
   std::unique_ptr<NextHopRouting> routing;        // null: DirectRouting
+  // What becomes of a copy the routing finds no way for: dropped, or held (store-and-forward).
+  DisconnectedParams disconnected;
 
   // Fills each empty layer but `access` with its default for `nodes` nodes. Throws
   // std::invalid_argument when access is empty or mobility places a different number of nodes.

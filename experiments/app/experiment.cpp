@@ -36,10 +36,12 @@ void CheckProtocolsAvailable(const ExperimentConfig& config, const std::string& 
 
 // The row files, open as temporaries until every run has been written.
 struct RowFiles {
-  RowFiles(const OutputDir& dir, const OutputsConfig& outputs, bool dropouts, bool bow_strategies)
-      : runs(dir, "runs.csv"), per_robot(dir, "per_robot.csv"), links(dir, "links.csv") {
+  // radio: a network variant is a radio (radio.csv, and the radio columns of per_robot.csv and
+  // messages.csv, result_writers.h).
+  RowFiles(const OutputDir& dir, const OutputsConfig& outputs, bool dropouts, bool bow_strategies, bool radio)
+      : radio_columns(radio), runs(dir, "runs.csv"), per_robot(dir, "per_robot.csv"), links(dir, "links.csv") {
     runs.stream() << kRunsHeader << '\n';
-    per_robot.stream() << kPerRobotHeader << '\n';
+    per_robot.stream() << PerRobotHeader(radio) << '\n';
     links.stream() << kLinksHeader << '\n';
     if (outputs.queries) {
       queries.emplace(dir, "queries.csv");
@@ -47,7 +49,7 @@ struct RowFiles {
     }
     if (outputs.messages) {
       messages.emplace(dir, "messages.csv");
-      messages->stream() << kMessagesHeader << '\n';
+      messages->stream() << MessagesHeader(radio) << '\n';
     }
     if (dropouts) {
       failover.emplace(dir, "failover.csv");
@@ -59,16 +61,21 @@ struct RowFiles {
       bow_sizes.emplace(dir, "bow_sizes.csv");
       bow_sizes->stream() << kBowSizesHeader << '\n';
     }
+    if (radio) {
+      radio_rows.emplace(dir, "radio.csv");
+      radio_rows->stream() << kRadioHeader << '\n';
+    }
   }
   void Write(const RunOutput& out) {
     for (const auto& r : out.runs) runs.stream() << CsvRow(r) << '\n';
-    for (const auto& r : out.per_robot) per_robot.stream() << CsvRow(r) << '\n';
+    for (const auto& r : out.per_robot) per_robot.stream() << CsvRow(r, radio_columns) << '\n';
     for (const auto& r : out.links) links.stream() << CsvRow(r) << '\n';
     if (queries) for (const auto& r : out.queries) queries->stream() << CsvRow(r) << '\n';
-    if (messages) for (const auto& r : out.messages) messages->stream() << CsvRow(r) << '\n';
+    if (messages) for (const auto& r : out.messages) messages->stream() << CsvRow(r, radio_columns) << '\n';
     if (failover) for (const auto& r : out.failover) failover->stream() << CsvRow(r) << '\n';
     if (bow) for (const auto& r : out.bow) bow->stream() << CsvRow(r) << '\n';
     if (bow_sizes) for (const auto& r : out.bow_sizes) bow_sizes->stream() << CsvRow(r) << '\n';
+    if (radio_rows) for (const auto& r : out.radio) radio_rows->stream() << CsvRow(r) << '\n';
   }
   void Commit() {
     runs.Commit();
@@ -79,9 +86,11 @@ struct RowFiles {
     if (failover) failover->Commit();
     if (bow) bow->Commit();
     if (bow_sizes) bow_sizes->Commit();
+    if (radio_rows) radio_rows->Commit();
   }
+  bool radio_columns;
   AtomicFile runs, per_robot, links;
-  std::optional<AtomicFile> queries, messages, failover, bow, bow_sizes;
+  std::optional<AtomicFile> queries, messages, failover, bow, bow_sizes, radio_rows;
 };
 
 // synthetic_bow's vectors are made while the inputs load (hours at its largest parameters): a
@@ -131,7 +140,8 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
   // always wrote.
   const bool bow = std::any_of(config.sweep.strategies.begin(), config.sweep.strategies.end(),
                                [](const StrategySpec& s) { return s.bag_of_words(); });
-  RowFiles files(folder.output(), config.outputs, !config.dropout.empty() && config.failover.enabled, bow);
+  const bool radio = std::count(config.network.model.begin(), config.network.model.end(), LinkModelKind::kRadio) > 0;
+  RowFiles files(folder.output(), config.outputs, !config.dropout.empty() && config.failover.enabled, bow, radio);
   std::vector<RunResult> rows;
   std::vector<PrCurve> curves;
   RunSweep(inputs, protocols, options, [&](const RunSpec&, RunOutput&& out) {

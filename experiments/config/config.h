@@ -110,6 +110,7 @@ struct NetworkConfig {
   // a radio section without model radio is refused when the config is read.
   std::vector<RadioParams> radio{RadioParams{}};
   RoutingKind routing = RoutingKind::kDirect;  // network.routing, for every variant
+  DisconnectedParams disconnected;             // network.disconnected, for every variant (radio only)
   bool operator==(const NetworkConfig&) const = default;
 };
 

@@ -160,6 +160,12 @@ void EmitNetwork(YAML::Emitter& out, const NetworkConfig& n) {
   // config's emitted form stays as it was.
   if (std::find(n.model.begin(), n.model.end(), LinkModelKind::kRadio) != n.model.end()) EmitRadio(out, n.radio);
   if (n.routing != RoutingKind::kDirect) out << YAML::Key << "routing" << YAML::Value << Name(ToString(n.routing));
+  if (n.disconnected.kind != DisconnectedKind::kDrop) {
+    out << YAML::Key << "disconnected" << YAML::Value << YAML::Flow << YAML::BeginMap
+        << YAML::Key << "kind" << YAML::Value << Name(ToString(n.disconnected.kind))
+        << YAML::Key << "hold_bytes" << YAML::Value << ToString(n.disconnected.hold_bytes)
+        << YAML::Key << "hold_time" << YAML::Value << FormatDuration(n.disconnected.hold_time) << YAML::EndMap;
+  }
   out << YAML::EndMap;
 }
 

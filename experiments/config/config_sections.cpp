@@ -144,12 +144,39 @@ std::vector<RadioParams> ReadRadio(const Field& f) {
   return out;
 }
 
+// network.disconnected: drop | store_and_forward | {kind: store_and_forward, hold_bytes, hold_time}.
+DisconnectedParams ReadDisconnected(const Field& f) {
+  DisconnectedParams d;
+  if (f.node().IsScalar()) {
+    d.kind = f.Named(ParseDisconnectedKind);
+    return d;
+  }
+  if (!f.node().IsMap()) f.Fail("expected drop, or a map such as {kind: store_and_forward, hold_bytes: 10MB, hold_time: 60s}");
+  f.ExpectMap({"kind", "hold_bytes", "hold_time"});
+  const Field kind = f.Child("kind");
+  if (!kind.present()) f.Fail("a map needs its kind (store_and_forward)");
+  d.kind = kind.Named(ParseDisconnectedKind);
+  const Field hold_bytes = f.Child("hold_bytes");
+  const Field hold_time = f.Child("hold_time");
+  if (d.kind == DisconnectedKind::kDrop) {
+    if (hold_bytes.present()) hold_bytes.Fail("applies to store_and_forward; drop holds nothing");
+    if (hold_time.present()) hold_time.Fail("applies to store_and_forward; drop holds nothing");
+  }
+  if (hold_bytes.present()) {
+    d.hold_bytes = hold_bytes.Size(Bytes(1), DisconnectedParams::kMaxHoldBytes, /*plain_integer_is_bytes=*/false);
+  }
+  if (hold_time.present()) d.hold_time = hold_time.Duration(SimTime::Nanos(1), DisconnectedParams::kMaxHoldTime);
+  f.Validate(d);
+  return d;
+}
+
 }  // namespace
 
 NetworkConfig ReadNetwork(const Field& f) {
   NetworkConfig n;
   if (!f.present()) return n;
-  f.ExpectMap({"model", "bandwidth", "latency", "queue_packets", "mtu", "loss", "links", "radio", "routing"});
+  f.ExpectMap({"model", "bandwidth", "latency", "queue_packets", "mtu", "loss", "links", "radio", "routing",
+               "disconnected"});
   if (auto c = f.Child("model"); c.present()) {
     n.model = ReadList<LinkModelKind>(c, [](const Field& i) { return i.Named(ParseLinkModelKind); });
   }
@@ -177,6 +204,12 @@ NetworkConfig ReadNetwork(const Field& f) {
     n.radio = ReadRadio(radio);
   }
   if (auto c = f.Child("routing"); c.present()) n.routing = c.Named(ParseRoutingKind);
+  if (const Field c = f.Child("disconnected"); c.present()) {
+    if (std::find(n.model.begin(), n.model.end(), LinkModelKind::kRadio) == n.model.end()) {
+      c.Fail("applies to model radio, which network.model does not list (only a radio loses its routes)");
+    }
+    n.disconnected = ReadDisconnected(c);
+  }
   return n;
 }
 

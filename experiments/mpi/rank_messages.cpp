@@ -26,7 +26,8 @@ void Fields(RunResult& r, F&& f) {
 }
 template <typename F>
 void Fields(RobotLoadRow& r, F&& f) {
-  f(r.key, r.robot, r.queries_received, r.comparisons, r.stored, r.busy_fraction, r.max_queue);
+  f(r.key, r.robot, r.queries_received, r.comparisons, r.stored, r.busy_fraction, r.max_queue,
+    r.relay_transmissions, r.relay_bytes);
 }
 template <typename F>
 void Fields(LinkRow& r, F&& f) {
@@ -40,7 +41,7 @@ void Fields(QueryRow& r, F&& f) {
 template <typename F>
 void Fields(MessageRow& r, F&& f) {
   f(r.key, r.sent_ns, r.delivered_ns, r.src, r.dst, r.channel, r.type, r.payload_bytes, r.wire_bytes, r.dropped,
-    r.role);
+    r.role, r.hops);
 }
 template <typename F> void Fields(PrCurve& c, F&& f) { f(c.label, c.robots, c.run, c.recall, c.precision); }
 template <typename F>
@@ -54,8 +55,13 @@ void Fields(BowRow& r, F&& f) {
 }
 template <typename F> void Fields(BowSizeRow& r, F&& f) { f(r.key, r.payload_bytes, r.messages); }
 template <typename F>
+void Fields(RadioRow& r, F&& f) {
+  f(r.key, r.delivered_copies, r.mean_hops, r.max_hops, r.relay_transmissions, r.relay_bytes, r.held_copies,
+    r.dropped);
+}
+template <typename F>
 void Fields(RunOutput& o, F&& f) {
-  f(o.runs, o.per_robot, o.links, o.queries, o.messages, o.curves, o.failover, o.bow, o.bow_sizes);
+  f(o.runs, o.per_robot, o.links, o.queries, o.messages, o.curves, o.failover, o.bow, o.bow_sizes, o.radio);
 }
 
 template <typename T>

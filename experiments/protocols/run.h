@@ -18,6 +18,7 @@
 #include "experiments/data/bow_data.h"
 #include "experiments/data/dataset.h"
 #include "experiments/results/bow_rows.h"
+#include "experiments/results/radio_rows.h"
 #include "experiments/results/results.h"
 #include "experiments/strategies/strategy_spec.h"
 #include "net_models/link_factory.h"
@@ -64,6 +65,7 @@ struct RunOutput {
   std::vector<FailoverRow> failover;  // sim: one per dropped robot (failover.csv)
   std::vector<BowRow> bow;            // bow_ strategies only (bow.csv)
   std::vector<BowSizeRow> bow_sizes;  // bow_ strategies only (bow_sizes.csv)
+  std::vector<RadioRow> radio;        // sim on a radio variant only (radio.csv)
 };
 
 using RunFunction = std::function<RunOutput(const RunSpec&)>;

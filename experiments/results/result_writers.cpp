@@ -65,6 +65,10 @@ const char* const kBowHeader =
     "mean_part_words,part_bytes_p50,part_bytes_p90,part_bytes_max,voted,vote_not_centralized,"
     "vote_not_centralized_fraction," DVPR_NETWORK_COLUMNS;
 const char* const kBowSizesHeader = "protocol,strategy,robots,run,payload_bytes,messages," DVPR_NETWORK_COLUMNS;
+const char* const kRadioHeader =
+    "protocol,strategy,robots,run,delivered_copies,mean_hops,max_hops,relay_transmissions,relay_bytes,held_copies,"
+    "dropped_queue_full,dropped_loss,dropped_offline,dropped_no_route,dropped_out_of_range,dropped_hop_limit,"
+    "dropped_buffer_full,dropped_expired," DVPR_NETWORK_COLUMNS;
 #undef DVPR_NETWORK_COLUMNS
 
 std::string NetworkName(const NetworkLabel& n) {
@@ -199,6 +203,32 @@ std::string CsvRow(const MessageRow& r) {
          std::to_string(r.src) + "," + std::to_string(r.dst) + "," + r.channel + "," + r.type +
          "," + std::to_string(r.payload_bytes) + "," + std::to_string(r.wire_bytes) + "," +
          (r.dropped ? "1" : "0") + "," + Network(r.key.network) + "," + r.role;
+}
+
+std::string CsvRow(const RadioRow& r) {
+  std::string out = Key(r.key) + "," + std::to_string(r.delivered_copies) + "," + FormatDouble(r.mean_hops) + "," +
+                    std::to_string(r.max_hops) + "," + std::to_string(r.relay_transmissions) + "," +
+                    std::to_string(r.relay_bytes) + "," + std::to_string(r.held_copies);
+  for (const std::int64_t d : r.dropped) out += "," + std::to_string(d);
+  return out + "," + Network(r.key.network);
+}
+
+std::string PerRobotHeader(bool radio) {
+  return std::string(kPerRobotHeader) + (radio ? ",relay_transmissions,relay_bytes" : "");
+}
+
+std::string CsvRow(const RobotLoadRow& r, bool radio) {
+  std::string out = CsvRow(r);
+  if (radio) out += "," + std::to_string(r.relay_transmissions) + "," + std::to_string(r.relay_bytes);
+  return out;
+}
+
+std::string MessagesHeader(bool radio) { return std::string(kMessagesHeader) + (radio ? ",hops" : ""); }
+
+std::string CsvRow(const MessageRow& r, bool radio) {
+  std::string out = CsvRow(r);
+  if (radio) out += "," + std::to_string(r.hops);
+  return out;
 }
 
 std::string CsvRow(const BowRow& r) {

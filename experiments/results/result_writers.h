@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "experiments/results/bow_rows.h"
+#include "experiments/results/radio_rows.h"
 #include "experiments/results/results.h"
 #include "experiments/results/safe_output.h"  // AtomicFile, WriteFileAtomic
 
@@ -38,6 +39,15 @@ extern const char* const kBowHeader;
 extern const char* const kBowSizesHeader;
 std::string CsvRow(const BowRow& r);
 std::string CsvRow(const BowSizeRow& r);
+// When a network variant of the sweep is a radio (docs/network_model.md, "The radio"): radio.csv,
+// and per_robot.csv and messages.csv each gain their radio columns at the end (relay_transmissions
+// and relay_bytes; hops), for every row of the sweep. Without a radio the files are as above.
+extern const char* const kRadioHeader;
+std::string CsvRow(const RadioRow& r);
+std::string PerRobotHeader(bool radio);
+std::string CsvRow(const RobotLoadRow& r, bool radio);
+std::string MessagesHeader(bool radio);
+std::string CsvRow(const MessageRow& r, bool radio);
 
 // Whole files at once (tests, small outputs).
 void WriteRunsCsv(const std::filesystem::path& path, const std::vector<RunResult>& rows);

@@ -104,6 +104,10 @@ struct RobotLoadRow {
   std::int64_t stored = 0;
   double busy_fraction = kNotApplicable;  // sim only
   std::int64_t max_queue = 0;
+  // Sim only: its transmissions of others' messages and their frame bytes (multi-hop routing);
+  // per_robot.csv has these columns only when a network variant is a radio.
+  std::int64_t relay_transmissions = 0;
+  std::int64_t relay_bytes = 0;
 };
 
 // One row of failover.csv (written when the config has a dropout): one dropped robot of a run
@@ -157,6 +161,9 @@ struct MessageRow {
   std::int64_t wire_bytes = 0;
   bool dropped = false;
   std::string role;                    // kMessageRoleNames; "" when the producer knows none
+  // Transmissions the copy completed (MessageCopy::hops): 1 straight to its destination; a
+  // column of messages.csv only when a network variant is a radio.
+  int hops = 0;
 };
 
 // A precision-recall curve in ranking order (for figure 2). label says what it is, e.g.

@@ -13,7 +13,7 @@ NetworkVariant MakeVariant(int index, const NetworkConfig& n, LinkModelKind mode
   v.index = index;
   v.params = NetworkModelParams{.model = model, .bandwidth = rate, .latency = latency, .queue_packets = queue,
                                 .wire = WireParams{.mtu = mtu}, .loss = n.loss, .links = n.links, .radio = radio,
-                                .routing = n.routing};
+                                .routing = n.routing, .disconnected = n.disconnected};
   v.label.variant = index;
   v.label.model = ToString(model);
   v.label.loss = ToString(n.loss.model);

@@ -83,5 +83,51 @@ TEST(ConfigRadioTest, BadRadioValuesNameTheirKey) {
               "test.yaml: network.routing: unknown value 'flooding' (expected one of: direct, shortest_path)");
 }
 
+// network.disconnected (docs/network_model.md, "Disconnection"): a name or a map, read back as
+// written, only with a radio, and every bad value one error naming its key.
+TEST(ConfigRadioTest, DisconnectedIsDropOrStoreAndForward) {
+  EXPECT_EQ(Parse("network: {model: radio}\n").network.disconnected, DisconnectedParams{});
+  const ExperimentConfig plain = Parse("network: {model: radio, routing: shortest_path, disconnected: store_and_forward}\n");
+  EXPECT_EQ(plain.network.disconnected.kind, DisconnectedKind::kStoreAndForward);
+  EXPECT_EQ(plain.network.disconnected.hold_bytes, Bytes(10'000'000));      // 10MB
+  EXPECT_EQ(plain.network.disconnected.hold_time, SimTime::Seconds(60));   // 60s
+  const ExperimentConfig c = Parse(
+      "network: {model: radio, routing: shortest_path,\n"
+      "          disconnected: {kind: store_and_forward, hold_bytes: 2MiB, hold_time: 90s}}\n");
+  EXPECT_EQ(c.network.disconnected.hold_bytes, Bytes(2 * 1024 * 1024));
+  EXPECT_EQ(c.network.disconnected.hold_time, SimTime::Seconds(90));
+  const std::string emitted = EmitConfig(c);
+  EXPECT_EQ(ParseConfig(emitted, "/nonexistent", {}, "config.yaml"), c) << emitted;
+  EXPECT_EQ(EmitConfig(Parse("network: {model: radio, disconnected: drop}\n")).find("disconnected"), std::string::npos);
+}
+
+TEST(ConfigRadioTest, BadDisconnectedValuesNameTheirKey) {
+  const auto starts_with = [](const std::string& error, const std::string& prefix) {
+    EXPECT_EQ(error.rfind(prefix, 0), 0u) << error;
+  };
+  starts_with(ErrorOf("network: {model: point_to_point, disconnected: store_and_forward}\n"),
+              "test.yaml: network.disconnected: applies to model radio, which network.model does not list");
+  starts_with(ErrorOf("network: {model: radio, disconnected: hold}\n"),
+              "test.yaml: network.disconnected: unknown value 'hold' (expected one of: drop, store_and_forward)");
+  starts_with(ErrorOf("network: {model: radio, disconnected: {hold_bytes: 1MB}}\n"),
+              "test.yaml: network.disconnected: a map needs its kind");
+  starts_with(ErrorOf("network: {model: radio, disconnected: {kind: drop, hold_time: 5s}}\n"),
+              "test.yaml: network.disconnected.hold_time: applies to store_and_forward");
+  starts_with(ErrorOf("network: {model: radio, disconnected: {kind: store_and_forward, hold_bytes: 0B}}\n"),
+              "test.yaml: network.disconnected.hold_bytes: must be in");
+  starts_with(ErrorOf("network: {model: radio, disconnected: {kind: store_and_forward, hold_bytes: 2000GiB}}\n"),
+              "test.yaml: network.disconnected.hold_bytes: must be in");
+  starts_with(ErrorOf("network: {model: radio, disconnected: {kind: store_and_forward, hold_bytes: 100}}\n"),
+              "test.yaml: network.disconnected.hold_bytes: ");
+  starts_with(ErrorOf("network: {model: radio, disconnected: {kind: store_and_forward, hold_time: 0s}}\n"),
+              "test.yaml: network.disconnected.hold_time: must be in");
+  starts_with(ErrorOf("network: {model: radio, disconnected: {kind: store_and_forward, hold_time: -1s}}\n"),
+              "test.yaml: network.disconnected.hold_time: ");
+  starts_with(ErrorOf("network: {model: radio, disconnected: {kind: store_and_forward, ttl: 5}}\n"),
+              "test.yaml: network.disconnected.ttl: unknown key");
+  starts_with(ErrorOf("network: {model: radio, disconnected: [drop]}\n"),
+              "test.yaml: network.disconnected: expected drop, or a map");
+}
+
 }  // namespace
 }  // namespace dvpr

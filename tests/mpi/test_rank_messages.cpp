@@ -173,9 +173,9 @@ TEST(RankMessagesTest, EmptyOutputArrivesEmpty) {
   const IndexedOutput got = DecodeOutput(EncodeOutput(0, RunOutput{}));
   EXPECT_EQ(got.index, 0u);
   EXPECT_TRUE(got.output.runs.empty() && got.output.queries.empty() && got.output.curves.empty());
-  // 8 bytes of index and an 8-byte count for each of the 9 row lists (runs, per_robot, links,
-  // queries, messages, curves, failover, bow, bow_sizes).
-  EXPECT_EQ(EncodeOutput(0, RunOutput{}).size(), 8u * 10u);
+  // 8 bytes of index and an 8-byte count for each of the 10 row lists (runs, per_robot, links,
+  // queries, messages, curves, failover, bow, bow_sizes, radio).
+  EXPECT_EQ(EncodeOutput(0, RunOutput{}).size(), 8u * 11u);
 }
 
 TEST(RankMessagesTest, ShortOrLongMessagesAreRefused) {

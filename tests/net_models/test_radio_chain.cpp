@@ -134,12 +134,13 @@ TEST(RadioChain, ALoopingCopyIsDroppedAtTheHopLimit) {
              std::vector<std::uint8_t>(505, 1));
   sim.Run();
   // 64 transmissions of one 150 m hop each (6 376 500 ns, above): robot 0 sends the 1st, 3rd,
-  // ..., 63rd, robot 1 the others; the 64th arrives back at robot 0, which drops it.
+  // ..., 63rd, robot 1 the others; the 64th arrives back at robot 0, which drops it. Robot 0's
+  // sends are all of its own message, so none counts as relaying.
   ASSERT_EQ(Network::kMaxHops, 64);
   EXPECT_EQ(log.lines, (std::vector<std::string>{"0>3 at 408096000ns: hop_limit"}));
   EXPECT_EQ(log.senders.size(), 64u);
   EXPECT_EQ(net.Sender(NodeId(0)).transmissions, 32u);
-  EXPECT_EQ(net.Sender(NodeId(0)).relay_transmissions, 31u);
+  EXPECT_EQ(net.Sender(NodeId(0)).relay_transmissions, 0u);
   EXPECT_EQ(net.Sender(NodeId(1)).relay_transmissions, 32u);
   EXPECT_EQ(net.Routes().dropped[static_cast<std::size_t>(DropReason::kHopLimit)], 1u);
   EXPECT_EQ(net.Counters(NodeId(0), NodeId(3)).dropped, 1u);

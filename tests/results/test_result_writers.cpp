@@ -169,6 +169,48 @@ TEST(ResultWriters, RadioLabelsReadBackFromTheNetworkName) {
   for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(CsvRow(rows[i]), CsvRow(std::vector<RunResult>{a, b, c}[i])) << i;
 }
 
+// radio.csv: the run's key, its hops and relaying, then the drops in kRadioDropReasons' order
+// (tests/protocols/sim/test_radio_rows.cpp: DropReason's after kNone).
+TEST(ResultWriters, RadioCsvRow) {
+  RadioRow r;
+  r.key = RunKey{.protocol = "sim", .strategy = "broadcast", .robots = 4, .run = 1,
+                 .network = NetworkLabel{.variant = 1, .model = "radio", .bandwidth_bps = 1e7, .latency_ms = 2,
+                                         .loss = "none", .radio = "range 200m", .routing = "shortest_path"}};
+  r.delivered_copies = 8;
+  r.mean_hops = 1.5;  // 12 hops over 8 copies
+  r.max_hops = 3;
+  r.relay_transmissions = 4;
+  r.relay_bytes = 2188;
+  r.held_copies = 5;
+  r.dropped = {0, 0, 1, 2, 3, 0, 4, 6};
+  EXPECT_EQ(CsvRow(r),
+            "sim,broadcast,4,1,8,1.5,3,4,2188,5,0,0,1,2,3,0,4,6,1,radio,1e+07,2,none,"
+            "radio 10 Mbit/s 2 ms range 200m shortest_path");
+  r.delivered_copies = 0;
+  r.mean_hops = kNotApplicable;
+  EXPECT_EQ(CsvRow(r).substr(0, 22), "sim,broadcast,4,1,0,,3");
+  for (const char* reason : kRadioDropReasons) {
+    EXPECT_NE(std::string(kRadioHeader).find(std::string("dropped_") + reason), std::string::npos) << reason;
+  }
+}
+
+// The radio columns come last, so a reader by position finds every other column where it was.
+TEST(ResultWriters, RadioColumnsOnlyWithARadio) {
+  EXPECT_EQ(PerRobotHeader(false), kPerRobotHeader);
+  EXPECT_EQ(PerRobotHeader(true), std::string(kPerRobotHeader) + ",relay_transmissions,relay_bytes");
+  EXPECT_EQ(MessagesHeader(false), kMessagesHeader);
+  EXPECT_EQ(MessagesHeader(true), std::string(kMessagesHeader) + ",hops");
+  RobotLoadRow robot;
+  robot.relay_transmissions = 3;
+  robot.relay_bytes = 1641;
+  EXPECT_EQ(CsvRow(robot, false), CsvRow(robot));
+  EXPECT_EQ(CsvRow(robot, true), CsvRow(robot) + ",3,1641");
+  MessageRow message;
+  message.hops = 2;
+  EXPECT_EQ(CsvRow(message, false), CsvRow(message));
+  EXPECT_EQ(CsvRow(message, true), CsvRow(message) + ",2");
+}
+
 // The place-recognition ratio: broadcast over decentralized (query + reply copy wire) per query.
 TEST(ResultWriters, SummaryHasTheMeasuredPlaceRecognitionRatio) {
   RunResult dec = WithRoles(SimRow(0, 0.8));  // (11 + 21) / 100 queries = 0.32 bytes per query

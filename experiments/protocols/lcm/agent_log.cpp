@@ -90,12 +90,12 @@ void ReadQuery(Fields& f, AgentLog& log) {
 
 void WriteAgentLog(const std::filesystem::path& path, const AgentLog& l) {
   std::ostringstream o;
-  o << "# dvpr agent log, format 2 (experiments/protocols/lcm/agent_log.h)\n";
+  o << "# dvpr agent log, format 3 (experiments/protocols/lcm/agent_log.h)\n";
   o << "agent," << l.robot << ',' << l.robots << ',' << l.run << ',' << l.strategy << ',' << FormatDouble(l.speedup)
     << ',' << l.start_utime << ',' << l.end_ns << ',' << l.end_reason << ',' << l.published << ','
     << l.published_bytes << ',' << l.publish_failures << ',' << l.received << ',' << l.malformed << ','
     << l.foreign << ',' << l.medium_wire_bytes << ',' << l.datagrams << ',' << l.malformed_datagrams << ','
-    << l.duplicates << ',' << l.incomplete_messages << ',' << l.kernel_dropped << '\n';
+    << l.duplicates << ',' << l.incomplete_messages << ',' << l.kernel_dropped << ',' << l.out_of_range << '\n';
   const RobotLoad& d = l.load;
   o << "load," << d.searches << ',' << d.remote_queries << ',' << d.comparisons << ',' << d.stored << ','
     << d.verifications << ',' << d.busy.ns() << ',' << d.max_queue << '\n';
@@ -127,7 +127,7 @@ AgentLog ReadAgentLog(const std::filesystem::path& path) {
     std::vector<std::string> cells = SplitCsv(line);
     const std::string kind = cells.at(0);
     if (kind == "agent") {
-      Fields f(std::move(cells), 21, where);
+      Fields f(std::move(cells), 22, where);
       l.robot = f.Next<int>();
       l.robots = f.Next<int>();
       l.run = f.Next<int>();
@@ -148,6 +148,7 @@ AgentLog ReadAgentLog(const std::filesystem::path& path) {
       l.duplicates = f.Next<std::uint64_t>();
       l.incomplete_messages = f.Next<std::uint64_t>();
       l.kernel_dropped = f.Next<std::uint64_t>();
+      l.out_of_range = f.Next<std::uint64_t>();
       have_agent = true;
     } else if (!have_agent) {
       throw std::runtime_error(where + ": the first record must be 'agent'");

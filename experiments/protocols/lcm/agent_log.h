@@ -6,7 +6,7 @@
 //
 //   agent,robot,robots,run,strategy,speedup,start_utime,end_ns,end_reason,
 //         published,published_bytes,publish_failures,received,malformed,foreign,medium_wire_bytes,
-//         datagrams,malformed_datagrams,duplicates,incomplete_messages,kernel_dropped
+//         datagrams,malformed_datagrams,duplicates,incomplete_messages,kernel_dropped,out_of_range
 //   load,searches,remote_queries,comparisons,stored,verifications,busy_ns,max_queue
 //   sent,dst,messages,payload_bytes,wire_bytes        one line per destination robot
 //   recv,src,messages                                 one line per source robot
@@ -66,6 +66,8 @@ struct AgentLog {
   std::uint64_t duplicates = 0;           // of which repeats (same sender and sequence number): dropped
   std::uint64_t incomplete_messages = 0;  // fragmented messages dropped before their last fragment
   std::uint64_t kernel_dropped = 0;       // lost to a full receive buffer (SO_RXQ_OVFL)
+  std::uint64_t out_of_range = 0;         // a radio config: teammates' messages (heartbeats too) from
+                                          // robots out of range at agent time (emulated_range.h): dropped
   RobotLoad load;
   std::vector<AgentLinkCount> sent;            // per destination robot
   std::vector<std::int64_t> received_from;     // per source robot (own echoes excluded)

@@ -20,12 +20,14 @@
 #include "agents/messages/team_sync.h"
 #include "agents/udpm/udpm_url.h"
 #include "experiments/protocols/lcm/agent_log.h"
+#include "experiments/protocols/lcm/emulated_range.h"
 #include "experiments/protocols/sim/pose_oracle.h"
 #include "experiments/protocols/inputs.h"
 #include "experiments/config/option_reader.h"
 #include "experiments/protocols/sim/sim_protocol.h"
 #include "experiments/data/split.h"
 #include "experiments/protocols/strategy_inputs.h"
+#include "experiments/strategies/run_centroids.h"
 #include "experiments/strategies/run_routing.h"
 #include "net_models/wire_format.h"
 #include "lcmtypes/channels/channels.h"
@@ -101,11 +103,7 @@ void CheckTeamSize(std::int64_t robots, std::int64_t frames) {
 }
 
 void CheckRealNetwork(const ExperimentConfig& config, const std::string& origin) {
-  const auto& models = config.network.model;
-  if (std::find(models.begin(), models.end(), LinkModelKind::kRadio) != models.end()) {
-    throw std::invalid_argument(origin + ": network.model: radio is simulated only (dvpr run); real agents use the "
-                                "real network and do not emulate the radio's range yet");
-  }
+  EmulatedRange::CheckConfig(config, origin);
 }
 
 AgentProcessOptions ParseAgentArgs(const std::vector<std::string>& args) {
@@ -256,6 +254,15 @@ struct TrafficCounters {
   int frames = 0;
   std::uint64_t foreign = 0;  // well-formed messages naming robots or frames outside the team, or
                               // sent by a process that is not the robot they name
+  EmulatedRange* range = nullptr;  // a radio config: messages from robots out of range are dropped
+  std::uint64_t out_of_range = 0;  // and counted here
+
+  // A teammate's message that the emulated radio does not let through (emulated_range.h).
+  bool OutOfRange(int src, SimTime now) {
+    if (range == nullptr || src == self || range->Hears(src, now)) return false;
+    ++out_of_range;
+    return true;
+  }
 
   void OnPublish(const std::string& channel, std::size_t size) {
     if (channel == channels::kStatus) return;
@@ -277,11 +284,18 @@ struct TrafficCounters {
   }
   // Takes the heartbeats into `sync` (which learns each robot's sender from them); counts
   // messages per source; drops well-formed messages from outside the team.
+  // now: the agent time it arrives at (the emulated radio's question).
   bool OnReceive(const std::string& channel, std::span<const std::uint8_t> bytes, std::uint64_t sender,
-                 TeamSync& sync) {
+                 TeamSync& sync, SimTime now) {
     if (channel == channels::kStatus) {
       const auto s = Decode<agent_status_t>(bytes);
-      return !s || sync.OnStatus(*s, sender);  // one that does not decode: the handler counts it
+      if (!s) return true;  // one that does not decode: the handler counts it
+      // A teammate's heartbeat out of range is not heard either (failover then notices).
+      if (s->robot >= 0 && s->robot < static_cast<int>(received_from.size()) && sync.FromMember(RobotId(s->robot), sender) &&
+          OutOfRange(s->robot, now)) {
+        return false;
+      }
+      return sync.OnStatus(*s, sender);
     }
     const auto src = SourceOf(channel, bytes, static_cast<int>(received_from.size()), frames);
     if (!src) return true;  // let the handler's decoder count it as malformed
@@ -289,6 +303,7 @@ struct TrafficCounters {
       ++foreign;
       return false;
     }
+    if (OutOfRange(*src, now)) return false;
     if (*src != self) ++received_from[static_cast<std::size_t>(*src)];
     return true;
   }
@@ -405,6 +420,7 @@ AgentLog MakeLog(const AgentProcessOptions& o, const Team& t, const TeamAgent& a
   l.incomplete_messages = datagrams.incomplete;
   l.kernel_dropped = transport.KernelDropped();
   l.foreign = sync.foreign() + traffic.foreign;
+  l.out_of_range = traffic.out_of_range;
   l.medium_wire_bytes = traffic.medium_wire_bytes;
   l.load = agent.load();
   l.sent = traffic.sent;
@@ -503,9 +519,15 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
                           static_cast<int>(data.size()), 0};
   traffic.wire.mtu = t.config.network.mtu.front();
   transport.SetPublishObserver([&](const std::string& c, std::span<const std::uint8_t> b) { traffic.OnPublish(c, b.size()); });
+  std::optional<EmulatedRange> radio;
+  const auto& models = t.config.network.model;
+  if (std::find(models.begin(), models.end(), LinkModelKind::kRadio) != models.end()) {
+    radio.emplace(t.config, data, split, o.robot, RunSeed(t.config.seed, t.robots, o.run));
+    traffic.range = &*radio;
+  }
   TeamSync sync(RobotId(o.robot), t.robots, t.key);
   transport.SetReceiveFilter([&](const std::string& c, std::span<const std::uint8_t> b, std::uint64_t sender) {
-    return traffic.OnReceive(c, b, sender, sync);
+    return traffic.OnReceive(c, b, sender, sync, transport.Now());
   });
   // The filter takes the heartbeats (it knows their sender); this keeps their channel open and
   // counts one that does not decode as malformed.
@@ -561,7 +583,8 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   const auto complete = std::count_if(log.queries.begin(), log.queries.end(), [](const QueryRecord& q) { return q.Complete(); });
   out << "robot " << o.robot << ": " << log.queries.size() << " queries, " << complete << " with every reply, "
       << log.malformed_datagrams << " malformed datagrams, " << log.malformed << " malformed messages, "
-      << log.foreign << " foreign, " << log.duplicates << " duplicates, " << log.kernel_dropped
+      << log.foreign << " foreign, " << log.out_of_range << " out of range, " << log.duplicates << " duplicates, "
+      << log.kernel_dropped
       << " dropped by a full receive buffer, end: " << end_reason << ", log " << path.string() << "\n";
   return 0;
 }

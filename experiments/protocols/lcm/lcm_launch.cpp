@@ -321,7 +321,7 @@ TeamLogs CollectTeam(const ExperimentConfig& config, const Team& team, int robot
                << ',' << (l ? std::to_string(l->queries.size()) : "") << ',' << (l ? std::to_string(incomplete) : "")
                << ',' << count(&AgentLog::malformed_datagrams) << ',' << count(&AgentLog::malformed) << ','
                << count(&AgentLog::foreign) << ',' << count(&AgentLog::duplicates) << ','
-               << count(&AgentLog::kernel_dropped) << '\n';
+               << count(&AgentLog::kernel_dropped) << ',' << count(&AgentLog::out_of_range) << '\n';
     if (!ok && !dropped) {
       const std::string why = FirstErrorLine(AgentFile(dir, team.strategy, c.robot, ".out"));
       out << "launch: " << team.strategy << " robot " << c.robot << ": " << Describe(c)
@@ -386,7 +386,7 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
   RunOutput all;
   std::ostringstream agents_csv;
   agents_csv << "strategy,robot,exit,log,queries,incomplete,malformed_datagrams,malformed_messages,foreign,"
-                "duplicates,kernel_dropped\n";
+                "duplicates,kernel_dropped,out_of_range\n";
   double reference_auc = kNotApplicable, bow_reference_auc = kNotApplicable;
   bool clean = true;
   for (const Team& team : teams) {

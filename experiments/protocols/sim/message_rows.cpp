@@ -18,11 +18,17 @@ void MessageRowRecorder::OnSent(const MessageCopy& copy) {
 }
 
 void MessageRowRecorder::OnDelivered(const MessageCopy& copy, SimTime at) {
-  if (Record* r = RecordOf(copy)) r->delivered_ns = at.ns();
+  if (Record* r = RecordOf(copy)) {
+    r->delivered_ns = at.ns();
+    r->hops = copy.hops;
+  }
 }
 
 void MessageRowRecorder::OnDropped(const MessageCopy& copy, SimTime, DropReason) {
-  if (Record* r = RecordOf(copy)) r->dropped = true;
+  if (Record* r = RecordOf(copy)) {
+    r->dropped = true;
+    r->hops = copy.hops;
+  }
 }
 
 MessageRowRecorder::Record* MessageRowRecorder::RecordOf(const MessageCopy& copy) {
@@ -49,6 +55,7 @@ std::vector<MessageRow> MessageRowRecorder::Rows() const {
     row.payload_bytes = r.payload_bytes;
     row.wire_bytes = r.wire_bytes;
     row.dropped = r.dropped;
+    row.hops = r.hops;
     row.role = kMessageRoleNames[static_cast<std::size_t>(channels::RoleOf(row.channel))];
   }
   return rows;

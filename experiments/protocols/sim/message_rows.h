@@ -35,6 +35,7 @@ class MessageRowRecorder : public NetworkObserver {
     NodeId dst;
     ChannelId channel{};
     MessageTypeId type{};
+    int hops = 0;
     bool dropped = false;
   };
   // The record of a copy sent while subscribed, or null.

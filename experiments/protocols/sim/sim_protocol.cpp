@@ -45,6 +45,29 @@ RunResult WithRoles(RunResult row, const SimRunLog& log, double fps) {
   return row;
 }
 
+// radio.csv's row: the run's hops, relaying and drops by reason (kRadioDropReasons follows
+// DropReason's order after kNone).
+RadioRow RadioRowOf(const RunKey& key, const SimRunLog& log) {
+  static_assert(kRadioDropReasons.size() + 1 == kDropReasons);
+  RadioRow row;
+  row.key = key;
+  const RouteCounters& routes = log.routes;
+  row.delivered_copies = static_cast<std::int64_t>(routes.delivered);
+  if (routes.delivered > 0) {
+    row.mean_hops = static_cast<double>(routes.delivered_hops) / static_cast<double>(routes.delivered);
+  }
+  row.max_hops = routes.max_hops;
+  row.held_copies = static_cast<std::int64_t>(routes.held);
+  for (const NodeCounters& s : log.senders) {
+    row.relay_transmissions += static_cast<std::int64_t>(s.relay_transmissions);
+    row.relay_bytes += s.relay_bytes;
+  }
+  for (std::size_t i = 0; i < row.dropped.size(); ++i) {
+    row.dropped[i] = static_cast<std::int64_t>(routes.dropped[i + 1]);
+  }
+  return row;
+}
+
 std::string LogName(const RunSpec& spec, const std::string& strategy) {
   return "sim_" + strategy + "_n" + std::to_string(spec.robots) + "_r" + std::to_string(spec.run) + "_v" +
          std::to_string(spec.network->index) + ".lcmlog";
@@ -66,6 +89,9 @@ void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLo
     row.stored = l.stored;
     row.busy_fraction = log.end.ns() > 0 ? static_cast<double>(l.busy.ns()) / static_cast<double>(log.end.ns()) : 0.0;
     row.max_queue = l.max_queue;
+    const NodeCounters& sent = log.senders[static_cast<std::size_t>(r)];
+    row.relay_transmissions = static_cast<std::int64_t>(sent.relay_transmissions);
+    row.relay_bytes = sent.relay_bytes;
     out.per_robot.push_back(row);
     for (; next_link < log.links.size() && log.links[next_link].src == r; ++next_link) {
       const PairTraffic& pair = log.links[next_link];
@@ -98,6 +124,9 @@ void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLo
   for (MessageRow m : log.messages) {
     m.key = key;
     out.messages.push_back(std::move(m));
+  }
+  if (spec.network != nullptr && spec.network->params.model == LinkModelKind::kRadio) {
+    out.radio.push_back(RadioRowOf(key, log));
   }
   for (const DropoutOutcome& d : log.dropouts) {
     std::optional<std::int64_t> detected;

@@ -100,6 +100,7 @@ SimRunLog Harvest(const Scenario& scenario, const RunRecorders& recorders) {
     log.links.push_back(PairTraffic{src.value, dst.value, c, recorders.roles.Pair(src.value, dst.value)});
   });
   for (int s = 0; s < log.robots; ++s) log.senders.push_back(network.Sender(NodeId(s)));
+  log.routes = network.Routes();
   log.roles = recorders.roles.Run();
   log.has_roles = true;
   log.messages = recorders.rows.Rows();

@@ -57,6 +57,7 @@ struct SimRunLog {
   std::vector<RobotLoad> loads;           // per robot
   std::vector<PairTraffic> links;         // the pairs that carried a message, by source, then destination
   std::vector<NodeCounters> senders;      // per robot: transmissions it put on the medium
+  RouteCounters routes;                   // hops of the delivered copies, dropped ones by reason
   RunRoleBytes roles;                     // the run's bytes by message role
   bool has_roles = false;                 // roles and links[].roles were counted (simulated networks)
   std::vector<MessageRow> messages;       // when record_messages

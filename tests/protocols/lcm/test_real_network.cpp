@@ -1,5 +1,7 @@
-// Real agents talk over the real network: a config that asks for the simulated radio is refused
-// by dvpr launch and dvpr agent before any process starts, not run as a full mesh.
+// Real agents talk over the real network; with a radio config each receiving agent emulates the
+// radio's range (emulated_range.h; tests/protocols/lcm/test_team_radio.cpp runs a team). What a
+// launched team cannot emulate - several networks, several radios, relays, store-and-forward -
+// is refused by dvpr launch and dvpr agent before any process starts, naming the key.
 #include <stdexcept>
 #include <string>
 
@@ -10,17 +12,39 @@
 namespace dvpr {
 namespace {
 
-TEST(RealNetworkTest, TheRadioIsRefusedNamingTheKey) {
-  ExperimentConfig c;
-  EXPECT_NO_THROW(CheckRealNetwork(c, "my.yaml"));
-  c.network.model = {LinkModelKind::kPointToPoint, LinkModelKind::kRadio};
+std::string ErrorOf(const ExperimentConfig& c) {
   try {
     CheckRealNetwork(c, "my.yaml");
-    FAIL() << "accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("my.yaml: network.model: radio is simulated only (dvpr run)", 0), 0u)
-        << e.what();
+    return e.what();
   }
+  return "";
+}
+
+TEST(RealNetworkTest, OneRadioWithDirectRoutingIsEmulated) {
+  ExperimentConfig c;
+  EXPECT_EQ(ErrorOf(c), "");
+  c.network.model = {LinkModelKind::kRadio};
+  EXPECT_EQ(ErrorOf(c), "");
+}
+
+TEST(RealNetworkTest, WhatARealTeamCannotEmulateIsRefusedNamingTheKey) {
+  ExperimentConfig c;
+  c.network.model = {LinkModelKind::kPointToPoint, LinkModelKind::kRadio};
+  EXPECT_EQ(ErrorOf(c), "my.yaml: network.model: a launched team runs on one network: give radio alone");
+  c.network.model = {LinkModelKind::kRadio};
+  c.network.radio = {RadioParams{}, RadioParams{}};
+  c.network.radio[1].range_m = 300;
+  EXPECT_EQ(ErrorOf(c), "my.yaml: network.radio.range: a launched team has one radio: give one range");
+  c.network.radio.resize(1);
+  c.network.routing = RoutingKind::kShortestPath;
+  EXPECT_EQ(ErrorOf(c),
+            "my.yaml: network.routing: real agents emulate the radio's range only, without relays: use direct");
+  c.network.routing = RoutingKind::kDirect;
+  c.network.disconnected.kind = DisconnectedKind::kStoreAndForward;
+  EXPECT_EQ(ErrorOf(c),
+            "my.yaml: network.disconnected: real agents emulate the radio's range only, without store-and-forward: "
+            "use drop");
 }
 
 }  // namespace

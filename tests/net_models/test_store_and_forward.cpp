@@ -1,0 +1,157 @@
+// Store-and-forward on the radio's hand-worked chain (tests/net_models/test_radio_chain.cpp):
+// robots 0, 1, 2 at 0, 150 and 300 m on a line, a 200 m range, 1 Mbit/s radios with 2 ms of
+// processing per hop, shortest_path routing. One hop of the 505-byte payload (a 547-byte frame)
+// takes 6 376 500 ns. Robot 3 is far away (1000 m) until it drives to 450 m at `arrives`.
+//
+// With store_and_forward, robot 0 keeps its message for robot 3 and asks its routing again every
+// 100 ms, at 0.1 s, 0.2 s, ...; the first retry at or after robot 3's arrival sends it along the
+// three hops: delivered at that retry + 3 x 6 376 500 ns.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "net_models/fixed_mobility.h"
+#include "net_models/network.h"
+#include "net_models/radio_link.h"
+#include "net_models/range_propagation.h"
+#include "net_models/shortest_path_routing.h"
+#include "sim/simulator.h"
+#include "tests/net_models/copy_log.h"
+
+namespace dvpr {
+namespace {
+
+constexpr std::int64_t kHopNs = 6'376'500;
+
+// Robots 0..2 fixed on the line; robot 3 at 1000 m before `arrives`, at 450 m from then on.
+class ArrivingFourth final : public MobilityModel {
+ public:
+  explicit ArrivingFourth(SimTime arrives) : arrives_(arrives) {}
+
+ private:
+  int DoNodes() const override { return 4; }
+  Position DoPositionOf(NodeId node, SimTime at) const override {
+    if (node.value < 3) return Position{150.0 * node.value, 0, 0};
+    return Position{at < arrives_ ? 1000.0 : 450.0, 0, 0};
+  }
+  std::string_view DoName() const override { return "arriving"; }
+  SimTime arrives_;
+};
+
+struct Team {
+  Team(SimTime arrives, DisconnectedParams disconnected) : net(sim, 4, Stack(arrives, disconnected)) {
+    channel = net.InternChannel("ALL");
+    type = net.InternType("dvpr.test_t");
+  }
+  static NetworkStack Stack(SimTime arrives, DisconnectedParams disconnected) {
+    NetworkStack s;
+    s.mobility = std::make_unique<ArrivingFourth>(arrives);
+    s.propagation = std::make_unique<RangePropagation>(*s.mobility, 200.0);
+    s.access = std::make_unique<RadioLink>(RadioLinkParams{DataRate::Mbps(1), SimTime::Millis(2), 100}, 4);
+    s.routing = std::make_unique<ShortestPathRouting>(*s.propagation, 4);
+    s.disconnected = disconnected;
+    return s;
+  }
+  void ToThree(int messages = 1) {
+    const NodeId three[] = {NodeId(3)};
+    for (int i = 0; i < messages; ++i) {
+      net.SendTo(NodeId(0), three, channel, type, std::vector<std::uint8_t>(505, 1));
+    }
+  }
+  std::uint64_t Dropped(DropReason reason) const { return net.Routes().dropped[static_cast<std::size_t>(reason)]; }
+  Simulator sim;
+  Network net;
+  testing_support::CopyLog log;
+  ObserverSubscription subscription = net.Subscribe(log);
+  ChannelId channel{};
+  MessageTypeId type{};
+};
+
+DisconnectedParams StoreAndForward(Bytes hold_bytes = Bytes(10'000'000), SimTime hold_time = SimTime::Seconds(60)) {
+  return DisconnectedParams{.kind = DisconnectedKind::kStoreAndForward, .hold_bytes = hold_bytes, .hold_time = hold_time};
+}
+
+TEST(StoreAndForward, HeldUntilTheFirstRetryAfterTheRouteAppears) {
+  // Robot 3 arrives at 1.05 s; the retries at 0.1 .. 1.0 s find no route, the one at 1.1 s does.
+  Team t(SimTime::Millis(1050), StoreAndForward());
+  t.ToThree();
+  t.sim.Run();
+  EXPECT_EQ(t.log.lines, (std::vector<std::string>{"0>3 delivered at " + std::to_string(1'100'000'000 + 3 * kHopNs) + "ns"}));
+  EXPECT_EQ(t.log.delivered_hops, (std::vector<int>{3}));
+  // The send at 0 s put nothing on the air (its report says 0 bytes); then one transmission
+  // each, robot 0's at 1.1 s.
+  EXPECT_EQ(t.log.senders, (std::vector<int>{0, 0, 1, 2}));
+  EXPECT_EQ(t.net.Routes().held, 1u);                     // taken once, kept through ten retries
+  EXPECT_EQ(t.net.Sender(NodeId(0)).relay_transmissions, 0u);  // its own message, sent late
+  EXPECT_EQ(t.net.Sender(NodeId(1)).relay_transmissions, 1u);
+  EXPECT_EQ(t.net.Sender(NodeId(2)).relay_bytes, 547);
+  EXPECT_EQ(t.net.Routes().dropped, (std::array<std::uint64_t, kDropReasons>{}));
+}
+
+TEST(StoreAndForward, ARetryAtTheArrivalInstantSendsAtOnce) {
+  // The graph of the window starting at 0.3 s already places robot 3 at 450 m.
+  Team t(SimTime::Millis(300), StoreAndForward());
+  t.ToThree();
+  t.sim.Run();
+  EXPECT_EQ(t.log.lines, (std::vector<std::string>{"0>3 delivered at " + std::to_string(300'000'000 + 3 * kHopNs) + "ns"}));
+}
+
+TEST(StoreAndForward, WithDropTheCopyIsLostAsUnreachable) {
+  Team t(SimTime::Millis(1050), DisconnectedParams{});
+  t.ToThree();
+  t.sim.Run();
+  EXPECT_EQ(t.log.lines, (std::vector<std::string>{"0>3 at 0ns: no_route"}));
+  EXPECT_EQ(t.Dropped(DropReason::kNoRoute), 1u);
+  EXPECT_EQ(t.net.Routes().held, 0u);
+}
+
+TEST(StoreAndForward, ACopyHeldHoldTimeExpiresAtThatRetry) {
+  // Robot 3 never comes; held from 0 s for 0.5 s: the retry at 0.5 s drops it.
+  Team t(SimTime::Max(), StoreAndForward(Bytes(10'000'000), SimTime::Millis(500)));
+  t.ToThree();
+  t.sim.Run();
+  EXPECT_EQ(t.log.lines, (std::vector<std::string>{"0>3 at 500000000ns: expired"}));
+  EXPECT_EQ(t.Dropped(DropReason::kExpired), 1u);
+  EXPECT_EQ(t.net.Counters(NodeId(0), NodeId(3)).dropped, 1u);
+  EXPECT_EQ(t.log.senders, (std::vector<int>{0}));  // the send's report (0 bytes); the retries sent nothing
+  EXPECT_EQ(t.net.Sender(NodeId(0)).medium_bytes, 0);  // nothing went on the air
+}
+
+TEST(StoreAndForward, TheBufferHoldsWhatFitsTheRestIsDroppedBufferFull) {
+  // Each held copy takes its message's 547 wire bytes: 1093 B hold one, 1094 B two.
+  Team one(SimTime::Millis(1050), StoreAndForward(Bytes(1093)));
+  one.ToThree(2);
+  one.sim.Run();
+  EXPECT_EQ(one.log.lines, (std::vector<std::string>{"0>3 at 0ns: buffer_full",
+                                                     "0>3 delivered at " + std::to_string(1'100'000'000 + 3 * kHopNs) + "ns"}));
+  EXPECT_EQ(one.Dropped(DropReason::kBufferFull), 1u);
+
+  Team two(SimTime::Millis(1050), StoreAndForward(Bytes(1094)));
+  two.ToThree(2);
+  two.sim.Run();
+  EXPECT_EQ(two.Dropped(DropReason::kBufferFull), 0u);
+  EXPECT_EQ(two.net.Routes().delivered, 2u);
+  // Both leave robot 0 at 1.1 s, one after the other: the second frame waits for the first
+  // (4.376 ms on the air) at every hop.
+  EXPECT_EQ(two.log.lines.back(), "0>3 delivered at " + std::to_string(1'100'000'000 + 3 * kHopNs + 4'376'000) + "ns");
+}
+
+TEST(StoreAndForward, BadParametersAreRefusedNamingTheField) {
+  const auto error = [](DisconnectedParams d) {
+    try {
+      d.Validate();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(error(StoreAndForward(Bytes(0))), "hold_bytes: must be in [1B, 1024GiB], got 0B");
+  EXPECT_EQ(error(StoreAndForward(Bytes(10), SimTime::Zero())).rfind("hold_time: must be in (0s, ", 0), 0u);
+  EXPECT_EQ(error(StoreAndForward()), "");
+}
+
+}  // namespace
+}  // namespace dvpr
