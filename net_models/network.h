@@ -135,6 +135,9 @@ class Network {
   const LinkModel& link() const { return *stack_.access; }
   const MobilityModel& mobility() const { return *stack_.mobility; }
   const PropagationModel& propagation() const { return *stack_.propagation; }
+  // Reach is not const (a model may keep state); asking it changes nothing the network counts
+  // (connectivity.h asks it after a run).
+  PropagationModel& propagation() { return *stack_.propagation; }
   const NextHopRouting& routing() const { return *stack_.routing; }
   const WireParams& wire() const { return wire_; }
 

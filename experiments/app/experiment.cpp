@@ -55,6 +55,10 @@ struct RowFiles {
       failover.emplace(dir, "failover.csv");
       failover->stream() << kFailoverHeader << '\n';
     }
+    if (outputs.connectivity) {
+      connectivity.emplace(dir, "connectivity.csv");
+      connectivity->stream() << kConnectivityHeader << '\n';
+    }
     if (bow_strategies) {
       bow.emplace(dir, "bow.csv");
       bow->stream() << kBowHeader << '\n';
@@ -76,6 +80,7 @@ struct RowFiles {
     if (bow) for (const auto& r : out.bow) bow->stream() << CsvRow(r) << '\n';
     if (bow_sizes) for (const auto& r : out.bow_sizes) bow_sizes->stream() << CsvRow(r) << '\n';
     if (radio_rows) for (const auto& r : out.radio) radio_rows->stream() << CsvRow(r) << '\n';
+    if (connectivity) for (const auto& r : out.connectivity) connectivity->stream() << CsvRow(r) << '\n';
   }
   void Commit() {
     runs.Commit();
@@ -87,10 +92,11 @@ struct RowFiles {
     if (bow) bow->Commit();
     if (bow_sizes) bow_sizes->Commit();
     if (radio_rows) radio_rows->Commit();
+    if (connectivity) connectivity->Commit();
   }
   bool radio_columns;
   AtomicFile runs, per_robot, links;
-  std::optional<AtomicFile> queries, messages, failover, bow, bow_sizes, radio_rows;
+  std::optional<AtomicFile> queries, messages, failover, bow, bow_sizes, radio_rows, connectivity;
 };
 
 // synthetic_bow's vectors are made while the inputs load (hours at its largest parameters): a
@@ -144,13 +150,15 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
   RowFiles files(folder.output(), config.outputs, !config.dropout.empty() && config.failover.enabled, bow, radio);
   std::vector<RunResult> rows;
   std::vector<PrCurve> curves;
+  std::vector<RunConnectivity> connectivity;  // one per simulated run that tracked it, in spec order
   RunSweep(inputs, protocols, options, [&](const RunSpec&, RunOutput&& out) {
     files.Write(out);
     rows.insert(rows.end(), out.runs.begin(), out.runs.end());
     for (auto& c : out.curves) curves.push_back(std::move(c));
+    SummarizeConnectivityRuns(out.connectivity, connectivity);
   });
   files.Commit();
-  WriteFileAt(folder.output(), "summary.json", SummaryJson(rows));
+  WriteFileAt(folder.output(), "summary.json", SummaryJson(rows, connectivity));
   if (config.outputs.figures) {
     WriteFigureData(dir, FigureData{&inputs.deployment.descriptors, &inputs.training, &curves,
                                     config.evaluation.suppression_frames});

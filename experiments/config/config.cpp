@@ -278,7 +278,7 @@ NetworkConfig ReadNetwork(const Field& f);
 VerificationParams ReadVerification(const Field& f);
 ServiceParams ReadService(const Field& f);
 std::vector<Dropout> ReadDropout(const Field& f, const SweepConfig& sweep);
-OutputsConfig ReadOutputs(const Field& f, const SweepConfig& sweep);
+OutputsConfig ReadOutputs(const Field& f, const SweepConfig& sweep, const NetworkConfig& network);
 FailoverParams ReadFailover(const Field& f, const SweepConfig& sweep);
 }  // namespace config_detail
 
@@ -325,7 +325,7 @@ ExperimentConfig ReadExperiment(const Field& root, const std::string& default_na
   c.agent.verification = config_detail::ReadVerification(root.Child("verification"));
   c.agent.service = config_detail::ReadService(root.Child("service"));
   c.dropout = config_detail::ReadDropout(root.Child("dropout"), c.sweep);
-  c.outputs = config_detail::ReadOutputs(root.Child("outputs"), c.sweep);
+  c.outputs = config_detail::ReadOutputs(root.Child("outputs"), c.sweep, c.network);
   c.failover = config_detail::ReadFailover(root.Child("failover"), c.sweep);
   return c;
 }

@@ -128,6 +128,10 @@ struct OutputsConfig {
   bool queries = false;
   bool messages = false;
   bool lcm_log = false;
+  // connectivity.csv (issue 33): who reaches whom at every frame period of each simulated run on
+  // a radio variant, and its summary in summary.json. Only with a variant of model radio: the
+  // other models place no robot, so there is no range to be in.
+  bool connectivity = false;
   std::optional<int> pr_robots;  // n of figure 2 (PR curves); empty = 10 if swept, else the largest
   bool operator==(const OutputsConfig&) const = default;
 };

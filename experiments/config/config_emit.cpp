@@ -207,6 +207,8 @@ void EmitRest(YAML::Emitter& out, const ExperimentConfig& c) {
       << YAML::Key << "queries" << YAML::Value << o.queries
       << YAML::Key << "messages" << YAML::Value << o.messages
       << YAML::Key << "lcm_log" << YAML::Value << o.lcm_log;
+  // Only when on, so the config.yaml of every other run stays as it was before the key existed.
+  if (o.connectivity) out << YAML::Key << "connectivity" << YAML::Value << true;
   if (o.pr_robots) out << YAML::Key << "pr_robots" << YAML::Value << *o.pr_robots;
   out << YAML::EndMap;
 }

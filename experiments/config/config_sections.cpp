@@ -263,14 +263,22 @@ std::vector<Dropout> ReadDropout(const Field& f, const SweepConfig& sweep) {
   return out;
 }
 
-OutputsConfig ReadOutputs(const Field& f, const SweepConfig& sweep) {
+OutputsConfig ReadOutputs(const Field& f, const SweepConfig& sweep, const NetworkConfig& network) {
   OutputsConfig o;
   if (!f.present()) return o;
-  f.ExpectMap({"figures", "queries", "messages", "lcm_log", "pr_robots"});
+  f.ExpectMap({"figures", "queries", "messages", "lcm_log", "connectivity", "pr_robots"});
   if (auto c = f.Child("figures"); c.present()) o.figures = c.Bool();
   if (auto c = f.Child("queries"); c.present()) o.queries = c.Bool();
   if (auto c = f.Child("messages"); c.present()) o.messages = c.Bool();
   if (auto c = f.Child("lcm_log"); c.present()) o.lcm_log = c.Bool();
+  if (auto c = f.Child("connectivity"); c.present()) {
+    o.connectivity = c.Bool();
+    const bool radio = std::find(network.model.begin(), network.model.end(), LinkModelKind::kRadio) != network.model.end();
+    if (o.connectivity && !radio) {
+      c.Fail("needs a network variant of model radio (network.model lists none): robots have positions and ranges "
+             "only on the radio");
+    }
+  }
   if (auto c = f.Child("pr_robots"); c.present()) {
     o.pr_robots = static_cast<int>(c.Int(2, 100000));
     if (std::find(sweep.robots.begin(), sweep.robots.end(), *o.pr_robots) == sweep.robots.end()) {

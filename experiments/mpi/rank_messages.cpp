@@ -60,8 +60,13 @@ void Fields(RadioRow& r, F&& f) {
     r.dropped);
 }
 template <typename F>
+void Fields(ConnectivityRow& r, F&& f) {
+  f(r.key, r.time_ns, r.pairs_in_range, r.components, r.largest_component, r.mean_hops, r.max_hops);
+}
+template <typename F>
 void Fields(RunOutput& o, F&& f) {
-  f(o.runs, o.per_robot, o.links, o.queries, o.messages, o.curves, o.failover, o.bow, o.bow_sizes, o.radio);
+  f(o.runs, o.per_robot, o.links, o.queries, o.messages, o.curves, o.failover, o.bow, o.bow_sizes, o.radio,
+    o.connectivity);
 }
 
 template <typename T>

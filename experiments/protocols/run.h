@@ -19,6 +19,7 @@
 #include "experiments/data/dataset.h"
 #include "experiments/results/bow_rows.h"
 #include "experiments/results/radio_rows.h"
+#include "experiments/results/connectivity_rows.h"
 #include "experiments/results/results.h"
 #include "experiments/strategies/strategy_spec.h"
 #include "net_models/link_factory.h"
@@ -66,6 +67,7 @@ struct RunOutput {
   std::vector<BowRow> bow;            // bow_ strategies only (bow.csv)
   std::vector<BowSizeRow> bow_sizes;  // bow_ strategies only (bow_sizes.csv)
   std::vector<RadioRow> radio;        // sim on a radio variant only (radio.csv)
+  std::vector<ConnectivityRow> connectivity;  // sim on a radio variant, when outputs.connectivity
 };
 
 using RunFunction = std::function<RunOutput(const RunSpec&)>;

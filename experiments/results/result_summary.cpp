@@ -29,6 +29,9 @@ struct Group {
   std::map<std::string, Mean> means;  // keyed by column; printed in kMetricOrder
 };
 
+// From connectivity.csv's rows (SummarizeConnectivity), for the groups that have them.
+const char* const kConnectivityMetrics[] = {"connected_time_share", "connected_pair_mean_hops"};
+
 const char* const kMetricOrder[] = {
     "auc", "auc_reference", "relative_auc", "worst_balance_ratio", "queries", "messages",
     "payload_bytes", "wire_bytes", "bytes_per_query", "mean_latency_ms", "p99_latency_ms",
@@ -119,6 +122,9 @@ void WriteGroup(std::ostringstream& s, const Group& g) {
   if (g.means.at("copy_wire_bytes").count > 0) {  // bytes by role: only where a network counted them
     for (const std::string& name : RoleMetricNames()) s << ", " << JsonString(name) << ": " << g.means.at(name).Json();
   }
+  for (const char* name : kConnectivityMetrics) {  // only where connectivity was tracked
+    if (const auto it = g.means.find(name); it != g.means.end()) s << ", " << JsonString(name) << ": " << it->second.Json();
+  }
   s << "}}";
 }
 
@@ -148,13 +154,20 @@ void WriteRatios(std::ostringstream& s, const std::vector<Group>& groups, const 
 
 }  // namespace
 
-std::string SummaryJson(const std::vector<RunResult>& rows) {
+std::string SummaryJson(const std::vector<RunResult>& rows, const std::vector<RunConnectivity>& connectivity) {
   std::vector<Group> groups;
   std::map<std::string, std::size_t> index;
   for (const auto& r : rows) {
     auto [it, added] = index.emplace(GroupId(r.key, r.key.strategy), groups.size());
     if (added) groups.push_back(Group{r.key, 0, {}});
     AddRun(groups[it->second], r);
+  }
+  for (const RunConnectivity& c : connectivity) {
+    const auto it = index.find(GroupId(c.key, c.key.strategy));
+    if (it == index.end()) continue;  // a run without its runs.csv row: nothing to stand beside
+    Group& g = groups[it->second];
+    g.means[kConnectivityMetrics[0]].Add(c.connected_time_share);
+    g.means[kConnectivityMetrics[1]].Add(c.connected_pair_mean_hops);
   }
   std::ostringstream s;
   s << "{\n  \"groups\": [";

@@ -13,6 +13,7 @@
 
 #include "experiments/results/bow_rows.h"
 #include "experiments/results/radio_rows.h"
+#include "experiments/results/connectivity_rows.h"
 #include "experiments/results/results.h"
 #include "experiments/results/safe_output.h"  // AtomicFile, WriteFileAtomic
 
@@ -55,7 +56,9 @@ void WriteRunsCsv(const std::filesystem::path& path, const std::vector<RunResult
 // appearance, the number of runs and the mean of every runs.csv metric (NaNs skipped; null
 // when no run has the metric; the by-role ones only where a network counted them), then
 // place_recognition_ratio: broadcast over decentralized PlaceRecognitionBytesPerQuery means.
-std::string SummaryJson(const std::vector<RunResult>& rows);
+// A group with runs in `connectivity` (outputs.connectivity) also has the means over those runs
+// of connected_time_share and connected_pair_mean_hops (connectivity_rows.h).
+std::string SummaryJson(const std::vector<RunResult>& rows, const std::vector<RunConnectivity>& connectivity = {});
 
 // Offered wire bytes of the place-recognition messages (query and reply, every destination
 // copy) per query: the quantity of the paper's n - 1 law. NaN without bytes by role.

@@ -141,6 +141,7 @@ TEST(RankMessagesTest, RoleBytesFailoverAndBowRowsArrive) {
   bow.vote_not_centralized = 3;
   sent.bow = {bow};
   sent.bow_sizes = {BowSizeRow{Key(), 138, 7}};
+  sent.connectivity = {ConnectivityRow{Key(), 300000000, 2, 1, 3, 4.0 / 3.0, 2}};
 
   const RunOutput o = DecodeOutput(EncodeOutput(0, sent)).output;
   ASSERT_EQ(o.runs.size(), 1u);
@@ -167,15 +168,20 @@ TEST(RankMessagesTest, RoleBytesFailoverAndBowRowsArrive) {
   ASSERT_EQ(o.bow_sizes.size(), 1u);
   EXPECT_EQ(o.bow_sizes[0].payload_bytes, 138);
   EXPECT_EQ(o.bow_sizes[0].messages, 7);
+  ASSERT_EQ(o.connectivity.size(), 1u);
+  EXPECT_EQ(o.connectivity[0].time_ns, 300000000);
+  EXPECT_EQ(o.connectivity[0].largest_component, 3);
+  EXPECT_EQ(o.connectivity[0].mean_hops, 4.0 / 3.0);  // the double's bits, not a rounded text
+  EXPECT_EQ(o.connectivity[0].max_hops, 2);
 }
 
 TEST(RankMessagesTest, EmptyOutputArrivesEmpty) {
   const IndexedOutput got = DecodeOutput(EncodeOutput(0, RunOutput{}));
   EXPECT_EQ(got.index, 0u);
   EXPECT_TRUE(got.output.runs.empty() && got.output.queries.empty() && got.output.curves.empty());
-  // 8 bytes of index and an 8-byte count for each of the 10 row lists (runs, per_robot, links,
-  // queries, messages, curves, failover, bow, bow_sizes, radio).
-  EXPECT_EQ(EncodeOutput(0, RunOutput{}).size(), 8u * 11u);
+  // 8 bytes of index and an 8-byte count for each of the 11 row lists (runs, per_robot, links,
+  // queries, messages, curves, failover, bow, bow_sizes, radio, connectivity).
+  EXPECT_EQ(EncodeOutput(0, RunOutput{}).size(), 8u * 12u);
 }
 
 TEST(RankMessagesTest, ShortOrLongMessagesAreRefused) {

@@ -1,6 +1,7 @@
 #include "experiments/protocols/sim/sim_protocol.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -32,6 +33,10 @@ SimRunParams ToSimParams(const ExperimentConfig& c, const RunSpec& spec) {
   s.start_utime = c.start_utime;
   p.evaluation.gt_radius_m = c.evaluation.radius_m;
   p.outputs.record_messages = c.outputs.messages;
+  // One step per frame period, as the robots move between frames (FrameStream::TimeOf(1)).
+  if (c.outputs.connectivity && s.network.model == LinkModelKind::kRadio) {
+    p.outputs.connectivity_step = SimTime::Nanos(std::llround(1e9 / c.dataset.fps));
+  }
   return p;
 }
 
@@ -132,6 +137,10 @@ void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLo
     std::optional<std::int64_t> detected;
     if (d.detected) detected = d.detected->ns();
     out.failover.push_back(FailoverRow{key, d.robot.value, d.at.ns(), detected, d.stored, d.kept, s.latency.incomplete});
+  }
+  for (const ConnectivitySnapshot& c : log.connectivity) {
+    out.connectivity.push_back(ConnectivityRow{key, c.at.ns(), c.pairs_in_range, c.components, c.largest_component,
+                                               c.mean_hops, c.max_hops});
   }
 }
 

@@ -121,6 +121,11 @@ SimRunLog RunTeam(const Dataset& data, const SimRunParams& params, const AgentMa
   RunRecorders recorders(scenario.network(), params);
   scenario.Run();
   SimRunLog log = Harvest(scenario, recorders);
+  if (params.outputs.connectivity_step > SimTime::Zero()) {
+    // The run's own propagation over the positions its network used; from 0 to the last frame.
+    const SimTime last = *std::max_element(log.capture_time.begin(), log.capture_time.end());
+    log.connectivity = ConnectivityOver(scenario.network().propagation(), log.robots, params.outputs.connectivity_step, last);
+  }
   if (recorders.event_log_file) recorders.event_log_file->Close();
   return log;
 }

@@ -16,6 +16,7 @@
 #include "experiments/data/dataset.h"
 #include "experiments/results/results.h"
 #include "experiments/evaluation/sim_metrics.h"
+#include "net_models/connectivity.h"
 #include "net_models/link_factory.h"
 #include "net_models/network.h"
 
@@ -30,6 +31,9 @@ struct SimRunParams {
   struct Outputs {
     bool record_messages = false;         // keep one MessageRow per message and destination
     std::filesystem::path lcm_log;        // non-empty: write every delivered message there
+    // Positive: after the run, ask the network's propagation who reaches whom at 0, step,
+    // 2 step, ... up to the last frame's capture time (SimRunLog::connectivity).
+    SimTime connectivity_step;
   } outputs;
   void Validate(const Dataset& data) const { scenario.Validate(data); }
 };
@@ -67,6 +71,7 @@ struct SimRunLog {
   std::uint64_t events = 0;
   SimTime end;
   std::vector<DropoutOutcome> dropouts;   // one per params.scenario.dropouts entry, in its order
+  std::vector<ConnectivitySnapshot> connectivity;  // when outputs.connectivity_step is positive
 };
 
 // Every robot routes through its own component made by `routing` (a stateless strategy or one
