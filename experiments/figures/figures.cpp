@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 
+#include "experiments/figures/figures_radio.h"
 #include "experiments/figures/figures_traffic.h"
 #include "experiments/figures/gnuplot_run.h"
 #include "experiments/figures/gnuplot_text.h"
@@ -194,6 +195,10 @@ std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::ostream& log) {
   }
   // Figure 9 only where bag-of-words ran (no "skipped" line elsewhere).
   if (WriteBowComparisonData(out_dir, data, rows)) draw("bow_comparison", BowComparisonScript);
+  // The radio's figures only where the results have them (figures_radio.h).
+  for (const auto& [name, f] : RadioFigures(out_dir, data, rows)) {
+    draw(name, [f](const fs::path&, const fs::path& png) { return Preamble(png, f.width, f.height) + f.body; });
+  }
   if (failures > 0) {
     throw std::runtime_error(failed + (failures > 1 ? " (and " + std::to_string(failures - 1) + " more figures)" : ""));
   }

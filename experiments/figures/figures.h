@@ -18,6 +18,8 @@
 //   12 bow_comparison.png    global descriptors vs bag-of-words (docs/bow.md): relative AUC and
 //                            query bytes vs n, partial-query sizes, votes off the centralized
 //                            best; drawn only when the folder has bow.csv
+//   13 connectivity.png, radio_range.png  the radio's (figures_radio.h): drawn only when the
+//                            folder has connectivity.csv, or radio variants of two or more ranges
 #include <filesystem>
 #include <ostream>
 #include <string>

@@ -1,0 +1,255 @@
+// The radio's figures (figures_radio.h): their data files and gnuplot commands.
+#include "experiments/figures/figures_radio.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+#include <tuple>
+
+#include "experiments/figures/figure_style.h"
+#include "experiments/figures/gnuplot_text.h"
+#include "experiments/results/result_writers.h"
+
+namespace dvpr {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A number for a data file; gnuplot skips the point of a NaN.
+std::string Num(double v) { return std::isnan(v) ? "NaN" : FormatDouble(v); }
+
+// One colour per radio variant, in variant order (light to dark: short to long ranges).
+constexpr const char* kVariantColours[6] = {"#fdae61", "#f46d43", "#d73027", "#74add1", "#4575b4", "#313695"};
+
+// The legend name of network variant v: its radio label ("range 200m"), else its network name.
+std::string VariantName(const std::vector<RunResult>& rows, int v) {
+  for (const RunResult& r : rows) {
+    if (r.key.network.variant != v || r.key.network.model.empty()) continue;
+    return r.key.network.radio.empty() ? NetworkName(r.key.network) : r.key.network.radio;
+  }
+  return "network variant " + std::to_string(v);
+}
+
+struct Step {
+  double time_s = 0;
+  int pairs = 0;
+  int components = 0;
+};
+
+}  // namespace
+
+std::optional<double> RadioRangeMetres(const std::string& radio) {
+  constexpr std::string_view kPrefix = "range ";
+  if (radio.size() <= kPrefix.size() || radio.compare(0, kPrefix.size(), kPrefix) != 0) return std::nullopt;
+  const char* begin = radio.data() + kPrefix.size();
+  const char* end = radio.data() + radio.size();
+  long long value = 0;
+  const auto [rest, ec] = std::from_chars(begin, end, value);
+  if (ec != std::errc() || rest == begin || value <= 0) return std::nullopt;
+  const std::string_view unit(rest, static_cast<std::size_t>(end - rest));
+  if (unit == "m") return static_cast<double>(value);
+  if (unit == "mm") return static_cast<double>(value) / 1000.0;
+  return std::nullopt;
+}
+
+std::optional<FigureScript> WriteConnectivityFigure(const fs::path& dir, const CsvTable& t, const std::vector<RunResult>& rows,
+                                                    std::string& why) {
+  if (t.rows.empty()) {
+    why = "no connectivity.csv rows";
+    return std::nullopt;
+  }
+  const std::size_t c_strategy = t.Column("strategy"), c_robots = t.Column("robots"), c_run = t.Column("run"),
+                    c_variant = t.Column("network_variant"), c_time = t.Column("time_s"),
+                    c_pairs = t.Column("pairs_in_range"), c_components = t.Column("components");
+  const std::string strategy = t.rows.front()[c_strategy];
+  int first_run = t.Integer(0, c_run, 0, 1 << 30);
+  for (std::size_t i = 0; i < t.rows.size(); ++i) first_run = std::min(first_run, t.Integer(i, c_run, 0, 1 << 30));
+  // (n, variant) -> steps of the first run, first strategy.
+  std::map<std::pair<int, int>, std::vector<Step>> series;
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    if (t.rows[i][c_strategy] != strategy || t.Integer(i, c_run, 0, 1 << 30) != first_run) continue;
+    const int n = t.Integer(i, c_robots, 2, 1 << 20);
+    series[{n, t.Integer(i, c_variant, 0, 1 << 20)}].push_back(
+        Step{t.Count(i, c_time), t.Integer(i, c_pairs, 0, n * (n - 1) / 2), t.Integer(i, c_components, 1, n)});
+  }
+  std::set<int> all_n;
+  for (const auto& [key, steps] : series) all_n.insert(key.first);
+  std::vector<int> shown(all_n.begin(), all_n.end());
+  if (shown.size() > 3) shown = {shown.back()};
+  std::ostringstream top, bottom;
+  for (std::size_t col = 0; col < shown.size(); ++col) {
+    const int n = shown[col];
+    const std::string file = "conn_" + std::to_string(n) + ".dat";
+    std::string dat;
+    std::ostringstream plot_share, plot_comp;
+    int block = 0;
+    for (const auto& [key, steps] : series) {
+      if (key.first != n) continue;
+      const std::string name = VariantName(rows, key.second);
+      dat += "# " + OneLineText(name) + "\n";
+      for (const Step& s : steps) {
+        dat += FormatDouble(s.time_s) + " " + std::to_string(s.pairs) + " " +
+               FormatDouble(100.0 * s.pairs / (n * (n - 1) / 2.0)) + " " + std::to_string(s.components) + "\n";
+      }
+      dat += "\n\n";
+      const std::string style = " with steps lw 2 lc rgb '" + std::string(kVariantColours[block % 6]) + "' title " +
+                                GnuplotQuote(name);
+      plot_share << (block ? ", \\\n     " : "plot ") << GnuplotQuote(file) << " index " << block << " using 1:3" << style;
+      plot_comp << (block ? ", \\\n     " : "plot ") << GnuplotQuote(file) << " index " << block << " using 1:4" << style;
+      ++block;
+    }
+    WriteFileAtomic(dir / file, dat);
+    top << "set title " << GnuplotQuote("n = " + std::to_string(n) + ": robot pairs in range of each other") << "\n"
+        << "set ylabel '% of the " << n * (n - 1) / 2 << " pairs'\nset yrange [0:100]\n"
+        << (col == 0 ? "set key top right\n" : "unset key\n") << plot_share.str() << "\n";
+    bottom << "set title " << GnuplotQuote("n = " + std::to_string(n) + ": separate networks (1 = the team is one network)")
+           << "\nset ylabel 'connected components'\nset yrange [0:" << n + 1 << "]\n"
+           << (col == 0 ? "set key top right\n" : "unset key\n")
+           << plot_comp.str() << "\n";
+  }
+  FigureScript f;
+  f.width = 600 + 500 * static_cast<int>(shown.size());
+  f.height = 900;
+  // gnuplot's multiplot fills row by row: the top row (pairs) is drawn first for every column.
+  f.body = "set multiplot layout 2," + std::to_string(shown.size()) + " title " +
+           GnuplotQuote("Who reaches whom over time (connectivity.csv: run " + std::to_string(first_run) +
+                        ", one line per radio variant)") +
+           " font ',13'\nset xlabel 'virtual time (s)'\nset grid\n" + top.str() + bottom.str() + "unset multiplot\n";
+  return f;
+}
+
+namespace {
+
+struct Acc {
+  double sum = 0;
+  int count = 0;
+  void Add(double v) {
+    if (!std::isnan(v)) sum += v, ++count;
+  }
+  double Mean() const { return count ? sum / count : kNotApplicable; }
+};
+
+// Share of queries answered (every reply in: latency_ns written) per (strategy, n, variant),
+// mean over runs; empty without queries.csv rows.
+std::map<std::tuple<std::string, int, int>, Acc> AnsweredShares(const CsvTable& q) {
+  std::map<std::tuple<std::string, int, int>, Acc> out;
+  if (q.rows.empty()) return out;
+  const std::size_t c_protocol = q.Column("protocol"), c_strategy = q.Column("strategy"), c_robots = q.Column("robots"),
+                    c_run = q.Column("run"), c_variant = q.Column("network_variant"), c_latency = q.Column("latency_ns");
+  std::map<std::tuple<std::string, int, int, int>, std::pair<long long, long long>> runs;  // answered, queries
+  for (std::size_t i = 0; i < q.rows.size(); ++i) {
+    if (q.rows[i][c_protocol] != "sim") continue;
+    auto& [answered, total] = runs[{q.rows[i][c_strategy], q.Integer(i, c_robots, 2, 1 << 20), q.Integer(i, c_run, 0, 1 << 30),
+                                    q.Integer(i, c_variant, 0, 1 << 20)}];
+    answered += q.rows[i][c_latency].empty() ? 0 : 1;
+    ++total;
+  }
+  for (const auto& [k, v] : runs) {
+    out[{std::get<0>(k), std::get<1>(k), std::get<3>(k)}].Add(100.0 * static_cast<double>(v.first) / static_cast<double>(v.second));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<FigureScript> WriteRadioRangeFigure(const fs::path& dir, const std::vector<RunResult>& rows, const CsvTable& queries,
+                                                  std::string& why) {
+  struct Cell {
+    Acc bytes, latency;
+  };
+  std::map<std::tuple<std::string, int, double>, Cell> cells;  // (strategy, n, range)
+  std::map<std::tuple<std::string, int, double>, int> variant_of;
+  std::set<double> ranges;
+  for (const RunResult& r : rows) {
+    if (r.key.protocol != "sim" || r.key.network.model != "radio") continue;
+    if (r.key.strategy != "decentralized" && r.key.strategy != "broadcast") continue;
+    const std::optional<double> range = RadioRangeMetres(r.key.network.radio);
+    if (!range) continue;
+    ranges.insert(*range);
+    Cell& c = cells[{r.key.strategy, r.key.robots, *range}];
+    c.bytes.Add(r.bytes_per_query);
+    c.latency.Add(r.mean_latency_ms);
+    variant_of[{r.key.strategy, r.key.robots, *range}] = r.key.network.variant;
+  }
+  if (ranges.size() < 2) {
+    why = "needs radio variants of two or more ranges";
+    return std::nullopt;
+  }
+  const auto answered = AnsweredShares(queries);
+  std::string dat;
+  std::vector<std::pair<std::string, int>> blocks;  // (strategy, n)
+  for (const char* s : {"decentralized", "broadcast"}) {
+    std::set<int> robots;
+    for (const auto& [k, c] : cells) if (std::get<0>(k) == s) robots.insert(std::get<1>(k));
+    for (int n : robots) {
+      dat += "# " + std::string(s) + " n = " + std::to_string(n) + "\n";
+      for (const auto& [k, c] : cells) {
+        if (std::get<0>(k) != s || std::get<1>(k) != n) continue;
+        const auto a = answered.find({s, n, variant_of.at(k)});
+        dat += FormatDouble(std::get<2>(k)) + " " + Num(c.bytes.Mean()) + " " +
+               Num(a == answered.end() ? kNotApplicable : a->second.Mean()) + " " + Num(c.latency.Mean()) + "\n";
+      }
+      dat += "\n\n";
+      blocks.emplace_back(s, n);
+    }
+  }
+  WriteFileAtomic(dir / "radio_range.dat", dat);
+  const auto plot = [&](int column) {
+    std::ostringstream p;
+    std::set<int> all_n;
+    for (const auto& b : blocks) all_n.insert(b.second);
+    const std::vector<int> ns(all_n.begin(), all_n.end());
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+      const auto& [s, n] = blocks[i];
+      const auto ni = static_cast<std::size_t>(std::find(ns.begin(), ns.end(), n) - ns.begin());
+      p << (i ? ", \\\n     " : "plot ") << "'radio_range.dat' index " << i << " using 1:" << column
+        << " with linespoints lw 2 dt " << figure_style::NetworkDash(ni) << " pt " << figure_style::NetworkPoint(ni)
+        << " ps 1.2 lc rgb '" << figure_style::StrategyColour(s == "decentralized" ? 0 : 1) << "' title "
+        << GnuplotQuote(s + ", n = " + std::to_string(n));
+    }
+    return p.str() + "\n";
+  };
+  std::ostringstream xt;
+  xt << "set xtics (";
+  bool first = true;
+  for (double r : ranges) xt << (first ? "" : ", ") << "'" << FormatDouble(r) << "' " << FormatDouble(r), first = false;
+  xt << ")\n";
+  std::ostringstream s;
+  s << "set multiplot layout 1,3 title 'The team on radios: what range costs (means over runs; shortest-path relays "
+       "where configured)' font ',13'\n"
+    << "set grid\nset xlabel 'radio range (m)'\n" << xt.str()
+    << "set title 'Bytes on the air per query (every transmission, relays included)'\nset ylabel 'bytes per query'\n"
+    << "set logscale y\nset key bottom right\n" << plot(2) << "unset logscale y\nunset key\n"
+    << "set title 'Queries answered (every reply in)'\nset ylabel '% of queries'\nset yrange [0:105]\n";
+  if (answered.empty()) {
+    s << "set label 1 'needs queries.csv (outputs.queries: true)' at graph 0.5, graph 0.5 center front\n"
+      << "plot 1/0 notitle\nunset label 1\n";
+  } else {
+    s << plot(3);
+  }
+  s << "set yrange [0:*]\nset title 'Mean latency of the answered queries'\nset ylabel 'ms'\n" << plot(4)
+    << "unset multiplot\n";
+  FigureScript f;
+  f.width = 1800;
+  f.height = 600;
+  f.body = s.str();
+  return f;
+}
+
+std::vector<std::pair<std::string, FigureScript>> RadioFigures(const fs::path& out_dir, const fs::path& data_dir,
+                                                               const std::vector<RunResult>& rows) {
+  std::vector<std::pair<std::string, FigureScript>> out;
+  std::string why;
+  const CsvTable connectivity = ReadCsvTable(out_dir / "connectivity.csv");
+  if (auto f = WriteConnectivityFigure(data_dir, connectivity, rows, why)) out.emplace_back("connectivity", std::move(*f));
+  if (auto f = WriteRadioRangeFigure(data_dir, rows, ReadCsvTable(out_dir / "queries.csv"), why)) {
+    out.emplace_back("radio_range", std::move(*f));
+  }
+  return out;
+}
+
+}  // namespace dvpr

@@ -1,0 +1,44 @@
+#pragma once
+// The radio's figures (issue 33; docs/network_model.md "Connectivity"), drawn only where the
+// results have them (no "skipped" line elsewhere):
+//   connectivity.png  from connectivity.csv: the share of the team's pairs in range and the
+//                     number of components over time, one column per team size (every n up to
+//                     three, else the largest), one line per radio variant
+//   radio_range.png   from runs.csv, when the sweep has radio variants of two or more ranges:
+//                     bytes on the air per query of decentralized and broadcast, the share of
+//                     queries answered (from queries.csv, when written) and the mean latency,
+//                     against the range, one line per strategy and n
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "experiments/figures/figures_traffic.h"
+#include "experiments/results/results.h"
+
+namespace dvpr {
+
+// The range in metres of a radio label ("range 200m", "range 1500mm": NetworkLabel::radio as
+// the sweep writes it); nullopt for anything else (log_distance, "").
+std::optional<double> RadioRangeMetres(const std::string& radio);
+
+// connectivity.png's data (conn_<n>.dat: per variant a block "time_s pairs_in_range
+// share_of_pairs_percent components") from the first run and first strategy of `connectivity`
+// (every strategy of a run has the same rows); `rows` name the variants. nullopt (and `why`)
+// when the table has no row.
+std::optional<FigureScript> WriteConnectivityFigure(const std::filesystem::path& data_dir, const CsvTable& connectivity,
+                                                    const std::vector<RunResult>& rows, std::string& why);
+
+// radio_range.png's data (radio_range.dat: per (strategy, n) a block "range_m bytes_per_query
+// answered_percent mean_latency_ms", means over runs, NaN where unknown); `queries` may be empty
+// (no queries.csv: the answered panel says so).
+std::optional<FigureScript> WriteRadioRangeFigure(const std::filesystem::path& data_dir, const std::vector<RunResult>& rows,
+                                                  const CsvTable& queries, std::string& why);
+
+// Both, for DrawFigures: (name, script) of each figure the results of out_dir have.
+std::vector<std::pair<std::string, FigureScript>> RadioFigures(const std::filesystem::path& out_dir,
+                                                               const std::filesystem::path& data_dir,
+                                                               const std::vector<RunResult>& rows);
+
+}  // namespace dvpr

@@ -1,0 +1,130 @@
+// The radio's figures (figures_radio.h): the numbers they plot, from hand-made connectivity.csv,
+// runs.csv and queries.csv rows; and that they are drawn only where the results have them.
+// Pixels are not tested.
+#include <filesystem>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "experiments/figures/figures.h"
+#include "experiments/figures/figures_radio.h"
+#include "experiments/figures/gnuplot_run.h"
+#include "experiments/results/result_writers.h"
+#include "tests/test_support.h"
+
+namespace dvpr {
+namespace {
+
+using dvpr::testing_support::Slurp;
+namespace fs = std::filesystem;
+
+NetworkLabel Radio(int variant, const std::string& radio) {
+  return NetworkLabel{.variant = variant, .model = "radio", .bandwidth_bps = 1e7, .latency_ms = 2, .loss = "none",
+                      .radio = radio, .routing = "shortest_path"};
+}
+
+RunResult RadioRun(const std::string& strategy, int robots, int run, const NetworkLabel& net, double bytes_per_query,
+              double latency_ms) {
+  RunResult r;
+  r.key = RunKey{.protocol = "sim", .strategy = strategy, .robots = robots, .run = run, .network = net};
+  r.queries = 10;
+  r.bytes_per_query = bytes_per_query;
+  r.mean_latency_ms = latency_ms;
+  return r;
+}
+
+class RadioFiguresTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(DVPR_TEST_TMP) / "figures_radio" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "figures" / "data");
+  }
+  // Variant 0 point-to-point (no range), 1 radio of 100 m, 2 of 200 m, 3 log_distance.
+  static std::vector<RunResult> Rows() {
+    const NetworkLabel p2p{.variant = 0, .model = "point_to_point", .bandwidth_bps = 1e7, .latency_ms = 2,
+                           .loss = "none", .radio = "", .routing = ""};
+    return {RadioRun("decentralized", 4, 0, p2p, 900, 1),
+            RadioRun("decentralized", 4, 0, Radio(1, "range 100m"), 1000, 30),
+            RadioRun("decentralized", 4, 1, Radio(1, "range 100m"), 2000, 50),
+            RadioRun("broadcast", 4, 0, Radio(1, "range 100m"), 3000, 70),
+            RadioRun("decentralized", 4, 0, Radio(2, "range 200m"), 800, 4),
+            RadioRun("broadcast", 4, 0, Radio(2, "range 200m"), 2500, 6),
+            RadioRun("decentralized", 4, 0, Radio(3, "log_distance"), 5, 5)};
+  }
+  fs::path dir_;
+};
+
+TEST(RadioRangeMetres, ReadsTheSweepsLabelsOnly) {
+  EXPECT_EQ(RadioRangeMetres("range 200m"), 200.0);
+  EXPECT_EQ(RadioRangeMetres("range 1500mm"), 1.5);
+  EXPECT_EQ(RadioRangeMetres("log_distance"), std::nullopt);
+  EXPECT_EQ(RadioRangeMetres("range 200"), std::nullopt);
+  EXPECT_EQ(RadioRangeMetres("range 0m"), std::nullopt);
+  EXPECT_EQ(RadioRangeMetres("range 2km"), std::nullopt);
+  EXPECT_EQ(RadioRangeMetres(""), std::nullopt);
+}
+
+TEST_F(RadioFiguresTest, ConnectivityShowsTheFirstRunOfTheFirstStrategyPerVariant) {
+  CsvTable t;
+  t.header = {"protocol", "strategy", "robots", "run", "network_variant", "time_s", "pairs_in_range", "components",
+              "largest_component", "mean_hops", "max_hops"};
+  t.rows = {{"sim", "decentralized", "3", "0", "1", "0", "2", "1", "3", "1.3333333333333333", "2"},
+            {"sim", "decentralized", "3", "0", "1", "0.1", "1", "2", "2", "1", "1"},
+            {"sim", "decentralized", "3", "0", "2", "0", "3", "1", "3", "1", "1"},
+            {"sim", "decentralized", "3", "1", "1", "0", "0", "3", "1", "0", "0"},   // run 1: not shown
+            {"sim", "broadcast", "3", "0", "1", "0", "0", "3", "1", "0", "0"}};     // same run: not shown
+  std::string why;
+  const auto f = WriteConnectivityFigure(dir_, t, Rows(), why);
+  ASSERT_TRUE(f.has_value()) << why;
+  // 3 robots have 3 pairs: 2 of them in range is 66.67 %, 1 is 33.33 % (python3: 100.0 * 2 / 3.0
+  // and 100.0 * 1 / 3.0); variant 2 has all 3.
+  EXPECT_EQ(Slurp(dir_ / "conn_3.dat"),
+            "# range 100m\n0 2 66.66666666666667 1\n0.1 1 33.333333333333336 2\n\n\n"
+            "# range 200m\n0 3 100 1\n\n\n");
+  EXPECT_NE(f->body.find("'range 200m'"), std::string::npos) << f->body;
+  EXPECT_NE(f->body.find("% of the 3 pairs"), std::string::npos) << f->body;
+  t.rows.clear();
+  EXPECT_FALSE(WriteConnectivityFigure(dir_, t, Rows(), why).has_value());
+}
+
+TEST_F(RadioFiguresTest, RadioRangeMeansPerStrategyTeamAndRange) {
+  CsvTable q;
+  q.header = {"protocol", "strategy", "robots", "run", "robot", "latency_ns", "network_variant"};
+  // Decentralized at 100 m: run 0 answers 1 of 2 queries (50 %), run 1 both (100 %): mean 75 %.
+  q.rows = {{"sim", "decentralized", "4", "0", "0", "5", "1"}, {"sim", "decentralized", "4", "0", "1", "", "1"},
+            {"sim", "decentralized", "4", "1", "0", "5", "1"}, {"sim", "decentralized", "4", "1", "1", "7", "1"},
+            {"sim", "broadcast", "4", "0", "0", "", "2"},      {"sim", "broadcast", "4", "0", "1", "9", "2"},
+            {"paper", "decentralized", "4", "0", "0", "", "1"}};  // not a simulated query
+  std::string why;
+  const auto f = WriteRadioRangeFigure(dir_, Rows(), q, why);
+  ASSERT_TRUE(f.has_value()) << why;
+  // Decentralized at 100 m: (1000 + 2000) / 2 bytes, (30 + 50) / 2 ms. Point-to-point and
+  // log_distance have no range: not on this figure. Broadcast at 100 m has no query row: NaN.
+  EXPECT_EQ(Slurp(dir_ / "radio_range.dat"),
+            "# decentralized n = 4\n100 1500 75 40\n200 800 NaN 4\n\n\n"
+            "# broadcast n = 4\n100 3000 NaN 70\n200 2500 50 6\n\n\n");
+  EXPECT_EQ(f->body.find("needs queries.csv"), std::string::npos);
+  // Without queries.csv the answered panel says what it needs.
+  const auto g = WriteRadioRangeFigure(dir_, Rows(), CsvTable{}, why);
+  ASSERT_TRUE(g.has_value());
+  EXPECT_NE(g->body.find("needs queries.csv (outputs.queries: true)"), std::string::npos) << g->body;
+  // One range is no curve.
+  std::vector<RunResult> one = Rows();
+  one.erase(one.begin() + 4, one.begin() + 6);
+  EXPECT_FALSE(WriteRadioRangeFigure(dir_, one, q, why).has_value());
+  EXPECT_EQ(why, "needs radio variants of two or more ranges");
+}
+
+TEST_F(RadioFiguresTest, DrawnOnlyWhereTheResultsHaveThem) {
+  if (!FindProgram("gnuplot")) GTEST_SKIP() << "gnuplot is not installed";
+  WriteRunsCsv(dir_ / "runs.csv", Rows());
+  std::ostringstream log;
+  DrawFigures(dir_, log);
+  EXPECT_TRUE(fs::exists(dir_ / "figures" / "radio_range.png")) << log.str();
+  EXPECT_FALSE(fs::exists(dir_ / "figures" / "connectivity.png"));  // no connectivity.csv
+  EXPECT_EQ(log.str().find("connectivity"), std::string::npos) << log.str();  // and no "skipped" line
+}
+
+}  // namespace
+}  // namespace dvpr
