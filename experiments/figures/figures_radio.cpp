@@ -11,6 +11,7 @@
 
 #include "experiments/figures/figure_style.h"
 #include "experiments/figures/gnuplot_text.h"
+#include "experiments/results/protocol_traits.h"
 #include "experiments/results/result_writers.h"
 
 namespace dvpr {
@@ -142,7 +143,7 @@ std::map<std::tuple<std::string, int, int>, Acc> AnsweredShares(const CsvTable& 
                     c_run = q.Column("run"), c_variant = q.Column("network_variant"), c_latency = q.Column("latency_ns");
   std::map<std::tuple<std::string, int, int, int>, std::pair<long long, long long>> runs;  // answered, queries
   for (std::size_t i = 0; i < q.rows.size(); ++i) {
-    if (q.rows[i][c_protocol] != "sim") continue;
+    if (!RowTraits(q.rows[i][c_protocol]).simulated_network) continue;
     auto& [answered, total] = runs[{q.rows[i][c_strategy], q.Integer(i, c_robots, 2, 1 << 20), q.Integer(i, c_run, 0, 1 << 30),
                                     q.Integer(i, c_variant, 0, 1 << 20)}];
     answered += q.rows[i][c_latency].empty() ? 0 : 1;
@@ -165,7 +166,7 @@ std::optional<FigureScript> WriteRadioRangeFigure(const fs::path& dir, const std
   std::map<std::tuple<std::string, int, double>, int> variant_of;
   std::set<double> ranges;
   for (const RunResult& r : rows) {
-    if (r.key.protocol != "sim" || r.key.network.model != "radio") continue;
+    if (!RowTraits(r.key.protocol).simulated_network || r.key.network.model != "radio") continue;
     if (r.key.strategy != "decentralized" && r.key.strategy != "broadcast") continue;
     const std::optional<double> range = RadioRangeMetres(r.key.network.radio);
     if (!range) continue;
