@@ -110,12 +110,17 @@ SyntheticTrainingParams ReadSyntheticTraining(const Field& f) {
 // dataset.synthetic_bow: the BoW model's fields under their own names (docs/bow.md).
 SyntheticBowParams ReadSyntheticBow(const Field& f) {
   SyntheticBowParams p;
-  f.ExpectMap({"features", "vocabulary", "landmark_density", "range_m", "field_of_view_deg"});
+  f.ExpectMap({"features", "vocabulary", "landmark_density", "range_m", "field_of_view_deg", "common_words",
+               "common_share", "view_sector_deg"});
   if (auto c = f.Child("features"); c.present()) p.features = static_cast<int>(c.Int(1, 100000));
   if (auto c = f.Child("vocabulary"); c.present()) p.vocabulary = static_cast<int>(c.Int(2, 10000000));
+  // Its upper end, vocabulary - 1, is Validate's to check (the vocabulary may come later in the map).
+  if (auto c = f.Child("common_words"); c.present()) p.common_words = static_cast<int>(c.Int(0, 10000000));
   const std::pair<const char*, double*> numbers[] = {{"landmark_density", &p.landmark_density},
                                                      {"range_m", &p.range_m},
-                                                     {"field_of_view_deg", &p.field_of_view_deg}};
+                                                     {"field_of_view_deg", &p.field_of_view_deg},
+                                                     {"common_share", &p.common_share},
+                                                     {"view_sector_deg", &p.view_sector_deg}};
   for (const auto& [key, value] : numbers) {
     if (auto c = f.Child(key); c.present()) *value = c.Double();
   }

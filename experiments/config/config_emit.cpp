@@ -76,7 +76,10 @@ void EmitDataset(YAML::Emitter& out, const DatasetConfig& d) {
         << YAML::Key << "vocabulary" << YAML::Value << b.vocabulary
         << YAML::Key << "landmark_density" << YAML::Value << Num(b.landmark_density)
         << YAML::Key << "range_m" << YAML::Value << Num(b.range_m)
-        << YAML::Key << "field_of_view_deg" << YAML::Value << Num(b.field_of_view_deg) << YAML::EndMap;
+        << YAML::Key << "field_of_view_deg" << YAML::Value << Num(b.field_of_view_deg)
+        << YAML::Key << "common_words" << YAML::Value << b.common_words
+        << YAML::Key << "common_share" << YAML::Value << Num(b.common_share)
+        << YAML::Key << "view_sector_deg" << YAML::Value << Num(b.view_sector_deg) << YAML::EndMap;
   }
   out << YAML::EndMap;
 }

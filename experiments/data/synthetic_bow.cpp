@@ -17,11 +17,16 @@ constexpr double kCell_m = 10.0;  // landmarks are drawn per square cell of this
 // Stream keys, apart from synthetic.cpp's (1..4, 1000+).
 constexpr std::uint64_t kLandmarkStream = 0xB0B0'0001ULL;
 constexpr std::uint64_t kFeatureStream = 0xB0B0'0002ULL;
+// A landmark's viewpoint sectors come from its own key, not from the cell's stream, so that
+// view_sector_deg leaves the landmarks (position, word, visibility) of today's world as they were.
+constexpr std::uint64_t kSectorKey = 0xB0B0'0003ULL;
 
 struct Landmark {
   double x, z;
-  std::int32_t word;
+  std::int32_t word;    // its word seen from its first viewpoint sector (from every direction by default)
   double omega, phase;  // visibility over time
+  std::uint64_t key;    // the other sectors' words and where sector 0 starts (view_sector_deg < 360)
+  double sector_start;  // radians
 };
 
 double Normal(Xoshiro256& rng) {  // Box-Muller, one value per call (portable across libraries)
@@ -39,19 +44,39 @@ class LandmarkField {
   const std::vector<Landmark>& Cell(std::int64_t cx, std::int64_t cz) {
     auto [it, fresh] = cells_.try_emplace({cx, cz});
     if (!fresh) return it->second;
-    Xoshiro256 rng(MixSeed(MixSeed(seed_, static_cast<std::uint64_t>(cx)), static_cast<std::uint64_t>(cz)));
+    const std::uint64_t cell_seed =
+        MixSeed(MixSeed(seed_, static_cast<std::uint64_t>(cx)), static_cast<std::uint64_t>(cz));
+    Xoshiro256 rng(cell_seed);
     const double expected = p_.landmark_density * kCell_m * kCell_m;
     const auto count = static_cast<int>(std::floor(expected + rng.Uniform()));  // mean `expected`
     for (int k = 0; k < count; ++k) {
       Landmark l;
       l.x = (static_cast<double>(cx) + rng.Uniform()) * kCell_m;
       l.z = (static_cast<double>(cz) + rng.Uniform()) * kCell_m;
-      l.word = static_cast<std::int32_t>(rng.Below(static_cast<std::uint64_t>(p_.vocabulary)));
+      l.word = LandmarkWord(rng);
       l.omega = Normal(rng) / a_.appearance_time_scale_frames;
       l.phase = rng.Uniform() * 2.0 * std::numbers::pi;
+      l.key = MixSeed(MixSeed(cell_seed, kSectorKey), static_cast<std::uint64_t>(k));
+      l.sector_start = p_.view_sector_deg < 360.0 ? Xoshiro256(l.key).Uniform() * 2.0 * std::numbers::pi : 0.0;
       it->second.push_back(l);
     }
     return it->second;
+  }
+
+  // The word `l` quantises to seen from `direction` (radians, from the landmark to the camera).
+  std::int32_t WordSeenFrom(const Landmark& l, double direction) const {
+    if (p_.view_sector_deg >= 360.0) return l.word;
+    const double turned = std::fmod(direction - l.sector_start + 4.0 * std::numbers::pi, 2.0 * std::numbers::pi);
+    const auto sector = static_cast<std::uint64_t>(std::floor(turned / (p_.view_sector_deg * std::numbers::pi / 180.0)));
+    if (sector == 0) return l.word;
+    Xoshiro256 rng(MixSeed(l.key, sector));
+    return LandmarkWord(rng);
+  }
+
+  // Landmarks' words avoid the common ones (with no common words: Below(vocabulary), as ever).
+  std::int32_t LandmarkWord(Xoshiro256& rng) const {
+    const auto common = static_cast<std::uint64_t>(p_.common_words);
+    return static_cast<std::int32_t>(common + rng.Below(static_cast<std::uint64_t>(p_.vocabulary) - common));
   }
 
  private:
@@ -82,7 +107,7 @@ void Visible(LandmarkField& field, const View& v, const SyntheticBowParams& p, c
         if (d > p.range_m || (d > 0 && (dx * v.hx + dz * v.hz) / d < cos_half)) continue;
         const double drift = a.appearance_change * std::numbers::sqrt2 * std::cos(l.omega * v.t + l.phase);
         total += std::exp(-d / p.range_m + drift);
-        words.push_back(l.word);
+        words.push_back(field.WordSeenFrom(l, std::atan2(-dz, -dx)));
         cumulative.push_back(total);
       }
     }
@@ -110,6 +135,11 @@ void SyntheticBowParams::Validate() const {
   Require(landmark_density > 0 && landmark_density <= 10, "landmark_density", "must be in (0, 10]");
   Require(range_m > 0 && range_m <= 1000, "range_m", "must be in (0, 1000]");
   Require(field_of_view_deg > 0 && field_of_view_deg <= 360, "field_of_view_deg", "must be in (0, 360]");
+  Require(common_words >= 0 && common_words < vocabulary, "common_words",
+          "must be in [0, vocabulary - 1 = " + std::to_string(vocabulary - 1) + "], got " + std::to_string(common_words));
+  Require(common_share >= 0 && common_share <= 1, "common_share", "must be in [0, 1]");
+  Require(common_share == 0 || common_words >= 1, "common_share", "needs common_words >= 1 when above 0");
+  Require(view_sector_deg > 0 && view_sector_deg <= 360, "view_sector_deg", "must be in (0, 360]");
 }
 
 std::vector<std::vector<std::int32_t>> SyntheticBowWords(const Trajectory& trajectory,
@@ -120,6 +150,8 @@ std::vector<std::vector<std::int32_t>> SyntheticBowWords(const Trajectory& traje
   LandmarkField field(params, appearance, seed);
   const double noise_share = appearance.noise / (1.0 + appearance.noise);
   const auto vocabulary = static_cast<std::uint64_t>(params.vocabulary);
+  const auto common = static_cast<std::uint64_t>(params.common_words);
+  const bool aliasing = params.common_share > 0;
   std::vector<std::vector<std::int32_t>> out(static_cast<std::size_t>(trajectory.size()));
   std::vector<std::int32_t> seen;
   std::vector<double> cumulative;
@@ -129,7 +161,16 @@ std::vector<std::vector<std::int32_t>> SyntheticBowWords(const Trajectory& traje
     auto& words = out[static_cast<std::size_t>(i)];
     words.reserve(static_cast<std::size_t>(params.features));
     for (int k = 0; k < params.features; ++k) {
-      if (seen.empty() || rng.Uniform() < noise_share) {
+      // Without common words no draw is added: today's world keeps its stream.
+      if ((seen.empty() && !aliasing) || rng.Uniform() < noise_share) {
+        words.push_back(static_cast<std::int32_t>(rng.Below(vocabulary)));
+        continue;
+      }
+      if (aliasing && rng.Uniform() < params.common_share) {
+        words.push_back(static_cast<std::int32_t>(rng.Below(common)));
+        continue;
+      }
+      if (seen.empty()) {
         words.push_back(static_cast<std::int32_t>(rng.Below(vocabulary)));
         continue;
       }

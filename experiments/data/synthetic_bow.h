@@ -14,6 +14,17 @@
 // vocabulary (noise is the global descriptors' dataset.synthetic.noise). A revisit from nearby in
 // the same direction draws from the same landmarks, so shares words; other places mostly do not.
 // Deterministic for a seed: landmark cells and frames each have their own stream.
+//
+// Two weaknesses of local features against a learned global descriptor, both off by default
+// (today's world) and set from published numbers in experiments/configs/bow_comparison.yaml:
+//  - perceptual aliasing: a share common_share of the non-noise features are repeated structure
+//    (road markings, foliage, facades), a word drawn uniformly from the first common_words words
+//    of the vocabulary, the same set at every place; landmarks draw their words from the rest;
+//  - viewpoint sensitivity: a landmark looks alike only from within a sector of view_sector_deg
+//    of viewing directions (each landmark's sectors start at its own random angle); from another
+//    sector it quantises to another word. Two views whose viewing directions differ by at least
+//    view_sector_deg never share its word, so with view_sector_deg <= 180 - field_of_view_deg a
+//    revisit from the opposite heading shares no landmark word.
 #include <cstdint>
 #include <vector>
 
@@ -31,6 +42,9 @@ struct SyntheticBowParams {
   double landmark_density = 0.2;    // landmarks per square metre, (0, 10]
   double range_m = 40.0;            // farthest landmark a frame sees, (0, 1000]
   double field_of_view_deg = 90.0;  // (0, 360]
+  int common_words = 0;             // words of repeated structure, [0, vocabulary - 1]
+  double common_share = 0.0;        // share of non-noise features on them, [0, 1] (needs common_words >= 1)
+  double view_sector_deg = 360.0;   // viewing directions one landmark word covers, (0, 360]
   void Validate() const;
   bool operator==(const SyntheticBowParams&) const = default;
 };

@@ -98,7 +98,11 @@ std::string NetworkText(const NetworkLabel& network);
 // bow_sizes.csv and `rows`; false (nothing written) when out_dir has no bow.csv.
 bool WriteBowComparisonData(const std::filesystem::path& out_dir, const std::filesystem::path& data_dir,
                             const std::vector<RunResult>& rows);
+// Its bytes panel marks the seed paper's query sizes: BoW's distributed query (16 kB) and
+// NetVLAD's (512 bytes to one robot).
 std::string BowComparisonScript(const std::filesystem::path& data_dir, const std::filesystem::path& png);
+inline constexpr int kSeedBowQueryBytes = 16000;
+inline constexpr int kSeedGlobalQueryBytes = 512;
 
 // Reads out_dir/runs.csv (and per_robot.csv, links.csv), writes the data of figures 3, 5-12, then
 // draws every figure whose data exists; the strategy figures (10, 11) only when runs.csv has a

@@ -193,6 +193,25 @@ TEST_F(ConfigTest, BagOfWordsKeys) {
   EXPECT_EQ(ErrorOf("dataset: {synthetic_bow: {range_m: 0}}\n"),
             "test.yaml: dataset.synthetic_bow.range_m: must be in (0, 1000]");
   EXPECT_EQ(ErrorOf("dataset: {synthetic_bow: {words: 3}}\n").rfind("test.yaml: dataset.synthetic_bow.words: ", 0), 0u);
+  // The aliasing and viewpoint keys (off unless set: common_share 0, view_sector_deg 360).
+  const ExperimentConfig w =
+      Parse("dataset: {synthetic_bow: {common_words: 50, common_share: 0.25, view_sector_deg: 80}}\n");
+  ASSERT_TRUE(w.dataset.synthetic_bow);
+  EXPECT_EQ(w.dataset.synthetic_bow->common_words, 50);
+  EXPECT_EQ(w.dataset.synthetic_bow->common_share, 0.25);
+  EXPECT_EQ(w.dataset.synthetic_bow->view_sector_deg, 80.0);
+  EXPECT_EQ(SyntheticBowParams{}.common_share, 0.0);
+  EXPECT_EQ(SyntheticBowParams{}.view_sector_deg, 360.0);
+  EXPECT_EQ(ErrorOf("dataset: {synthetic_bow: {common_share: 1.5, common_words: 5}}\n"),
+            "test.yaml: dataset.synthetic_bow.common_share: must be in [0, 1]");
+  EXPECT_EQ(ErrorOf("dataset: {synthetic_bow: {common_share: 0.5}}\n"),
+            "test.yaml: dataset.synthetic_bow.common_share: needs common_words >= 1 when above 0");
+  EXPECT_EQ(ErrorOf("dataset: {synthetic_bow: {vocabulary: 100, common_words: 100}}\n"),
+            "test.yaml: dataset.synthetic_bow.common_words: must be in [0, vocabulary - 1 = 99], got 100");
+  EXPECT_EQ(ErrorOf("dataset: {synthetic_bow: {common_words: -1}}\n").rfind(
+                "test.yaml: dataset.synthetic_bow.common_words: ", 0), 0u);
+  EXPECT_EQ(ErrorOf("dataset: {synthetic_bow: {view_sector_deg: 400}}\n"),
+            "test.yaml: dataset.synthetic_bow.view_sector_deg: must be in (0, 360]");
   EXPECT_EQ(ErrorOf("dataset: {bow: no_such_file.txt}\n").rfind("test.yaml: dataset.bow: ", 0), 0u);
 }
 

@@ -100,5 +100,24 @@ TEST_F(BowFigureData, ADataFolderThatIsALinkIsRefused) {
   EXPECT_EQ(Names(dir_ / "elsewhere"), std::vector<std::string>{"victim.txt"});
 }
 
+// The bytes panel (log scale) marks the seed paper's sizes as horizontal lines: 16 kB for BoW's
+// distributed query (about 2000 words of 8 bytes) and 512 bytes for NetVLAD's query to one robot.
+TEST_F(BowFigureData, TheBytesPanelMarksTheSeedPapersQuerySizes) {
+  ASSERT_TRUE(Write());
+  const std::string script = BowComparisonScript(data(), dir_ / "figures" / "bow_comparison.png");
+  const auto panel = script.find("set title 'Query bytes per query");
+  ASSERT_NE(panel, std::string::npos);
+  const auto plot = script.find("plot ", panel);
+  const std::string line = script.substr(plot, script.find('\n', plot) - plot);
+  EXPECT_LT(script.find("set logscale y", panel), plot);
+  EXPECT_NE(line.find(", 16000 with lines"), std::string::npos) << line;
+  EXPECT_NE(line.find("title 'seed paper: BoW query, 16 kB'"), std::string::npos) << line;
+  EXPECT_NE(line.find(", 512 with lines"), std::string::npos) << line;
+  EXPECT_NE(line.find("title 'seed paper: NetVLAD query, 512 B'"), std::string::npos) << line;
+  // Both methods' own lines are still there: the global descriptor's and the distributed index's.
+  EXPECT_NE(line.find("'bow_bytes.dat' using 1:2 "), std::string::npos) << line;
+  EXPECT_NE(line.find("'bow_bytes.dat' using 1:4 "), std::string::npos) << line;
+}
+
 }  // namespace
 }  // namespace dvpr

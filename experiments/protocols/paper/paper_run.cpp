@@ -86,7 +86,7 @@ void AppendBowRun(const StrategySpec& strategy, const RunSpec& spec, const BowEv
   const RunRouting routing = BuildRunRouting(strategy, inputs, spec.robots, spec.run);
   const BowFamily* family = routing.As<BowFamily>();
   if (family == nullptr) throw std::logic_error("AppendBowRun: " + strategy.name + " is not a bow_ strategy");
-  BowRunResult r = family->words ? bow.Evaluate(*family->words, strategy.name, false)
+  BowRunResult r = family->words ? bow.EvaluateShared(*family->words, strategy.name)
                                  : bow.Reference(strategy.name, spec.robots,
                                                  strategy.bow == StrategySpec::Bow::kBroadcast);
   r.paper.row.key = spec.Key(strategy.name);

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <exception>
 #include <stdexcept>
 
 #include "agents/messages/bow_query.h"
 #include "experiments/data/split.h"
 #include "experiments/results/protocol_traits.h"
+#include "sim/random_bits.h"
 
 namespace dvpr {
 
@@ -71,10 +73,19 @@ BowEvaluator::BowEvaluator(const PaperEvaluator& paper, const BowData& bow) : pa
     throw std::invalid_argument("BowEvaluator: " + std::to_string(bow.frames.size()) + " BoW vectors for " +
                                 std::to_string(paper.deployment().size()) + " frames");
   }
-  postings_.resize(static_cast<std::size_t>(bow.vocabulary));
+  // One array of postings, word by word (frames ascending within a word), and where each word's
+  // run starts: two memory reads per query word instead of a vector per word.
+  starts_.assign(static_cast<std::size_t>(bow.vocabulary) + 1, 0);
+  for (const BowVector& frame : bow.frames) {
+    for (const BowEntry& e : frame) ++starts_[static_cast<std::size_t>(e.word) + 1];
+  }
+  for (std::size_t w = 1; w < starts_.size(); ++w) starts_[w] += starts_[w - 1];
+  postings_.resize(static_cast<std::size_t>(starts_.back()));
+  std::vector<std::int64_t> next(starts_.begin(), starts_.end() - 1);
   for (std::size_t f = 0; f < bow.frames.size(); ++f) {
     for (const BowEntry& e : bow.frames[f]) {
-      postings_[static_cast<std::size_t>(e.word)].push_back({static_cast<std::int32_t>(f), e.weight});
+      postings_[static_cast<std::size_t>(next[static_cast<std::size_t>(e.word)]++)] = {static_cast<std::int32_t>(f),
+                                                                                      e.weight};
     }
   }
   std::vector<double> acc(bow.frames.size(), 0.0);
@@ -93,18 +104,48 @@ BowEvaluator::BowEvaluator(const PaperEvaluator& paper, const BowData& bow) : pa
 BowEvaluator::Best BowEvaluator::Search(std::int32_t i, const BowVector& part, std::vector<double>& acc,
                                         std::vector<std::int32_t>& touched, std::int64_t& visited) const {
   const int window = paper_.evaluation().suppression_frames;
-  touched.clear();
-  for (const BowEntry& q : part) {
-    for (const Posting& p : postings_[static_cast<std::size_t>(q.word)]) {
-      if (std::abs(p.frame - i) <= window) continue;
-      ++visited;
-      double& a = acc[static_cast<std::size_t>(p.frame)];
-      if (a == 0.0) touched.push_back(p.frame);
-      a += std::min(static_cast<double>(q.weight), static_cast<double>(p.weight));
+  // Raw pointers and a local count: through the vectors, every store to `touched` made the
+  // compiler reload `acc`'s data and `visited` for each posting.
+  if (touched.size() < acc.size()) touched.resize(acc.size());  // once: a frame is touched at most once
+  double* const sums = acc.data();
+  std::int32_t* const first = touched.data();
+  std::int32_t* last = first;
+  std::int64_t count = 0;
+  const auto add = [&](const BowEntry& q, const Posting& p) {
+    double& a = sums[static_cast<std::size_t>(p.frame)];
+    if (a == 0.0) *last++ = p.frame;
+    a += std::min(static_cast<double>(q.weight), static_cast<double>(p.weight));
+  };
+  const auto before = [](const Posting& p, std::int32_t frame) { return p.frame < frame; };
+  // Each query word's start and postings are reads from memory that miss the cache (the words
+  // are spread over a vocabulary of up to 10^7): ask for those of words a few ahead while adding
+  // these, so the reads overlap.
+  constexpr std::size_t kAhead = 8;
+  const auto run = [&](std::size_t k) {
+    const auto w = static_cast<std::size_t>(part[k].word);
+    return std::pair(postings_.data() + starts_[w], postings_.data() + starts_[w + 1]);
+  };
+  for (std::size_t k = 0; k < part.size(); ++k) {
+    if (k + 2 * kAhead < part.size()) __builtin_prefetch(&starts_[static_cast<std::size_t>(part[k + 2 * kAhead].word)]);
+    if (k + kAhead < part.size()) {
+      const auto [b, e] = run(k + kAhead);
+      __builtin_prefetch(b + (e - b) / 2);  // where the search for the window starts
     }
+    const BowEntry& q = part[k];
+    // A landmark's word is mostly seen by frames near the query, inside the suppression window:
+    // the postings are in frame order, so the window is one run of them, skipped whole (the
+    // frames outside are visited in the same order as one by one, so the sums are the same).
+    const auto [begin, end] = run(k);
+    const Posting* lo = std::lower_bound(begin, end, i - window, before);
+    const Posting* hi = std::lower_bound(lo, end, i + window + 1, before);
+    for (const Posting* p = begin; p != lo; ++p) add(q, *p);
+    for (const Posting* p = hi; p != end; ++p) add(q, *p);
+    count += (lo - begin) + (end - hi);
   }
+  visited += count;
   Best best;
-  for (std::int32_t j : touched) {
+  for (const std::int32_t* t = first; t != last; ++t) {
+    const std::int32_t j = *t;
     double& a = acc[static_cast<std::size_t>(j)];
     if (a > best.score || (a == best.score && j < best.frame)) best = {j, a};
     a = 0.0;
@@ -168,6 +209,31 @@ BowRunResult BowEvaluator::Evaluate(const WordOwners& owners, const std::string&
   out.paper.row.messages = out.bow.partial_queries;
   out.paper.row.payload_bytes = out.bow.payload_bytes;
   return out;
+}
+
+BowRunResult BowEvaluator::EvaluateShared(const WordOwners& owners, const std::string& name) const {
+  std::uint64_t digest = static_cast<std::uint64_t>(owners.vocabulary());
+  for (std::int32_t w = 0; w < owners.vocabulary(); ++w) {
+    digest = MixSeed(digest, static_cast<std::uint64_t>(owners.OwnerOf(w).value));
+  }
+  std::promise<BowRunResult> promise;
+  std::shared_future<BowRunResult> result;
+  bool mine = false;
+  {
+    const std::lock_guard lock(shared_mutex_);
+    auto [it, fresh] = shared_.try_emplace({name, owners.robots(), digest});
+    if (fresh) it->second = promise.get_future().share();
+    result = it->second;
+    mine = fresh;
+  }
+  if (mine) {
+    try {
+      promise.set_value(Evaluate(owners, name, false));
+    } catch (...) {
+      promise.set_exception(std::current_exception());
+    }
+  }
+  return result.get();  // a copy: the caller sets its run's key
 }
 
 BowRunResult BowEvaluator::Reference(const std::string& name, int robots, bool broadcast) const {

@@ -15,8 +15,12 @@
 // (payload_bytes, LCM encoding with the fingerprint; no wire overheads: the static protocol has
 // no network). Broadcast sends the full vector to the n - 1 others.
 #include <cstdint>
+#include <future>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "agents/algorithms/bow_words.h"
@@ -49,6 +53,11 @@ class BowEvaluator {
 
   // The distributed inverted index over `owners`, strategy `name`.
   BowRunResult Evaluate(const WordOwners& owners, const std::string& name, bool keep_curve) const;
+  // Evaluate without its curve, computed once per (name, owners) and then copied: the word
+  // assignments do not depend on the run, so the runs of one n ask for the same evaluation (at
+  // about 2000 words a frame, most of a sweep's time). Safe to call from several threads; a
+  // call that finds the same evaluation under way waits for it.
+  BowRunResult EvaluateShared(const WordOwners& owners, const std::string& name) const;
   // The centralized reference (every query to one index) and broadcast (the full vector to the
   // n - 1 others, each answers from its own frames, the best answer wins: the centralized ranking).
   BowRunResult Reference(const std::string& name, int robots, bool broadcast) const;
@@ -68,7 +77,12 @@ class BowEvaluator {
 
   const PaperEvaluator& paper_;
   const BowData& bow_;
-  std::vector<std::vector<Posting>> postings_;  // per word: the frames containing it, ascending
+  mutable std::mutex shared_mutex_;
+  // By (name, robots, a 64-bit digest of every word's owner): a digest rather than a copy of the
+  // owners (2 MB each at a vocabulary of 10^6).
+  mutable std::map<std::tuple<std::string, int, std::uint64_t>, std::shared_future<BowRunResult>> shared_;
+  std::vector<Posting> postings_;     // word by word; within a word the frames containing it, ascending
+  std::vector<std::int64_t> starts_;  // word w's postings: [starts_[w], starts_[w + 1])
   std::vector<std::int32_t> central_best_;      // per query: the centralized best frame (-1: none)
   PrResult centralized_;
 };
