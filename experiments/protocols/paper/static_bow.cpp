@@ -8,7 +8,7 @@
 #include "agents/messages/bow_query.h"
 #include "experiments/data/split.h"
 #include "experiments/results/protocol_traits.h"
-#include "sim/random_bits.h"
+#include "agents/messages/team_sync.h"  // Fnv1a
 
 namespace dvpr {
 
@@ -212,10 +212,10 @@ BowRunResult BowEvaluator::Evaluate(const WordOwners& owners, const std::string&
 }
 
 BowRunResult BowEvaluator::EvaluateShared(const WordOwners& owners, const std::string& name) const {
-  std::uint64_t digest = static_cast<std::uint64_t>(owners.vocabulary());
-  for (std::int32_t w = 0; w < owners.vocabulary(); ++w) {
-    digest = MixSeed(digest, static_cast<std::uint64_t>(owners.OwnerOf(w).value));
-  }
+  Fnv1a hash;  // of the vocabulary and every word's owner
+  hash.AddValue(owners.vocabulary());
+  for (std::int32_t w = 0; w < owners.vocabulary(); ++w) hash.AddValue(owners.OwnerOf(w).value);
+  const auto digest = static_cast<std::uint64_t>(hash.value());
   std::promise<BowRunResult> promise;
   std::shared_future<BowRunResult> result;
   bool mine = false;
