@@ -55,30 +55,6 @@ class LcmTeamTest : public ::testing::Test {
   fs::path dir_;
 };
 
-using Row = std::map<std::string, std::string>;
-
-std::vector<Row> ReadCsv(const fs::path& path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << path;
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> header;
-  std::stringstream hs(line);
-  for (std::string c; std::getline(hs, c, ',');) header.push_back(c);
-  std::vector<Row> rows;
-  while (std::getline(in, line)) {
-    Row row;
-    std::stringstream ls(line);
-    std::size_t i = 0;
-    for (std::string c; i < header.size(); ++i) {
-      if (!std::getline(ls, c, ',')) c.clear();
-      row[header[i]] = c;
-    }
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 // Datagrams the kernel dropped at the agents of `strategy` because a receive buffer was full
 // (agents.csv, SO_RXQ_OVFL): UDP may lose datagrams on a loaded machine, and the receiving side
 // counts every one. A test of a real team tolerates a loss only when it is counted.

@@ -28,30 +28,6 @@ namespace dvpr {
 namespace {
 
 using namespace lcm_test;
-using Row = std::map<std::string, std::string>;
-
-std::vector<Row> Csv(const fs::path& path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << path;
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> header;
-  std::stringstream hs(line);
-  for (std::string c; std::getline(hs, c, ',');) header.push_back(c);
-  std::vector<Row> rows;
-  while (std::getline(in, line)) {
-    Row row;
-    std::stringstream ls(line);
-    for (std::size_t i = 0; i < header.size(); ++i) {
-      std::string c;
-      if (!std::getline(ls, c, ',')) c.clear();
-      row[header[i]] = c;
-    }
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 constexpr int kRobots = 4;
 constexpr int kFrames = 200;
 
@@ -109,10 +85,10 @@ TEST_F(LcmRadioTeamTest, OutOfRangeDatagramsAreDroppedAtTheReceiverAndCounted) {
     }
   }
   std::vector<std::int64_t> stored;
-  for (const Row& r : Csv(dir_ / "mm" / "per_robot.csv")) stored.push_back(std::stoll(r.at("stored")));
+  for (const Row& r : ReadCsv(dir_ / "mm" / "per_robot.csv")) stored.push_back(std::stoll(r.at("stored")));
   EXPECT_EQ(stored, own);
   int answered = 0, expected_answered = 0;
-  for (const Row& q : Csv(dir_ / "mm" / "queries.csv")) {
+  for (const Row& q : ReadCsv(dir_ / "mm" / "queries.csv")) {
     const bool got = !q.at("latency_ns").empty();
     EXPECT_EQ(got, answerable.at(std::stoi(q.at("frame")))) << "frame " << q.at("frame");
     answered += got ? 1 : 0;
@@ -122,14 +98,14 @@ TEST_F(LcmRadioTeamTest, OutOfRangeDatagramsAreDroppedAtTheReceiverAndCounted) {
   EXPECT_LT(answered, kFrames);  // some queries had to cross the team
   // Every robot sent queries and heartbeats to the others after the start, and each dropped
   // what reached it.
-  const std::vector<Row> agents = Csv(dir_ / "mm" / "agents.csv");
+  const std::vector<Row> agents = ReadCsv(dir_ / "mm" / "agents.csv");
   ASSERT_EQ(agents.size(), static_cast<std::size_t>(kRobots));
   for (const Row& a : agents) EXPECT_GT(std::stoll(a.at("out_of_range")), 0) << "robot " << a.at("robot");
 }
 
 TEST_F(LcmRadioTeamTest, ARangeThatCoversTheTeamDropsNothing) {
   ASSERT_TRUE(Launch(dir_ / "km", 7722, "10000km"));
-  for (const Row& a : Csv(dir_ / "km" / "agents.csv")) EXPECT_EQ(a.at("out_of_range"), "0") << "robot " << a.at("robot");
+  for (const Row& a : ReadCsv(dir_ / "km" / "agents.csv")) EXPECT_EQ(a.at("out_of_range"), "0") << "robot " << a.at("robot");
 }
 
 }  // namespace
