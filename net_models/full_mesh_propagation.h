@@ -10,6 +10,7 @@ class FullMeshPropagation final : public PropagationModel {
   // Every outcome arrives preset to {reaches, no added delay}: nothing to change.
   void DoReach(NodeId, std::span<const NodeId>, SimTime, std::span<Reception>) override {}
   std::string_view DoName() const override { return "full_mesh"; }
+  bool DoChangesOverTime() const override { return false; }
 };
 
 }  // namespace dvpr

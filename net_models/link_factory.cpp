@@ -90,6 +90,7 @@ void NetworkModelParams::Validate(int nodes) const {
   for (std::size_t i = 0; i < links.size(); ++i) ValidateLink(links[i], i, model, nodes);
   if (model == LinkModelKind::kRadio) ValidateNested("radio.", [&] { radio.Validate(); });
   ValidateNested("disconnected.", [&] { disconnected.Validate(); });
+  if (routing == RoutingKind::kLinkState) ValidateNested("routing.", [&] { link_state.Validate(); });
 }
 
 std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int nodes, std::uint64_t run_seed) {

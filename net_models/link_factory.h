@@ -9,6 +9,7 @@
 
 #include "net_models/disconnected_params.h"
 #include "net_models/link_model.h"
+#include "net_models/link_state_params.h"
 #include "net_models/loss_params.h"
 #include "net_models/next_hop_routing.h"
 #include "net_models/radio_params.h"
@@ -52,6 +53,7 @@ struct NetworkModelParams {
   std::vector<LinkOverrideParams> links;
   RadioParams radio;  // model radio: who hears whom (the stack's propagation, MakeNetworkStack)
   RoutingKind routing = RoutingKind::kDirect;  // which way a copy goes (the stack's routing)
+  LinkStateParams link_state;  // routing link_state: its beacon periods
   DisconnectedParams disconnected;  // a copy without a route: dropped, or held (store-and-forward)
 
   // Throws std::invalid_argument "<field>: ..." naming the value, with the

@@ -15,6 +15,7 @@ std::string_view ToString(DropReason reason) {
     case DropReason::kHopLimit: return "hop_limit";
     case DropReason::kBufferFull: return "buffer_full";
     case DropReason::kExpired: return "expired";
+    case DropReason::kStaleRoute: return "stale_route";
   }
   return "unknown";
 }

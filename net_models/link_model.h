@@ -34,8 +34,9 @@ enum class DropReason : std::uint8_t {
   kHopLimit,   // a relayed copy had made Network::kMaxHops transmissions (a routing loop)
   kBufferFull, // store-and-forward: the holder's buffer had no room (disconnected_params.h)
   kExpired,    // store-and-forward: held hold_time without a route
+  kStaleRoute, // the next hop a learned route named did not hear it (link_state_routing.h)
 };
-inline constexpr std::size_t kDropReasons = 9;  // the enumerators above, kNone included
+inline constexpr std::size_t kDropReasons = 10;  // the enumerators above, kNone included
 std::string_view ToString(DropReason reason);
 
 // One message handed to the link layer.
@@ -71,11 +72,16 @@ class LinkModel {
 
   // "ideal", "point_to_point", "shared_medium", "bernoulli(point_to_point)", ...
   std::string_view Name() const { return DoName(); }
+  // How long after a frame's last bit is sent its arrival comes (a fixed per-hop processing
+  // delay added after serialization; zero for a model without one): the frame ended at the
+  // arrival minus this, when a moving receiver must still have been in range.
+  SimTime DelayAfterFrame() const { return DoDelayAfterFrame(); }
 
  private:
   // out[i] arrives preset to {t.now, kNone}.
   virtual MediumUse DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) = 0;
   virtual std::string_view DoName() const = 0;
+  virtual SimTime DoDelayAfterFrame() const { return SimTime::Zero(); }
 };
 
 }  // namespace dvpr

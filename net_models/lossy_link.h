@@ -43,6 +43,7 @@ class LossyLink final : public LinkModel {
   }
   MediumUse DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) override;
   std::string_view DoName() const override { return name_; }
+  SimTime DoDelayAfterFrame() const override { return inner_->DelayAfterFrame(); }
 
   std::unique_ptr<LinkModel> inner_;
   int nodes_;

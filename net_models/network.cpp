@@ -115,6 +115,10 @@ void Network::Leave(NodeId node, ChannelId channel) {
   if (it != members.end() && *it == node) members.erase(it);
 }
 
+void Network::SetLinkLocal(ChannelId channel) {
+  channels_.at(static_cast<std::size_t>(channel)).link_local = true;
+}
+
 void Network::SetOffline(NodeId node, SimTime from, SimTime until) {
   CheckNode(node, "SetOffline");
   offline_from_[static_cast<std::size_t>(node.value)] = from;
@@ -139,9 +143,11 @@ void Network::Unsubscribe(NetworkObserver* observer) {
 std::size_t Network::Send(NodeId src, ChannelId channel, MessageTypeId type, std::vector<std::uint8_t> payload) {
   CheckNode(src, "Send");
   dsts_.clear();
-  for (const NodeId member : channels_.at(static_cast<std::size_t>(channel)).members) {
+  const Channel& ch = channels_.at(static_cast<std::size_t>(channel));
+  for (const NodeId member : ch.members) {
     if (member != src) dsts_.push_back(member);
   }
+  if (ch.link_local) KeepHeard(src, sim_.Now());
   Dispatch(src, channel, type, std::move(payload));
   return dsts_.size();
 }
@@ -171,7 +177,12 @@ void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::v
   const auto payload_bytes = static_cast<std::int64_t>(payload.size());
   const WireFootprint fp = AppendLinkFrames(
       Bytes(payload_bytes), static_cast<std::int64_t>(ChannelName(channel).size()), wire_, frames_);
-  const LinkModel::MediumUse use = TransmitFrom(src, now, sender);
+  const bool link_local = channels_[static_cast<std::size_t>(channel)].link_local;
+  const LinkModel::MediumUse use = TransmitFrom(src, now, sender, /*routed=*/!link_local);
+  if (link_local) {
+    sender.routing_transmissions += use.transmissions;
+    sender.routing_bytes += use.bytes.value();
+  }
 
   const std::uint32_t slot = AllocatePayload(std::move(payload));
   Payload& p = payloads_[slot];
@@ -294,7 +305,7 @@ void Network::Relay(std::uint32_t slot, std::span<const PendingCopy> copies, std
     AppendLinkFrames(Bytes(static_cast<std::int64_t>(p.bytes.size())),
                      static_cast<std::int64_t>(ChannelName(p.channel).size()), wire_, frames_);
     NodeCounters& relay = senders_[static_cast<std::size_t>(at.value)];
-    const LinkModel::MediumUse use = TransmitFrom(at, now, relay);
+    const LinkModel::MediumUse use = TransmitFrom(at, now, relay, /*routed=*/true);
     if (at != p.src) {  // (a sender that held its own message sends it now: not a relay)
       relay.relay_transmissions += use.transmissions;
       relay.relay_bytes += use.bytes.value();
@@ -377,13 +388,13 @@ void Network::Retry(NodeId node) {
 // Fills outcomes_ for dsts_ and frames_, asking the stack's layers in turn: routing (which copies
 // have a way), medium access (when they arrive), propagation (whether they are heard). The
 // sender counts what its message put on the medium (nothing when it is offline).
-LinkModel::MediumUse Network::TransmitFrom(NodeId src, SimTime now, NodeCounters& sender) {
+LinkModel::MediumUse Network::TransmitFrom(NodeId src, SimTime now, NodeCounters& sender, bool routed) {
   outcomes_.resize(dsts_.size());
   if (!IsOnline(src, now)) {
     std::fill(outcomes_.begin(), outcomes_.end(), LinkDelivery{now, DropReason::kOffline});
     return {};
   }
-  const LinkModel::MediumUse use = TransmitRouted(LinkTransmission{src, dsts_, now, frames_});
+  const LinkModel::MediumUse use = TransmitRouted(LinkTransmission{src, dsts_, now, frames_}, routed);
   sender.transmissions += use.transmissions;
   sender.medium_bytes += use.bytes.value();
   return use;
@@ -393,12 +404,17 @@ LinkModel::MediumUse Network::TransmitFrom(NodeId src, SimTime now, NodeCounters
 // the distinct next hops of the copies that have one (a copy without a route never goes on the
 // medium: DropReason::kNoRoute), and the propagation model says which of them hear it. A copy
 // whose next hop is not its destination goes on from that relay when it arrives there (Relay).
-LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t) {
+LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t, bool routed) {
   hops_.resize(dsts_.size());
-  stack_.routing->NextHops(t.src, dsts_, t.now, nodes_, hops_);
+  if (routed) {
+    stack_.routing->NextHops(t.src, dsts_, t.now, nodes_, hops_);
+  } else {
+    std::copy(dsts_.begin(), dsts_.end(), hops_.begin());
+  }
+  const DropReason unheard = routed ? stack_.routing->UnheardHop() : DropReason::kOutOfRange;
   if (std::equal(hops_.begin(), hops_.end(), dsts_.begin())) {  // one hop each: the usual case
     const LinkModel::MediumUse use = stack_.access->Transmit(t, outcomes_);
-    ApplyPropagation(t.src, dsts_, t.now, outcomes_);
+    ApplyPropagation(t.src, dsts_, t.now, outcomes_, unheard);
     return use;
   }
   receivers_.clear();
@@ -421,7 +437,7 @@ LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t) {
   LinkModel::MediumUse use;
   if (!receivers_.empty()) {
     use = stack_.access->Transmit(LinkTransmission{t.src, receivers_, t.now, t.frames}, routed_outcomes_);
-    ApplyPropagation(t.src, receivers_, t.now, routed_outcomes_);
+    ApplyPropagation(t.src, receivers_, t.now, routed_outcomes_, unheard);
   }
   for (std::size_t i = 0; i < dsts_.size(); ++i) {
     outcomes_[i] = hop_slot_[i] < 0 ? LinkDelivery{t.now, DropReason::kNoRoute}
@@ -430,21 +446,58 @@ LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t) {
   return use;
 }
 
-// A copy the medium delivered but its receiver does not hear is lost out of range; one it hears
-// arrives the propagation delay later. The full mesh changes nothing.
+// A copy the medium delivered but its receiver does not hear when the transmission starts is lost
+// (out of range, or a stale route: the routing model's UnheardHop); one whose receiver has left
+// range when its frame ends is lost out of range; the others arrive the propagation delay later.
+// The full mesh changes nothing.
 void Network::ApplyPropagation(NodeId src, std::span<const NodeId> receivers, SimTime now,
-                               std::span<LinkDelivery> outcomes) {
+                               std::span<LinkDelivery> outcomes, DropReason unheard) {
   receptions_.resize(receivers.size());
   stack_.propagation->Reach(src, receivers, now, receptions_);
   for (std::size_t i = 0; i < receivers.size(); ++i) {
     LinkDelivery& d = outcomes[i];
-    if (d.drop != DropReason::kNone) continue;
-    if (!receptions_[i].reaches) {
-      d.drop = DropReason::kOutOfRange;
-    } else {
-      d.arrival += receptions_[i].delay;
+    if (d.drop == DropReason::kNone && !receptions_[i].reaches) d.drop = unheard;
+  }
+  if (stack_.propagation->ChangesOverTime()) {
+    // Asked again at each frame's end, one question per distinct end time (usually one for all).
+    const SimTime after_frame = stack_.access->DelayAfterFrame();
+    for (std::size_t i = 0; i < receivers.size();) {
+      if (outcomes[i].drop != DropReason::kNone) {
+        ++i;
+        continue;
+      }
+      const SimTime end = outcomes[i].arrival;
+      frame_end_receivers_.clear();
+      frame_end_index_.clear();
+      std::size_t j = i;
+      for (; j < receivers.size(); ++j) {
+        if (outcomes[j].drop != DropReason::kNone) continue;
+        if (outcomes[j].arrival != end) break;
+        frame_end_receivers_.push_back(receivers[j]);
+        frame_end_index_.push_back(j);
+      }
+      frame_end_receptions_.resize(frame_end_receivers_.size());
+      stack_.propagation->Reach(src, frame_end_receivers_, end - after_frame, frame_end_receptions_);
+      for (std::size_t k = 0; k < frame_end_index_.size(); ++k) {
+        if (!frame_end_receptions_[k].reaches) outcomes[frame_end_index_[k]].drop = DropReason::kOutOfRange;
+      }
+      i = j;
     }
   }
+  for (std::size_t i = 0; i < receivers.size(); ++i) {
+    LinkDelivery& d = outcomes[i];
+    if (d.drop == DropReason::kNone) d.arrival += receptions_[i].delay;
+  }
+}
+
+void Network::KeepHeard(NodeId src, SimTime now) {
+  receptions_.resize(dsts_.size());
+  stack_.propagation->Reach(src, dsts_, now, receptions_);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < dsts_.size(); ++i) {
+    if (receptions_[i].reaches) dsts_[kept++] = dsts_[i];
+  }
+  dsts_.resize(kept);
 }
 
 void Network::NotifyMedium(const Payload& p, NodeId sender, const LinkModel::MediumUse& use) {

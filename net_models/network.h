@@ -86,6 +86,8 @@ struct NodeCounters {
   std::int64_t medium_bytes = 0;     // frame bytes of those transmissions
   std::uint64_t relay_transmissions = 0;  // of the transmissions: others' messages it sent on
   std::int64_t relay_bytes = 0;           // and their frame bytes
+  std::uint64_t routing_transmissions = 0;  // of the transmissions: on link-local channels (a routing
+  std::int64_t routing_bytes = 0;           // protocol's beacons, SetLinkLocal) and their frame bytes
 };
 
 // What became of all copies, whatever their pair: delivered ones and the hops they took (1 for
@@ -139,6 +141,8 @@ class Network {
   // (connectivity.h asks it after a run).
   PropagationModel& propagation() { return *stack_.propagation; }
   const NextHopRouting& routing() const { return *stack_.routing; }
+  // A routing model that learns (link_state) is fed by whoever runs the nodes' daemons.
+  NextHopRouting& routing() { return *stack_.routing; }
   const WireParams& wire() const { return wire_; }
 
   // --- names --------------------------------------------------------------
@@ -155,6 +159,11 @@ class Network {
   // Node starts/stops receiving `channel`. Idempotent.
   void Join(NodeId node, ChannelId channel);
   void Leave(NodeId node, ChannelId channel);
+  // Messages on `channel` go one hop, to the members that hear the sender when it sends (the
+  // propagation model), and are never routed or relayed: a broadcast to the link with a
+  // time-to-live of 1, as OLSR's HELLO and TC packets (RFC 3626, section 3.4). A member out of
+  // range is not a destination (nothing is dropped for it). Idempotent.
+  void SetLinkLocal(ChannelId channel);
   // Node is offline during [from, until): what it sends in that interval and
   // what arrives for it then is dropped (DropReason::kOffline) and counted.
   void SetOffline(NodeId node, SimTime from, SimTime until = SimTime::Max());
@@ -195,6 +204,7 @@ class Network {
   struct Channel {
     std::string name;
     std::vector<NodeId> members;  // sorted
+    bool link_local = false;      // SetLinkLocal
   };
   // 64 bytes (8-byte fields first): at 72, bench_network's KITTI broadcast
   // ran 8% more instructions, most of them in malloc.
@@ -218,9 +228,15 @@ class Network {
   void CheckNode(NodeId node, const char* what) const;
   void CheckNames(ChannelId channel, MessageTypeId type) const;
   void Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::vector<std::uint8_t>&& payload);
-  LinkModel::MediumUse TransmitFrom(NodeId src, SimTime now, NodeCounters& sender);
-  LinkModel::MediumUse TransmitRouted(const LinkTransmission& t);
-  void ApplyPropagation(NodeId src, std::span<const NodeId> receivers, SimTime now, std::span<LinkDelivery> outcomes);
+  // routed: the routing model names each copy's next hop; otherwise (a link-local channel) every
+  // copy goes straight to its destination.
+  LinkModel::MediumUse TransmitFrom(NodeId src, SimTime now, NodeCounters& sender, bool routed);
+  LinkModel::MediumUse TransmitRouted(const LinkTransmission& t, bool routed);
+  // unheard: the drop reason of a receiver that does not hear the transmission when it starts.
+  void ApplyPropagation(NodeId src, std::span<const NodeId> receivers, SimTime now, std::span<LinkDelivery> outcomes,
+                        DropReason unheard);
+  // Keeps, of dsts_, the nodes that hear src at `now` (a link-local send).
+  void KeepHeard(NodeId src, SimTime now);
   // sender: the node whose transmission it was (the message's source, or a relay).
   void NotifyMedium(const Payload& p, NodeId sender, const LinkModel::MediumUse& use);
   std::uint32_t AllocatePayload(std::vector<std::uint8_t>&& bytes);
@@ -304,6 +320,9 @@ class Network {
   std::vector<LinkDelivery> outcomes_;
   std::vector<NodeId> hops_;
   std::vector<Reception> receptions_;
+  std::vector<NodeId> frame_end_receivers_;  // ApplyPropagation: those asked again at a frame's end
+  std::vector<std::size_t> frame_end_index_;
+  std::vector<Reception> frame_end_receptions_;
   std::vector<NodeId> receivers_;           // the distinct next hops, when some copy is relayed or has no route
   std::vector<LinkDelivery> routed_outcomes_;  // by receiver
   std::vector<int> hop_slot_;               // by destination: its next hop's index in receivers_, -1: no route

@@ -7,6 +7,7 @@
 #include "net_models/direct_routing.h"
 #include "net_models/fixed_mobility.h"
 #include "net_models/full_mesh_propagation.h"
+#include "net_models/link_state_routing.h"
 #include "net_models/log_distance_propagation.h"
 #include "net_models/range_propagation.h"
 #include "net_models/shortest_path_routing.h"
@@ -52,8 +53,16 @@ NetworkStack MakeNetworkStack(const NetworkModelParams& params, int nodes, std::
   if (params.model == LinkModelKind::kRadio) {
     stack.propagation = MakeRadioPropagation(params.radio, *stack.mobility, run_seed);
   }
-  if (params.routing == RoutingKind::kShortestPath) {
-    stack.routing = std::make_unique<ShortestPathRouting>(*stack.propagation, nodes);
+  switch (params.routing) {
+    case RoutingKind::kDirect: break;
+    case RoutingKind::kShortestPath:
+      stack.routing = std::make_unique<ShortestPathRouting>(*stack.propagation, nodes);
+      break;
+    case RoutingKind::kLinkState:
+      // Its tables fill only from the beacons the robots' routing daemons send
+      // (agents/link_state_daemon.h): whoever runs the robots starts them.
+      stack.routing = std::make_unique<LinkStateRouting>(nodes, params.link_state);
+      break;
   }
   return stack;
 }

@@ -9,13 +9,16 @@ namespace dvpr {
 RoutingKind ParseRoutingKind(std::string_view name) {
   if (name == "direct") return RoutingKind::kDirect;
   if (name == "shortest_path") return RoutingKind::kShortestPath;
-  throw std::invalid_argument("unknown value '" + std::string(name) + "' (expected one of: direct, shortest_path)");
+  if (name == "link_state") return RoutingKind::kLinkState;
+  throw std::invalid_argument("unknown value '" + std::string(name) +
+                              "' (expected one of: direct, shortest_path, link_state)");
 }
 
 std::string_view ToString(RoutingKind kind) {
   switch (kind) {
     case RoutingKind::kDirect: return "direct";
     case RoutingKind::kShortestPath: return "shortest_path";
+    case RoutingKind::kLinkState: return "link_state";
   }
   return "unknown";
 }

@@ -13,15 +13,17 @@
 #include <span>
 #include <string_view>
 
+#include "net_models/link_model.h"
 #include "net_models/node_id.h"
 #include "sim/sim_time.h"
 
 namespace dvpr {
 
 // The routing models a config names (network.routing; MakeNetworkStack builds them):
-// "direct" (direct_routing.h) | "shortest_path" (shortest_path_routing.h). Parse throws
-// std::invalid_argument "unknown value '<name>' (expected one of: direct, shortest_path)".
-enum class RoutingKind { kDirect, kShortestPath };
+// "direct" (direct_routing.h) | "shortest_path" (shortest_path_routing.h) | "link_state"
+// (link_state_routing.h). Parse throws std::invalid_argument "unknown value '<name>' (expected
+// one of: direct, shortest_path, link_state)".
+enum class RoutingKind { kDirect, kShortestPath, kLinkState };
 RoutingKind ParseRoutingKind(std::string_view name);
 std::string_view ToString(RoutingKind kind);
 
@@ -39,11 +41,16 @@ class NextHopRouting {
   void NextHops(NodeId at, std::span<const NodeId> dsts, SimTime now, int nodes, std::span<NodeId> hops);
   // "direct", "shortest_path", ...
   std::string_view Name() const { return DoName(); }
+  // Why a copy is lost when the hop this model named does not hear it: out of range for a model
+  // that knows the graph (direct's one hop, shortest_path's graph of the last 100 ms), a stale
+  // route for one that routes on what it learned (link_state).
+  DropReason UnheardHop() const { return DoUnheardHop(); }
 
  private:
   // hops[i] arrives preset to dsts[i].
   virtual void DoNextHops(NodeId at, std::span<const NodeId> dsts, SimTime now, std::span<NodeId> hops) = 0;
   virtual std::string_view DoName() const = 0;
+  virtual DropReason DoUnheardHop() const { return DropReason::kOutOfRange; }
 };
 
 }  // namespace dvpr

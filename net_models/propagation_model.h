@@ -34,11 +34,15 @@ class PropagationModel {
   void Reach(NodeId src, std::span<const NodeId> receivers, SimTime now, std::span<Reception> out);
   // "full_mesh", "range(50m)", ...
   std::string_view Name() const { return DoName(); }
+  // Whether who hears whom can change over time (nodes that move): then the Network asks again
+  // at the end of each frame, and a receiver that left range while it was sent does not get it.
+  bool ChangesOverTime() const { return DoChangesOverTime(); }
 
  private:
   // out[i] arrives preset to {reaches, zero delay}.
   virtual void DoReach(NodeId src, std::span<const NodeId> receivers, SimTime now, std::span<Reception> out) = 0;
   virtual std::string_view DoName() const = 0;
+  virtual bool DoChangesOverTime() const { return true; }
 };
 
 // Who hears whom at `at`: heard_by[u] lists, ascending, the nodes of 0 .. nodes - 1 that hear

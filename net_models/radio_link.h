@@ -32,6 +32,7 @@ class RadioLink final : public LinkModel {
 
   MediumUse DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) override;
   std::string_view DoName() const override { return "radio"; }
+  SimTime DoDelayAfterFrame() const override { return params_.latency; }
 
   RadioLinkParams params_;
   std::vector<Radio> radios_;  // one per node

@@ -95,6 +95,13 @@ struct SweepConfig {
   bool operator==(const SweepConfig&) const = default;
 };
 
+// One entry of network.routing: the kind, and link_state's beacon periods.
+struct RoutingEntry {
+  RoutingKind kind = RoutingKind::kDirect;
+  LinkStateParams link_state;
+  bool operator==(const RoutingEntry&) const = default;
+};
+
 // The `network:` section. model, bandwidth, latency, queue_packets and mtu may each be a list;
 // the sweep runs their cross product (ExpandNetworks in sweep.h), each variant a
 // NetworkModelParams with this loss and these links.
@@ -109,7 +116,9 @@ struct NetworkConfig {
   // model radio: one variant per entry (network.radio, a `range` list gives one entry per range);
   // a radio section without model radio is refused when the config is read.
   std::vector<RadioParams> radio{RadioParams{}};
-  RoutingKind routing = RoutingKind::kDirect;  // network.routing, for every variant
+  // network.routing: model radio runs one variant per entry (a list sweeps routings); the other
+  // models reach every robot in one hop and route direct (a routing for them is refused).
+  std::vector<RoutingEntry> routing{RoutingEntry{}};
   DisconnectedParams disconnected;             // network.disconnected, for every variant (radio only)
   bool operator==(const NetworkConfig&) const = default;
 };

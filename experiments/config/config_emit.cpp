@@ -162,7 +162,19 @@ void EmitNetwork(YAML::Emitter& out, const NetworkConfig& n) {
   // Only a radio config has the section (and only a routed one the routing), so every other
   // config's emitted form stays as it was.
   if (std::find(n.model.begin(), n.model.end(), LinkModelKind::kRadio) != n.model.end()) EmitRadio(out, n.radio);
-  if (n.routing != RoutingKind::kDirect) out << YAML::Key << "routing" << YAML::Value << Name(ToString(n.routing));
+  if (n.routing != std::vector<RoutingEntry>{RoutingEntry{}}) {
+    out << YAML::Key << "routing" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    for (const RoutingEntry& e : n.routing) {
+      if (e.kind == RoutingKind::kLinkState && e.link_state != LinkStateParams{}) {
+        out << YAML::BeginMap << YAML::Key << "kind" << YAML::Value << Name(ToString(e.kind))
+            << YAML::Key << "hello" << YAML::Value << FormatDuration(e.link_state.hello)
+            << YAML::Key << "topology" << YAML::Value << FormatDuration(e.link_state.topology) << YAML::EndMap;
+      } else {
+        out << Name(ToString(e.kind));
+      }
+    }
+    out << YAML::EndSeq;
+  }
   if (n.disconnected.kind != DisconnectedKind::kDrop) {
     out << YAML::Key << "disconnected" << YAML::Value << YAML::Flow << YAML::BeginMap
         << YAML::Key << "kind" << YAML::Value << Name(ToString(n.disconnected.kind))

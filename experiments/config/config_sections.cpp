@@ -170,6 +170,48 @@ DisconnectedParams ReadDisconnected(const Field& f) {
   return d;
 }
 
+// One entry of network.routing: direct | shortest_path | link_state |
+// {kind: link_state, hello, topology}.
+RoutingEntry ReadRoutingEntry(const Field& f) {
+  RoutingEntry e;
+  if (f.node().IsScalar()) {
+    e.kind = f.Named(ParseRoutingKind);
+    return e;
+  }
+  if (!f.node().IsMap()) {
+    f.Fail("expected direct, shortest_path, link_state or a map such as {kind: link_state, hello: 2s, topology: 5s}");
+  }
+  f.ExpectMap({"kind", "hello", "topology"});
+  const Field kind = f.Child("kind");
+  if (!kind.present()) f.Fail("a map needs its kind (link_state)");
+  e.kind = kind.Named(ParseRoutingKind);
+  const Field hello = f.Child("hello");
+  const Field topology = f.Child("topology");
+  if (e.kind != RoutingKind::kLinkState) {
+    const std::string why = "applies to link_state; " + std::string(ToString(e.kind)) + " sends no beacons";
+    if (hello.present()) hello.Fail(why);
+    if (topology.present()) topology.Fail(why);
+  }
+  if (hello.present()) e.link_state.hello = hello.Duration(SimTime::Nanos(1), LinkStateParams::kMaxPeriod);
+  if (topology.present()) e.link_state.topology = topology.Duration(SimTime::Nanos(1), LinkStateParams::kMaxPeriod);
+  f.Validate(e.link_state);
+  return e;
+}
+
+// network.routing: one entry or a list of them (one radio variant each), none twice.
+std::vector<RoutingEntry> ReadRouting(const Field& f) {
+  std::vector<RoutingEntry> out;
+  if (f.node().IsSequence()) {
+    for (const Field& e : f.Items()) {
+      out.push_back(ReadRoutingEntry(e));
+      if (std::find(out.begin(), out.end() - 1, out.back()) != out.end() - 1) e.Fail("is listed twice");
+    }
+  } else {
+    out.push_back(ReadRoutingEntry(f));
+  }
+  return out;
+}
+
 }  // namespace
 
 NetworkConfig ReadNetwork(const Field& f) {
@@ -203,7 +245,14 @@ NetworkConfig ReadNetwork(const Field& f) {
     }
     n.radio = ReadRadio(radio);
   }
-  if (auto c = f.Child("routing"); c.present()) n.routing = c.Named(ParseRoutingKind);
+  if (const Field c = f.Child("routing"); c.present()) {
+    n.routing = ReadRouting(c);
+    const bool routed = std::any_of(n.routing.begin(), n.routing.end(),
+                                    [](const RoutingEntry& e) { return e.kind != RoutingKind::kDirect; });
+    if (routed && std::find(n.model.begin(), n.model.end(), LinkModelKind::kRadio) == n.model.end()) {
+      c.Fail("applies to model radio, which network.model does not list (the other models reach every robot in one hop)");
+    }
+  }
   if (const Field c = f.Child("disconnected"); c.present()) {
     if (std::find(n.model.begin(), n.model.end(), LinkModelKind::kRadio) == n.model.end()) {
       c.Fail("applies to model radio, which network.model does not list (only a radio loses its routes)");

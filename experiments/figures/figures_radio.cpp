@@ -158,7 +158,8 @@ std::map<std::tuple<std::string, int, int>, Acc> AnsweredShares(const CsvTable& 
 }  // namespace
 
 std::optional<FigureScript> WriteRadioRangeFigure(const fs::path& dir, const std::vector<RunResult>& rows, const CsvTable& queries,
-                                                  std::string& why) {
+                                                  std::string& why, const std::optional<std::string>& routing,
+                                                  const std::string& name) {
   struct Cell {
     Acc bytes, latency;
   };
@@ -168,6 +169,7 @@ std::optional<FigureScript> WriteRadioRangeFigure(const fs::path& dir, const std
   for (const RunResult& r : rows) {
     if (!RowTraits(r.key.protocol).simulated_network || r.key.network.model != "radio") continue;
     if (r.key.strategy != "decentralized" && r.key.strategy != "broadcast") continue;
+    if (routing && r.key.network.routing != *routing) continue;
     const std::optional<double> range = RadioRangeMetres(r.key.network.radio);
     if (!range) continue;
     ranges.insert(*range);
@@ -198,7 +200,8 @@ std::optional<FigureScript> WriteRadioRangeFigure(const fs::path& dir, const std
       blocks.emplace_back(s, n);
     }
   }
-  WriteFileAtomic(dir / "radio_range.dat", dat);
+  const std::string data_file = name + ".dat";
+  WriteFileAtomic(dir / data_file, dat);
   const auto plot = [&](int column) {
     std::ostringstream p;
     std::set<int> all_n;
@@ -207,7 +210,7 @@ std::optional<FigureScript> WriteRadioRangeFigure(const fs::path& dir, const std
     for (std::size_t i = 0; i < blocks.size(); ++i) {
       const auto& [s, n] = blocks[i];
       const auto ni = static_cast<std::size_t>(std::find(ns.begin(), ns.end(), n) - ns.begin());
-      p << (i ? ", \\\n     " : "plot ") << "'radio_range.dat' index " << i << " using 1:" << column
+      p << (i ? ", \\\n     " : "plot ") << "'" << data_file << "' index " << i << " using 1:" << column
         << " with linespoints lw 2 dt " << figure_style::NetworkDash(ni) << " pt " << figure_style::NetworkPoint(ni)
         << " ps 1.2 lc rgb '" << figure_style::StrategyColour(s == "decentralized" ? 0 : 1) << "' title "
         << GnuplotQuote(s + ", n = " + std::to_string(n));
@@ -220,8 +223,11 @@ std::optional<FigureScript> WriteRadioRangeFigure(const fs::path& dir, const std
   for (double r : ranges) xt << (first ? "" : ", ") << "'" << FormatDouble(r) << "' " << FormatDouble(r), first = false;
   xt << ")\n";
   std::ostringstream s;
-  s << "set multiplot layout 1,3 title 'The team on radios: what range costs (means over runs; shortest-path relays "
-       "where configured)' font ',13'\n"
+  const std::string relays = !routing ? "shortest-path relays where configured"
+                             : routing->empty() ? "direct: no relays"
+                                                : *routing + " routing";
+  s << "set multiplot layout 1,3 title " << GnuplotQuote("The team on radios: what range costs (means over runs; " + relays + ")")
+    << " font ',13'\n"
     << "set grid\nset xlabel 'radio range (m)'\n" << xt.str()
     << "set title 'Bytes on the air per query (every transmission, relays included)'\nset ylabel 'bytes per query'\n"
     << "set logscale y\nset key bottom right\n" << plot(2) << "unset logscale y\nunset key\n"
@@ -247,8 +253,25 @@ std::vector<std::pair<std::string, FigureScript>> RadioFigures(const fs::path& o
   std::string why;
   const CsvTable connectivity = ReadCsvTable(out_dir / "connectivity.csv");
   if (auto f = WriteConnectivityFigure(data_dir, connectivity, rows, why)) out.emplace_back("connectivity", std::move(*f));
-  if (auto f = WriteRadioRangeFigure(data_dir, rows, ReadCsvTable(out_dir / "queries.csv"), why)) {
-    out.emplace_back("radio_range", std::move(*f));
+  // One figure per routing of the radio variants (the first is radio_range, the others
+  // radio_range_<routing>): lines of two routings in one plot would be twelve.
+  std::vector<std::string> routings;
+  for (const RunResult& r : rows) {
+    if (r.key.network.model == "radio" &&
+        std::find(routings.begin(), routings.end(), r.key.network.routing) == routings.end()) {
+      routings.push_back(r.key.network.routing);
+    }
+  }
+  const CsvTable queries = ReadCsvTable(out_dir / "queries.csv");
+  if (routings.size() <= 1) {
+    if (auto f = WriteRadioRangeFigure(data_dir, rows, queries, why)) out.emplace_back("radio_range", std::move(*f));
+  } else {
+    for (std::size_t i = 0; i < routings.size(); ++i) {
+      const std::string name = i == 0 ? "radio_range" : "radio_range_" + (routings[i].empty() ? "direct" : routings[i]);
+      if (auto f = WriteRadioRangeFigure(data_dir, rows, queries, why, routings[i], name)) {
+        out.emplace_back(name, std::move(*f));
+      }
+    }
   }
   return out;
 }

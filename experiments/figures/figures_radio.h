@@ -32,9 +32,13 @@ std::optional<FigureScript> WriteConnectivityFigure(const std::filesystem::path&
 
 // radio_range.png's data (radio_range.dat: per (strategy, n) a block "range_m bytes_per_query
 // answered_percent mean_latency_ms", means over runs, NaN where unknown); `queries` may be empty
-// (no queries.csv: the answered panel says so).
+// (no queries.csv: the answered panel says so). With `routing`, only the radio variants of that
+// routing ("shortest_path", "link_state"; "" for direct), written as <name>.dat: a sweep of
+// several routings draws one figure each.
 std::optional<FigureScript> WriteRadioRangeFigure(const std::filesystem::path& data_dir, const std::vector<RunResult>& rows,
-                                                  const CsvTable& queries, std::string& why);
+                                                  const CsvTable& queries, std::string& why,
+                                                  const std::optional<std::string>& routing = std::nullopt,
+                                                  const std::string& name = "radio_range");
 
 // Both, for DrawFigures: (name, script) of each figure the results of out_dir have.
 std::vector<std::pair<std::string, FigureScript>> RadioFigures(const std::filesystem::path& out_dir,

@@ -27,7 +27,7 @@ void Fields(RunResult& r, F&& f) {
 template <typename F>
 void Fields(RobotLoadRow& r, F&& f) {
   f(r.key, r.robot, r.queries_received, r.comparisons, r.stored, r.busy_fraction, r.max_queue,
-    r.relay_transmissions, r.relay_bytes);
+    r.relay_transmissions, r.relay_bytes, r.routing_transmissions, r.routing_bytes);
 }
 template <typename F>
 void Fields(LinkRow& r, F&& f) {
@@ -57,7 +57,7 @@ template <typename F> void Fields(BowSizeRow& r, F&& f) { f(r.key, r.payload_byt
 template <typename F>
 void Fields(RadioRow& r, F&& f) {
   f(r.key, r.delivered_copies, r.mean_hops, r.max_hops, r.relay_transmissions, r.relay_bytes, r.held_copies,
-    r.dropped);
+    r.routing_transmissions, r.routing_bytes, r.dropped);
 }
 template <typename F>
 void Fields(ConnectivityRow& r, F&& f) {

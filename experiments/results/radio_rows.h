@@ -10,8 +10,9 @@
 namespace dvpr {
 
 // Why a copy was lost, in radio.csv's column order (net_models' DropReason without kNone).
-inline constexpr std::array<const char*, 8> kRadioDropReasons = {
-    "queue_full", "loss", "offline", "no_route", "out_of_range", "hop_limit", "buffer_full", "expired"};
+inline constexpr std::array<const char*, 9> kRadioDropReasons = {
+    "queue_full", "loss",        "offline", "no_route",   "out_of_range",
+    "hop_limit",  "buffer_full", "expired", "stale_route"};
 
 // One row of radio.csv: one run of one strategy on a radio variant.
 struct RadioRow {
@@ -22,6 +23,8 @@ struct RadioRow {
   std::int64_t relay_transmissions = 0;   // all robots' transmissions of others' messages
   std::int64_t relay_bytes = 0;           // and their frame bytes
   std::int64_t held_copies = 0;           // copies a robot held for want of a route (store-and-forward)
+  std::int64_t routing_transmissions = 0; // all robots' routing beacons (link_state), sent and forwarded
+  std::int64_t routing_bytes = 0;         // and their frame bytes
   std::array<std::int64_t, kRadioDropReasons.size()> dropped{};  // copies lost, by kRadioDropReasons
 };
 

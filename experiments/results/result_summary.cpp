@@ -257,11 +257,13 @@ RunResult ParseRunRow(const std::vector<std::string>& f, const std::string& wher
     const std::string base = NetworkName(r.key.network);
     if (f[22].size() > base.size() + 1 && f[22].compare(0, base.size() + 1, base + " ") == 0) {
       std::string rest = f[22].substr(base.size() + 1);
-      constexpr std::string_view kRouted = "shortest_path";
-      if (rest.size() >= kRouted.size() && rest.compare(rest.size() - kRouted.size(), kRouted.size(), kRouted) == 0) {
-        r.key.network.routing = std::string(kRouted);
-        rest.resize(rest.size() - kRouted.size());
-        if (!rest.empty() && rest.back() == ' ') rest.pop_back();
+      for (const std::string_view routed : {std::string_view("shortest_path"), std::string_view("link_state")}) {
+        if (rest.size() >= routed.size() && rest.compare(rest.size() - routed.size(), routed.size(), routed) == 0) {
+          r.key.network.routing = std::string(routed);
+          rest.resize(rest.size() - routed.size());
+          if (!rest.empty() && rest.back() == ' ') rest.pop_back();
+          break;
+        }
       }
       r.key.network.radio = rest;
     }

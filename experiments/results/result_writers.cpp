@@ -67,8 +67,9 @@ const char* const kBowHeader =
 const char* const kBowSizesHeader = "protocol,strategy,robots,run,payload_bytes,messages," DVPR_NETWORK_COLUMNS;
 const char* const kRadioHeader =
     "protocol,strategy,robots,run,delivered_copies,mean_hops,max_hops,relay_transmissions,relay_bytes,held_copies,"
+    "routing_transmissions,routing_bytes,"
     "dropped_queue_full,dropped_loss,dropped_offline,dropped_no_route,dropped_out_of_range,dropped_hop_limit,"
-    "dropped_buffer_full,dropped_expired," DVPR_NETWORK_COLUMNS;
+    "dropped_buffer_full,dropped_expired,dropped_stale_route," DVPR_NETWORK_COLUMNS;
 #undef DVPR_NETWORK_COLUMNS
 
 std::string NetworkName(const NetworkLabel& n) {
@@ -208,18 +209,23 @@ std::string CsvRow(const MessageRow& r) {
 std::string CsvRow(const RadioRow& r) {
   std::string out = Key(r.key) + "," + std::to_string(r.delivered_copies) + "," + FormatDouble(r.mean_hops) + "," +
                     std::to_string(r.max_hops) + "," + std::to_string(r.relay_transmissions) + "," +
-                    std::to_string(r.relay_bytes) + "," + std::to_string(r.held_copies);
+                    std::to_string(r.relay_bytes) + "," + std::to_string(r.held_copies) + "," +
+                    std::to_string(r.routing_transmissions) + "," + std::to_string(r.routing_bytes);
   for (const std::int64_t d : r.dropped) out += "," + std::to_string(d);
   return out + "," + Network(r.key.network);
 }
 
 std::string PerRobotHeader(bool radio) {
-  return std::string(kPerRobotHeader) + (radio ? ",relay_transmissions,relay_bytes" : "");
+  return std::string(kPerRobotHeader) +
+         (radio ? ",relay_transmissions,relay_bytes,routing_transmissions,routing_bytes" : "");
 }
 
 std::string CsvRow(const RobotLoadRow& r, bool radio) {
   std::string out = CsvRow(r);
-  if (radio) out += "," + std::to_string(r.relay_transmissions) + "," + std::to_string(r.relay_bytes);
+  if (radio) {
+    out += "," + std::to_string(r.relay_transmissions) + "," + std::to_string(r.relay_bytes) + "," +
+           std::to_string(r.routing_transmissions) + "," + std::to_string(r.routing_bytes);
+  }
   return out;
 }
 

@@ -108,6 +108,9 @@ struct RobotLoadRow {
   // per_robot.csv has these columns only when a network variant is a radio.
   std::int64_t relay_transmissions = 0;
   std::int64_t relay_bytes = 0;
+  // Sim only, the same columns: its routing beacons' transmissions and frame bytes (link_state).
+  std::int64_t routing_transmissions = 0;
+  std::int64_t routing_bytes = 0;
 };
 
 // One row of failover.csv (written when the config has a dropout): one dropped robot of a run

@@ -8,12 +8,14 @@ namespace dvpr {
 namespace {
 
 NetworkVariant MakeVariant(int index, const NetworkConfig& n, LinkModelKind model, DataRate rate,
-                           SimTime latency, int queue, Bytes mtu, const RadioParams& radio) {
+                           SimTime latency, int queue, Bytes mtu, const RadioParams& radio,
+                           const RoutingEntry& routing) {
   NetworkVariant v;
   v.index = index;
   v.params = NetworkModelParams{.model = model, .bandwidth = rate, .latency = latency, .queue_packets = queue,
                                 .wire = WireParams{.mtu = mtu}, .loss = n.loss, .links = n.links, .radio = radio,
-                                .routing = n.routing, .disconnected = n.disconnected};
+                                .routing = routing.kind, .link_state = routing.link_state,
+                                .disconnected = n.disconnected};
   v.label.variant = index;
   v.label.model = ToString(model);
   v.label.loss = ToString(n.loss.model);
@@ -30,8 +32,8 @@ NetworkVariant MakeVariant(int index, const NetworkConfig& n, LinkModelKind mode
                                                                  : std::string(ToString(radio.propagation));
     v.name += " " + v.label.radio;
   }
-  if (n.routing != RoutingKind::kDirect) {
-    v.label.routing = ToString(n.routing);
+  if (routing.kind != RoutingKind::kDirect) {
+    v.label.routing = ToString(routing.kind);
     v.name += " " + v.label.routing;
   }
   if (n.loss.model != LossModelKind::kNone) v.name += " loss:" + v.label.loss;
@@ -45,18 +47,24 @@ std::vector<NetworkVariant> ExpandNetworks(const NetworkConfig& n) {
   for (LinkModelKind model : n.model) {
     if (model == LinkModelKind::kIdeal) {
       out.push_back(MakeVariant(static_cast<int>(out.size()), n, model, n.bandwidth.front(),
-                                n.latency.front(), n.queue_packets.front(), n.mtu.front(), RadioParams{}));
+                                n.latency.front(), n.queue_packets.front(), n.mtu.front(), RadioParams{},
+                                RoutingEntry{}));
       continue;
     }
-    // Only the radio sweeps its radio entries; every other model has the default one, unused.
-    const std::vector<RadioParams> radios =
-        model == LinkModelKind::kRadio ? n.radio : std::vector<RadioParams>{RadioParams{}};
+    // Only the radio sweeps its radio and routing entries; every other model has the default
+    // ones (unused: one hop to every robot).
+    const bool radio_model = model == LinkModelKind::kRadio;
+    const std::vector<RadioParams> radios = radio_model ? n.radio : std::vector<RadioParams>{RadioParams{}};
+    const std::vector<RoutingEntry> routings = radio_model ? n.routing : std::vector<RoutingEntry>{RoutingEntry{}};
     for (const RadioParams& radio : radios) {
-      for (DataRate rate : n.bandwidth) {
-        for (SimTime latency : n.latency) {
-          for (int queue : n.queue_packets) {
-            for (Bytes mtu : n.mtu) {
-              out.push_back(MakeVariant(static_cast<int>(out.size()), n, model, rate, latency, queue, mtu, radio));
+      for (const RoutingEntry& routing : routings) {
+        for (DataRate rate : n.bandwidth) {
+          for (SimTime latency : n.latency) {
+            for (int queue : n.queue_packets) {
+              for (Bytes mtu : n.mtu) {
+                out.push_back(
+                    MakeVariant(static_cast<int>(out.size()), n, model, rate, latency, queue, mtu, radio, routing));
+              }
             }
           }
         }

@@ -33,8 +33,10 @@ enum class ChannelKind : int {
   kMigrate,        // descriptor_batch_t, stored descriptors moved to their new owner
   kTable,          // centroid_table_t, the leader's table of an epoch, to every robot
   kStatus,         // agent_status_t, every agent's heartbeat (start barrier, failover)
+  kHello,          // routing_hello_t, link_state routing's beacon to the robots in range
+  kTopology,       // routing_topology_t, link_state routing's flooded topology
 };
-inline constexpr int kChannelKinds = 14;
+inline constexpr int kChannelKinds = 16;
 
 struct ChannelSpec {
   ChannelKind kind;

@@ -2,6 +2,7 @@
 // one entry per range; tests/sweep expands them into network variants), written back only for
 // a radio config, and every bad value one error naming its key.
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -80,7 +81,46 @@ TEST(ConfigRadioTest, BadRadioValuesNameTheirKey) {
               "test.yaml: network.radio: applies to model radio, which network.model does not list");
   starts_with(ErrorOf("network: {model: radio, radio: {colour: red}}\n"), "test.yaml: network.radio.colour: unknown key");
   starts_with(ErrorOf("network: {model: radio, routing: flooding}\n"),
-              "test.yaml: network.routing: unknown value 'flooding' (expected one of: direct, shortest_path)");
+              "test.yaml: network.routing: unknown value 'flooding' (expected one of: direct, shortest_path, link_state)");
+}
+
+// network.routing (docs/network_model.md, "Routing"): a name, link_state's map, or a list of them
+// (one radio variant each); only with a radio; every bad value one error naming its key.
+TEST(ConfigRadioTest, RoutingIsOneEntryOrAListAndLinkStateTakesItsPeriods) {
+  EXPECT_EQ(Parse("network: {model: radio}\n").network.routing, std::vector<RoutingEntry>{RoutingEntry{}});
+  const ExperimentConfig c = Parse(
+      "network: {model: [point_to_point, radio], routing: [shortest_path, link_state,\n"
+      "          {kind: link_state, hello: 1s, topology: 3s}]}\n");
+  ASSERT_EQ(c.network.routing.size(), 3u);
+  EXPECT_EQ(c.network.routing[0].kind, RoutingKind::kShortestPath);
+  EXPECT_EQ(c.network.routing[1].kind, RoutingKind::kLinkState);
+  EXPECT_EQ(c.network.routing[1].link_state.hello, SimTime::Seconds(2));     // OLSR's defaults
+  EXPECT_EQ(c.network.routing[1].link_state.topology, SimTime::Seconds(5));
+  EXPECT_EQ(c.network.routing[2].link_state.hello, SimTime::Seconds(1));
+  EXPECT_EQ(c.network.routing[2].link_state.topology, SimTime::Seconds(3));
+  const std::string emitted = EmitConfig(c);
+  EXPECT_EQ(ParseConfig(emitted, "/nonexistent", {}, "config.yaml"), c) << emitted;
+}
+
+TEST(ConfigRadioTest, BadRoutingValuesNameTheirKey) {
+  const auto starts_with = [](const std::string& error, const std::string& prefix) {
+    EXPECT_EQ(error.rfind(prefix, 0), 0u) << error;
+  };
+  starts_with(ErrorOf("network: {model: point_to_point, routing: link_state}\n"),
+              "test.yaml: network.routing: applies to model radio, which network.model does not list");
+  starts_with(ErrorOf("network: {model: radio, routing: [link_state, link_state]}\n"),
+              "test.yaml: network.routing[1]: is listed twice");
+  starts_with(ErrorOf("network: {model: radio, routing: []}\n"), "test.yaml: network.routing: ");
+  starts_with(ErrorOf("network: {model: radio, routing: {hello: 2s}}\n"),
+              "test.yaml: network.routing: a map needs its kind (link_state)");
+  starts_with(ErrorOf("network: {model: radio, routing: {kind: shortest_path, hello: 2s}}\n"),
+              "test.yaml: network.routing.hello: applies to link_state; shortest_path sends no beacons");
+  starts_with(ErrorOf("network: {model: radio, routing: {kind: link_state, hello: 0s}}\n"),
+              "test.yaml: network.routing.hello: must be in [1ns, 1h], got 0s");
+  starts_with(ErrorOf("network: {model: radio, routing: {kind: link_state, topology: 2h}}\n"),
+              "test.yaml: network.routing.topology: must be in [1ns, 1h], got 2h");
+  starts_with(ErrorOf("network: {model: radio, routing: {kind: link_state, tc: 5s}}\n"),
+              "test.yaml: network.routing.tc: unknown key");
 }
 
 // network.disconnected (docs/network_model.md, "Disconnection"): a name or a map, read back as

@@ -182,9 +182,11 @@ TEST(ResultWriters, RadioCsvRow) {
   r.relay_transmissions = 4;
   r.relay_bytes = 2188;
   r.held_copies = 5;
-  r.dropped = {0, 0, 1, 2, 3, 0, 4, 6};
+  r.routing_transmissions = 30;
+  r.routing_bytes = 1950;
+  r.dropped = {0, 0, 1, 2, 3, 0, 4, 6, 7};
   EXPECT_EQ(CsvRow(r),
-            "sim,broadcast,4,1,8,1.5,3,4,2188,5,0,0,1,2,3,0,4,6,1,radio,1e+07,2,none,"
+            "sim,broadcast,4,1,8,1.5,3,4,2188,5,30,1950,0,0,1,2,3,0,4,6,7,1,radio,1e+07,2,none,"
             "radio 10 Mbit/s 2 ms range 200m shortest_path");
   r.delivered_copies = 0;
   r.mean_hops = kNotApplicable;
@@ -197,14 +199,17 @@ TEST(ResultWriters, RadioCsvRow) {
 // The radio columns come last, so a reader by position finds every other column where it was.
 TEST(ResultWriters, RadioColumnsOnlyWithARadio) {
   EXPECT_EQ(PerRobotHeader(false), kPerRobotHeader);
-  EXPECT_EQ(PerRobotHeader(true), std::string(kPerRobotHeader) + ",relay_transmissions,relay_bytes");
+  EXPECT_EQ(PerRobotHeader(true),
+            std::string(kPerRobotHeader) + ",relay_transmissions,relay_bytes,routing_transmissions,routing_bytes");
   EXPECT_EQ(MessagesHeader(false), kMessagesHeader);
   EXPECT_EQ(MessagesHeader(true), std::string(kMessagesHeader) + ",hops");
   RobotLoadRow robot;
   robot.relay_transmissions = 3;
   robot.relay_bytes = 1641;
+  robot.routing_transmissions = 12;
+  robot.routing_bytes = 777;
   EXPECT_EQ(CsvRow(robot, false), CsvRow(robot));
-  EXPECT_EQ(CsvRow(robot, true), CsvRow(robot) + ",3,1641");
+  EXPECT_EQ(CsvRow(robot, true), CsvRow(robot) + ",3,1641,12,777");
   MessageRow message;
   message.hops = 2;
   EXPECT_EQ(CsvRow(message, false), CsvRow(message));

@@ -1,10 +1,12 @@
 #include "experiments/protocols/sim/scenario.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "agents/algorithms/frame_stream.h"
+#include "agents/messages/channels.h"
 #include "net_models/network_stack.h"
 
 namespace dvpr {
@@ -75,9 +77,22 @@ Scenario::Scenario(const Dataset& data, const ScenarioParams& params, const Agen
     const AgentSetup setup{RobotId(r), params_.robots, params_.agent, FramesOf(data_, split_.ranges[static_cast<std::size_t>(r)])};
     agents_.push_back(make_agent(setup, *transport));
   }
+  if (params_.network.routing == RoutingKind::kLinkState) {
+    auto* routing = dynamic_cast<LinkStateRouting*>(&network_.routing());
+    if (routing == nullptr) throw std::logic_error("Scenario: routing link_state without a LinkStateRouting");
+    network_.SetLinkLocal(network_.InternChannel(channels::kHello));
+    network_.SetLinkLocal(network_.InternChannel(channels::kTopology));
+    SimTime last_frame;
+    for (const SimTime t : CaptureTimes()) last_frame = std::max(last_frame, t);
+    for (int r = 0; r < params_.robots; ++r) {
+      daemons_.push_back(std::make_unique<LinkStateDaemon>(*transports_[static_cast<std::size_t>(r)], NodeId(r),
+                                                           *routing, last_frame));
+    }
+  }
 }
 
 void Scenario::Run() {
+  for (auto& daemon : daemons_) daemon->Start();
   for (auto& agent : agents_) agent->Start();
   for (const auto& d : params_.dropouts) {
     network_.SetOffline(NodeId(d.robot.value), d.at);

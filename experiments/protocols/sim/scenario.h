@@ -11,6 +11,7 @@
 
 #include "agents/agent_core.h"
 #include "agents/agent_params.h"
+#include "agents/link_state_daemon.h"
 #include "agents/messages/decoded_messages.h"
 #include "agents/algorithms/ids.h"
 #include "agents/messages/sim_transport.h"
@@ -62,13 +63,17 @@ class Scenario {
   // Subscribe observers here before Run; they must not outlive the scenario.
   Network& network() { return network_; }
   const Network& network() const { return network_; }
-  // Starts every agent, sets the dropouts, runs the simulator until no event is left.
+  // Starts every robot's routing daemon (link_state routing) and agent, sets the dropouts, runs
+  // the simulator until no event is left.
   void Run();
 
   const ScenarioParams& params() const { return params_; }
   const Simulator& simulator() const { return sim_; }
   const SequenceSplit& split() const { return split_; }
   const std::vector<std::unique_ptr<TeamAgent>>& agents() const { return agents_; }
+  // One per robot with link_state routing (sending its beacons until the team's last frame),
+  // else none.
+  const std::vector<std::unique_ptr<LinkStateDaemon>>& daemons() const { return daemons_; }
   bool IsDropped(RobotId robot) const;
   // Per frame of the sequence, when the robot that drives it takes it.
   std::vector<SimTime> CaptureTimes() const;
@@ -82,6 +87,7 @@ class Scenario {
   DecodedMessages decoded_;  // shared by the transports: a broadcast is decoded once, not once a robot
   std::vector<std::unique_ptr<SimTransport>> transports_;
   std::vector<std::unique_ptr<TeamAgent>> agents_;
+  std::vector<std::unique_ptr<LinkStateDaemon>> daemons_;  // after the transports: destroyed first
 };
 
 }  // namespace dvpr

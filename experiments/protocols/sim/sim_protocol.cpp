@@ -66,6 +66,8 @@ RadioRow RadioRowOf(const RunKey& key, const SimRunLog& log) {
   for (const NodeCounters& s : log.senders) {
     row.relay_transmissions += static_cast<std::int64_t>(s.relay_transmissions);
     row.relay_bytes += s.relay_bytes;
+    row.routing_transmissions += static_cast<std::int64_t>(s.routing_transmissions);
+    row.routing_bytes += s.routing_bytes;
   }
   for (std::size_t i = 0; i < row.dropped.size(); ++i) {
     row.dropped[i] = static_cast<std::int64_t>(routes.dropped[i + 1]);
@@ -97,6 +99,8 @@ void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLo
     const NodeCounters& sent = log.senders[static_cast<std::size_t>(r)];
     row.relay_transmissions = static_cast<std::int64_t>(sent.relay_transmissions);
     row.relay_bytes = sent.relay_bytes;
+    row.routing_transmissions = static_cast<std::int64_t>(sent.routing_transmissions);
+    row.routing_bytes = sent.routing_bytes;
     out.per_robot.push_back(row);
     for (; next_link < log.links.size() && log.links[next_link].src == r; ++next_link) {
       const PairTraffic& pair = log.links[next_link];

@@ -1,9 +1,10 @@
 // Every channel of every message type, in one place. Each LCM type of lcmtypes/dvpr/*.lcm travels
 // on at least one channel; every channel the agents publish on (agents/messages/channels.h,
-// agents/messages/team_sync.h, agents/recluster/recluster_messages.h) is one of the message catalogue's
-// (lcmtypes/channels/channels.h), with the LCM type it carries and the role that the simulation's
-// recorders, the LCM agent process and `dvpr replay` all read from the catalogue. The names, types
-// and roles below are written by hand from the protocol (docs/design.md section 1, docs/bow.md).
+// agents/messages/team_sync.h, agents/recluster/recluster_messages.h; the routing daemon's,
+// agents/link_state_daemon.h) is one of the message catalogue's (lcmtypes/channels/channels.h),
+// with the LCM type it carries and the role that the simulation's recorders, the LCM agent
+// process and `dvpr replay` all read from the catalogue. The names, types and roles below are
+// written by hand from the protocol (docs/design.md section 1, docs/bow.md).
 #include <filesystem>
 #include <set>
 #include <string>
@@ -50,6 +51,9 @@ std::vector<Published> EveryPublishedChannel() {
       {channels::kTable, "DVPR_TABLE", ChannelKind::kTable, "centroid_table_t", MessageRole::kRecluster},
       // Heartbeats are the team's upkeep, counted as "other" in the result files.
       {channels::kStatus, "DVPR_STATUS", ChannelKind::kStatus, "agent_status_t", MessageRole::kOther},
+      // link_state routing's beacons are the network's upkeep: "other" too.
+      {channels::kHello, "DVPR_HELLO", ChannelKind::kHello, "routing_hello_t", MessageRole::kOther},
+      {channels::kTopology, "DVPR_TOPOLOGY", ChannelKind::kTopology, "routing_topology_t", MessageRole::kOther},
   };
 }
 
