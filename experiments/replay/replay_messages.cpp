@@ -16,13 +16,16 @@ namespace dvpr::replay {
 
 namespace {
 
-// The columns the replay reads; others are skipped.
+// The columns the replay reads; others are skipped. Those from kHops on may be missing: hops is
+// written only by a sweep with a radio, and older folders lack network_name.
 enum Column { kProtocol, kStrategy, kRobots, kRun, kSent, kDelivered, kSrc, kDst, kChannel, kWireBytes,
-              kDropped, kVariant, kModel, kBandwidth, kLatency, kLoss, kColumns };
+              kDropped, kVariant, kModel, kBandwidth, kLatency, kLoss, kRequiredColumns,
+              kHops = kRequiredColumns, kNetworkName, kColumns };
 constexpr std::array<const char*, kColumns> kNames = {
     "protocol", "strategy", "robots",  "run",           "sent_ns",       "delivered_ns",
     "src",      "dst",      "channel", "wire_bytes",    "dropped",       "network_variant",
-    "network_model", "bandwidth_bps", "latency_ms", "loss"};
+    "network_model", "bandwidth_bps", "latency_ms", "loss", "hops", "network_name"};
+constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
 
 std::vector<std::string_view> Split(std::string_view line) {
   std::vector<std::string_view> out;
@@ -59,7 +62,14 @@ class Row {
     return v;
   }
   bool Empty(Column c) const { return Text(c).empty(); }
+  bool Has(Column c) const { return index_[c] != kAbsent; }
   std::size_t size() const { return fields_.size(); }
+  // A whole number of at least 0 (a copy's hops).
+  int Count(Column c) const {
+    const int n = Number<int>(c);
+    if (n < 0) Fail(c, "a count of at least 0", std::to_string(n));
+    return n;
+  }
   // A robot of a team of `robots`: the page draws it at that index.
   int Robot(Column c, int robots) const {
     const int id = Number<int>(c);
@@ -86,6 +96,10 @@ std::array<std::size_t, kColumns> HeaderIndex(std::string_view header, const std
   std::array<std::size_t, kColumns> index{};
   for (int c = 0; c < kColumns; ++c) {
     const auto it = std::find(names.begin(), names.end(), kNames[static_cast<std::size_t>(c)]);
+    if (it == names.end() && c >= kRequiredColumns) {
+      index[static_cast<std::size_t>(c)] = kAbsent;
+      continue;
+    }
     if (it == names.end()) {
       throw std::runtime_error(file.string() + ": no column '" + kNames[static_cast<std::size_t>(c)] +
                                "' in its header (is this a dvpr messages.csv?)");
@@ -106,7 +120,25 @@ Message MessageOf(const Row& row, int robots) {
   m.queue = QueueEffectOfChannel(channel);
   m.counted_bytes = row.Number<std::int64_t>(kWireBytes);
   m.dropped = row.Number<int>(kDropped) != 0;
+  if (row.Has(kHops)) m.hops = row.Count(kHops);
   return m;
+}
+
+// The radio's range in metres from a network's name ("radio 10 Mbit/s 2 ms range 200m
+// shortest_path": 200; "range 1.5km": 1500), 0 for a network without one (the full mesh, or a
+// log_distance radio, whose reach varies with its shadowing).
+double RadioRangeMetres(std::string_view name) {
+  constexpr std::string_view kRange = "range ";
+  std::size_t at = name.rfind(kRange);
+  if (at == std::string_view::npos || (at > 0 && name[at - 1] != ' ')) return 0.0;
+  std::string_view token = name.substr(at + kRange.size());
+  token = token.substr(0, token.find(' '));
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+  if (ec != std::errc()) return 0.0;
+  const std::string_view unit(end, static_cast<std::size_t>(token.data() + token.size() - end));
+  const double scale = unit == "km" ? 1000.0 : unit == "m" ? 1.0 : unit == "cm" ? 0.01 : unit == "mm" ? 0.001 : 0.0;
+  return value > 0.0 ? value * scale : 0.0;
 }
 
 using RunId = std::tuple<int, int, int>;  // robots, run, network variant
@@ -136,6 +168,8 @@ void Take(Scan& scan, const Row& row, const RunId& id) {
     scan.run.bandwidth_bps = row.Number<double>(kBandwidth);
     scan.run.latency_ms = row.Number<double>(kLatency);
     scan.run.loss = row.Text(kLoss);
+    if (row.Has(kNetworkName)) scan.run.network_name = row.Text(kNetworkName);
+    scan.run.radio_range_m = RadioRangeMetres(scan.run.network_name);
   }
   if (id != *scan.chosen) return;
   const std::string strategy(row.Text(kStrategy));

@@ -33,6 +33,7 @@ struct Message {
   // where one transmission reaches every receiver and only the first copy counts.
   std::int64_t counted_bytes = 0;
   bool dropped = false;
+  int hops = 1;  // transmissions it took (messages.csv `hops`, written with a radio; else 1)
 };
 
 struct StrategyMessages {
@@ -44,10 +45,12 @@ struct ReplayRun {
   int robots = 0;
   int run = 0;
   int network_variant = 0;
-  std::string network_model;  // point_to_point | shared_medium | ideal
+  std::string network_model;  // point_to_point | shared_medium | ideal | radio
   double bandwidth_bps = 0;
   double latency_ms = 0;
   std::string loss;
+  std::string network_name;   // as messages.csv names it ("radio 10 Mbit/s 2 ms range 200m shortest_path")
+  double radio_range_m = 0;   // a `range` radio's range, read from the name; 0: none to draw
   std::vector<StrategyMessages> strategies;  // in the order of Selection::strategies
 };
 

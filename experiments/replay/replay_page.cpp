@@ -113,8 +113,9 @@ void WriteTracks(std::ostream& o, const Tracks& tracks) {
   o << ']';
 }
 
-// One strategy's messages: the kinds table, then five integers per message.
-void WriteMessages(std::ostream& o, const StrategyMessages& s) {
+// One strategy's messages: the kinds table, then five integers per message; on a radio each
+// message's hops too ("h").
+void WriteMessages(std::ostream& o, const StrategyMessages& s, bool with_hops) {
   std::map<std::tuple<int, std::int64_t, int>, int> kinds;
   std::ostringstream m;
   std::int64_t previous_us = 0;
@@ -133,7 +134,13 @@ void WriteMessages(std::ostream& o, const StrategyMessages& s) {
   for (std::size_t k = 0; k < table.size(); ++k) {
     o << (k ? ",[" : "[") << std::get<0>(table[k]) << ',' << std::get<1>(table[k]) << ',' << std::get<2>(table[k]) << ']';
   }
-  o << "],\"m\":[" << m.str() << "]}";
+  o << "],\"m\":[" << m.str() << ']';
+  if (with_hops) {
+    o << ",\"h\":[";
+    for (std::size_t i = 0; i < s.messages.size(); ++i) o << (i ? "," : "") << s.messages[i].hops;
+    o << ']';
+  }
+  o << '}';
 }
 
 }  // namespace
@@ -144,6 +151,15 @@ std::string NetworkName(const ReplayRun& run) {
   if (model == "shared_medium") model = "shared medium";
   std::string name = model + ", " + Rate(run.bandwidth_bps) + ", " + FormatDouble(run.latency_ms) + " ms";
   if (!run.loss.empty() && run.loss != "none") name += ", loss: " + run.loss;
+  // A radio's propagation and routing end its name ("radio 10 Mbit/s 2 ms range 200m link_state").
+  if (run.network_model == "radio") {
+    for (const char* what : {" range ", " log_distance"}) {
+      if (const std::size_t at = run.network_name.find(what); at != std::string::npos) {
+        name += ", " + run.network_name.substr(at + 1);
+        break;
+      }
+    }
+  }
   return name;
 }
 
@@ -151,14 +167,16 @@ std::string PageData(const ReplayRun& run, const Tracks& tracks) {
   std::ostringstream o;
   o << "{\"name\":" << JsonString(tracks.name) << ",\"robots\":" << run.robots << ",\"run\":" << run.run
     << ",\"variant\":" << run.network_variant << ",\"network\":" << JsonString(NetworkName(run))
-    << ",\"fps\":" << FormatDouble(tracks.fps) << ",\"roles\":[";
+    << ",\"fps\":" << FormatDouble(tracks.fps);
+  if (run.radio_range_m > 0) o << ",\"range_m\":" << FormatDouble(run.radio_range_m);
+  o << ",\"roles\":[";
   for (int r = 0; r < kMessageRoles; ++r) o << (r ? "," : "") << JsonString(RoleName(static_cast<MessageRole>(r)));
   o << "],";
   WriteTracks(o, tracks);
   o << ",\"strategies\":[";
   for (std::size_t s = 0; s < run.strategies.size(); ++s) {
     if (s) o << ',';
-    WriteMessages(o, run.strategies[s]);
+    WriteMessages(o, run.strategies[s], run.network_model == "radio");
   }
   o << "]}";
   return o.str();

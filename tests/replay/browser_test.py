@@ -17,7 +17,7 @@ import sys
 
 DVPR, SOURCE, WORK = sys.argv[1], pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
 CONFIG = SOURCE / "tests" / "replay" / "replay_test.yaml"
-ROBOTS, FRAMES, FPS = 3, 600, 10  # as in replay_test.yaml
+ROBOTS, FRAMES, FPS, RANGE_M = 3, 600, 10, 150.0  # as in replay_test.yaml
 failures = []
 
 
@@ -62,6 +62,50 @@ def in_flight(rows, t_ns):
         if flying:
             out.add((r["strategy"], int(r["src"]), int(r["dst"]), role(r["channel"]), (sent + 500) // 1000))
     return out
+
+
+def in_range(a, b, t_us):
+    pa, pb = position(tracks()[a], t_us), position(tracks()[b], t_us)
+    return ((pa[0] - pb[0]) ** 2 + (pa[1] - pb[1]) ** 2) ** 0.5 <= RANGE_M
+
+
+def relays(src, dst, hops, t_us):
+    """The robots between src and dst on a shortest path of who hears whom at t (breadth first,
+    the lowest id first), as the page should draw a copy of `hops` hops; "" when none fits."""
+    came, queue = {src: src}, [src]
+    for u in queue:
+        for v in range(ROBOTS):
+            if v not in came and in_range(u, v, t_us):
+                came[v] = u
+                queue.append(v)
+    if dst not in came or hops <= 1:
+        return ""
+    path = [dst]
+    while path[0] != src:
+        path.insert(0, came[path[0]])
+    return " ".join(map(str, path[1:-1])) if len(path) - 1 == hops else ""
+
+
+def check_radio(chromium, rows, page, label):
+    """Mid-run on the radio: the pairs in range and, for every copy in flight, its relays."""
+    relayed = sorted({(int(r["sent_ns"]) + 500) // 1000 for r in rows if r["hops"] == "2" and r["delivered_ns"]})
+    t_us = next(t + 1500 for t in relayed if t > 5e6 and quiet_instant(rows, t + 1500))
+    shown = open_page(chromium, page, t_us)
+    radio = [r for r in shown if r.get("kind") == "radio"]
+    pairs = sum(in_range(a, b, t_us) for a in range(ROBOTS) for b in range(a + 1, ROBOTS))
+    check(len(radio) == 1 and float(radio[0]["range-m"]) == RANGE_M and int(radio[0]["pairs-in-range"]) == pairs,
+          f"{label}: radio shown {radio}, expected range {RANGE_M} m and {pairs} pairs in range")
+    flying = [m for m in shown if m.get("kind") == "message"]
+    two_hops = 0
+    for m in flying:
+        hops = int(m["hops"])
+        sent_us = int(m["sent-us"])
+        want = relays(int(m["src"]), int(m["dst"]), hops, sent_us)
+        check(m["via"] == want, f"{label}: {m['src']}>{m['dst']} sent at {sent_us} us, {hops} hops, "
+                                f"drawn via '{m['via']}', expected '{want}'")
+        two_hops += hops == 2 and want != ""
+    check(two_hops > 0, f"{label}: no relayed copy in flight at {t_us} us: {flying}")
+    print(f"{label}: t = {t_us} us, {pairs} pairs in range, {len(flying)} in flight, {two_hops} drawn through a relay")
 
 
 def bytes_sent(rows, t_ns, shared_medium):
@@ -156,7 +200,7 @@ def main():
     subprocess.run([DVPR, "run", str(CONFIG), "--quiet", "--out", str(out)], check=True, stdout=subprocess.DEVNULL)
     messages = list(csv.DictReader(open(out / "messages.csv")))
     runs = list(csv.DictReader(open(out / "runs.csv")))
-    for variant in ("0", "1"):
+    for variant in ("0", "1", "2"):
         subprocess.run([DVPR, "replay", str(out), "--network", variant, "--out", str(WORK / f"net{variant}.html")],
                        check=True, stdout=subprocess.DEVNULL)
     p2p = [r for r in messages if r["network_variant"] == "0"]
@@ -168,6 +212,8 @@ def main():
     end_us = max(int(r["delivered_ns"] or r["sent_ns"]) for r in shared) // 1000 + 1000
     totals = {r["strategy"]: int(r["wire_bytes"]) for r in runs if r["network_variant"] == "1"}
     check_page(chromium, shared, WORK / "net1.html", end_us, "shared medium, after the end", True, totals)
+    radio = [r for r in messages if r["network_variant"] == "2"]
+    check_radio(chromium, radio, WORK / "net2.html", "radio 150 m, mid-run")
     print("FAILED" if failures else "OK")
     return 1 if failures else 0
 

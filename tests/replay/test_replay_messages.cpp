@@ -105,6 +105,35 @@ TEST_F(ReplayMessagesTest, ASharedMediumBroadcastCountsOnce) {
   EXPECT_EQ(counted, (std::vector<std::int64_t>{589, 0, 990, 589, 0, 589}));  // the last: another sender
 }
 
+// A radio sweep's messages.csv ends with hops; its network_name carries the range, which the page
+// draws (a log_distance radio has none). Without the columns every copy is one hop.
+TEST_F(ReplayMessagesTest, ARadiosRangeAndHopsAreRead) {
+  const std::string header =
+      "protocol,strategy,robots,run,sent_ns,delivered_ns,src,dst,channel,wire_bytes,dropped,network_variant,"
+      "network_model,bandwidth_bps,latency_ms,loss,network_name,role,hops\n";
+  const auto f = Write("radio.csv", header +
+      "sim,broadcast,3,0,0,10,0,2,DVPR_QUERY_ALL,589,0,1,radio,1e+07,2,none,radio 10 Mbit/s 2 ms range 1.5km shortest_path,query,2\n"
+      "sim,broadcast,3,0,0,,0,1,DVPR_QUERY_ALL,589,1,1,radio,1e+07,2,none,radio 10 Mbit/s 2 ms range 1.5km shortest_path,query,0\n");
+  const ReplayRun run = ReadReplayRun(f, {});
+  EXPECT_EQ(run.radio_range_m, 1500.0);
+  EXPECT_EQ(run.network_name, "radio 10 Mbit/s 2 ms range 1.5km shortest_path");
+  ASSERT_EQ(run.strategies.at(0).messages.size(), 2u);
+  EXPECT_EQ(run.strategies[0].messages[0].hops, 2);
+  EXPECT_EQ(run.strategies[0].messages[1].hops, 0);
+  const auto log_distance = Write("log.csv", header +
+      "sim,broadcast,3,0,0,10,0,2,DVPR_QUERY_ALL,589,0,1,radio,1e+07,2,none,radio 10 Mbit/s 2 ms log_distance link_state,query,1\n");
+  EXPECT_EQ(ReadReplayRun(log_distance, {}).radio_range_m, 0.0);
+  const auto bad = Write("bad_hops.csv", header +
+      "sim,broadcast,3,0,0,10,0,2,DVPR_QUERY_ALL,589,0,1,radio,1e+07,2,none,radio,query,-1\n");
+  EXPECT_EQ(ErrorOf([&] { ReadReplayRun(bad, {}); }),
+            bad.string() + ": line 2: hops: expected a count of at least 0, got -1");
+  const auto plain = Write("plain.csv", std::string(kHeader) +
+      "sim,broadcast,3,0,0,10,0,1,DVPR_QUERY_ALL,x,query_t,536,589,0,0,point_to_point,1e+07,2,none,q\n");
+  const ReplayRun p2p = ReadReplayRun(plain, {});
+  EXPECT_EQ(p2p.radio_range_m, 0.0);
+  EXPECT_EQ(p2p.strategies.at(0).messages.at(0).hops, 1);
+}
+
 TEST_F(ReplayMessagesTest, FilesThatCannotBeReplayedAreOneLineNamingTheFile) {
   const auto none = Write("none.csv", std::string(kHeader));
   EXPECT_EQ(ErrorOf([&] { ReadReplayRun(none, {}); }),

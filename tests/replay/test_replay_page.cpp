@@ -47,6 +47,24 @@ TEST(ReplayPageTest, DataIsCompactAndWorkedOutByHand) {
             "\"m\":[1,2500,0,1,0,0,-1,1,0,1,99999,-2,0,1,0]}]}");
 }
 
+// On a radio the page gets the range (to draw it) and each message's hops (to draw its relays),
+// and the network's name ends with the radio and its routing.
+TEST(ReplayPageTest, ARadioAddsItsRangeAndTheHops) {
+  ReplayRun run = TinyRun();
+  run.network_model = "radio";
+  run.network_name = "radio 10 Mbit/s 2 ms range 150m shortest_path";
+  run.radio_range_m = 150;
+  run.strategies[0].messages[0].hops = 2;
+  run.strategies[0].messages[1].hops = 0;  // dropped before its first transmission
+  EXPECT_EQ(PageData(run, TinyTracks()),
+            "{\"name\":\"tiny\",\"robots\":2,\"run\":1,\"variant\":0,"
+            "\"network\":\"radio, 10 Mbit/s, 2 ms, range 150m shortest_path\",\"fps\":10,\"range_m\":150,"
+            "\"roles\":[\"query\",\"reply\",\"verify request\",\"verify result\",\"re-clustering\",\"other\"],"
+            "\"first\":[0,2],\"tracks\":[[10,-3,20,30],[-75,0]],"
+            "\"strategies\":[{\"name\":\"decentralized\",\"kinds\":[[0,587,1],[1,95,-1]],"
+            "\"m\":[1,2500,0,1,0,0,-1,1,0,1,99999,-2,0,1,0],\"h\":[2,0,1]}]}");
+}
+
 TEST(ReplayPageTest, NamesCannotCloseTheScriptElement) {
   Tracks t = TinyTracks();
   t.name = "a</script>\"b\\";
