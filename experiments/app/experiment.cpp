@@ -9,11 +9,13 @@
 #include <optional>
 #include <set>
 #include <stdexcept>
+#include <vector>
 
 #include "experiments/figures/figures.h"
 #include "experiments/protocols/inputs.h"
 #include "experiments/results/result_folder.h"
 #include "experiments/results/result_writers.h"
+#include "experiments/results/spread.h"
 #include "experiments/sweep/run_distributor.h"
 #include "experiments/sweep/run_sweep.h"
 #include "experiments/sweep/sweep_checks.h"
@@ -192,7 +194,7 @@ std::set<int> ShownRobots(const std::vector<RunResult>& rows) {
 }  // namespace
 
 void PrintSummaryTable(const std::vector<RunResult>& rows, std::ostream& out) {
-  struct Acc { std::string label; int robots; int n = 0; double sums[5]{}; int counts[5]{}; };
+  struct Acc { std::string label; int robots; int n = 0; std::vector<double> values[5]; };
   std::vector<Acc> groups;
   std::map<std::string, std::size_t> index;
   const std::set<int> shown = ShownRobots(rows);
@@ -202,26 +204,30 @@ void PrintSummaryTable(const std::vector<RunResult>& rows, std::ostream& out) {
     if (!r.key.network.model.empty()) label += ", " + NetworkName(r.key.network);
     const std::string id = label + "|" + std::to_string(r.key.robots);
     auto [it, added] = index.emplace(id, groups.size());
-    if (added) groups.push_back(Acc{label, r.key.robots});
+    if (added) groups.push_back(Acc{.label = label, .robots = r.key.robots, .n = 0, .values = {}});
     Acc& a = groups[it->second];
     ++a.n;
     const double v[5] = {r.auc, r.relative_auc, r.worst_balance_ratio, r.bytes_per_query,
                          r.mean_latency_ms};
-    for (int i = 0; i < 5; ++i) {
-      if (!std::isnan(v[i])) { a.sums[i] += v[i]; ++a.counts[i]; }
-    }
+    for (int i = 0; i < 5; ++i) a.values[i].push_back(v[i]);
   }
   int width = 34;  // the label column fits the longest network name
   for (const Acc& a : groups) width = std::max(width, static_cast<int>(a.label.size()));
   char line[512];
-  std::snprintf(line, sizeof line, "%-*s %6s %5s %7s %8s %9s %11s %10s\n", width, "protocol strategy",
+  std::snprintf(line, sizeof line, "%-*s %6s %5s %13s %13s %11s %15s %15s\n", width, "protocol strategy",
                 "robots", "runs", "auc", "rel_auc", "worst_bal", "bytes/query", "latency_ms");
   out << line;
   for (const Acc& a : groups) {
-    auto mean = [&](int i) { return a.counts[i] ? a.sums[i] / a.counts[i] : std::nan(""); };
-    std::snprintf(line, sizeof line, "%-*s %6d %5d %7s %8s %9s %11s %10s\n", width, a.label.c_str(),
-                  a.robots, a.n, Cell(mean(0), 3).c_str(), Cell(mean(1), 3).c_str(),
-                  Cell(mean(2), 2).c_str(), Cell(mean(3), 0).c_str(), Cell(mean(4), 3).c_str());
+    // The mean over the runs, +- the half-width of its 95 % confidence interval from two runs on.
+    const auto cell = [&](int i, int decimals) {
+      const Spread s = SpreadOf(a.values[i]);
+      std::string c = Cell(s.mean, decimals);
+      if (!std::isnan(s.ci95)) c += "+-" + Cell(s.ci95, decimals);
+      return c;
+    };
+    std::snprintf(line, sizeof line, "%-*s %6d %5d %13s %13s %11s %15s %15s\n", width, a.label.c_str(),
+                  a.robots, a.n, cell(0, 3).c_str(), cell(1, 3).c_str(), cell(2, 2).c_str(), cell(3, 0).c_str(),
+                  cell(4, 3).c_str());
     out << line;
   }
 }
