@@ -7,20 +7,27 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "experiments/results/result_writers.h"
+#include "experiments/results/spread.h"
 
 namespace dvpr {
 
 namespace {
 
+// One metric of a group: its runs' values, for the mean and the spread (spread.h).
 struct Mean {
   double sum = 0;
   int count = 0;
+  std::vector<double> values;
   void Add(double v) {
-    if (!std::isnan(v)) { sum += v; ++count; }
+    if (!std::isnan(v)) { sum += v; ++count; values.push_back(v); }
   }
   std::string Json() const { return count == 0 ? "null" : FormatDouble(sum / count); }
+  std::string StdJson() const { return Number(SpreadOf(values).std); }
+  std::string Ci95Json() const { return Number(SpreadOf(values).ci95); }
+  static std::string Number(double v) { return std::isnan(v) ? "null" : FormatDouble(v); }
 };
 
 struct Group {
@@ -115,17 +122,26 @@ void WriteGroup(std::ostringstream& s, const Group& g) {
       << ", \"latency_ms\": " << (std::isnan(n.latency_ms) ? "null" : FormatDouble(n.latency_ms))
       << ", \"loss\": " << JsonString(n.loss) << ", \"network_name\": " << JsonString(NetworkName(n));
   }
-  s << ", \"runs\": " << g.runs << ",\n     \"mean\": {";
-  for (std::size_t m = 0; m < std::size(kMetricOrder); ++m) {
-    s << (m ? ", " : "") << JsonString(kMetricOrder[m]) << ": " << g.means.at(kMetricOrder[m]).Json();
-  }
-  if (g.means.at("copy_wire_bytes").count > 0) {  // bytes by role: only where a network counted them
-    for (const std::string& name : RoleMetricNames()) s << ", " << JsonString(name) << ": " << g.means.at(name).Json();
-  }
-  for (const char* name : kConnectivityMetrics) {  // only where connectivity was tracked
-    if (const auto it = g.means.find(name); it != g.means.end()) s << ", " << JsonString(name) << ": " << it->second.Json();
-  }
-  s << "}}";
+  s << ", \"runs\": " << g.runs;
+  // The means, then beside them (issue 35) the runs' standard deviation and the 95 % confidence
+  // interval's half-width (spread.h), with the same keys; null below two runs.
+  const auto metrics = [&](const char* name, std::string (Mean::*value)() const) {
+    s << ",\n     " << JsonString(name) << ": {";
+    for (std::size_t m = 0; m < std::size(kMetricOrder); ++m) {
+      s << (m ? ", " : "") << JsonString(kMetricOrder[m]) << ": " << (g.means.at(kMetricOrder[m]).*value)();
+    }
+    if (g.means.at("copy_wire_bytes").count > 0) {  // bytes by role: only where a network counted them
+      for (const std::string& n : RoleMetricNames()) s << ", " << JsonString(n) << ": " << (g.means.at(n).*value)();
+    }
+    for (const char* n : kConnectivityMetrics) {  // only where connectivity was tracked
+      if (const auto it = g.means.find(n); it != g.means.end()) s << ", " << JsonString(n) << ": " << (it->second.*value)();
+    }
+    s << "}";
+  };
+  metrics("mean", &Mean::Json);
+  metrics("std", &Mean::StdJson);
+  metrics("ci95", &Mean::Ci95Json);
+  s << "}";
 }
 
 // Broadcast over decentralized place-recognition bytes per query (query and reply copies), per

@@ -65,7 +65,7 @@ TEST_F(ConnectivityCliTest, HandWorkedLayoutEveryFrame) {
   // doubles is 1.3333333333333333 + 1 = 2.333333333333333 (rounded down), halved (python3 agrees).
   const std::string summary = Slurp(Out() / "summary.json");
   EXPECT_NE(summary.find("\"connected_time_share\": 0.3333333333333333, \"connected_pair_mean_hops\": "
-                         "1.1666666666666665}}"),
+                         "1.1666666666666665},\n     \"std\""),
             std::string::npos) << summary;
   // The point-to-point groups (variant 0) have no robots to be in range: no such fields.
   const auto p2p = summary.find("\"network_model\": \"point_to_point\"");
