@@ -86,16 +86,20 @@ std::string RelativeAucScript(const fs::path& data_dir, const fs::path& png) {
   const std::string protocol = ReadLines(data_dir / "relative_auc.protocol").at(0);
   auto panel = [&](const std::string& stem, const std::string& ylabel, const std::string& title) {
     const std::string dat = stem + ".dat";
+    // The mean's 95 % confidence band (Student's t over the runs) under the runs and the mean.
     return "set title " + GnuplotQuote(title) + "\nset xlabel 'robots n'\nset ylabel '" + ylabel +
-           "'\nplot '" + dat + "' index 0 using 1:2 with points pt 7 ps 0.6 lc rgb '#7f9fcf' "
+           "'\nplot '" + stem + "_ci.dat' using 1:2:3 with filledcurves fc rgb '#1f3f8f' fs transparent solid 0.18 "
+           "noborder title '95 % confidence interval of the mean', '" + dat +
+           "' index 0 using 1:2 with points pt 7 ps 0.6 lc rgb '#7f9fcf' "
            "title 'every run', '" + dat + "' index 1 using 1:2 with linespoints lw 2 pt 7 "
            "lc rgb '#1f3f8f' title 'mean over runs'\n";
   };
-  return Preamble(png, 1200, 520) + "set multiplot layout 1,2\nset key top right\n"
+  // The keys where the data is not: relative AUC stays high, the balance ratio grows with n.
+  return Preamble(png, 1200, 520) + "set multiplot layout 1,2\nset key bottom right\n"
          "set xtics 2\nset yrange [0:*]\n" +
          panel("relative_auc", "AUC(decentralized) / AUC(reference)",
                "Relative AUC vs team size (" + protocol + " protocol)") +
-         "set yrange [0:*]\n" +
+         "set yrange [0:*]\nset key top left\n" +
          panel("balance", "max robot load / mean load",
                "Worst balance ratio vs team size (" + protocol + " protocol)") +
          "unset multiplot\n";

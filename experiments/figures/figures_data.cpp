@@ -9,6 +9,7 @@
 #include "experiments/figures/figures.h"
 #include "experiments/results/protocol_traits.h"
 #include "experiments/results/result_writers.h"
+#include "experiments/results/spread.h"
 
 namespace dvpr {
 
@@ -62,6 +63,24 @@ Series MeansBy(const std::vector<RunResult>& rows, Pick pick, SeriesOf series_of
     out.emplace_back(s, std::move(p));
   }
   return out;
+}
+
+// Per x (robots), the 95 % confidence interval of the mean over the picked rows' values
+// (spread.h): "x low high" lines, the mean itself on both sides where fewer than 2 runs count.
+template <typename Pick, typename Value>
+void WriteConfidenceBand(const std::filesystem::path& file, const std::vector<RunResult>& rows, Pick pick, Value value) {
+  std::map<int, std::vector<double>> by_robots;
+  for (const auto& r : rows) {
+    if (pick(r) && !std::isnan(value(r))) by_robots[r.key.robots].push_back(value(r));
+  }
+  std::ostringstream dat;
+  dat << "# robots, mean - ci95, mean + ci95\n";
+  for (const auto& [robots, values] : by_robots) {
+    const Spread s = SpreadOf(values);
+    const double half = std::isnan(s.ci95) ? 0.0 : s.ci95;
+    dat << robots << ' ' << FormatDouble(s.mean - half) << ' ' << FormatDouble(s.mean + half) << '\n';
+  }
+  WriteFileAtomic(file, dat.str());
 }
 
 }  // namespace
@@ -159,6 +178,8 @@ bool WriteRelativeAucData(const std::filesystem::path& data_dir,
               {{"every run", runs_auc}, {"mean over runs", auc.at(0).second}});
   WriteSeries(data_dir, "balance",
               {{"every run", runs_bal}, {"mean over runs", bal.empty() ? Points{} : bal[0].second}});
+  WriteConfidenceBand(data_dir / "relative_auc_ci.dat", rows, pick, [](const RunResult& r) { return r.relative_auc; });
+  WriteConfidenceBand(data_dir / "balance_ci.dat", rows, pick, [](const RunResult& r) { return r.worst_balance_ratio; });
   WriteFileAtomic(data_dir / "relative_auc.protocol", protocol + "\n");
   return true;
 }

@@ -1,9 +1,12 @@
 // Figures 7 and 8 (strategy_tradeoff.png, strategy_sweep.png): the numbers they plot, from a
 // small hand-made set of runs.csv rows. Pixels are not tested.
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -89,6 +92,34 @@ TEST_F(StrategyFigures, MeansMinMaxPerStrategyAndN) {
   EXPECT_DOUBLE_EQ(b10->bytes_per_query.mean, 25000);
   EXPECT_EQ(t.Find("sample_c4", 20), nullptr);
   EXPECT_EQ(t.Find("decentralized", 5)->bytes_per_query.runs, 0);
+}
+
+// relative_auc_balance.png's band: per n, the mean's 95 % confidence interval over the paper
+// protocol's decentralized runs, worked by hand: n = 10 has 0.8 and 0.7 (mean 0.75, s = 0.0707106781,
+// half-width t(0.975, 1) = 12.706204736 times s / sqrt(2) = 0.6353102368); n = 20 has 0.75 and
+// 0.65; n = 5 one run, no band (the mean on both sides). The balance at n = 10: 4 and 5, half-width
+// 6.353102368.
+TEST_F(StrategyFigures, RelativeAucBandIsTheMeansConfidenceInterval) {
+  ASSERT_TRUE(WriteRelativeAucData(dir_, Rows()));
+  const auto read = [&](const char* file) {
+    std::ifstream in(dir_ / file);
+    std::string header;
+    std::getline(in, header);
+    EXPECT_EQ(header, "# robots, mean - ci95, mean + ci95");
+    std::vector<std::array<double, 3>> rows;
+    for (std::array<double, 3> r{}; in >> r[0] >> r[1] >> r[2];) rows.push_back(r);
+    return rows;
+  };
+  const auto auc = read("relative_auc_ci.dat");
+  ASSERT_EQ(auc.size(), 3u);
+  const double want[3][3] = {{5, 0.9, 0.9}, {10, 0.1146897632, 1.3853102368}, {20, 0.0646897632, 1.3353102368}};
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) EXPECT_NEAR(auc[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)], want[i][j], 1e-9) << i << "," << j;
+  }
+  const auto balance = read("balance_ci.dat");
+  ASSERT_EQ(balance.size(), 3u);
+  EXPECT_NEAR(balance[1][1], 4.5 - 6.353102368, 1e-8);
+  EXPECT_NEAR(balance[1][2], 4.5 + 6.353102368, 1e-8);
 }
 
 TEST_F(StrategyFigures, SimulationIsTheFallbackForAccuracy) {
