@@ -91,23 +91,56 @@ struct View {
   double x, z, hx, hz, t;
 };
 
+// Whether a cell holds no landmark `v` can see, decided from the cell's square alone: it lies
+// wholly beyond range_m, or (field of view below 180 degrees) wholly behind the camera. Only a
+// shortcut: every landmark of such a cell fails Visible's own test by far more than rounding, so
+// the words are the same with or without it (and a cell's landmarks are its own draws, however
+// many cells are looked at).
+bool OutOfSight(std::int64_t cx, std::int64_t cz, const View& v, double range_m, double cos_half) {
+  constexpr double kMargin = 1e-6;  // metres; rounding is ~1e-13 here
+  const double x0 = static_cast<double>(cx) * kCell_m, z0 = static_cast<double>(cz) * kCell_m;
+  const double x1 = x0 + kCell_m, z1 = z0 + kCell_m;
+  const double gx = std::max({x0 - v.x, 0.0, v.x - x1}), gz = std::max({z0 - v.z, 0.0, v.z - z1});
+  if (std::sqrt(gx * gx + gz * gz) > range_m + kMargin) return true;
+  if (cos_half <= 0) return false;
+  const auto ahead = [&](double x, double z) { return (x - v.x) * v.hx + (z - v.z) * v.hz; };
+  return std::max({ahead(x0, z0), ahead(x0, z1), ahead(x1, z0), ahead(x1, z1)}) < -kMargin;
+}
+
+// A landmark in view and where it lies from the camera. Its word (which needs the viewing
+// direction: an atan2, and a draw when sectors are on) is worked out only when a feature is
+// drawn from it: a frame sees about 5000 landmarks and draws a few hundred features from them.
+struct Seen {
+  const Landmark* landmark;  // in LandmarkField's cells, which stay where they are
+  double dx, dz;
+};
+
 // The landmarks `v` sees and their cumulative draw weights.
 void Visible(LandmarkField& field, const View& v, const SyntheticBowParams& p, const SyntheticParams& a,
-             std::vector<std::int32_t>& words, std::vector<double>& cumulative) {
-  words.clear();
+             std::vector<Seen>& seen, std::vector<double>& cumulative) {
+  seen.clear();
   cumulative.clear();
   const double cos_half = std::cos(p.field_of_view_deg * std::numbers::pi / 360.0);
   const auto lo = [&](double c) { return static_cast<std::int64_t>(std::floor((c - p.range_m) / kCell_m)); };
   const auto hi = [&](double c) { return static_cast<std::int64_t>(std::floor((c + p.range_m) / kCell_m)); };
+  // Shortcuts before the exact test below, each far from its boundary: a landmark whose squared
+  // distance exceeds range^2 (1 + 1e-9) is beyond range_m however hypot rounds; one behind the
+  // camera (a negative dot product) is outside a field of view below 180 degrees.
+  const double far_squared = p.range_m * p.range_m * (1.0 + 1e-9);
   double total = 0.0;
   for (std::int64_t cx = lo(v.x); cx <= hi(v.x); ++cx) {
     for (std::int64_t cz = lo(v.z); cz <= hi(v.z); ++cz) {
+      if (OutOfSight(cx, cz, v, p.range_m, cos_half)) continue;
       for (const Landmark& l : field.Cell(cx, cz)) {
-        const double dx = l.x - v.x, dz = l.z - v.z, d = std::hypot(dx, dz);
-        if (d > p.range_m || (d > 0 && (dx * v.hx + dz * v.hz) / d < cos_half)) continue;
+        const double dx = l.x - v.x, dz = l.z - v.z;
+        if (dx * dx + dz * dz > far_squared) continue;
+        const double ahead = dx * v.hx + dz * v.hz;
+        if (cos_half > 0 && ahead < 0) continue;  // d > 0 here: d = 0 gives ahead = 0
+        const double d = std::hypot(dx, dz);
+        if (d > p.range_m || (d > 0 && ahead / d < cos_half)) continue;
         const double drift = a.appearance_change * std::numbers::sqrt2 * std::cos(l.omega * v.t + l.phase);
         total += std::exp(-d / p.range_m + drift);
-        words.push_back(field.WordSeenFrom(l, std::atan2(-dz, -dx)));
+        seen.push_back({&l, dx, dz});
         cumulative.push_back(total);
       }
     }
@@ -153,7 +186,7 @@ std::vector<std::vector<std::int32_t>> SyntheticBowWords(const Trajectory& traje
   const auto common = static_cast<std::uint64_t>(params.common_words);
   const bool aliasing = params.common_share > 0;
   std::vector<std::vector<std::int32_t>> out(static_cast<std::size_t>(trajectory.size()));
-  std::vector<std::int32_t> seen;
+  std::vector<Seen> seen;
   std::vector<double> cumulative;
   for (Eigen::Index i = 0; i < trajectory.size(); ++i) {
     Visible(field, ViewOf(trajectory, i), params, appearance, seen, cumulative);
@@ -176,7 +209,8 @@ std::vector<std::vector<std::int32_t>> SyntheticBowWords(const Trajectory& traje
       }
       const double u = rng.Uniform() * cumulative.back();
       const auto at = std::upper_bound(cumulative.begin(), cumulative.end(), u) - cumulative.begin();
-      words.push_back(seen[static_cast<std::size_t>(std::min<std::ptrdiff_t>(at, std::ssize(seen) - 1))]);
+      const Seen& l = seen[static_cast<std::size_t>(std::min<std::ptrdiff_t>(at, std::ssize(seen) - 1))];
+      words.push_back(field.WordSeenFrom(*l.landmark, std::atan2(-l.dz, -l.dx)));
     }
   }
   return out;

@@ -83,12 +83,16 @@ PaperRunResult PaperStrategyRun(const StrategySpec& spec, const RunSpec& run, co
 // Its PR curve is not kept: figure 2 compares the descriptor strategies with their centralized one.
 void AppendBowRun(const StrategySpec& strategy, const RunSpec& spec, const BowEvaluator& bow,
                   const StrategyInputs& inputs, RunOutput& out) {
-  const RunRouting routing = BuildRunRouting(strategy, inputs, spec.robots, spec.run);
-  const BowFamily* family = routing.As<BowFamily>();
-  if (family == nullptr) throw std::logic_error("AppendBowRun: " + strategy.name + " is not a bow_ strategy");
-  BowRunResult r = family->words ? bow.EvaluateShared(*family->words, strategy.name)
-                                 : bow.Reference(strategy.name, spec.robots,
-                                                 strategy.bow == StrategySpec::Bow::kBroadcast);
+  BowRunResult r;
+  if (bow.IsPlanned(strategy.name, spec.robots)) {
+    r = bow.EvaluatePlanned(strategy.name, spec.robots);  // its owners built once, by the plan
+  } else {
+    const RunRouting routing = BuildRunRouting(strategy, inputs, spec.robots, spec.run);
+    const BowFamily* family = routing.As<BowFamily>();
+    if (family == nullptr) throw std::logic_error("AppendBowRun: " + strategy.name + " is not a bow_ strategy");
+    r = family->words ? bow.EvaluateShared(*family->words, strategy.name)
+                      : bow.Reference(strategy.name, spec.robots, strategy.bow == StrategySpec::Bow::kBroadcast);
+  }
   r.paper.row.key = spec.Key(strategy.name);
   r.paper.row.seed = spec.seed;
   out.runs.push_back(r.paper.row);
@@ -125,6 +129,28 @@ bool AnyBow(const ExperimentConfig& c) {
                      [](const StrategySpec& s) { return s.bag_of_words(); });
 }
 
+// The distributed-index evaluations the sweep will ask the BoW evaluator for, in the order its
+// runs ask (robots outer, strategies in the config's order), each built when its batch runs.
+std::vector<BowEvaluator::PlannedAssignment> PlanBow(const ExperimentConfig& c, const StrategyInputs& inputs) {
+  std::vector<BowEvaluator::PlannedAssignment> planned;
+  for (const int robots : c.sweep.robots) {
+    for (const StrategySpec& strategy : c.sweep.strategies) {
+      if (strategy.bow != StrategySpec::Bow::kModulo && strategy.bow != StrategySpec::Bow::kDocumentFrequency) continue;
+      const auto same = [&](const BowEvaluator::PlannedAssignment& p) { return p.name == strategy.name && p.robots == robots; };
+      if (std::any_of(planned.begin(), planned.end(), same)) continue;
+      planned.push_back({strategy.name, robots, [strategy, inputs, robots] {
+                           const RunRouting routing = BuildRunRouting(strategy, inputs, robots, 0);
+                           const BowFamily* family = routing.As<BowFamily>();
+                           if (family == nullptr || !family->words) {
+                             throw std::logic_error("PlanBow: " + strategy.name + " has no word owners");
+                           }
+                           return family->words;
+                         }});
+    }
+  }
+  return planned;
+}
+
 }  // namespace
 
 RunFunction MakePaperRun(const SharedInputs& in) {
@@ -136,7 +162,11 @@ RunFunction MakePaperRun(const SharedInputs& in) {
   const std::int64_t frames = in.deployment.size();  // every frame is one query
   // The BoW index and its centralized ranking, once for all runs; only when a bow_ strategy runs.
   std::shared_ptr<const BowEvaluator> bow;
-  if (AnyBow(*in.config)) bow = std::make_shared<const BowEvaluator>(*evaluator, in.bow);
+  if (AnyBow(*in.config)) {
+    auto planned = std::make_shared<BowEvaluator>(*evaluator, in.bow);
+    planned->Plan(PlanBow(*in.config, strategy_inputs));
+    bow = std::move(planned);
+  }
   return [params, evaluator, bow, pr_robots, strategy_inputs, frames](const RunSpec& spec) {
     RunOutput out;
     PaperProtocolParams run_params = params;

@@ -1,6 +1,7 @@
 #include "experiments/protocols/paper/static_bow.h"
 
 #include <algorithm>
+#include <optional>
 #include <cstdlib>
 #include <exception>
 #include <stdexcept>
@@ -30,6 +31,14 @@ void FillQuantiles(const std::map<std::int64_t, std::int64_t>& sizes, BowRow& ro
   row.part_bytes_max = sizes.rbegin()->first;
 }
 
+// The encoded size of a bow_query_t of `words` words: it depends on the count only (fixed-size
+// fields and two arrays of 4-byte values), so one is encoded per count and remembered in `memo`.
+std::int64_t QueryBytes(std::size_t words, std::vector<std::int64_t>& memo) {
+  if (memo.size() <= words) memo.resize(words + 1, 0);
+  if (memo[words] == 0) memo[words] = EncodedBowQueryBytes(BowVector(words));
+  return memo[words];
+}
+
 MatchOutcome Outcome(std::int32_t i, std::int32_t frame, double score) {
   MatchOutcome o;
   o.query = FrameId(i);
@@ -38,6 +47,107 @@ MatchOutcome Outcome(std::int32_t i, std::int32_t frame, double score) {
     o.score = 1.0 - score;  // ranked ascending, as distances
   }
   return o;
+}
+
+// One word assignment's evaluation, a query at a time (BowEvaluator::EvaluateMany): each query's
+// runs grouped by owner (a stable counting sort, so each part keeps the word order
+// WordOwners::Split gives it), each part searched, the answers voted, the counts kept.
+class DistributedTally {
+ public:
+  DistributedTally(const WordOwners& owners, std::size_t frames)
+      : robots_(static_cast<std::size_t>(owners.robots())),
+        split_(SplitSequence(static_cast<int>(frames), owners.robots())),
+        searches_(robots_, 0),
+        comparisons_(robots_, 0),
+        stored_(robots_, 0),
+        part_(robots_ + 1),
+        next_(robots_) {}
+
+  // Query i (vector v, its runs in v's order, the owner of each of its words).
+  void Query(const BowPostings& postings, int window, std::int32_t i, const BowVector& v,
+             std::span<const BowPostings::Run> runs, std::span<const std::int16_t> owner, std::int32_t central_best,
+             BowPostings::Scratch& scratch) {
+    GroupByOwner(runs, owner);
+    const auto ui = static_cast<std::size_t>(i);
+    answers_.clear();
+    for (std::size_t r = 0; r < robots_; ++r) {
+      const std::size_t size = part_[r + 1] - part_[r];
+      if (size == 0) continue;
+      ++searches_[r];
+      ++stored_[r];
+      if (split_.owner[ui].value != static_cast<int>(r)) {
+        ++out_.part_sizes[QueryBytes(size, part_bytes_)];
+        part_words_ += static_cast<std::int64_t>(size);
+      }
+      const BowPostings::Best best = postings.Search(
+          i, window, std::span(grouped_).subspan(part_[r], size), scratch, comparisons_[r]);
+      if (best.frame >= 0) {
+        answers_.push_back({RobotId(static_cast<int>(r)), split_.owner[static_cast<std::size_t>(best.frame)],
+                            FrameId(best.frame), best.score});
+      }
+    }
+    words_ += static_cast<std::int64_t>(v.size());
+    const std::optional<VotedMatch> voted = Vote(answers_);
+    matches_.push_back(Outcome(i, voted ? voted->frame.value : -1, voted ? voted->score : 0.0));
+    if (voted) {
+      ++out_.bow.voted;
+      if (voted->frame.value != central_best) ++out_.bow.vote_not_centralized;
+    }
+  }
+
+  BowRunResult Finish(const PaperEvaluator& paper, const std::string& name, bool keep_curve,
+                      const PrResult& centralized) {
+    PrResult pr = EvaluatePr(matches_, paper.deployment().trajectory.positions, paper.evaluation().radius_m,
+                             paper.relevant());
+    const auto queries = static_cast<std::int64_t>(matches_.size());
+    out_.matches = std::move(matches_);
+    paper.FillResult(name, std::move(pr), searches_, comparisons_, stored_, keep_curve, out_.paper);
+    out_.paper.row.auc_reference = centralized.auc;
+    out_.paper.row.relative_auc = RelativeAuc(out_.paper.row.auc, centralized.auc);
+    for (const auto& [bytes, count] : out_.part_sizes) {
+      out_.bow.partial_queries += count;
+      out_.bow.payload_bytes += bytes * count;
+    }
+    out_.bow.queries = queries;
+    out_.bow.mean_words = static_cast<double>(words_) / static_cast<double>(queries);
+    if (out_.bow.partial_queries > 0) {
+      out_.bow.mean_part_words = static_cast<double>(part_words_) / static_cast<double>(out_.bow.partial_queries);
+    }
+    FillQuantiles(out_.part_sizes, out_.bow);
+    out_.paper.row.messages = out_.bow.partial_queries;
+    out_.paper.row.payload_bytes = out_.bow.payload_bytes;
+    return std::move(out_);
+  }
+
+ private:
+  // Part r of the query: grouped_[part_[r], part_[r + 1]).
+  void GroupByOwner(std::span<const BowPostings::Run> runs, std::span<const std::int16_t> owner) {
+    std::fill(part_.begin(), part_.end(), 0);
+    for (const std::int16_t r : owner) ++part_[static_cast<std::size_t>(r) + 1];
+    for (std::size_t r = 0; r < robots_; ++r) part_[r + 1] += part_[r];
+    std::copy(part_.begin(), part_.end() - 1, next_.begin());
+    grouped_.resize(runs.size());
+    for (std::size_t k = 0; k < runs.size(); ++k) grouped_[next_[static_cast<std::size_t>(owner[k])]++] = runs[k];
+  }
+
+  std::size_t robots_;
+  SequenceSplit split_;
+  BowRunResult out_;
+  std::vector<std::int64_t> searches_, comparisons_, stored_;
+  std::vector<MatchOutcome> matches_;
+  std::vector<PartialMatch> answers_;
+  std::int64_t words_ = 0, part_words_ = 0;
+  std::vector<std::size_t> part_, next_;
+  std::vector<BowPostings::Run> grouped_;
+  std::vector<std::int64_t> part_bytes_;
+};
+
+// A 64-bit digest of the vocabulary and every word's owner (the key of a shared evaluation).
+std::uint64_t OwnersDigest(const WordOwners& owners) {
+  Fnv1a hash;
+  hash.AddValue(owners.vocabulary());
+  for (std::int32_t w = 0; w < owners.vocabulary(); ++w) hash.AddValue(owners.OwnerOf(w).value);
+  return static_cast<std::uint64_t>(hash.value());
 }
 
 }  // namespace
@@ -68,154 +178,140 @@ BowRunResult DescriptorQueryTraffic(const RoutingStrategy* routing, int robots, 
   return out;
 }
 
-BowEvaluator::BowEvaluator(const PaperEvaluator& paper, const BowData& bow) : paper_(paper), bow_(bow) {
+BowEvaluator::BowEvaluator(const PaperEvaluator& paper, const BowData& bow)
+    : paper_(paper), bow_(bow), postings_(bow) {
   if (static_cast<Eigen::Index>(bow.frames.size()) != paper.deployment().size()) {
     throw std::invalid_argument("BowEvaluator: " + std::to_string(bow.frames.size()) + " BoW vectors for " +
                                 std::to_string(paper.deployment().size()) + " frames");
   }
-  // One array of postings, word by word (frames ascending within a word), and where each word's
-  // run starts: two memory reads per query word instead of a vector per word.
-  starts_.assign(static_cast<std::size_t>(bow.vocabulary) + 1, 0);
-  for (const BowVector& frame : bow.frames) {
-    for (const BowEntry& e : frame) ++starts_[static_cast<std::size_t>(e.word) + 1];
-  }
-  for (std::size_t w = 1; w < starts_.size(); ++w) starts_[w] += starts_[w - 1];
-  postings_.resize(static_cast<std::size_t>(starts_.back()));
-  std::vector<std::int64_t> next(starts_.begin(), starts_.end() - 1);
-  for (std::size_t f = 0; f < bow.frames.size(); ++f) {
-    for (const BowEntry& e : bow.frames[f]) {
-      postings_[static_cast<std::size_t>(next[static_cast<std::size_t>(e.word)]++)] = {static_cast<std::int32_t>(f),
-                                                                                      e.weight};
-    }
-  }
-  std::vector<double> acc(bow.frames.size(), 0.0);
-  std::vector<std::int32_t> touched;
+  const int window = paper.evaluation().suppression_frames;
+  BowPostings::Scratch scratch(bow.frames.size());
+  std::vector<BowPostings::Run> runs;
   std::vector<MatchOutcome> matches;
   std::int64_t visited = 0;
   for (std::size_t i = 0; i < bow.frames.size(); ++i) {
-    const Best best = Search(static_cast<std::int32_t>(i), bow.frames[i], acc, touched, visited);
+    runs.clear();
+    const auto fi = static_cast<std::int32_t>(i);
+    postings_.AppendRuns(bow.frames[i], fi, window, runs);
+    const BowPostings::Best best = postings_.Search(fi, window, runs, scratch, visited);
     central_best_.push_back(best.frame);
-    matches.push_back(Outcome(static_cast<std::int32_t>(i), best.frame, best.score));
+    matches.push_back(Outcome(fi, best.frame, best.score));
   }
   centralized_ = EvaluatePr(matches, paper.deployment().trajectory.positions, paper.evaluation().radius_m,
                             paper.relevant());
 }
 
-BowEvaluator::Best BowEvaluator::Search(std::int32_t i, const BowVector& part, std::vector<double>& acc,
-                                        std::vector<std::int32_t>& touched, std::int64_t& visited) const {
-  const int window = paper_.evaluation().suppression_frames;
-  // Raw pointers and a local count: through the vectors, every store to `touched` made the
-  // compiler reload `acc`'s data and `visited` for each posting.
-  if (touched.size() < acc.size()) touched.resize(acc.size());  // once: a frame is touched at most once
-  double* const sums = acc.data();
-  std::int32_t* const first = touched.data();
-  std::int32_t* last = first;
-  std::int64_t count = 0;
-  const auto add = [&](const BowEntry& q, const Posting& p) {
-    double& a = sums[static_cast<std::size_t>(p.frame)];
-    if (a == 0.0) *last++ = p.frame;
-    a += std::min(static_cast<double>(q.weight), static_cast<double>(p.weight));
-  };
-  const auto before = [](const Posting& p, std::int32_t frame) { return p.frame < frame; };
-  // Each query word's start and postings are reads from memory that miss the cache (the words
-  // are spread over a vocabulary of up to 10^7): ask for those of words a few ahead while adding
-  // these, so the reads overlap.
-  constexpr std::size_t kAhead = 8;
-  const auto run = [&](std::size_t k) {
-    const auto w = static_cast<std::size_t>(part[k].word);
-    return std::pair(postings_.data() + starts_[w], postings_.data() + starts_[w + 1]);
-  };
-  for (std::size_t k = 0; k < part.size(); ++k) {
-    if (k + 2 * kAhead < part.size()) __builtin_prefetch(&starts_[static_cast<std::size_t>(part[k + 2 * kAhead].word)]);
-    if (k + kAhead < part.size()) {
-      const auto [b, e] = run(k + kAhead);
-      __builtin_prefetch(b + (e - b) / 2);  // where the search for the window starts
-    }
-    const BowEntry& q = part[k];
-    // A landmark's word is mostly seen by frames near the query, inside the suppression window:
-    // the postings are in frame order, so the window is one run of them, skipped whole (the
-    // frames outside are visited in the same order as one by one, so the sums are the same).
-    const auto [begin, end] = run(k);
-    const Posting* lo = std::lower_bound(begin, end, i - window, before);
-    const Posting* hi = std::lower_bound(lo, end, i + window + 1, before);
-    for (const Posting* p = begin; p != lo; ++p) add(q, *p);
-    for (const Posting* p = hi; p != end; ++p) add(q, *p);
-    count += (lo - begin) + (end - hi);
-  }
-  visited += count;
-  Best best;
-  for (const std::int32_t* t = first; t != last; ++t) {
-    const std::int32_t j = *t;
-    double& a = acc[static_cast<std::size_t>(j)];
-    if (a > best.score || (a == best.score && j < best.frame)) best = {j, a};
-    a = 0.0;
-  }
-  return best;
+BowRunResult BowEvaluator::Evaluate(const WordOwners& owners, const std::string& name, bool keep_curve) const {
+  const Assignment one{&owners, name};
+  return std::move(EvaluateMany(std::span(&one, 1), keep_curve).front());
 }
 
-BowRunResult BowEvaluator::Evaluate(const WordOwners& owners, const std::string& name, bool keep_curve) const {
+// A query's owners are looked up this many words ahead (reads from memory, as the words are
+// spread over the vocabulary).
+constexpr std::size_t kOwnersAhead = 32;
+
+std::vector<BowRunResult> BowEvaluator::EvaluateMany(std::span<const Assignment> assignments, bool keep_curve) const {
   const std::vector<BowVector>& frames = bow_.frames;
-  const int n = owners.robots();
-  const SequenceSplit split = SplitSequence(static_cast<int>(frames.size()), n);
-  BowRunResult out;
-  std::vector<std::int64_t> searches(static_cast<std::size_t>(n), 0), comparisons = searches, stored = searches;
-  std::vector<double> acc(frames.size(), 0.0);
-  std::vector<std::int32_t> touched;
-  std::vector<MatchOutcome> matches;
-  std::int64_t words = 0, part_words = 0;
+  const int window = paper_.evaluation().suppression_frames;
+  const std::size_t batch = assignments.size();
+  std::vector<DistributedTally> tallies;
+  tallies.reserve(batch);
+  for (const Assignment& a : assignments) tallies.emplace_back(*a.owners, frames.size());
+  // Every assignment's owner of word w side by side at [w x batch, (w + 1) x batch): a query's
+  // owners are then one cache line per word, not one per word and assignment (which, at 2 MB an
+  // assignment, pushed the query's postings out of the cache between its searches).
+  std::vector<std::int16_t> owners(static_cast<std::size_t>(bow_.vocabulary) * batch);
+  for (std::size_t a = 0; a < batch; ++a) {
+    for (std::int32_t w = 0; w < bow_.vocabulary; ++w) {
+      owners[static_cast<std::size_t>(w) * batch + a] = static_cast<std::int16_t>(assignments[a].owners->OwnerOf(w).value);
+    }
+  }
+  BowPostings::Scratch scratch(frames.size());
+  std::vector<BowPostings::Run> runs;
+  std::vector<std::int16_t> query_owners;  // assignment a's owner of the query's word k at [a x words + k]
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const auto fi = static_cast<std::int32_t>(i);
-    const std::vector<BowVector> parts = owners.Split(frames[i]);
-    std::vector<PartialMatch> answers;
-    for (int r = 0; r < n; ++r) {
-      const BowVector& part = parts[static_cast<std::size_t>(r)];
-      if (part.empty()) continue;
-      const auto ur = static_cast<std::size_t>(r);
-      ++searches[ur];
-      ++stored[ur];
-      if (split.owner[i].value != r) {
-        ++out.part_sizes[EncodedBowQueryBytes(part)];
-        part_words += static_cast<std::int64_t>(part.size());
-      }
-      const Best best = Search(fi, part, acc, touched, comparisons[ur]);
-      if (best.frame >= 0) {
-        answers.push_back({RobotId(r), split.owner[static_cast<std::size_t>(best.frame)], FrameId(best.frame), best.score});
-      }
+    const BowVector& v = frames[i];
+    runs.clear();
+    postings_.AppendRuns(v, fi, window, runs);  // the query's postings into the cache, for all
+    query_owners.resize(v.size() * batch);
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      if (k + kOwnersAhead < v.size()) __builtin_prefetch(owners.data() + static_cast<std::size_t>(v[k + kOwnersAhead].word) * batch);
+      const std::int16_t* row = owners.data() + static_cast<std::size_t>(v[k].word) * batch;
+      for (std::size_t a = 0; a < batch; ++a) query_owners[a * v.size() + k] = row[a];
     }
-    words += static_cast<std::int64_t>(frames[i].size());
-    const std::optional<VotedMatch> voted = Vote(answers);
-    matches.push_back(Outcome(fi, voted ? voted->frame.value : -1, voted ? voted->score : 0.0));
-    if (voted) {
-      ++out.bow.voted;
-      if (voted->frame.value != central_best_[i]) ++out.bow.vote_not_centralized;
+    for (std::size_t a = 0; a < batch; ++a) {
+      tallies[a].Query(postings_, window, fi, v, runs, std::span(query_owners).subspan(a * v.size(), v.size()),
+                       central_best_[i], scratch);
     }
   }
-  PrResult pr = EvaluatePr(matches, paper_.deployment().trajectory.positions, paper_.evaluation().radius_m,
-                           paper_.relevant());
-  out.matches = std::move(matches);
-  paper_.FillResult(name, std::move(pr), searches, comparisons, stored, keep_curve, out.paper);
-  out.paper.row.auc_reference = centralized_.auc;
-  out.paper.row.relative_auc = RelativeAuc(out.paper.row.auc, centralized_.auc);
-  for (const auto& [bytes, count] : out.part_sizes) {
-    out.bow.partial_queries += count;
-    out.bow.payload_bytes += bytes * count;
-  }
-  out.bow.queries = static_cast<std::int64_t>(frames.size());
-  out.bow.mean_words = static_cast<double>(words) / static_cast<double>(frames.size());
-  if (out.bow.partial_queries > 0) {
-    out.bow.mean_part_words = static_cast<double>(part_words) / static_cast<double>(out.bow.partial_queries);
-  }
-  FillQuantiles(out.part_sizes, out.bow);
-  out.paper.row.messages = out.bow.partial_queries;
-  out.paper.row.payload_bytes = out.bow.payload_bytes;
+  std::vector<BowRunResult> out;
+  for (std::size_t a = 0; a < batch; ++a) out.push_back(tallies[a].Finish(paper_, assignments[a].name, keep_curve, centralized_));
   return out;
 }
 
+void BowEvaluator::Plan(std::vector<PlannedAssignment> planned) {
+  const std::lock_guard lock(shared_mutex_);
+  planned_.clear();
+  for (PlannedAssignment& p : planned) planned_.push_back({std::move(p), false, {}});
+}
+
+bool BowEvaluator::IsPlanned(const std::string& name, int robots) const {
+  const std::lock_guard lock(shared_mutex_);
+  return std::any_of(planned_.begin(), planned_.end(), [&](const Planned& p) {
+    return p.assignment.name == name && p.assignment.robots == robots;
+  });
+}
+
+void BowEvaluator::EvaluateBatch(const std::vector<std::size_t>& batch,
+                                 std::vector<std::promise<BowRunResult>>& promises) const {
+  std::vector<BowRunResult> results;
+  try {
+    std::vector<std::shared_ptr<const WordOwners>> owners;
+    std::vector<Assignment> assignments;
+    for (const std::size_t p : batch) owners.push_back(planned_[p].assignment.words());
+    for (std::size_t k = 0; k < batch.size(); ++k) assignments.push_back({owners[k].get(), planned_[batch[k]].assignment.name});
+    results = EvaluateMany(assignments, false);
+  } catch (...) {
+    for (auto& promise : promises) promise.set_exception(std::current_exception());
+    return;
+  }
+  for (std::size_t k = 0; k < batch.size(); ++k) promises[k].set_value(std::move(results[k]));
+}
+
+BowRunResult BowEvaluator::EvaluatePlanned(const std::string& name, int robots) const {
+  std::shared_future<BowRunResult> result;
+  std::vector<std::size_t> batch;
+  std::vector<std::promise<BowRunResult>> promises;
+  {
+    const std::lock_guard lock(shared_mutex_);
+    const auto it = std::find_if(planned_.begin(), planned_.end(), [&](const Planned& p) {
+      return p.assignment.name == name && p.assignment.robots == robots;
+    });
+    if (it == planned_.end()) {
+      throw std::logic_error("BowEvaluator::EvaluatePlanned: " + name + " at n = " + std::to_string(robots) +
+                             " was not planned");
+    }
+    if (!it->started) {  // this one and the next planned ones not started yet
+      // The batch's owners side by side take 2 bytes per word and assignment: at most 32 MB.
+      const auto per_assignment = 2 * static_cast<std::size_t>(std::max(bow_.vocabulary, 1));
+      const std::size_t most = std::clamp<std::size_t>((std::size_t{32} << 20) / per_assignment, 1, kBatch);
+      for (auto p = it; p != planned_.end() && batch.size() < most; ++p) {
+        if (p->started) continue;
+        p->started = true;
+        promises.emplace_back();
+        p->result = promises.back().get_future().share();
+        batch.push_back(static_cast<std::size_t>(p - planned_.begin()));
+      }
+    }
+    result = it->result;
+  }
+  if (!batch.empty()) EvaluateBatch(batch, promises);
+  return result.get();  // a copy: the caller sets its run's key
+}
+
 BowRunResult BowEvaluator::EvaluateShared(const WordOwners& owners, const std::string& name) const {
-  Fnv1a hash;  // of the vocabulary and every word's owner
-  hash.AddValue(owners.vocabulary());
-  for (std::int32_t w = 0; w < owners.vocabulary(); ++w) hash.AddValue(owners.OwnerOf(w).value);
-  const auto digest = static_cast<std::uint64_t>(hash.value());
+  const std::uint64_t digest = OwnersDigest(owners);
   std::promise<BowRunResult> promise;
   std::shared_future<BowRunResult> result;
   bool mine = false;
@@ -247,11 +343,12 @@ BowRunResult BowEvaluator::Reference(const std::string& name, int robots, bool b
   row.auc_reference = centralized_.auc;
   row.relative_auc = RelativeAuc(row.auc, row.auc_reference);
   row.queries = static_cast<std::int64_t>(frames.size());
+  std::vector<std::int64_t> bytes_by_words;
   std::int64_t words = 0;
   for (std::size_t i = 0; i < frames.size(); ++i) {
     words += static_cast<std::int64_t>(frames[i].size());
     if (central_best_[i] >= 0) ++out.bow.voted;
-    if (broadcast) out.part_sizes[EncodedBowQueryBytes(frames[i])] += robots - 1;
+    if (broadcast) out.part_sizes[QueryBytes(frames[i].size(), bytes_by_words)] += robots - 1;
   }
   out.bow.queries = row.queries;
   out.bow.mean_words = static_cast<double>(words) / static_cast<double>(frames.size());

@@ -15,10 +15,12 @@
 // (payload_bytes, LCM encoding with the fingerprint; no wire overheads: the static protocol has
 // no network). Broadcast sends the full vector to the n - 1 others.
 #include <cstdint>
+#include <functional>
 #include <future>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -26,6 +28,7 @@
 #include "agents/algorithms/bow_words.h"
 #include "agents/routing/routing.h"
 #include "experiments/data/bow_data.h"
+#include "experiments/protocols/paper/bow_postings.h"
 #include "experiments/results/bow_rows.h"
 #include "experiments/protocols/paper/static_protocol.h"
 
@@ -46,6 +49,23 @@ BowRunResult DescriptorQueryTraffic(const RoutingStrategy* routing, int robots, 
 
 class BowEvaluator {
  public:
+  // One word assignment of the distributed index, strategy `name`.
+  struct Assignment {
+    const WordOwners* owners = nullptr;
+    std::string name;
+  };
+  // One EvaluatePlanned will be asked for: `words` builds its owners (called once, when its
+  // batch is evaluated, so the owners of every planned assignment are not all held at once).
+  struct PlannedAssignment {
+    std::string name;
+    int robots = 0;
+    std::function<std::shared_ptr<const WordOwners>()> words;
+  };
+  // Assignments evaluated together by EvaluatePlanned: each query's postings are read from memory
+  // once for all of them, while the batch's owners are held (2 MB each at a vocabulary of 10^6;
+  // fewer assignments a batch when the vocabulary is larger, so they stay within 32 MB).
+  static constexpr std::size_t kBatch = 8;
+
   // `paper` gives the deployment, ground truth and R; `bow` one vector per frame (kept by reference).
   BowEvaluator(const PaperEvaluator& paper, const BowData& bow);
 
@@ -53,36 +73,43 @@ class BowEvaluator {
 
   // The distributed inverted index over `owners`, strategy `name`.
   BowRunResult Evaluate(const WordOwners& owners, const std::string& name, bool keep_curve) const;
-  // Evaluate without its curve, computed once per (name, owners) and then copied: the word
-  // assignments do not depend on the run, so the runs of one n ask for the same evaluation (at
-  // about 2000 words a frame, most of a sweep's time). Safe to call from several threads; a
-  // call that finds the same evaluation under way waits for it.
+  // Evaluate for each assignment, in one pass over the queries; the results in their order.
+  std::vector<BowRunResult> EvaluateMany(std::span<const Assignment> assignments, bool keep_curve) const;
+  // The assignments the sweep's runs will ask for (its bow_decentralized* strategies at every n,
+  // in the order its runs come), each built only when its batch is evaluated. Call before the
+  // first EvaluatePlanned.
+  void Plan(std::vector<PlannedAssignment> planned);
+  bool IsPlanned(const std::string& name, int robots) const;
+  // A planned assignment's evaluation without its curve, computed once and then copied: the word
+  // assignments do not depend on the run (BowRouting takes none), so the runs of one n ask for
+  // the same one. The first request evaluates it with the next planned ones not yet started,
+  // kBatch in all (EvaluateMany). Safe to call from several threads; a call that finds its
+  // evaluation under way waits for it. Throws std::logic_error when (name, robots) is not planned.
+  BowRunResult EvaluatePlanned(const std::string& name, int robots) const;
+  // Evaluate without its curve, computed once per (name, owners) and then copied, for owners not
+  // planned. Safe to call from several threads, as EvaluatePlanned.
   BowRunResult EvaluateShared(const WordOwners& owners, const std::string& name) const;
   // The centralized reference (every query to one index) and broadcast (the full vector to the
   // n - 1 others, each answers from its own frames, the best answer wins: the centralized ranking).
   BowRunResult Reference(const std::string& name, int robots, bool broadcast) const;
 
  private:
-  struct Posting {
-    std::int32_t frame;
-    float weight;
+  struct Planned {
+    PlannedAssignment assignment;
+    bool started = false;
+    std::shared_future<BowRunResult> result;
   };
-  struct Best {
-    std::int32_t frame = -1;
-    double score = 0.0;
-  };
-  // The best frame for `part` of query `i` (outside its window), counting postings visited.
-  Best Search(std::int32_t i, const BowVector& part, std::vector<double>& acc, std::vector<std::int32_t>& touched,
-              std::int64_t& visited) const;
+  // Evaluates the planned assignments `batch` (indices into planned_) and fulfils `promises`.
+  void EvaluateBatch(const std::vector<std::size_t>& batch, std::vector<std::promise<BowRunResult>>& promises) const;
 
   const PaperEvaluator& paper_;
   const BowData& bow_;
+  BowPostings postings_;
   mutable std::mutex shared_mutex_;
-  // By (name, robots, a 64-bit digest of every word's owner): a digest rather than a copy of the
-  // owners (2 MB each at a vocabulary of 10^6).
+  mutable std::vector<Planned> planned_;
+  // Evaluations not planned, by (name, robots, a 64-bit digest of every word's owner): a digest
+  // rather than a copy of the owners.
   mutable std::map<std::tuple<std::string, int, std::uint64_t>, std::shared_future<BowRunResult>> shared_;
-  std::vector<Posting> postings_;     // word by word; within a word the frames containing it, ascending
-  std::vector<std::int64_t> starts_;  // word w's postings: [starts_[w], starts_[w + 1])
   std::vector<std::int32_t> central_best_;      // per query: the centralized best frame (-1: none)
   PrResult centralized_;
 };
