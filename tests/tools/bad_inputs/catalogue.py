@@ -482,6 +482,21 @@ def later_keys_cases():
              sets=S(*BOW, "dataset.bow=nope.bin")),
         Case("g11", "dataset.synthetic_bow.features = 0", ("dataset.synthetic_bow.features",),
              sets=S(*BOW, "dataset.synthetic_bow.features=0")),
+        Case("g12", "dataset.synthetic_bow.common_words = -1", ("dataset.synthetic_bow.common_words", "-1"),
+             sets=S(*BOW, "dataset.synthetic_bow.common_words=-1")),
+        Case("g13", "dataset.synthetic_bow.common_words = the vocabulary (100000)",
+             ("dataset.synthetic_bow.common_words", "99999"),
+             sets=S(*BOW, "dataset.synthetic_bow.common_words=100000")),
+        Case("g14", "dataset.synthetic_bow.common_share = 1.5", ("dataset.synthetic_bow.common_share", "[0, 1]"),
+             sets=S(*BOW, "dataset.synthetic_bow.common_share=1.5")),
+        Case("g15", "dataset.synthetic_bow.common_share = 0.5 without common words",
+             ("dataset.synthetic_bow.common_share", "common_words"),
+             sets=S(*BOW, "dataset.synthetic_bow.common_share=0.5")),
+        Case("g16", "dataset.synthetic_bow.view_sector_deg = 0", ("dataset.synthetic_bow.view_sector_deg", "(0, 360]"),
+             sets=S(*BOW, "dataset.synthetic_bow.view_sector_deg=0")),
+        Case("g17", "dataset.synthetic_bow.view_sector_deg = 361",
+             ("dataset.synthetic_bow.view_sector_deg", "(0, 360]"),
+             sets=S(*BOW, "dataset.synthetic_bow.view_sector_deg=361")),
     ]
 
 
