@@ -110,9 +110,10 @@ void EmitSweep(YAML::Emitter& out, const SweepConfig& s) {
 }
 
 // The entries differ only in range (ReadRadio), so one map with the list of ranges reads back.
-void EmitRadio(YAML::Emitter& out, const std::vector<RadioParams>& radio) {
+// One radio map: a range radio with its ranges (all of `radio`), or one log_distance radio.
+void EmitRadioMap(YAML::Emitter& out, const std::vector<RadioParams>& radio) {
   const RadioParams& r = radio.front();
-  out << YAML::Key << "radio" << YAML::Value << YAML::BeginMap;
+  out << YAML::BeginMap;
   out << YAML::Key << "propagation" << YAML::Value << Name(ToString(r.propagation));
   if (r.propagation == PropagationKind::kRange) {
     out << YAML::Key << "range" << YAML::Value;
@@ -130,6 +131,21 @@ void EmitRadio(YAML::Emitter& out, const std::vector<RadioParams>& radio) {
         << FormatDuration(SimTime::Seconds(l.shadowing_window_s)) << YAML::EndMap;
   }
   out << YAML::EndMap;
+}
+
+// network.radio: one map when every entry is a range radio (or there is one entry), else a list
+// of maps, one per entry, which reads back to the same entries in the same order.
+void EmitRadio(YAML::Emitter& out, const std::vector<RadioParams>& radio) {
+  out << YAML::Key << "radio" << YAML::Value;
+  const bool all_ranges = std::all_of(radio.begin(), radio.end(),
+                                      [](const RadioParams& r) { return r.propagation == PropagationKind::kRange; });
+  if (all_ranges || radio.size() == 1) {
+    EmitRadioMap(out, radio);
+    return;
+  }
+  out << YAML::BeginSeq;
+  for (const RadioParams& r : radio) EmitRadioMap(out, {r});
+  out << YAML::EndSeq;
 }
 
 void EmitNetwork(YAML::Emitter& out, const NetworkConfig& n) {

@@ -114,9 +114,8 @@ LogDistanceParams ReadLogDistance(const Field& f) {
   return l;
 }
 
-// network.radio: {propagation, range, log_distance}; `range` may be a list (one variant each).
-std::vector<RadioParams> ReadRadio(const Field& f) {
-  if (!f.present()) return {RadioParams{}};
+// One radio map: {propagation, range, log_distance}; `range` may be a list (one variant each).
+std::vector<RadioParams> ReadRadioMap(const Field& f) {
   if (!f.node().IsMap()) f.Fail("expected a map such as {propagation: range, range: 200m}");
   f.ExpectMap({"propagation", "range", "log_distance"});
   RadioParams base;
@@ -141,6 +140,21 @@ std::vector<RadioParams> ReadRadio(const Field& f) {
     out.push_back(base);
   }
   for (const RadioParams& r : out) f.Validate(r);
+  return out;
+}
+
+// network.radio: one radio map, or a list of them (a range sweep beside a log_distance radio):
+// one variant per entry, none twice.
+std::vector<RadioParams> ReadRadio(const Field& f) {
+  if (!f.present()) return {RadioParams{}};
+  if (!f.node().IsSequence()) return ReadRadioMap(f);
+  std::vector<RadioParams> out;
+  for (const Field& item : f.Items()) {
+    for (const RadioParams& r : ReadRadioMap(item)) {
+      if (std::find(out.begin(), out.end(), r) != out.end()) item.Fail("repeats a radio listed before");
+      out.push_back(r);
+    }
+  }
   return out;
 }
 

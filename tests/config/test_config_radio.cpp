@@ -84,6 +84,26 @@ TEST(ConfigRadioTest, BadRadioValuesNameTheirKey) {
               "test.yaml: network.routing: unknown value 'flooding' (expected one of: direct, shortest_path, link_state)");
 }
 
+// network.radio may list radio maps (a range sweep beside a log_distance radio): one variant each,
+// read back as written, a repeat refused.
+TEST(ConfigRadioTest, RadioMayBeAListOfMaps) {
+  const ExperimentConfig c = Parse(
+      "network: {model: radio, radio: [{propagation: range, range: [100m, 200m]},\n"
+      "          {propagation: log_distance, log_distance: {tx_power_dbm: 20, sensitivity_dbm: -96}}]}\n");
+  ASSERT_EQ(c.network.radio.size(), 3u);
+  EXPECT_EQ(c.network.radio[0].range_m, 100.0);
+  EXPECT_EQ(c.network.radio[1].range_m, 200.0);
+  EXPECT_EQ(c.network.radio[2].propagation, PropagationKind::kLogDistance);
+  EXPECT_EQ(c.network.radio[2].log_distance.tx_power_dbm, 20.0);
+  // 10^((20 - 46.6777 + 96) / 30) = 10^2.31074 = 204.52 m
+  EXPECT_NEAR(c.network.radio[2].log_distance.MeanRangeM(), 204.52, 0.01);
+  const std::string emitted = EmitConfig(c);
+  EXPECT_EQ(ParseConfig(emitted, "/nonexistent", {}, "config.yaml"), c) << emitted;
+  const std::string error =
+      ErrorOf("network: {model: radio, radio: [{range: 100m}, {propagation: range, range: [50m, 100m]}]}\n");
+  EXPECT_EQ(error.rfind("test.yaml: network.radio[1]: repeats a radio listed before", 0), 0u) << error;
+}
+
 // network.routing (docs/network_model.md, "Routing"): a name, link_state's map, or a list of them
 // (one radio variant each); only with a radio; every bad value one error naming its key.
 TEST(ConfigRadioTest, RoutingIsOneEntryOrAListAndLinkStateTakesItsPeriods) {
