@@ -16,19 +16,16 @@ namespace dvpr {
 
 namespace {
 
-// One metric of a group: its runs' values, for the mean and the spread (spread.h).
+// One metric of a group: its runs' values (a run without it adds none), whose mean and spread
+// summary.json gives (spread.h sums them in this order, as the mean always was).
 struct Mean {
-  double sum = 0;
-  int count = 0;
   std::vector<double> values;
   void Add(double v) {
-    if (!std::isnan(v)) { sum += v; ++count; values.push_back(v); }
+    if (!std::isnan(v)) values.push_back(v);
   }
-  std::string Json() const { return count == 0 ? "null" : FormatDouble(sum / count); }
-  std::string StdJson() const { return Number(SpreadOf(values).std); }
-  std::string Ci95Json() const { return Number(SpreadOf(values).ci95); }
-  static std::string Number(double v) { return std::isnan(v) ? "null" : FormatDouble(v); }
 };
+
+std::string JsonNumber(double v) { return std::isnan(v) ? "null" : FormatDouble(v); }
 
 struct Group {
   RunKey key;
@@ -123,24 +120,26 @@ void WriteGroup(std::ostringstream& s, const Group& g) {
       << ", \"loss\": " << JsonString(n.loss) << ", \"network_name\": " << JsonString(NetworkName(n));
   }
   s << ", \"runs\": " << g.runs;
+  // The metrics written, in order: those of kMetricOrder, the bytes by role only where a network
+  // counted them, the connectivity ones only where it was tracked; each one's spread worked out once.
+  std::vector<std::pair<std::string, Spread>> metrics;
+  for (const char* m : kMetricOrder) metrics.emplace_back(m, SpreadOf(g.means.at(m).values));
+  if (!g.means.at("copy_wire_bytes").values.empty()) {
+    for (const std::string& m : RoleMetricNames()) metrics.emplace_back(m, SpreadOf(g.means.at(m).values));
+  }
+  for (const char* m : kConnectivityMetrics) {
+    if (const auto it = g.means.find(m); it != g.means.end()) metrics.emplace_back(m, SpreadOf(it->second.values));
+  }
   // The means, then beside them (issue 35) the runs' standard deviation and the 95 % confidence
-  // interval's half-width (spread.h), with the same keys; null below two runs.
-  const auto metrics = [&](const char* name, std::string (Mean::*value)() const) {
-    s << ",\n     " << JsonString(name) << ": {";
-    for (std::size_t m = 0; m < std::size(kMetricOrder); ++m) {
-      s << (m ? ", " : "") << JsonString(kMetricOrder[m]) << ": " << (g.means.at(kMetricOrder[m]).*value)();
-    }
-    if (g.means.at("copy_wire_bytes").count > 0) {  // bytes by role: only where a network counted them
-      for (const std::string& n : RoleMetricNames()) s << ", " << JsonString(n) << ": " << (g.means.at(n).*value)();
-    }
-    for (const char* n : kConnectivityMetrics) {  // only where connectivity was tracked
-      if (const auto it = g.means.find(n); it != g.means.end()) s << ", " << JsonString(n) << ": " << (it->second.*value)();
+  // interval's half-width, with the same keys; null below two runs (no value: null everywhere).
+  for (const auto& [object, field] : {std::pair{"mean", &Spread::mean}, std::pair{"std", &Spread::std},
+                                      std::pair{"ci95", &Spread::ci95}}) {
+    s << ",\n     " << JsonString(object) << ": {";
+    for (std::size_t i = 0; i < metrics.size(); ++i) {
+      s << (i ? ", " : "") << JsonString(metrics[i].first) << ": " << JsonNumber(metrics[i].second.*field);
     }
     s << "}";
-  };
-  metrics("mean", &Mean::Json);
-  metrics("std", &Mean::StdJson);
-  metrics("ci95", &Mean::Ci95Json);
+  }
   s << "}";
 }
 
@@ -153,11 +152,9 @@ void WriteRatios(std::ostringstream& s, const std::vector<Group>& groups, const 
     if (d.key.strategy != "decentralized") continue;
     const auto b = index.find(GroupId(d.key, "broadcast"));
     if (b == index.end()) continue;
-    const Mean& dm = d.means.at("place_recognition_bytes_per_query");
-    const Mean& bm = groups[b->second].means.at("place_recognition_bytes_per_query");
-    if (dm.count == 0 || bm.count == 0 || dm.sum == 0) continue;
-    const double dec = dm.sum / dm.count;
-    const double bro = bm.sum / bm.count;
+    const double dec = SpreadOf(d.means.at("place_recognition_bytes_per_query").values).mean;
+    const double bro = SpreadOf(groups[b->second].means.at("place_recognition_bytes_per_query").values).mean;
+    if (std::isnan(dec) || std::isnan(bro) || dec == 0) continue;
     s << (first ? "" : ",") << "\n    {\"protocol\": " << JsonString(d.key.protocol) << ", \"robots\": "
       << d.key.robots << ", \"network_variant\": " << d.key.network.variant << ", \"network_name\": "
       << JsonString(NetworkName(d.key.network)) << ", \"broadcast_bytes_per_query\": " << FormatDouble(bro)
