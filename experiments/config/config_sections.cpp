@@ -158,18 +158,27 @@ std::vector<RadioParams> ReadRadio(const Field& f) {
   return out;
 }
 
+// A key that is a kind's name alone, or a map of `keys` that names its kind: the kind, parsed by
+// `parse`. The caller reads a map's other keys (a name has none). `expected`: the error for a key
+// that is neither; kind_hint: the kind a map usually names.
+template <typename Parse>
+auto ReadKindOrMap(const Field& f, Parse parse, std::initializer_list<std::string_view> keys, const char* expected,
+                   const char* kind_hint) -> decltype(parse(std::string_view())) {
+  if (f.node().IsScalar()) return f.Named(parse);
+  if (!f.node().IsMap()) f.Fail(expected);
+  f.ExpectMap(keys);
+  const Field kind = f.Child("kind");
+  if (!kind.present()) f.Fail(std::string("a map needs its kind (") + kind_hint + ")");
+  return kind.Named(parse);
+}
+
 // network.disconnected: drop | store_and_forward | {kind: store_and_forward, hold_bytes, hold_time}.
 DisconnectedParams ReadDisconnected(const Field& f) {
   DisconnectedParams d;
-  if (f.node().IsScalar()) {
-    d.kind = f.Named(ParseDisconnectedKind);
-    return d;
-  }
-  if (!f.node().IsMap()) f.Fail("expected drop, or a map such as {kind: store_and_forward, hold_bytes: 10MB, hold_time: 60s}");
-  f.ExpectMap({"kind", "hold_bytes", "hold_time"});
-  const Field kind = f.Child("kind");
-  if (!kind.present()) f.Fail("a map needs its kind (store_and_forward)");
-  d.kind = kind.Named(ParseDisconnectedKind);
+  d.kind = ReadKindOrMap(f, ParseDisconnectedKind, {"kind", "hold_bytes", "hold_time"},
+                         "expected drop, or a map such as {kind: store_and_forward, hold_bytes: 10MB, hold_time: 60s}",
+                         "store_and_forward");
+  if (f.node().IsScalar()) return d;
   const Field hold_bytes = f.Child("hold_bytes");
   const Field hold_time = f.Child("hold_time");
   if (d.kind == DisconnectedKind::kDrop) {
@@ -188,17 +197,11 @@ DisconnectedParams ReadDisconnected(const Field& f) {
 // {kind: link_state, hello, topology}.
 RoutingEntry ReadRoutingEntry(const Field& f) {
   RoutingEntry e;
-  if (f.node().IsScalar()) {
-    e.kind = f.Named(ParseRoutingKind);
-    return e;
-  }
-  if (!f.node().IsMap()) {
-    f.Fail("expected direct, shortest_path, link_state or a map such as {kind: link_state, hello: 2s, topology: 5s}");
-  }
-  f.ExpectMap({"kind", "hello", "topology"});
-  const Field kind = f.Child("kind");
-  if (!kind.present()) f.Fail("a map needs its kind (link_state)");
-  e.kind = kind.Named(ParseRoutingKind);
+  e.kind = ReadKindOrMap(
+      f, ParseRoutingKind, {"kind", "hello", "topology"},
+      "expected direct, shortest_path, link_state or a map such as {kind: link_state, hello: 2s, topology: 5s}",
+      "link_state");
+  if (f.node().IsScalar()) return e;
   const Field hello = f.Child("hello");
   const Field topology = f.Child("topology");
   if (e.kind != RoutingKind::kLinkState) {

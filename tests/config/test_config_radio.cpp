@@ -14,6 +14,8 @@ namespace {
 
 ExperimentConfig Parse(const std::string& yaml) { return testing_support::ParseTestConfig(yaml); }
 std::string ErrorOf(const std::string& yaml) { return testing_support::ConfigErrorOf(yaml); }
+// The error begins with `prefix` (the file, the key and the start of the problem).
+void starts_with(const std::string& error, const std::string& prefix) { EXPECT_EQ(error.rfind(prefix, 0), 0u) << error; }
 
 TEST(ConfigRadioTest, ARangeListIsOneEntryPerRange) {
   const ExperimentConfig c = Parse(
@@ -55,9 +57,6 @@ TEST(ConfigRadioTest, RadioConfigReadsBackAndOthersAreWrittenWithoutTheSection) 
 }
 
 TEST(ConfigRadioTest, BadRadioValuesNameTheirKey) {
-  const auto starts_with = [](const std::string& error, const std::string& prefix) {
-    EXPECT_EQ(error.rfind(prefix, 0), 0u) << error;
-  };
   starts_with(ErrorOf("network: {model: radio, radio: {range: 0m}}\n"), "test.yaml: network.radio.range: must be in");
   starts_with(ErrorOf("network: {model: radio, radio: {range: -5m}}\n"),
               "test.yaml: network.radio.range: expected a length with a unit");
@@ -123,9 +122,6 @@ TEST(ConfigRadioTest, RoutingIsOneEntryOrAListAndLinkStateTakesItsPeriods) {
 }
 
 TEST(ConfigRadioTest, BadRoutingValuesNameTheirKey) {
-  const auto starts_with = [](const std::string& error, const std::string& prefix) {
-    EXPECT_EQ(error.rfind(prefix, 0), 0u) << error;
-  };
   starts_with(ErrorOf("network: {model: point_to_point, routing: link_state}\n"),
               "test.yaml: network.routing: applies to model radio, which network.model does not list");
   starts_with(ErrorOf("network: {model: radio, routing: [link_state, link_state]}\n"),
@@ -162,9 +158,6 @@ TEST(ConfigRadioTest, DisconnectedIsDropOrStoreAndForward) {
 }
 
 TEST(ConfigRadioTest, BadDisconnectedValuesNameTheirKey) {
-  const auto starts_with = [](const std::string& error, const std::string& prefix) {
-    EXPECT_EQ(error.rfind(prefix, 0), 0u) << error;
-  };
   starts_with(ErrorOf("network: {model: point_to_point, disconnected: store_and_forward}\n"),
               "test.yaml: network.disconnected: applies to model radio, which network.model does not list");
   starts_with(ErrorOf("network: {model: radio, disconnected: hold}\n"),
