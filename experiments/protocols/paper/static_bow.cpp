@@ -1,9 +1,9 @@
 #include "experiments/protocols/paper/static_bow.h"
 
 #include <algorithm>
-#include <optional>
 #include <cstdlib>
 #include <exception>
+#include <optional>
 #include <stdexcept>
 
 #include "agents/messages/bow_query.h"
