@@ -1,6 +1,6 @@
 #pragma once
 // Small helpers shared by the test files of every module: reading whole output files, starting a
-// program without a shell. Nothing
+// program without a shell, a folder of the test's own. Nothing
 // here includes a project header, so a test of any layer can use it (descriptor_support.h has
 // the helpers that need agents/).
 #include <fcntl.h>
@@ -15,6 +15,8 @@
 #include <map>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 extern char** environ;
 
@@ -35,6 +37,18 @@ inline std::map<std::string, std::string> SnapshotFolder(const std::filesystem::
     entries[rel] = e.is_directory() ? std::string("<dir>") : Slurp(e.path());
   }
   return entries;
+}
+
+// An empty folder DVPR_TEST_TMP/<group>/<suite>.<test> for the running test alone. ctest runs
+// each test as its own process, two at once, so a folder shared by the tests of a fixture would
+// be emptied by one test's SetUp while another test writes into it.
+inline std::filesystem::path FreshTestDir(const std::string& group) {
+  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::filesystem::path dir = std::filesystem::path(DVPR_TEST_TMP) / group /
+                                    (std::string(info->test_suite_name()) + "." + info->name());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
 }
 
 // The names in `dir` (not below it), sorted.

@@ -30,11 +30,7 @@ class CliTest : public ::testing::Test {
   using path = std::filesystem::path;
 
   void SetUp() override {
-    dir_ = std::filesystem::absolute(path(DVPR_TEST_TMP) / "cli" /
-                                     ::testing::UnitTest::GetInstance()->current_test_info()->name())
-               .lexically_normal();
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
+    dir_ = std::filesystem::absolute(FreshTestDir("cli")).lexically_normal();
   }
   // Writes `yaml` to a config file and runs `dvpr run` on it (stderr captured).
   Result RunConfig(const std::string& yaml, const std::string& extra = "") {

@@ -22,9 +22,7 @@ namespace fs = std::filesystem;
 class DeterminismTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(DVPR_TEST_TMP) / "determinism";
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = dvpr::testing_support::FreshTestDir("determinism");
   }
   // A small sweep: 900 frames of KITTI 00 (a revisit inside), both protocols and
   // strategies, two network models, every optional output except figures.

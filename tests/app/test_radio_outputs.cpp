@@ -59,9 +59,7 @@ std::string RunKey(const Row& r) { return r.at("strategy") + "/" + r.at("network
 class RadioOutputsTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(DVPR_TEST_TMP) / "radio_outputs";
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = dvpr::testing_support::FreshTestDir("radio_outputs");
   }
   // 1200 frames of KITTI 00 for 4 robots (300 each, all at once) on 200 m radios with
   // shortest-path relays, beside the full mesh: variant 0 point_to_point, variant 1 the radio.

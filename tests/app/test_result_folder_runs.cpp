@@ -69,10 +69,7 @@ ProtocolRegistry StandIn(double auc, Fault fault, std::atomic<bool>* started_wri
 class ResultFolderRunTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    root_ = fs::path(DVPR_TEST_TMP) / "result_folder_runs" /
-            ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(root_);
-    fs::create_directories(root_);
+    root_ = dvpr::testing_support::FreshTestDir("result_folder_runs");
   }
   // 2 robot counts x 1 run of a small synthetic dataset; only the stand-in protocol runs.
   static ExperimentConfig Config(bool queries) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "experiments/data/npy.h"
+#include "tests/test_support.h"
 
 namespace dvpr {
 namespace {
@@ -22,9 +23,7 @@ namespace fs = std::filesystem;
 class LoadersTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(DVPR_TEST_TMP) / "loaders" /
-           ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::create_directories(dir_);
+    dir_ = dvpr::testing_support::FreshTestDir("loaders");
   }
   fs::path Text(const std::string& name, const std::string& content) const {
     std::ofstream(dir_ / name, std::ios::binary) << content;

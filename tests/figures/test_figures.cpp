@@ -48,10 +48,7 @@ RunResult Sim(const std::string& strategy, int robots, int run, int variant, dou
 class StrategyFigures : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(DVPR_TEST_TMP) / "figures" /
-           ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = dvpr::testing_support::FreshTestDir("figures");
   }
   // decentralized: n = 5 (1 run), 10 and 20 (2 runs each); broadcast (no static balance) and
   // sample_c4 at 10 only; sim rows at n = 10 on two network variants.

@@ -33,8 +33,7 @@ RunResult Paper(const std::string& strategy, int robots, int run, double rel) {
 class BowFigureData : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(DVPR_TEST_TMP) / "figures_bow" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
+    dir_ = dvpr::testing_support::FreshTestDir("figures_bow");
     fs::create_directories(data());
     fs::create_directories(dir_ / "elsewhere");
     std::ofstream(victim()) << "precious";

@@ -36,8 +36,7 @@ RunResult RadioRun(const std::string& strategy, int robots, int run, const Netwo
 class RadioFiguresTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(DVPR_TEST_TMP) / "figures_radio" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
+    dir_ = dvpr::testing_support::FreshTestDir("figures_radio");
     fs::create_directories(dir_ / "figures" / "data");
   }
   // Variant 0 point-to-point (no range), 1 radio of 100 m, 2 of 200 m, 3 log_distance.

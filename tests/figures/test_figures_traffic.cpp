@@ -43,8 +43,7 @@ RunResult SimRun(const std::string& strategy, int robots, int run, const Network
 class TrafficFigures : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(DVPR_TEST_TMP) / "figures_traffic" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
+    dir_ = dvpr::testing_support::FreshTestDir("figures_traffic");
     fs::create_directories(dir_ / "figures" / "data");
   }
   // Two networks: point-to-point 10 Mbit/s (variant 0), shared medium 100 Mbit/s (variant 1).

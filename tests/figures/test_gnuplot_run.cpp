@@ -25,8 +25,7 @@ const std::string kWholePng = std::string("\x89PNG\r\n\x1a\n", 8) + std::string(
 class GnuplotRun : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(DVPR_TEST_TMP) / "gnuplot_run" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
+    dir_ = dvpr::testing_support::FreshTestDir("gnuplot_run");
     fs::create_directories(dir_ / "figures" / "data");
     fs::create_directories(dir_ / "bin");
     std::ofstream(data() / "f.gp") << "# stand-in script\n";

@@ -6,15 +6,14 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/test_support.h"
+
 namespace dvpr::replay {
 
 class ReplayFolderTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = std::filesystem::path(DVPR_TEST_TMP) / "replay" /
-           ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
+    dir_ = dvpr::testing_support::FreshTestDir("replay");
   }
   std::filesystem::path Write(const std::string& name, const std::string& text) const {
     std::ofstream(dir_ / name) << text;

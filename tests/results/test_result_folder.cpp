@@ -36,10 +36,7 @@ using Strings = std::vector<std::string>;
 class ResultFolderTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    root_ = fs::path(DVPR_TEST_TMP) / "result_folder" /
-            ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(root_);
-    fs::create_directories(root_);
+    root_ = dvpr::testing_support::FreshTestDir("result_folder");
   }
   // What an earlier `dvpr run` left: runs.csv, queries.csv, config.yaml and a centroid file,
   // committed through a ResultFolder (so with its manifest).

@@ -31,9 +31,7 @@ using Strings = std::vector<std::string>;
 class SafeOutputTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    root_ = fs::path(DVPR_TEST_TMP) / "safe_output" /
-            ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(root_);
+    root_ = dvpr::testing_support::FreshTestDir("safe_output");
     fs::create_directories(root_ / "out");
     fs::create_directories(root_ / "elsewhere");
     victim_ = root_ / "elsewhere" / "victim.txt";

@@ -14,6 +14,7 @@
 #include "experiments/data/npy.h"
 #include "experiments/strategies/run_routing.h"
 #include "experiments/strategies/strategy_spec.h"
+#include "tests/test_support.h"
 
 namespace dvpr {
 namespace {
@@ -23,9 +24,7 @@ namespace fs = std::filesystem;
 class CentroidFileTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(DVPR_TEST_TMP) / "run_centroids" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = dvpr::testing_support::FreshTestDir("run_centroids");
     params_.centroids_pattern = (dir_ / "c_n{robots}_r{run}.npy").string();
   }
   // Writes the file of (robots, run): rows x cols, every value 0.5.

@@ -13,6 +13,7 @@
 #include "experiments/strategies/deployment_sample.h"
 #include "experiments/strategies/run_routing.h"
 #include "tests/descriptor_support.h"
+#include "tests/test_support.h"
 
 namespace dvpr {
 namespace {
@@ -34,9 +35,7 @@ const StatelessFamily& Stateless(const RunRouting& r) { return FamilyOf<Stateles
 
 class RunRoutingTest : public ::testing::Test {
  protected:
-  RunRoutingTest() : dir_(fs::path(DVPR_TEST_TMP) / "strategies" / ::testing::UnitTest::GetInstance()->current_test_info()->name()) {
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+  RunRoutingTest() : dir_(dvpr::testing_support::FreshTestDir("strategies")) {
     inputs_.training = &training_;
     inputs_.deployment = &deployment_;
     inputs_.centroids.seed = 1;

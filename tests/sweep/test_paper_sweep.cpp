@@ -79,9 +79,7 @@ class PaperSweepTest : public ::testing::Test {
 
   void SetUp() override {
     // One folder per test: ctest runs the tests of this binary in parallel processes.
-    dir_ = fs::path(DVPR_TEST_TMP) / "paper_sweep" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = dvpr::testing_support::FreshTestDir("paper_sweep");
     data_ = testing_support::KittiEveryTenth(kDim, dir_ / "poses.txt");
     WriteNpy(dir_ / "descriptors.npy", data_.descriptors);
   }

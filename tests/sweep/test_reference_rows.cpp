@@ -15,6 +15,7 @@
 #include "experiments/protocols/inputs.h"
 #include "experiments/sweep/run_sweep.h"
 #include "tests/kitti_every_tenth.h"
+#include "tests/test_support.h"
 
 namespace dvpr {
 namespace {
@@ -24,10 +25,7 @@ namespace fs = std::filesystem;
 class ReferenceRowsTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(DVPR_TEST_TMP) / "reference_rows" /
-           ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = dvpr::testing_support::FreshTestDir("reference_rows");
     const Dataset data = testing_support::KittiEveryTenth(8, dir_ / "poses.txt");
     frames_ = static_cast<int>(data.size());
     // Words from the place: the 20 m grid cells (two grids, offset by 10 m) the frame lies in,

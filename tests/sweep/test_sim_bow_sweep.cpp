@@ -17,6 +17,7 @@
 #include "experiments/protocols/inputs.h"
 #include "experiments/sweep/run_sweep.h"
 #include "tests/kitti_every_tenth.h"
+#include "tests/test_support.h"
 
 namespace dvpr {
 namespace {
@@ -33,9 +34,7 @@ class SimBowSweepTest : public ::testing::Test {
  protected:
   static constexpr int kDim = 16, kRobots = 3;
   void SetUp() override {
-    dir_ = fs::path(DVPR_TEST_TMP) / "sim_bow_sweep" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = dvpr::testing_support::FreshTestDir("sim_bow_sweep");
     const Dataset data = testing_support::KittiEveryTenth(kDim, dir_ / "poses.txt");
     frames_ = static_cast<int>(data.size());
     std::ofstream bow(dir_ / "bow.txt");
