@@ -42,6 +42,8 @@ ConnectivitySnapshot ConnectivityAt(PropagationModel& propagation, int nodes, Si
   s.at = at;
   const Adjacency adj = SymmetricGraph(propagation, nodes, at, s.pairs_in_range);
   const auto n = static_cast<std::size_t>(nodes);
+  s.in_range.resize(n);
+  for (std::size_t i = 0; i < n; ++i) s.in_range[i] = static_cast<int>(adj[i].size());
   std::vector<int> component(n, -1);
   std::vector<int> dist(n);
   std::vector<int> queue;

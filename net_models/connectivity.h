@@ -17,6 +17,7 @@ struct ConnectivitySnapshot {
   int largest_component = 0;  // nodes in the largest
   double mean_hops = 0.0;     // mean shortest-path hops over connected ordered pairs; 0 when none
   int max_hops = 0;           // the longest of those shortest paths; 0 when none
+  std::vector<int> in_range;  // per node: the nodes it and they hear both ways (its degree)
 
   bool connected() const { return components == 1; }
   bool operator==(const ConnectivitySnapshot&) const = default;

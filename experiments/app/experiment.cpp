@@ -38,8 +38,8 @@ void CheckProtocolsAvailable(const ExperimentConfig& config, const std::string& 
 
 // The row files, open as temporaries until every run has been written.
 struct RowFiles {
-  // radio: a network variant is a radio (radio.csv, and the radio columns of per_robot.csv and
-  // messages.csv, result_writers.h).
+  // radio: a network variant is a radio (radio.csv, and the radio columns of per_robot.csv,
+  // messages.csv and queries.csv, result_writers.h).
   RowFiles(const OutputDir& dir, const OutputsConfig& outputs, bool dropouts, bool bow_strategies, bool radio)
       : radio_columns(radio), runs(dir, "runs.csv"), per_robot(dir, "per_robot.csv"), links(dir, "links.csv") {
     runs.stream() << kRunsHeader << '\n';
@@ -47,7 +47,7 @@ struct RowFiles {
     links.stream() << kLinksHeader << '\n';
     if (outputs.queries) {
       queries.emplace(dir, "queries.csv");
-      queries->stream() << kQueriesHeader << '\n';
+      queries->stream() << QueriesHeader(radio) << '\n';
     }
     if (outputs.messages) {
       messages.emplace(dir, "messages.csv");
@@ -76,7 +76,7 @@ struct RowFiles {
     for (const auto& r : out.runs) runs.stream() << CsvRow(r) << '\n';
     for (const auto& r : out.per_robot) per_robot.stream() << CsvRow(r, radio_columns) << '\n';
     for (const auto& r : out.links) links.stream() << CsvRow(r) << '\n';
-    if (queries) for (const auto& r : out.queries) queries->stream() << CsvRow(r) << '\n';
+    if (queries) for (const auto& r : out.queries) queries->stream() << CsvRow(r, radio_columns) << '\n';
     if (messages) for (const auto& r : out.messages) messages->stream() << CsvRow(r, radio_columns) << '\n';
     if (failover) for (const auto& r : out.failover) failover->stream() << CsvRow(r) << '\n';
     if (bow) for (const auto& r : out.bow) bow->stream() << CsvRow(r) << '\n';

@@ -26,14 +26,7 @@ std::string Num(double v) { return std::isnan(v) ? "NaN" : FormatDouble(v); }
 // One colour per radio variant, in variant order (light to dark: short to long ranges).
 constexpr const char* kVariantColours[6] = {"#fdae61", "#f46d43", "#d73027", "#74add1", "#4575b4", "#313695"};
 
-// The legend name of network variant v: its radio label ("range 200m"), else its network name.
-std::string VariantName(const std::vector<RunResult>& rows, int v) {
-  for (const RunResult& r : rows) {
-    if (r.key.network.variant != v || r.key.network.model.empty()) continue;
-    return r.key.network.radio.empty() ? NetworkName(r.key.network) : r.key.network.radio;
-  }
-  return "network variant " + std::to_string(v);
-}
+std::string VariantName(const std::vector<RunResult>& rows, int v) { return RadioLabelOf(rows, v); }
 
 struct Step {
   double time_s = 0;
@@ -42,6 +35,14 @@ struct Step {
 };
 
 }  // namespace
+
+std::string RadioLabelOf(const std::vector<RunResult>& rows, int variant) {
+  for (const RunResult& r : rows) {
+    if (r.key.network.variant != variant || r.key.network.model.empty()) continue;
+    return r.key.network.radio.empty() ? NetworkName(r.key.network) : r.key.network.radio;
+  }
+  return "network variant " + std::to_string(variant);
+}
 
 std::optional<double> RadioRangeMetres(const std::string& radio) {
   constexpr std::string_view kPrefix = "range ";
@@ -253,6 +254,12 @@ std::vector<std::pair<std::string, FigureScript>> RadioFigures(const fs::path& o
   std::string why;
   const CsvTable connectivity = ReadCsvTable(out_dir / "connectivity.csv");
   if (auto f = WriteConnectivityFigure(data_dir, connectivity, rows, why)) out.emplace_back("connectivity", std::move(*f));
+  if (auto f = WriteRobotsInRangeFigure(data_dir, connectivity, rows, why)) {
+    out.emplace_back("robots_in_range", std::move(*f));
+  }
+  if (auto f = WriteRadioHopsFigure(data_dir, ReadCsvTable(out_dir / "radio.csv"), rows, why)) {
+    out.emplace_back("radio_hops", std::move(*f));
+  }
   // One figure per routing of the radio variants (the first is radio_range, the others
   // radio_range_<routing>): lines of two routings in one plot would be twelve.
   std::vector<std::string> routings;

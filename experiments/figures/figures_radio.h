@@ -4,6 +4,12 @@
 //   connectivity.png  from connectivity.csv: the share of the team's pairs in range and the
 //                     number of components over time, one column per team size (every n up to
 //                     three, else the largest), one line per radio variant
+//   robots_in_range.png  from connectivity.csv: each robot's teammates in range over time (a
+//                     heat map, robot by robot) and the number of components, the largest team,
+//                     one panel per radio
+//   radio_hops.png    from radio.csv's delivered_by_hops: the share of delivered copies that
+//                     took 1, 2, ... hops, decentralized beside broadcast, the largest team, one
+//                     panel per radio variant
 //   radio_range.png   from runs.csv, when the sweep has radio variants of two or more ranges:
 //                     bytes on the air per query of decentralized and broadcast, the share of
 //                     queries answered (from queries.csv, when written) and the mean latency,
@@ -19,6 +25,10 @@
 
 namespace dvpr {
 
+// The legend name of network variant `variant` in `rows`: its radio label ("range 200m",
+// "log_distance"), else its network name, else "network variant <v>".
+std::string RadioLabelOf(const std::vector<RunResult>& rows, int variant);
+
 // The range in metres of a radio label ("range 200m", "range 1500mm": NetworkLabel::radio as
 // the sweep writes it); nullopt for anything else (log_distance, "").
 std::optional<double> RadioRangeMetres(const std::string& radio);
@@ -29,6 +39,20 @@ std::optional<double> RadioRangeMetres(const std::string& radio);
 // when the table has no row.
 std::optional<FigureScript> WriteConnectivityFigure(const std::filesystem::path& data_dir, const CsvTable& connectivity,
                                                     const std::vector<RunResult>& rows, std::string& why);
+
+// robots_in_range.png's data (in_range_<p>.dat, one per panel: index 0 "time_s robot
+// robots_in_range", a blank line after each time; index 1 "time_s components") from connectivity.csv's robots_in_range: the largest
+// team's first run and first strategy, one panel per radio (variants that differ only in routing
+// have the same connectivity: the first of them). nullopt (and `why`) without such rows.
+std::optional<FigureScript> WriteRobotsInRangeFigure(const std::filesystem::path& data_dir, const CsvTable& connectivity,
+                                                     const std::vector<RunResult>& rows, std::string& why);
+
+// radio_hops.png's data (hops_<p>.dat, one per panel: "hops decentralized_percent
+// broadcast_percent", each strategy's copies summed over runs; NaN where it delivered none) from
+// radio.csv's delivered_by_hops: the largest team, one panel per radio variant. nullopt (and
+// `why`) without such rows.
+std::optional<FigureScript> WriteRadioHopsFigure(const std::filesystem::path& data_dir, const CsvTable& radio,
+                                                 const std::vector<RunResult>& rows, std::string& why);
 
 // radio_range.png's data (radio_range.dat: per (strategy, n) a block "range_m bytes_per_query
 // answered_percent mean_latency_ms", means over runs, NaN where unknown); `queries` may be empty

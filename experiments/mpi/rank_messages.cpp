@@ -36,7 +36,7 @@ void Fields(LinkRow& r, F&& f) {
 template <typename F>
 void Fields(QueryRow& r, F&& f) {
   f(r.key, r.robot, r.frame, r.sent_ns, r.match_robot, r.match_frame, r.distance, r.latency_ns, r.relevant,
-    r.correct);
+    r.correct, r.hops);
 }
 template <typename F>
 void Fields(MessageRow& r, F&& f) {
@@ -57,11 +57,12 @@ template <typename F> void Fields(BowSizeRow& r, F&& f) { f(r.key, r.payload_byt
 template <typename F>
 void Fields(RadioRow& r, F&& f) {
   f(r.key, r.delivered_copies, r.mean_hops, r.max_hops, r.relay_transmissions, r.relay_bytes, r.held_copies,
-    r.routing_transmissions, r.routing_bytes, r.dropped);
+    r.routing_transmissions, r.routing_bytes, r.dropped, r.delivered_by_hops);
 }
 template <typename F>
 void Fields(ConnectivityRow& r, F&& f) {
-  f(r.key, r.time_ns, r.pairs_in_range, r.components, r.largest_component, r.mean_hops, r.max_hops);
+  f(r.key, r.time_ns, r.pairs_in_range, r.components, r.largest_component, r.mean_hops, r.max_hops,
+    r.robots_in_range);
 }
 template <typename F>
 void Fields(RunOutput& o, F&& f) {

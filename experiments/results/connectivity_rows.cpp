@@ -4,9 +4,21 @@
 
 namespace dvpr {
 
+namespace {
+
+// One field: the robots' counts separated by spaces ("2 1 1"), so a row stays one line of CSV
+// whatever the team size.
+std::string RobotsInRange(const std::vector<int>& counts) {
+  std::string out;
+  for (std::size_t i = 0; i < counts.size(); ++i) out += (i ? " " : "") + std::to_string(counts[i]);
+  return out;
+}
+
+}  // namespace
+
 const char* const kConnectivityHeader =
     "protocol,strategy,robots,run,network_variant,time_s,pairs_in_range,components,largest_component,mean_hops,"
-    "max_hops";
+    "max_hops,robots_in_range";
 
 std::string CsvRow(const ConnectivityRow& r) {
   const RunKey& k = r.key;
@@ -14,7 +26,8 @@ std::string CsvRow(const ConnectivityRow& r) {
   return k.protocol + "," + k.strategy + "," + std::to_string(k.robots) + "," + std::to_string(k.run) + "," +
          std::to_string(k.network.variant) + "," + FormatDouble(static_cast<double>(r.time_ns) / 1e9) + "," +
          std::to_string(r.pairs_in_range) + "," + std::to_string(r.components) + "," +
-         std::to_string(r.largest_component) + "," + FormatDouble(r.mean_hops) + "," + std::to_string(r.max_hops);
+         std::to_string(r.largest_component) + "," + FormatDouble(r.mean_hops) + "," + std::to_string(r.max_hops) +
+         "," + RobotsInRange(r.robots_in_range);
 }
 
 RunConnectivity SummarizeConnectivity(std::span<const ConnectivityRow> rows) {

@@ -21,6 +21,7 @@ struct ConnectivityRow {
   int largest_component = 0;        // robots in the largest
   double mean_hops = 0.0;           // shortest-path hops over connected ordered pairs; 0 when none
   int max_hops = 0;                 // 0 when none
+  std::vector<int> robots_in_range;  // per robot, robot 0 first: the teammates in range both ways
 };
 
 extern const char* const kConnectivityHeader;

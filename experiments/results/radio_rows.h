@@ -4,6 +4,7 @@
 // what the robots relayed for each other, and why the others were lost. Plain data, as results.h.
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "experiments/results/results.h"
 
@@ -26,6 +27,9 @@ struct RadioRow {
   std::int64_t routing_transmissions = 0; // all robots' routing beacons (link_state), sent and forwarded
   std::int64_t routing_bytes = 0;         // and their frame bytes
   std::array<std::int64_t, kRadioDropReasons.size()> dropped{};  // copies lost, by kRadioDropReasons
+  // [k]: the delivered copies that took k + 1 hops, up to max_hops (sums to delivered_copies);
+  // radio.csv's last column, the counts separated by spaces.
+  std::vector<std::int64_t> delivered_by_hops;
 };
 
 }  // namespace dvpr

@@ -69,7 +69,7 @@ const char* const kRadioHeader =
     "protocol,strategy,robots,run,delivered_copies,mean_hops,max_hops,relay_transmissions,relay_bytes,held_copies,"
     "routing_transmissions,routing_bytes,"
     "dropped_queue_full,dropped_loss,dropped_offline,dropped_no_route,dropped_out_of_range,dropped_hop_limit,"
-    "dropped_buffer_full,dropped_expired,dropped_stale_route," DVPR_NETWORK_COLUMNS;
+    "dropped_buffer_full,dropped_expired,dropped_stale_route," DVPR_NETWORK_COLUMNS ",delivered_by_hops";
 #undef DVPR_NETWORK_COLUMNS
 
 std::string NetworkName(const NetworkLabel& n) {
@@ -212,7 +212,11 @@ std::string CsvRow(const RadioRow& r) {
                     std::to_string(r.relay_bytes) + "," + std::to_string(r.held_copies) + "," +
                     std::to_string(r.routing_transmissions) + "," + std::to_string(r.routing_bytes);
   for (const std::int64_t d : r.dropped) out += "," + std::to_string(d);
-  return out + "," + Network(r.key.network);
+  out += "," + Network(r.key.network) + ",";
+  for (std::size_t k = 0; k < r.delivered_by_hops.size(); ++k) {
+    out += (k ? " " : "") + std::to_string(r.delivered_by_hops[k]);
+  }
+  return out;
 }
 
 std::string PerRobotHeader(bool radio) {
@@ -234,6 +238,14 @@ std::string MessagesHeader(bool radio) { return std::string(kMessagesHeader) + (
 std::string CsvRow(const MessageRow& r, bool radio) {
   std::string out = CsvRow(r);
   if (radio) out += "," + std::to_string(r.hops);
+  return out;
+}
+
+std::string QueriesHeader(bool radio) { return std::string(kQueriesHeader) + (radio ? ",hops" : ""); }
+
+std::string CsvRow(const QueryRow& r, bool radio) {
+  std::string out = CsvRow(r);
+  if (radio) out += "," + Opt(r.hops);
   return out;
 }
 

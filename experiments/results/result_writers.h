@@ -41,14 +41,17 @@ extern const char* const kBowSizesHeader;
 std::string CsvRow(const BowRow& r);
 std::string CsvRow(const BowSizeRow& r);
 // When a network variant of the sweep is a radio (docs/network_model.md, "The radio"): radio.csv,
-// and per_robot.csv and messages.csv each gain their radio columns at the end (relay_transmissions
-// and relay_bytes; hops), for every row of the sweep. Without a radio the files are as above.
+// and per_robot.csv, messages.csv and queries.csv each gain their radio columns at the end
+// (relay_transmissions and relay_bytes; hops; hops), for every row of the sweep. Without a radio
+// the files are as above.
 extern const char* const kRadioHeader;
 std::string CsvRow(const RadioRow& r);
 std::string PerRobotHeader(bool radio);
 std::string CsvRow(const RobotLoadRow& r, bool radio);
 std::string MessagesHeader(bool radio);
 std::string CsvRow(const MessageRow& r, bool radio);
+std::string QueriesHeader(bool radio);
+std::string CsvRow(const QueryRow& r, bool radio);
 
 // Whole files at once (tests, small outputs).
 void WriteRunsCsv(const std::filesystem::path& path, const std::vector<RunResult>& rows);

@@ -149,6 +149,11 @@ struct QueryRow {
   std::optional<std::int64_t> latency_ns;
   bool relevant = false;
   bool correct = false;
+  // How far the answer came (experiments/protocols/sim/query_hops.h): the transmissions of the
+  // query's copy that reached the robot whose reply gave the best match, 0 when the robot's own
+  // store gave it, empty when no match came back. A column of queries.csv only when a network
+  // variant is a radio.
+  std::optional<int> hops;
 };
 
 // One row of messages.csv (written when outputs.messages is true): one message and destination.

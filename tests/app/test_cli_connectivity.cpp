@@ -46,13 +46,14 @@ TEST_F(ConnectivityCliTest, HandWorkedLayoutEveryFrame) {
   // Range 200 m. At 0 s: 0-1 (150 m) and 1-2 (150 m) in range, 0-2 (300 m) not: 2 pairs, one
   // component of 3; hops 1 for four ordered pairs and 2 for 0->2 and 2->0: mean 8/6, max 2.
   // At 0.1 s robot 2 is 450 m from robot 1: only 0-1, components {0, 1} and {2}, 1 hop. At 0.2 s
-  // robot 1 is 1000 m out: nobody in range, three components of one, no hops.
+  // robot 1 is 1000 m out: nobody in range, three components of one, no hops. Robots in range,
+  // robot by robot: 1 2 1 (robot 1 hears both), then 1 1 0, then none.
   const std::string run =
-      "0,2,1,3,1.3333333333333333,2\n"
-      "0.1,1,2,2,1,1\n"
-      "0.2,0,3,1,0,0\n";
+      "0,2,1,3,1.3333333333333333,2,1 2 1\n"
+      "0.1,1,2,2,1,1,1 1 0\n"
+      "0.2,0,3,1,0,0,0 0 0\n";
   std::string expected = "protocol,strategy,robots,run,network_variant,time_s,pairs_in_range,components,"
-                         "largest_component,mean_hops,max_hops\n";
+                         "largest_component,mean_hops,max_hops,robots_in_range\n";
   // Only the radio (variant 1) tracks it; spec order: run 0's strategies, then run 1's.
   for (const char* r : {"0", "1"}) {
     for (const char* s : {"decentralized", "broadcast"}) {

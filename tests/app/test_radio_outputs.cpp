@@ -88,7 +88,8 @@ TEST_F(RadioOutputsTest, RadioCsvPerRobotAndMessagesAgree) {
             "protocol,strategy,robots,run,delivered_copies,mean_hops,max_hops,relay_transmissions,relay_bytes,"
             "held_copies,routing_transmissions,routing_bytes,dropped_queue_full,dropped_loss,dropped_offline,"
             "dropped_no_route,dropped_out_of_range,dropped_hop_limit,dropped_buffer_full,dropped_expired,"
-            "dropped_stale_route,network_variant,network_model,bandwidth_bps,latency_ms,loss,network_name");
+            "dropped_stale_route,network_variant,network_model,bandwidth_bps,latency_ms,loss,network_name,"
+            "delivered_by_hops");
   // One row per strategy of the radio variant; the full mesh has none.
   ASSERT_EQ(radio.size(), 2u);
   for (const Row& r : radio) EXPECT_EQ(r.at("network_model"), "radio");
@@ -103,6 +104,7 @@ TEST_F(RadioOutputsTest, RadioCsvPerRobotAndMessagesAgree) {
   // copies and their hops give its delivered_copies, mean and max hops; its dropped copies its
   // drops (every reason's column summed).
   std::map<std::string, long long> relay_tx, relay_bytes, delivered, hops, max_hops, dropped, messages_seen;
+  std::map<std::string, std::map<long long, long long>> by_hops;  // delivered copies by their hops
   for (const Row& r : robots) {
     relay_tx[RunKey(r)] += std::stoll(r.at("relay_transmissions"));
     relay_bytes[RunKey(r)] += std::stoll(r.at("relay_bytes"));
@@ -115,6 +117,7 @@ TEST_F(RadioOutputsTest, RadioCsvPerRobotAndMessagesAgree) {
       ++dropped[key];
     } else if (!m.at("delivered_ns").empty()) {
       ++delivered[key];
+      ++by_hops[key][h];
       hops[key] += h;
       max_hops[key] = std::max(max_hops[key], h);
       if (m.at("network_model") == "point_to_point") {
@@ -134,6 +137,12 @@ TEST_F(RadioOutputsTest, RadioCsvPerRobotAndMessagesAgree) {
     EXPECT_EQ(std::stoll(r.at("delivered_copies")), delivered[key]);
     EXPECT_EQ(std::stoll(r.at("max_hops")), max_hops[key]);
     EXPECT_DOUBLE_EQ(std::stod(r.at("mean_hops")), static_cast<double>(hops[key]) / delivered[key]);
+    // delivered_by_hops: the copies that took 1, 2, ... max_hops hops, as messages.csv counts them.
+    std::string histogram;
+    for (long long h = 1; h <= max_hops[key]; ++h) {
+      histogram += (h > 1 ? " " : "") + std::to_string(by_hops[key][h]);
+    }
+    EXPECT_EQ(r.at("delivered_by_hops"), histogram);
     long long by_reason = 0;
     for (const char* reason :
          {"queue_full", "loss", "offline", "no_route", "out_of_range", "hop_limit", "buffer_full", "expired",
@@ -200,3 +209,81 @@ TEST_F(RadioOutputsTest, LinkStateBeaconsAreTheRobotsRoutingBytes) {
 }
 
 }  // namespace
+
+namespace {
+
+// A query's copies in messages.csv: sent by its robot at its sent_ns on a query channel.
+std::string CopyKey(const Row& r, const std::string& robot) {
+  return r.at("strategy") + "/" + r.at("network_variant") + "/" + robot + "/" + r.at("sent_ns");
+}
+
+}  // namespace
+
+// queries.csv's hops (radio sweeps only): the hops of the query's copy that reached the robot
+// whose reply gave the best match, 0 from the robot's own store, empty without a match. Checked
+// against messages.csv's copies with what each strategy implies, not with the recorder's logic:
+// in broadcast every robot stores only its own frames, so the robot that returned frame F of
+// robot m is m (0 hops when m is the querying robot); in decentralized a query goes to one owner
+// or, when the robot owns the cluster itself, nowhere (0 hops). Variants: 0 the full mesh (every
+// copy one hop), 1 a 100 m radio (copies lost: no reply, no hops), 2 a 200 m radio (relays).
+TEST_F(RadioOutputsTest, QueryHopsAreThoseOfTheCopyThatReachedTheAnsweringRobot) {
+  const fs::path out =
+      Run({"network.routing=shortest_path", "network.radio.range=[100m, 200m]", "outputs.queries=true"});
+  const auto [query_header, queries] = ReadCsv(out / "queries.csv");
+  EXPECT_TRUE(EndsWith(query_header, ",network_name,hops")) << query_header;
+  const auto [message_header, messages] = ReadCsv(out / "messages.csv");
+  std::map<std::string, std::vector<Row>> copies;
+  for (const Row& m : messages) {
+    if (m.at("role") == "query") copies[CopyKey(m, m.at("src"))].push_back(m);
+  }
+  std::map<std::string, int> checked, relayed, lost;
+  for (const Row& q : queries) {
+    const std::string variant = q.at("strategy") + "/" + q.at("network_variant");
+    SCOPED_TRACE(variant + " robot " + q.at("robot") + " frame " + q.at("frame"));
+    const std::vector<Row>& sent = copies[CopyKey(q, q.at("robot"))];
+    if (q.at("match_robot").empty()) {
+      EXPECT_EQ(q.at("hops"), "");
+      continue;
+    }
+    std::string expected;
+    if (q.at("strategy") == "broadcast") {
+      ASSERT_EQ(sent.size(), 3u);  // to the 3 others
+      if (q.at("match_robot") == q.at("robot")) {
+        expected = "0";
+      } else {
+        for (const Row& c : sent) {
+          if (c.at("dst") == q.at("match_robot")) expected = c.at("hops");
+        }
+      }
+    } else {
+      ASSERT_LE(sent.size(), 1u);
+      expected = sent.empty() ? "0" : sent[0].at("hops");
+      if (!sent.empty()) {
+        EXPECT_EQ(sent[0].at("dropped"), "0") << "an answer from an owner the query never reached";
+      }
+    }
+    EXPECT_EQ(q.at("hops"), expected);
+    ++checked[variant];
+    if (q.at("network_variant") == "0") {
+      EXPECT_LE(std::stoi(q.at("hops")), 1);
+    }
+    if (std::stoi(q.at("hops")) >= 2) ++relayed[variant];
+  }
+  // Decentralized queries whose one copy was lost have no match, hence no hops.
+  for (const Row& q : queries) {
+    if (q.at("strategy") != "decentralized") continue;
+    const std::vector<Row>& sent = copies[CopyKey(q, q.at("robot"))];
+    if (sent.size() == 1 && sent[0].at("dropped") == "1") {
+      EXPECT_EQ(q.at("hops"), "");
+      ++lost[q.at("network_variant")];
+    }
+  }
+  for (const char* v : {"decentralized/0", "decentralized/1", "decentralized/2", "broadcast/0", "broadcast/1",
+                        "broadcast/2"}) {
+    EXPECT_GT(checked[v], 0) << v;
+  }
+  EXPECT_GT(relayed["decentralized/2"], 0);
+  EXPECT_GT(relayed["broadcast/2"], 0);
+  EXPECT_GT(lost["1"], 0);
+  EXPECT_EQ(lost["0"], 0);
+}

@@ -115,6 +115,86 @@ TEST_F(RadioFiguresTest, RadioRangeMeansPerStrategyTeamAndRange) {
   EXPECT_EQ(why, "needs radio variants of two or more ranges");
 }
 
+// robots_in_range.png: the largest team's first run and first strategy, one panel per radio
+// (variant 4 repeats variant 1's radio with another routing: not a panel of its own), each robot's
+// count at each time with the time's components.
+TEST_F(RadioFiguresTest, RobotsInRangeShowsEachRobotOfTheLargestTeamPerRadio) {
+  CsvTable t;
+  t.header = {"protocol", "strategy", "robots", "run", "network_variant", "time_s", "pairs_in_range", "components",
+              "largest_component", "mean_hops", "max_hops", "robots_in_range"};
+  t.rows = {{"sim", "decentralized", "2", "0", "1", "0", "1", "1", "2", "1", "1", "1 1"},     // n = 2: not shown
+            {"sim", "decentralized", "3", "1", "1", "0", "2", "1", "3", "1.3333333333333333", "2", "1 2 1"},
+            {"sim", "decentralized", "3", "1", "1", "0.1", "1", "2", "2", "1", "1", "1 1 0"},
+            {"sim", "decentralized", "3", "1", "2", "0", "0", "3", "1", "0", "0", "0 0 0"},
+            {"sim", "decentralized", "3", "1", "4", "0", "3", "1", "3", "1", "1", "2 2 2"},   // routing twin of 1
+            {"sim", "decentralized", "3", "2", "1", "0", "0", "3", "1", "0", "0", "0 0 0"},   // run 2: not shown
+            {"sim", "broadcast", "3", "1", "1", "0", "0", "3", "1", "0", "0", "0 0 0"}};      // same run
+  std::vector<RunResult> rows = Rows();
+  rows.push_back(RadioRun("decentralized", 3, 1, Radio(1, "range 100m"), 1, 1));
+  rows.push_back(RadioRun("decentralized", 3, 1, Radio(4, "range 100m"), 1, 1));
+  rows.back().key.network.routing = "link_state";
+  std::string why;
+  const auto f = WriteRobotsInRangeFigure(dir_, t, rows, why);
+  ASSERT_TRUE(f.has_value()) << why;
+  EXPECT_EQ(Slurp(dir_ / "in_range_0.dat"),
+            "# range 100m: time_s robot robots_in_range\n0 0 1\n0 1 2\n0 2 1\n\n0.1 0 1\n0.1 1 1\n0.1 2 0\n\n"
+            "\n# time_s components\n0 1\n0.1 2\n");
+  EXPECT_EQ(Slurp(dir_ / "in_range_1.dat"),
+            "# range 200m: time_s robot robots_in_range\n0 0 0\n0 1 0\n0 2 0\n\n\n# time_s components\n0 3\n");
+  EXPECT_FALSE(fs::exists(dir_ / "in_range_2.dat"));  // variant 4: the same radio as variant 1
+  EXPECT_NE(f->body.find("set multiplot layout 2,1"), std::string::npos) << f->body;
+  EXPECT_NE(f->body.find("n = 3"), std::string::npos) << f->body;
+  EXPECT_NE(f->body.find("set cbrange [0:2]"), std::string::npos) << f->body;
+  // A count outside the team, or too few counts, is an error naming the file's line.
+  t.rows[2][11] = "1 3 0";
+  t.path = "connectivity.csv";
+  EXPECT_THROW(
+      {
+        try {
+          WriteRobotsInRangeFigure(dir_, t, rows, why);
+        } catch (const std::runtime_error& e) {
+          EXPECT_EQ(std::string(e.what()), "connectivity.csv: line 4: robots_in_range: expected counts from 0 to 2, got '3'");
+          throw;
+        }
+      },
+      std::runtime_error);
+  t.rows[2][11] = "1 1";
+  EXPECT_THROW(WriteRobotsInRangeFigure(dir_, t, rows, why), std::runtime_error);
+  // Without the column (a connectivity.csv of an earlier dvpr) or rows: no figure.
+  t.header.pop_back();
+  EXPECT_FALSE(WriteRobotsInRangeFigure(dir_, t, rows, why).has_value());
+}
+
+// radio_hops.png: per radio variant of the largest team, each strategy's delivered copies by hops,
+// summed over runs, as a share of that strategy's copies.
+TEST_F(RadioFiguresTest, RadioHopsShareOfCopiesPerStrategyAndVariant) {
+  CsvTable t;
+  t.header = {"protocol", "strategy", "robots", "run", "network_variant", "delivered_by_hops"};
+  t.rows = {{"sim", "decentralized", "4", "0", "1", "6 2"},   // run 0: 6 copies of 1 hop, 2 of 2
+            {"sim", "decentralized", "4", "1", "1", "2 0 0 2"},  // run 1: sums 8 2 0 2 = 12
+            {"sim", "broadcast", "4", "0", "1", "3 1"},
+            {"sim", "broadcast", "4", "0", "2", ""},          // nothing delivered: NaN
+            {"sim", "decentralized", "4", "0", "2", "5"},
+            {"sim", "decentralized", "3", "0", "1", "9 9 9"},  // a smaller team: not shown
+            {"sim", "bow_broadcast", "4", "0", "1", "1"}};    // another strategy: not shown
+  std::string why;
+  const auto f = WriteRadioHopsFigure(dir_, t, Rows(), why);
+  ASSERT_TRUE(f.has_value()) << why;
+  // Variant 1: decentralized 8, 2, 0, 2 of 12 (python3: 100 * 8 / 12 = 66.66666666666667,
+  // 100 * 2 / 12 = 16.666666666666668); broadcast 3, 1 of 4 = 75 %, 25 %, then nothing.
+  EXPECT_EQ(Slurp(dir_ / "hops_0.dat"),
+            "# range 100m shortest_path: hops decentralized_percent broadcast_percent\n"
+            "1 66.66666666666667 75\n2 16.666666666666668 25\n3 0 0\n4 16.666666666666668 0\n");
+  EXPECT_EQ(Slurp(dir_ / "hops_1.dat"),
+            "# range 200m shortest_path: hops decentralized_percent broadcast_percent\n1 100 NaN\n");
+  EXPECT_NE(f->body.find("n = 4"), std::string::npos) << f->body;
+  EXPECT_NE(f->body.find("set multiplot layout 1,2"), std::string::npos) << f->body;
+  t.rows[0][5] = "6 -2";
+  EXPECT_THROW(WriteRadioHopsFigure(dir_, t, Rows(), why), std::runtime_error);
+  t.header.back() = "something_else";
+  EXPECT_FALSE(WriteRadioHopsFigure(dir_, t, Rows(), why).has_value());
+}
+
 TEST_F(RadioFiguresTest, DrawnOnlyWhereTheResultsHaveThem) {
   if (!FindProgram("gnuplot")) GTEST_SKIP() << "gnuplot is not installed";
   WriteRunsCsv(dir_ / "runs.csv", Rows());
@@ -122,6 +202,8 @@ TEST_F(RadioFiguresTest, DrawnOnlyWhereTheResultsHaveThem) {
   DrawFigures(dir_, log);
   EXPECT_TRUE(fs::exists(dir_ / "figures" / "radio_range.png")) << log.str();
   EXPECT_FALSE(fs::exists(dir_ / "figures" / "connectivity.png"));  // no connectivity.csv
+  EXPECT_FALSE(fs::exists(dir_ / "figures" / "robots_in_range.png"));
+  EXPECT_FALSE(fs::exists(dir_ / "figures" / "radio_hops.png"));       // no radio.csv
   EXPECT_EQ(log.str().find("connectivity"), std::string::npos) << log.str();  // and no "skipped" line
 }
 

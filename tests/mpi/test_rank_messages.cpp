@@ -48,8 +48,8 @@ RunOutput Sample() {
   o.runs = {r, RunResult{}};
   o.per_robot = {RobotLoadRow{Key(), 4, 10, 20, 30, 0.125, 6}};
   o.links = {LinkRow{Key(), 1, 2, 3, 4, 5, 6, std::nullopt}};
-  o.queries = {QueryRow{Key(), 1, 1559, 155900000000, 0, 12, 0.5, 777, true, false},
-               QueryRow{Key(), 2, 3, 4, std::nullopt, std::nullopt, kNotApplicable, std::nullopt, false, true}};
+  o.queries = {QueryRow{Key(), 1, 1559, 155900000000, 0, 12, 0.5, 777, true, false, 0},
+               QueryRow{Key(), 2, 3, 4, std::nullopt, std::nullopt, kNotApplicable, std::nullopt, false, true, 3}};
   o.messages = {MessageRow{Key(), 10, std::nullopt, 0, 1, "DVPR_QUERY_1", "dvpr.query_t", 547, 600, true, ""}};
   o.curves = {PrCurve{std::string("centralized\0\n,", 14), 10, 0, {0.0, 0.5, 1.0}, {1.0, 0.75, 0.5}}};
   return o;
@@ -103,10 +103,12 @@ TEST(RankMessagesTest, OutputArrivesFieldForFieldAndBitForBit) {
   EXPECT_EQ(o.queries[0].latency_ns, 777);
   EXPECT_TRUE(o.queries[0].relevant);
   EXPECT_FALSE(o.queries[0].correct);
+  EXPECT_EQ(o.queries[0].hops, 0);  // present and zero: answered from its own store
   EXPECT_FALSE(o.queries[1].match_robot.has_value());
   EXPECT_FALSE(o.queries[1].match_frame.has_value());
   EXPECT_FALSE(o.queries[1].latency_ns.has_value());
   EXPECT_TRUE(o.queries[1].correct);
+  EXPECT_EQ(o.queries[1].hops, 3);
   ASSERT_EQ(o.messages.size(), 1u);
   EXPECT_FALSE(o.messages[0].delivered_ns.has_value());
   EXPECT_EQ(o.messages[0].channel, "DVPR_QUERY_1");
@@ -141,7 +143,7 @@ TEST(RankMessagesTest, RoleBytesFailoverAndBowRowsArrive) {
   bow.vote_not_centralized = 3;
   sent.bow = {bow};
   sent.bow_sizes = {BowSizeRow{Key(), 138, 7}};
-  sent.connectivity = {ConnectivityRow{Key(), 300000000, 2, 1, 3, 4.0 / 3.0, 2}};
+  sent.connectivity = {ConnectivityRow{Key(), 300000000, 2, 1, 3, 4.0 / 3.0, 2, {1, 2, 1}}};
 
   const RunOutput o = DecodeOutput(EncodeOutput(0, sent)).output;
   ASSERT_EQ(o.runs.size(), 1u);
@@ -171,6 +173,7 @@ TEST(RankMessagesTest, RoleBytesFailoverAndBowRowsArrive) {
   ASSERT_EQ(o.connectivity.size(), 1u);
   EXPECT_EQ(o.connectivity[0].time_ns, 300000000);
   EXPECT_EQ(o.connectivity[0].largest_component, 3);
+  EXPECT_EQ(o.connectivity[0].robots_in_range, (std::vector<int>{1, 2, 1}));
   EXPECT_EQ(o.connectivity[0].mean_hops, 4.0 / 3.0);  // the double's bits, not a rounded text
   EXPECT_EQ(o.connectivity[0].max_hops, 2);
 }

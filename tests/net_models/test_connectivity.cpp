@@ -26,6 +26,7 @@ TEST(Connectivity, ALineOfFourIsOneComponentThreeHopsLong) {
   EXPECT_EQ(s.max_hops, 3);
   // Ordered pairs: 6 at 1 hop, 4 at 2, 2 at 3: (3*1 + 2*2 + 1*3) * 2 / 12 = 20 / 12.
   EXPECT_DOUBLE_EQ(s.mean_hops, 20.0 / 12.0);
+  EXPECT_EQ(s.in_range, (std::vector<int>{1, 2, 2, 1}));  // the ends have one neighbour
 }
 
 // {0, 1, 2} within 100 m of each other, {3, 4} 50 m apart, the clusters 1 km apart.
@@ -40,6 +41,7 @@ TEST(Connectivity, TwoClustersAreTwoComponents) {
   EXPECT_EQ(s.largest_component, 3);
   EXPECT_EQ(s.max_hops, 1);
   EXPECT_DOUBLE_EQ(s.mean_hops, 1.0);  // 8 ordered pairs, each one hop
+  EXPECT_EQ(s.in_range, (std::vector<int>{2, 2, 2, 1, 1}));
 }
 
 TEST(Connectivity, NobodyInRangeHasNoHops) {
@@ -51,6 +53,7 @@ TEST(Connectivity, NobodyInRangeHasNoHops) {
   EXPECT_EQ(s.largest_component, 1);
   EXPECT_EQ(s.mean_hops, 0.0);
   EXPECT_EQ(s.max_hops, 0);
+  EXPECT_EQ(s.in_range, (std::vector<int>{0, 0, 0}));
   const ConnectivitySnapshot alone = ConnectivityAt(range, 1, SimTime::Zero());
   EXPECT_TRUE(alone.connected());
   EXPECT_EQ(alone.largest_component, 1);

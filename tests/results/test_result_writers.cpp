@@ -185,9 +185,11 @@ TEST(ResultWriters, RadioCsvRow) {
   r.routing_transmissions = 30;
   r.routing_bytes = 1950;
   r.dropped = {0, 0, 1, 2, 3, 0, 4, 6, 7};
+  r.delivered_by_hops = {6, 0, 2};  // 6 x 1 + 2 x 3 = 12 hops
   EXPECT_EQ(CsvRow(r),
             "sim,broadcast,4,1,8,1.5,3,4,2188,5,30,1950,0,0,1,2,3,0,4,6,7,1,radio,1e+07,2,none,"
-            "radio 10 Mbit/s 2 ms range 200m shortest_path");
+            "radio 10 Mbit/s 2 ms range 200m shortest_path,6 0 2");
+  EXPECT_TRUE(std::string(kRadioHeader).ends_with(",network_name,delivered_by_hops"));
   r.delivered_copies = 0;
   r.mean_hops = kNotApplicable;
   EXPECT_EQ(CsvRow(r).substr(0, 22), "sim,broadcast,4,1,0,,3");
@@ -203,6 +205,8 @@ TEST(ResultWriters, RadioColumnsOnlyWithARadio) {
             std::string(kPerRobotHeader) + ",relay_transmissions,relay_bytes,routing_transmissions,routing_bytes");
   EXPECT_EQ(MessagesHeader(false), kMessagesHeader);
   EXPECT_EQ(MessagesHeader(true), std::string(kMessagesHeader) + ",hops");
+  EXPECT_EQ(QueriesHeader(false), kQueriesHeader);
+  EXPECT_EQ(QueriesHeader(true), std::string(kQueriesHeader) + ",hops");
   RobotLoadRow robot;
   robot.relay_transmissions = 3;
   robot.relay_bytes = 1641;
@@ -242,6 +246,13 @@ TEST(ResultWriters, QueryRowEmptyFieldsWhenNoMatch) {
   q.sent_ns = 1700000000;
   q.relevant = true;
   EXPECT_EQ(CsvRow(q), "sim,broadcast,3,0,2,17,1700000000,,,,,1,0,,,,,,");
+  // queries.csv of a radio sweep: hops last, empty when no match came back, 0 from the own store.
+  EXPECT_EQ(CsvRow(q, false), CsvRow(q));
+  EXPECT_EQ(CsvRow(q, true), "sim,broadcast,3,0,2,17,1700000000,,,,,1,0,,,,,,,");
+  q.hops = 0;
+  EXPECT_EQ(CsvRow(q, true), "sim,broadcast,3,0,2,17,1700000000,,,,,1,0,,,,,,,0");
+  q.hops = 3;
+  EXPECT_EQ(CsvRow(q, true), "sim,broadcast,3,0,2,17,1700000000,,,,,1,0,,,,,,,3");
 }
 
 TEST(ResultWriters, AtomicWriteLeavesNoTemporary) {

@@ -33,6 +33,10 @@ SimRunParams ToSimParams(const ExperimentConfig& c, const RunSpec& spec) {
   s.start_utime = c.start_utime;
   p.evaluation.gt_radius_m = c.evaluation.radius_m;
   p.outputs.record_messages = c.outputs.messages;
+  p.outputs.hop_counts = s.network.model == LinkModelKind::kRadio;  // radio.csv
+  // queries.csv has its hops column when a variant of the sweep is a radio, for every row.
+  p.outputs.query_hops = c.outputs.queries && std::count(c.network.model.begin(), c.network.model.end(),
+                                                         LinkModelKind::kRadio) > 0;
   // One step per frame period, as the robots move between frames (FrameStream::TimeOf(1)).
   if (c.outputs.connectivity && s.network.model == LinkModelKind::kRadio) {
     p.outputs.connectivity_step = SimTime::Nanos(std::llround(1e9 / c.dataset.fps));
@@ -62,6 +66,7 @@ RadioRow RadioRowOf(const RunKey& key, const SimRunLog& log) {
     row.mean_hops = static_cast<double>(routes.delivered_hops) / static_cast<double>(routes.delivered);
   }
   row.max_hops = routes.max_hops;
+  row.delivered_by_hops = log.delivered_by_hops;
   row.held_copies = static_cast<std::int64_t>(routes.held);
   for (const NodeCounters& s : log.senders) {
     row.relay_transmissions += static_cast<std::int64_t>(s.relay_transmissions);
@@ -127,6 +132,7 @@ void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLo
       if (q.latency) row.latency_ns = q.latency->ns();
       row.relevant = s.truth.relevant[i];
       row.correct = s.truth.correct[i];
+      if (i < log.query_hops.size()) row.hops = log.query_hops[i];
       out.queries.push_back(row);
     }
   }
@@ -144,7 +150,7 @@ void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLo
   }
   for (const ConnectivitySnapshot& c : log.connectivity) {
     out.connectivity.push_back(ConnectivityRow{key, c.at.ns(), c.pairs_in_range, c.components, c.largest_component,
-                                               c.mean_hops, c.max_hops});
+                                               c.mean_hops, c.max_hops, c.in_range});
   }
 }
 

@@ -9,9 +9,11 @@
 
 #include "agents/algorithms/ids.h"
 #include "experiments/protocols/sim/event_log_recorder.h"
+#include "experiments/protocols/sim/hop_counts.h"
 #include "experiments/protocols/sim/message_roles.h"
 #include "experiments/protocols/sim/message_rows.h"
 #include "experiments/protocols/sim/pose_oracle.h"
+#include "experiments/protocols/sim/query_hops.h"
 #include "experiments/evaluation/metrics.h"
 #include "experiments/results/lcm_log/lcm_event_log.h"
 
@@ -20,11 +22,17 @@ namespace dvpr {
 namespace {
 
 // What a run records of its network: its bytes by role always; as the outputs ask,
-// messages.csv rows and an LCM event log. Subscribed to the scenario's network before it runs.
+// messages.csv rows, the queries' hops and an LCM event log. Subscribed to the scenario's
+// network before it runs.
 struct RunRecorders {
   RunRecorders(Network& network, const SimRunParams& params)
       : roles(network.nodes()), roles_subscription(network.Subscribe(roles)) {
     if (params.outputs.record_messages) rows_subscription = network.Subscribe(rows);
+    if (params.outputs.hop_counts) hop_counts_subscription = network.Subscribe(hop_counts);
+    if (params.outputs.query_hops) {
+      query_hops = std::make_unique<QueryHopsRecorder>();
+      query_hops_subscription = network.Subscribe(*query_hops);
+    }
     if (!params.outputs.lcm_log.empty()) {
       event_log_file = std::make_unique<LcmEventLogWriter>(params.outputs.lcm_log);
       event_log = std::make_unique<EventLogRecorder>(*event_log_file, params.scenario.start_utime);
@@ -35,6 +43,10 @@ struct RunRecorders {
   ObserverSubscription roles_subscription;
   MessageRowRecorder rows;
   ObserverSubscription rows_subscription;
+  HopCountRecorder hop_counts;
+  ObserverSubscription hop_counts_subscription;
+  std::unique_ptr<QueryHopsRecorder> query_hops;
+  ObserverSubscription query_hops_subscription;
   std::unique_ptr<LcmEventLogWriter> event_log_file;
   std::unique_ptr<EventLogRecorder> event_log;
   ObserverSubscription event_log_subscription;
@@ -94,6 +106,7 @@ SimRunLog Harvest(const Scenario& scenario, const RunRecorders& recorders) {
       log.verify_requested += q.verify_requested ? 1 : 0;
       log.verify_accepted += q.verify_accepted.value_or(false) ? 1 : 0;
       log.queries.push_back(q);
+      if (recorders.query_hops) log.query_hops.push_back(recorders.query_hops->HopsOf(q));
     }
   }
   network.ForEachPair([&](NodeId src, NodeId dst, const LinkCounters& c) {
@@ -101,6 +114,7 @@ SimRunLog Harvest(const Scenario& scenario, const RunRecorders& recorders) {
   });
   for (int s = 0; s < log.robots; ++s) log.senders.push_back(network.Sender(NodeId(s)));
   log.routes = network.Routes();
+  log.delivered_by_hops = recorders.hop_counts.by_hops();
   log.roles = recorders.roles.Run();
   log.has_roles = true;
   log.messages = recorders.rows.Rows();

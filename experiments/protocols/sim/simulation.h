@@ -30,6 +30,8 @@ struct SimRunParams {
   } evaluation;
   struct Outputs {
     bool record_messages = false;         // keep one MessageRow per message and destination
+    bool query_hops = false;              // SimRunLog::query_hops (query_hops.h)
+    bool hop_counts = false;              // SimRunLog::delivered_by_hops (hop_counts.h)
     std::filesystem::path lcm_log;        // non-empty: write every delivered message there
     // Positive: after the run, ask the network's propagation who reaches whom at 0, step,
     // 2 step, ... up to the last frame's capture time (SimRunLog::connectivity).
@@ -58,10 +60,12 @@ struct PairTraffic {
 struct SimRunLog {
   int robots = 0;
   std::vector<QueryRecord> queries;       // robot by robot, frames in order
+  std::vector<std::optional<int>> query_hops;  // when outputs.query_hops: per query, as query_hops.h says
   std::vector<RobotLoad> loads;           // per robot
   std::vector<PairTraffic> links;         // the pairs that carried a message, by source, then destination
   std::vector<NodeCounters> senders;      // per robot: transmissions it put on the medium
   RouteCounters routes;                   // hops of the delivered copies, dropped ones by reason
+  std::vector<std::int64_t> delivered_by_hops;  // when outputs.hop_counts: [k] copies delivered after k + 1 hops
   RunRoleBytes roles;                     // the run's bytes by message role
   bool has_roles = false;                 // roles and links[].roles were counted (simulated networks)
   std::vector<MessageRow> messages;       // when record_messages
