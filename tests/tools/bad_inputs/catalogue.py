@@ -500,6 +500,50 @@ def later_keys_cases():
     ]
 
 
+RADIO = ("network.model=radio", "network.routing=shortest_path")
+
+
+def radio_cases():
+    """Issue 33's radio: ranges, routing, store-and-forward's hold sizes, a propagation model given
+    another's keys, a radio whose positions cannot be read, radio keys without a radio."""
+    return [
+        Case("g18", "network.radio.range = 0m", ("network.radio.range", "(0m"), sets=S(*RADIO, "network.radio.range=0m")),
+        Case("g19", "network.radio.range = -5m", ("network.radio.range", "-5m"),
+             sets=S(*RADIO, "network.radio.range=-5m")),
+        Case("g20", "network.radio.range = .nan", ("network.radio.range", ".nan"),
+             sets=S(*RADIO, "network.radio.range=.nan")),
+        Case("g21", "network.radio.range = 200 (no unit)", ("network.radio.range", "unit"),
+             sets=S(*RADIO, "network.radio.range=200")),
+        Case("g22", "network.routing = flooding (unknown)", ("network.routing", "flooding"),
+             sets=S("network.model=radio", "network.routing=flooding")),
+        Case("g23", "link_state routing with hello = 0s", ("network.routing.hello",),
+             sets=S("network.model=radio", "network.routing={kind: link_state, hello: 0s}")),
+        Case("g24", "store_and_forward hold_bytes = 0B", ("network.disconnected.hold_bytes", "0B"),
+             sets=S(*RADIO, "network.disconnected={kind: store_and_forward, hold_bytes: 0B}")),
+        Case("g25", "store_and_forward hold_bytes = 2048GiB (above 1024GiB)", ("network.disconnected.hold_bytes",),
+             sets=S(*RADIO, "network.disconnected={kind: store_and_forward, hold_bytes: 2048GiB}")),
+        Case("g26", "store_and_forward hold_bytes = -1MB", ("network.disconnected.hold_bytes", "-1MB"),
+             sets=S(*RADIO, "network.disconnected={kind: store_and_forward, hold_bytes: -1MB}")),
+        Case("g27", "store_and_forward hold_time = 0s", ("network.disconnected.hold_time",),
+             sets=S(*RADIO, "network.disconnected={kind: store_and_forward, hold_time: 0s}")),
+        Case("g28", "propagation log_distance given a range", ("network.radio.range", "log_distance"),
+             sets=S(*RADIO, "network.radio={propagation: log_distance, range: 200m}")),
+        Case("g29", "propagation range given log_distance keys", ("network.radio.log_distance",),
+             sets=S(*RADIO, "network.radio={propagation: range, log_distance: {exponent: 3}}")),
+        Case("g30", "log_distance sensitivity_dbm = .nan", ("network.radio.log_distance.sensitivity_dbm",),
+             sets=S(*RADIO, "network.radio={propagation: log_distance, log_distance: {sensitivity_dbm: .nan}}")),
+        Case("g31", "a radio whose pose file has a NaN (a position that cannot be known)", ("poses.txt", "NaN"),
+             sets=RADIO, edit=set_key("poses", "poses.txt"),
+             files=spoil("poses.txt", poses_with(300, 9, lambda t: t[:3] + ["nan"] + t[4:]))),
+        Case("g32", "network.radio without model radio", ("network.radio", "model radio"),
+             sets=S("network.radio={range: 200m}")),
+        Case("g33", "routing shortest_path without model radio", ("network.routing", "model radio"),
+             sets=S("network.routing=shortest_path")),
+        Case("g34", "outputs.connectivity without model radio", ("outputs.connectivity", "radio"),
+             sets=S("outputs.connectivity=true")),
+    ]
+
+
 def checks_before_work_cases():
     """Issue 31: configs that would make a run meaningless or too large, refused before it starts."""
     return [
@@ -603,4 +647,4 @@ def hostile_cases():
 
 def catalogue():
     return quantities() + yaml_structure() + files_cases() + robots_cases() + cli_cases() + \
-        result_folder_cases() + later_keys_cases() + checks_before_work_cases() + hostile_cases()
+        result_folder_cases() + later_keys_cases() + radio_cases() + checks_before_work_cases() + hostile_cases()
