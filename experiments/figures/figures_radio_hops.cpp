@@ -85,7 +85,7 @@ std::optional<FigureScript> WriteRadioHopsFigure(const fs::path& dir, const CsvT
                        " (radio.csv delivered_by_hops, all runs: every delivered copy of every message)")
        << " font ',13'\n"
        << "set style data histograms\nset style histogram clustered gap 1\nset style fill solid 0.85 border -1\n"
-       << "set boxwidth 0.9\nset grid ytics\nset yrange [0:100]\nset xlabel 'hops'\nset ylabel '% of delivered copies'\n"
+       << "set boxwidth 0.9\nset grid ytics\nset yrange [0:118]\nset ytics 0, 20, 100\nset xlabel 'hops'\nset ylabel '% of delivered copies'\n"
        << "set key top right\n";
   int p = 0;
   for (const auto& [variant, by_strategy] : counts) {
