@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
+#include <utility>
 
 #include "experiments/figures/figure_style.h"
 #include "experiments/figures/gnuplot_text.h"
@@ -48,12 +50,36 @@ std::string Block(const std::string& title, const std::vector<std::pair<double, 
   return s + "\n\n";
 }
 
+// A block whose lines carry more columns: a value and its spread (x y dy, x y dx dy, x y low high).
+std::string Block(const std::string& title, const std::vector<std::vector<double>>& lines) {
+  std::string s = "# " + OneLineText(title) + "\n";
+  for (const std::vector<double>& line : lines) {
+    for (std::size_t i = 0; i < line.size(); ++i) s += (i ? " " : "") + FormatDouble(line[i]);
+    s += "\n";
+  }
+  return s + "\n\n";
+}
+
+// The lowest and highest broadcast / decentralized ratio of one run (the runs of one index share
+// their seed). The ratio of the means lies between them: it is the runs' ratios weighted by
+// decentralized's bytes.
+std::pair<double, double> RatioRange(const TrafficCell& broadcast, const TrafficCell& decentralized) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto& [run, b] : broadcast.pr_bytes_by_run) {
+    const auto d = decentralized.pr_bytes_by_run.find(run);
+    if (d == decentralized.pr_bytes_by_run.end()) continue;
+    lo = std::min(lo, b / d->second);
+    hi = std::max(hi, b / d->second);
+  }
+  return {lo, hi};
+}
+
 // Left panel of figure 1: bytes per query of both methods and the law, on network v.
 std::string PrBytesPanel(const fs::path& dir, const TrafficTable& t, int v, const std::vector<int>& robots) {
   std::string dat;
   for (const char* s : {"decentralized", "broadcast"}) {
-    std::vector<std::pair<double, double>> p;
-    for (int n : robots) p.emplace_back(n, t.Find(s, v, n)->pr_bytes_per_query);
+    std::vector<std::vector<double>> p;
+    for (int n : robots) p.push_back({static_cast<double>(n), t.Find(s, v, n)->pr_bytes_per_query, t.Find(s, v, n)->pr_bytes_ci95});
     dat += Block(s, p);
   }
   std::vector<std::pair<double, double>> law;
@@ -64,14 +90,14 @@ std::string PrBytesPanel(const fs::path& dir, const TrafficTable& t, int v, cons
   const double ratio = t.Find("broadcast", v, n)->pr_bytes_per_query / t.Find("decentralized", v, n)->pr_bytes_per_query;
   std::ostringstream s;
   s << "set title " << GnuplotTitle({"Place-recognition bytes per query (query + reply, every copy)",
-                                    NetworkName(*t.Network(v)) + ", mean over runs"})
+                                    NetworkName(*t.Network(v)) + ", mean over runs, bars: its 95 % confidence interval"})
     << "\nset xlabel 'robots n'\nset ylabel 'wire bytes per query'\nset logscale y\n"
     << Xtics(t.robots) << "set key at graph 0.02, graph 0.84 left top\n"
     << "set label 1 " << GnuplotTitle({"measured at n = " + std::to_string(n) + ": broadcast / decentralized = " +
                                            FormatDouble(ratio, 1), "(n - 1 = " + std::to_string(n - 1) + ")"})
     << " at graph 0.03, graph 0.93 left front\n"
-    << "plot 'pr_bytes.dat' index 0 using 1:2 with linespoints lw 2 pt 7 " << Colour(t, "decentralized")
-    << " title 'decentralized (one owner)', \\\n     '' index 1 using 1:2 with linespoints lw 2 pt 5 "
+    << "plot 'pr_bytes.dat' index 0 using 1:2:3 with yerrorlines lw 2 pt 7 " << Colour(t, "decentralized")
+    << " title 'decentralized (one owner)', \\\n     '' index 1 using 1:2:3 with yerrorlines lw 2 pt 5 "
     << Colour(t, "broadcast") << " title 'broadcast (n - 1 robots)', \\\n     '' index 2 using 1:2 with lines lw 1.5 dt 2 "
     << "lc rgb '#333333' title 'n - 1 law: (n - 1) x decentralized'\nunset label 1\nunset logscale y\n";
   return s.str();
@@ -85,20 +111,27 @@ std::string PrRatioPanel(const fs::path& dir, const TrafficTable& t) {
   int block = 0;
   for (std::size_t i = 0; i < t.networks.size(); ++i) {
     const int v = t.networks[i].variant;
-    std::vector<std::pair<double, double>> p;
+    std::vector<std::vector<double>> p;
     for (int n : CommonRobots(t, {"decentralized", "broadcast"}, v)) {
-      p.emplace_back(n, t.Find("broadcast", v, n)->pr_bytes_per_query / t.Find("decentralized", v, n)->pr_bytes_per_query);
+      const TrafficCell& b = *t.Find("broadcast", v, n);
+      const TrafficCell& d = *t.Find("decentralized", v, n);
+      const auto [lo, hi] = RatioRange(b, d);
+      const double ratio = b.pr_bytes_per_query / d.pr_bytes_per_query;
+      // Without a run of one index in both strategies there is no per-run ratio: no bar.
+      p.push_back({static_cast<double>(n), ratio, std::isfinite(lo) ? lo : ratio, std::isfinite(hi) ? hi : ratio});
     }
     if (p.empty()) continue;
     dat += Block(NetworkName(t.networks[i]), p);
-    plot << ", \\\n     'pr_ratio.dat' index " << block++ << " using 1:2 with linespoints lw 1.5 lc rgb '#222222' dt "
+    plot << ", \\\n     'pr_ratio.dat' index " << block++ << " using 1:2:3:4 with yerrorlines lw 1.5 lc rgb '#222222' dt "
          << NetworkDash(i) << " pt " << NetworkPoint(i) << " title " << Quote(NetworkName(t.networks[i]));
   }
   for (int n : t.robots) band += std::to_string(n) + " " + std::to_string(n - 1) + " " + std::to_string(n + 1) + "\n";
   WriteFileAtomic(dir / "pr_ratio.dat", dat);
   WriteFileAtomic(dir / "pr_band.dat", band);
   // The ratio rises from bottom left to top right: the key sits in the empty top left.
-  return "set title 'Broadcast / decentralized place-recognition bytes, every network'\nset ylabel 'ratio'\n"
+  return "set title " + GnuplotTitle({"Broadcast / decentralized place-recognition bytes, every network",
+                                       "ratio of the means over runs, bars: lowest and highest run"}) +
+         "\nset ylabel 'ratio'\n"
          "set key top left\n" + plot.str() + "\n";
 }
 
@@ -143,14 +176,14 @@ std::string RolePanel(const fs::path& dir, const TrafficTable& t, int v, std::si
   for (int n : t.robots) {
     const TrafficCell* c = t.Find(s, v, n);
     if (c == nullptr) continue;
-    dat += std::to_string(n);
-    for (int r : roles) dat += " " + FormatDouble(c->role_bytes_per_query[static_cast<std::size_t>(r)]);
-    dat += "\n";
     const auto& b = c->role_bytes_per_query;
     pr = b[0] + b[1];
     verify = b[2] + b[3];
     total = 0;
     for (double x : b) total += x;
+    dat += std::to_string(n);
+    for (int r : roles) dat += " " + FormatDouble(b[static_cast<std::size_t>(r)]);
+    dat += " " + FormatDouble(total) + " " + FormatDouble(c->total_bytes_ci95) + "\n";
   }
   const std::string file = "roles_" + std::to_string(i) + ".dat";
   WriteFileAtomic(dir / file, dat);
@@ -166,6 +199,10 @@ std::string RolePanel(const fs::path& dir, const TrafficTable& t, int v, std::si
       << " lc rgb '" << figure_style::kRoleColours[r] << "' "
       << (key ? "title " + Quote(kMessageRoleNames[r]) : std::string("notitle"));
   }
+  // The total's confidence interval over the stack: the bars of a histogram stand at x = 0, 1, ...
+  // (drawn as vectors: yerrorbars also put a point on each bar top in a histogram's fill style).
+  p << ", \\\n     " << Quote(file) << " using 0:($" << roles.size() + 2 << "-$" << roles.size() + 3 << "):(0):(2*$" << roles.size() + 3
+    << ") with vectors heads size 0.1,90 lw 1.2 lc rgb '#000000' " << (key ? "title '95 % CI of the total'" : "notitle");
   return p.str() + "\nunset label 1\n";
 }
 
@@ -182,7 +219,7 @@ std::optional<FigureScript> WriteRoleFigure(const fs::path& dir, const TrafficTa
         any = true;
         double sum = 0;
         for (double b : c->role_bytes_per_query) sum += b;
-        ymax = std::max(ymax, sum);
+        ymax = std::max(ymax, sum + c->total_bytes_ci95);
       }
     }
     if (any) shown.push_back(i);
@@ -193,9 +230,10 @@ std::optional<FigureScript> WriteRoleFigure(const fs::path& dir, const TrafficTa
   }
   const std::vector<int> roles = RolesSent(t, v);
   std::ostringstream s;
-  s << "set multiplot layout 1," << shown.size() << " margins 0.07,0.98,0.2,0.86 spacing 0.04 title "
-    << Quote("All traffic per query by message role (offered wire bytes of every copy), " + NetworkName(*t.Network(v)) +
-             ", mean over runs") << " font ',13'\n"
+  s << "set multiplot layout 1," << shown.size() << " margins 0.07,0.98,0.2,0.84 spacing 0.04 title "
+    << GnuplotTitle({"All traffic per query by message role (offered wire bytes of every copy), " +
+                         NetworkName(*t.Network(v)),
+                     "mean over runs, bars: the total's 95 % confidence interval"}) << " font ',13'\n"
     << "set style data histograms\nset style histogram rowstacked\nset style fill solid 0.9 border rgb '#333333'\n"
     << "set boxwidth 0.75\nset grid ytics\nset xlabel 'robots n'\nset yrange [0:" << FormatDouble(ymax * 1.12) << "]\n";
   for (std::size_t k = 0; k < shown.size(); ++k) {
@@ -359,20 +397,24 @@ std::string OfferedPanel(const fs::path& dir, const TrafficTable& t, const std::
   int block = 0;
   for (const std::string& s : t.strategies) {
     for (std::size_t i : shared) {
-      std::vector<std::pair<double, double>> p;
+      std::vector<std::vector<double>> p;
       for (int n : t.robots) {
-        if (const TrafficCell* c = t.Find(s, t.networks[i].variant, n)) p.emplace_back(c->offered_mbps, c->delivered_mbps);
+        if (const TrafficCell* c = t.Find(s, t.networks[i].variant, n)) {
+          p.push_back({c->offered_mbps, c->delivered_mbps, c->offered_ci95, c->delivered_ci95});
+        }
       }
       if (p.empty()) continue;
       const std::string title = s + ", " + NetworkName(t.networks[i]);
       dat += Block(title, p);
-      plot << ", \\\n     'offered.dat' index " << block++ << " using 1:2 with linespoints lw 2 " << Colour(t, s)
+      plot << ", \\\n     'offered.dat' index " << block++ << " using 1:2:3:4 with xyerrorlines lw 2 " << Colour(t, s)
            << " dt " << NetworkDash(i) << " pt " << NetworkPoint(i) << " title " << Quote(title);
     }
   }
   WriteFileAtomic(dir / "offered.dat", dat);
-  return "set title 'Offered vs delivered load (points: n = " + std::to_string(t.robots.front()) + " .. " +
-         std::to_string(t.robots.back()) + ")'\nset xlabel 'offered load, every copy sent [Mbit/s]'\n"
+  return "set title " + GnuplotTitle({"Offered vs delivered load (points: n = " + std::to_string(t.robots.front()) +
+                                       " .. " + std::to_string(t.robots.back()) + ")",
+                                       "mean over runs, bars: its 95 % confidence interval"}) +
+         "\nset xlabel 'offered load, every copy sent [Mbit/s]'\n"
          "set ylabel 'delivered load [Mbit/s]'\nset logscale xy\nset key top left\n" +  // delivered <= offered: empty
          plot.str() + "\n";
 }
@@ -384,12 +426,12 @@ std::string LatencyPanel(const fs::path& dir, const TrafficTable& t, const std::
   plot << "plot ";
   int block = 0;
   for (const std::string& s : t.strategies) {
-    std::vector<std::pair<double, double>> p;
+    std::vector<std::vector<double>> p;
     for (std::size_t i : shared) {
       const TrafficCell* c = t.Find(s, t.networks[i].variant, n);
       if (c == nullptr) continue;
       const double mbps = t.networks[i].bandwidth_bps / 1e6;
-      p.emplace_back(mbps, c->latency_ms);
+      p.push_back({mbps, c->latency_ms, c->latency_ci95});
       const double fraction = c->delivered_mbps / c->offered_mbps;
       if (fraction < 0.99) {
         saturated += FormatDouble(mbps) + " " + FormatDouble(c->latency_ms) + " \"" + FormatDouble(100 * fraction, 0) +
@@ -398,7 +440,7 @@ std::string LatencyPanel(const fs::path& dir, const TrafficTable& t, const std::
     }
     if (p.empty()) continue;
     dat += Block(s, p);
-    plot << (block ? ", \\\n     " : "") << "'latency.dat' index " << block << " using 1:2 with linespoints lw 2 pt 7 "
+    plot << (block ? ", \\\n     " : "") << "'latency.dat' index " << block << " using 1:2:3 with yerrorlines lw 2 pt 7 "
          << Colour(t, s) << " title " << Quote(s);
     ++block;
   }
@@ -408,8 +450,9 @@ std::string LatencyPanel(const fs::path& dir, const TrafficTable& t, const std::
     plot << ", \\\n     'saturated.dat' using 1:2 with points pt 6 ps 3 lw 2 lc rgb '#000000' title "
             "'saturated: under 99% of copies delivered', '' using 1:2:3 with labels left offset 1.5,0.6 font ',9' notitle";
   }
-  return "set title 'Mean query latency vs bandwidth at n = " + std::to_string(n) +
-         "'\nset xlabel 'bandwidth of the shared medium [Mbit/s]'\nset ylabel 'mean query latency [ms]'\n"
+  return "set title " + GnuplotTitle({"Mean query latency vs bandwidth at n = " + std::to_string(n),
+                                       "mean over runs, bars: its 95 % confidence interval"}) +
+         "\nset xlabel 'bandwidth of the shared medium [Mbit/s]'\nset ylabel 'mean query latency [ms]'\n"
          "set logscale xy\nset key bottom left\n" + plot.str() + "\n";  // latency falls with bandwidth
 }
 

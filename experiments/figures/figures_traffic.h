@@ -21,14 +21,24 @@
 
 namespace dvpr {
 
-// Means over the runs of one (strategy, network variant, n) of protocol sim.
+// Means over the runs of one (strategy, network variant, n) of protocol sim, and their spread:
+// the half-width of each mean's 95 % confidence interval (Student's t over the runs, spread.h;
+// 0 below 2 runs, where there is no spread to draw).
 struct TrafficCell {
   int runs = 0;
   double pr_bytes_per_query = 0;  // PlaceRecognitionBytesPerQuery
   std::array<double, kMessageRoles> role_bytes_per_query{};  // offered wire bytes of every copy
   double offered_mbps = 0;        // offered wire bytes of every copy x 8 / duration
   double delivered_mbps = 0;
-  double latency_ms = 0;
+  double latency_ms = 0;          // a run without a latency counts 0, as in the mean
+  double pr_bytes_ci95 = 0;
+  double total_bytes_ci95 = 0;    // of the sum of role_bytes_per_query
+  double offered_ci95 = 0;
+  double delivered_ci95 = 0;
+  double latency_ci95 = 0;
+  // Each run's PlaceRecognitionBytesPerQuery by run index: the strategies' runs of one index
+  // share their seed, so the broadcast / decentralized ratio has a value per run (its spread).
+  std::map<int, double> pr_bytes_by_run;
 };
 
 struct TrafficTable {

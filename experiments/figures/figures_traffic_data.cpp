@@ -11,6 +11,7 @@
 #include "experiments/figures/figures_traffic.h"
 #include "experiments/results/protocol_traits.h"
 #include "experiments/results/result_writers.h"
+#include "experiments/results/spread.h"
 
 namespace dvpr {
 
@@ -22,11 +23,22 @@ double Role(const RunResult& r, MessageRole role) {
   return static_cast<double>(r.roles->copies[static_cast<std::size_t>(role)].wire);
 }
 
+// One cell's per-run values, in the rows' order, for their spread.
+struct CellRuns {
+  std::vector<double> pr_bytes, total_bytes, offered, delivered, latency;
+};
+
+double HalfWidth(const std::vector<double>& values) {
+  const double ci95 = SpreadOf(values).ci95;
+  return std::isnan(ci95) ? 0.0 : ci95;
+}
+
 }  // namespace
 
 TrafficTable TabulateTraffic(const std::vector<RunResult>& rows) {
   TrafficTable t;
   std::map<int, NetworkLabel> variants;
+  std::map<std::tuple<std::string, int, int>, CellRuns> runs;
   for (const RunResult& r : rows) {
     if (std::find(t.strategies.begin(), t.strategies.end(), r.key.strategy) == t.strategies.end()) {
       t.strategies.push_back(r.key.strategy);
@@ -34,16 +46,30 @@ TrafficTable TabulateTraffic(const std::vector<RunResult>& rows) {
     if (!IsSimWithRoles(r) || r.queries <= 0) continue;
     variants.emplace(r.key.network.variant, r.key.network);
     if (std::find(t.robots.begin(), t.robots.end(), r.key.robots) == t.robots.end()) t.robots.push_back(r.key.robots);
-    TrafficCell& c = t.cells[{r.key.strategy, r.key.network.variant, r.key.robots}];
+    const std::tuple<std::string, int, int> key{r.key.strategy, r.key.network.variant, r.key.robots};
+    TrafficCell& c = t.cells[key];
+    CellRuns& v = runs[key];
     const double q = static_cast<double>(r.queries);
     ++c.runs;
-    c.pr_bytes_per_query += PlaceRecognitionBytesPerQuery(r);
-    for (int i = 0; i < kMessageRoles; ++i) c.role_bytes_per_query[static_cast<std::size_t>(i)] += Role(r, MessageRole(i)) / q;
+    const double pr = PlaceRecognitionBytesPerQuery(r);
+    c.pr_bytes_per_query += pr;
+    v.pr_bytes.push_back(pr);
+    c.pr_bytes_by_run[r.key.run] = pr;
+    double all = 0;
+    for (int i = 0; i < kMessageRoles; ++i) {
+      const double b = Role(r, MessageRole(i)) / q;
+      c.role_bytes_per_query[static_cast<std::size_t>(i)] += b;
+      all += b;
+    }
+    v.total_bytes.push_back(all);
     CopyBytes total;
     for (const CopyBytes& b : r.roles->copies) total += b;
-    c.offered_mbps += static_cast<double>(total.wire) * 8e-6 / r.duration_s;
-    c.delivered_mbps += static_cast<double>(total.delivered_wire) * 8e-6 / r.duration_s;
-    c.latency_ms += std::isnan(r.mean_latency_ms) ? 0.0 : r.mean_latency_ms;
+    v.offered.push_back(static_cast<double>(total.wire) * 8e-6 / r.duration_s);
+    v.delivered.push_back(static_cast<double>(total.delivered_wire) * 8e-6 / r.duration_s);
+    v.latency.push_back(std::isnan(r.mean_latency_ms) ? 0.0 : r.mean_latency_ms);
+    c.offered_mbps += v.offered.back();
+    c.delivered_mbps += v.delivered.back();
+    c.latency_ms += v.latency.back();
   }
   for (auto& [key, c] : t.cells) {
     const double n = c.runs;
@@ -52,6 +78,12 @@ TrafficTable TabulateTraffic(const std::vector<RunResult>& rows) {
     c.offered_mbps /= n;
     c.delivered_mbps /= n;
     c.latency_ms /= n;
+    const CellRuns& v = runs.at(key);
+    c.pr_bytes_ci95 = HalfWidth(v.pr_bytes);
+    c.total_bytes_ci95 = HalfWidth(v.total_bytes);
+    c.offered_ci95 = HalfWidth(v.offered);
+    c.delivered_ci95 = HalfWidth(v.delivered);
+    c.latency_ci95 = HalfWidth(v.latency);
   }
   for (const auto& [index, label] : variants) t.networks.push_back(label);
   std::sort(t.robots.begin(), t.robots.end());

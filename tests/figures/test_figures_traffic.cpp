@@ -1,7 +1,12 @@
 // The traffic figures (figures_traffic.h): the numbers they plot, from hand-made runs.csv rows
 // with bytes by role, and which figures are drawn for which configs. Pixels are not tested.
+#include <cmath>
 #include <filesystem>
+#include <map>
+#include <numbers>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -81,13 +86,61 @@ TEST_F(TrafficFigures, PlaceRecognitionRatioOnEveryNetwork) {
   std::string why;
   const auto f = WritePlaceRecognitionFigure(dir_, t, why);
   ASSERT_TRUE(f.has_value()) << why;
-  // Point-to-point: 21 / 6.5 = 3.230769230769231; shared medium 21 / 7 = 3 (python3 agrees).
+  // Point-to-point: 21 / 6.5 = 3.230769230769231 (python3 agrees); its runs: only run 0 has both
+  // strategies, 21 / 7 = 3, so the bar is [3, 3]. Shared medium: 21 / 7 = 3.
   EXPECT_EQ(Slurp(dir_ / "pr_ratio.dat"),
-            "# point-to-point 10 Mbit/s 2 ms\n4 3.230769230769231\n\n\n"
-            "# shared medium 100 Mbit/s 2 ms\n4 3\n\n\n");
-  EXPECT_EQ(Slurp(dir_ / "pr_bytes.dat"),
-            "# decentralized\n4 6.5\n\n\n# broadcast\n4 21\n\n\n# n - 1 law\n4 19.5\n\n\n");
+            "# point-to-point 10 Mbit/s 2 ms\n4 3.230769230769231 3 3\n\n\n"
+            "# shared medium 100 Mbit/s 2 ms\n4 3 3 3\n\n\n");
+  // x, mean, 95 % half-width: decentralized's runs 7 and 6 bytes a query have std sqrt(1/2), and
+  // t(0.975, 1) = tan(0.475 pi) (one degree of freedom is the Cauchy law), so the half-width is
+  // tan(0.475 pi) sqrt(1/2) / sqrt(2) = 6.3531023680873...; broadcast has one run: 0.
+  std::istringstream bytes(Slurp(dir_ / "pr_bytes.dat"));
+  std::string line;
+  std::vector<std::string> lines;
+  while (std::getline(bytes, line)) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 12u);
+  EXPECT_EQ(lines[0], "# decentralized");
+  std::istringstream first(lines[1]);
+  double n = 0, mean = 0, half = 0;
+  first >> n >> mean >> half;
+  EXPECT_EQ(n, 4);
+  EXPECT_EQ(mean, 6.5);
+  EXPECT_NEAR(half, std::tan(0.475 * std::numbers::pi) * 0.5, 1e-12);
+  EXPECT_EQ(lines[4], "# broadcast");
+  EXPECT_EQ(lines[5], "4 21 0");
+  EXPECT_EQ(lines[8], "# n - 1 law");
+  EXPECT_EQ(lines[9], "4 19.5");
   EXPECT_NE(f->body.find("broadcast / decentralized = 3.2"), std::string::npos) << f->body;
+  EXPECT_NE(f->body.find("bars: its 95 % confidence interval"), std::string::npos) << f->body;
+  EXPECT_NE(f->body.find("bars: lowest and highest run"), std::string::npos) << f->body;
+}
+
+// Every mean the traffic figures draw carries the half-width of its 95 % confidence interval.
+TEST_F(TrafficFigures, EachMeanHasItsConfidenceInterval) {
+  const TrafficTable t = TabulateTraffic(Rows());
+  const double t1 = std::tan(0.475 * std::numbers::pi);  // t(0.975, 1)
+  const TrafficCell* d = t.Find("decentralized", 0, 4);
+  ASSERT_NE(d, nullptr);
+  // Two runs a and b: std |a - b| / sqrt(2), half-width t1 |a - b| / 2.
+  EXPECT_NEAR(d->pr_bytes_ci95, t1 * 0.5, 1e-12);          // 7 and 6 bytes a query
+  EXPECT_NEAR(d->total_bytes_ci95, t1 * 0.5, 1e-12);       // 17 and 16 bytes a query
+  EXPECT_NEAR(d->offered_ci95, t1 * 0.04e-3, 1e-15);       // 1.36e-3 and 1.28e-3 Mbit/s
+  EXPECT_NEAR(d->delivered_ci95, t1 * 0.04e-3, 1e-15);     // all delivered
+  EXPECT_EQ(d->latency_ci95, 0.0);                         // 5 ms both
+  EXPECT_EQ(d->pr_bytes_by_run, (std::map<int, double>{{0, 7.0}, {1, 6.0}}));
+  const TrafficCell* b = t.Find("broadcast", 0, 4);
+  ASSERT_NE(b, nullptr);
+  EXPECT_EQ(b->pr_bytes_ci95, 0.0);  // one run: no spread to draw
+  // The stacked bars' data ends with the total and its half-width.
+  std::string why;
+  ASSERT_TRUE(WriteRoleFigure(dir_, t, why).has_value()) << why;
+  std::istringstream roles(Slurp(dir_ / "roles_0.dat"));
+  std::vector<double> fields;
+  for (double x = 0; roles >> x;) fields.push_back(x);
+  // n, query 5.5, reply 1, verify_request 10, total 16.5, half-width.
+  ASSERT_EQ(fields.size(), 6u);
+  EXPECT_EQ(fields[4], 16.5);
+  EXPECT_NEAR(fields[5], t1 * 0.5, 1e-12);
 }
 
 TEST_F(TrafficFigures, SaturatedPointsAreMarked) {
