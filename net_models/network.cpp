@@ -1,7 +1,9 @@
 #include "net_models/network.h"
 
 #include <algorithm>
+#include <iterator>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "sim/simulator.h"
@@ -125,9 +127,30 @@ void Network::SetOffline(NodeId node, SimTime from, SimTime until) {
   offline_until_[static_cast<std::size_t>(node.value)] = until;
 }
 
+void Network::SetTalkWindows(NodeId node, std::vector<TalkWindow> windows) {
+  CheckNode(node, "SetTalkWindows");
+  for (std::size_t i = 0; i < windows.size(); ++i) {
+    if (!(windows[i].from < windows[i].until) || (i > 0 && windows[i].from < windows[i - 1].until)) {
+      throw std::invalid_argument("Network::SetTalkWindows: node " + std::to_string(node.value) + ": window " +
+                                  std::to_string(i) + " is empty or not after the one before it");
+    }
+  }
+  if (talk_windows_.empty()) talk_windows_.resize(static_cast<std::size_t>(nodes_));
+  talk_windows_[static_cast<std::size_t>(node.value)] = std::move(windows);
+}
+
+bool Network::InTalkWindow(NodeId node, SimTime at) const {
+  if (talk_windows_.empty()) return true;
+  const std::vector<TalkWindow>& w = talk_windows_[static_cast<std::size_t>(node.value)];
+  if (w.empty()) return true;
+  // The last window that opens at or before `at`: it is the only one that can hold it.
+  const auto it = std::upper_bound(w.begin(), w.end(), at, [](SimTime t, const TalkWindow& x) { return t < x.from; });
+  return it != w.begin() && at < std::prev(it)->until;
+}
+
 bool Network::IsOnline(NodeId node, SimTime at) const {
   const auto i = static_cast<std::size_t>(node.value);
-  return at < offline_from_[i] || at >= offline_until_[i];
+  return (at < offline_from_[i] || at >= offline_until_[i]) && InTalkWindow(node, at);
 }
 
 ObserverSubscription Network::Subscribe(NetworkObserver& observer) {
@@ -391,7 +414,12 @@ void Network::Retry(NodeId node) {
 LinkModel::MediumUse Network::TransmitFrom(NodeId src, SimTime now, NodeCounters& sender, bool routed) {
   outcomes_.resize(dsts_.size());
   if (!IsOnline(src, now)) {
-    std::fill(outcomes_.begin(), outcomes_.end(), LinkDelivery{now, DropReason::kOffline});
+    // Outside its talk window a store-and-forward sender keeps what it has (routed traffic: a
+    // link-local beacon is for the neighbours of the moment, not worth keeping).
+    const bool keeps = routed && StoreAndForward() && !InTalkWindow(src, now) &&
+                       (now < offline_from_[static_cast<std::size_t>(src.value)] ||
+                        now >= offline_until_[static_cast<std::size_t>(src.value)]);
+    std::fill(outcomes_.begin(), outcomes_.end(), LinkDelivery{now, keeps ? DropReason::kNoRoute : DropReason::kOffline});
     return {};
   }
   const LinkModel::MediumUse use = TransmitRouted(LinkTransmission{src, dsts_, now, frames_}, routed);

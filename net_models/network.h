@@ -48,6 +48,13 @@ namespace dvpr {
 class Simulator;
 class Network;
 
+// An interval [from, until) of virtual time in which a node can talk (Network::SetTalkWindows).
+struct TalkWindow {
+  SimTime from;
+  SimTime until;
+  bool operator==(const TalkWindow&) const = default;
+};
+
 // What a node receives.
 struct ReceivedMessage {
   NodeId src;
@@ -167,6 +174,12 @@ class Network {
   // Node is offline during [from, until): what it sends in that interval and
   // what arrives for it then is dropped (DropReason::kOffline) and counted.
   void SetOffline(NodeId node, SimTime from, SimTime until = SimTime::Max());
+  // Node talks only inside these windows [from, until) (Swarm-SLAM's connectivity schedule): outside
+  // them it is offline as above, except that with store_and_forward what it sends or holds there
+  // waits in its buffer for its next window (its routing finds no way out: kNoRoute) - a robot
+  // that cannot talk keeps its data, as the holders of a disconnected radio do. Windows ascending,
+  // disjoint, from < until; throws std::invalid_argument otherwise. No windows: always talks.
+  void SetTalkWindows(NodeId node, std::vector<TalkWindow> windows);
   bool IsOnline(NodeId node, SimTime at) const;
 
   // --- sending ------------------------------------------------------------
@@ -274,6 +287,8 @@ class Network {
   std::vector<NetworkEndpoint*> endpoints_;
   std::vector<SimTime> offline_from_;
   std::vector<SimTime> offline_until_;
+  std::vector<std::vector<TalkWindow>> talk_windows_;  // by node; empty until the first window is set
+  bool InTalkWindow(NodeId node, SimTime at) const;
 
   // A copy on its way: where to, the node it arrives at next (dst, or a relay), its number
   // (MessageCopy::copy), the transmissions it has made (the one under way included), when it
