@@ -28,6 +28,7 @@
 
 #include "agents/agent_params.h"
 #include "agents/routing/failure_detector.h"
+#include "experiments/config/talk_schedule.h"
 #include "experiments/data/synthetic.h"
 #include "experiments/data/synthetic_bow.h"
 #include "experiments/evaluation/ground_truth.h"
@@ -120,6 +121,10 @@ struct NetworkConfig {
   // models reach every robot in one hop and route direct (a routing for them is refused).
   std::vector<RoutingEntry> routing{RoutingEntry{}};
   DisconnectedParams disconnected;             // network.disconnected, for every variant (radio only)
+  // network.schedule (talk_schedule.h): the file, and its windows by robot; every variant, every
+  // model. A window of a robot outside a team applies to the teams that have that robot.
+  std::optional<std::filesystem::path> schedule;
+  std::vector<ScheduledWindow> windows;
   bool operator==(const NetworkConfig&) const = default;
 };
 

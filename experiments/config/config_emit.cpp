@@ -197,6 +197,7 @@ void EmitNetwork(YAML::Emitter& out, const NetworkConfig& n) {
         << YAML::Key << "hold_bytes" << YAML::Value << ToString(n.disconnected.hold_bytes)
         << YAML::Key << "hold_time" << YAML::Value << FormatDuration(n.disconnected.hold_time) << YAML::EndMap;
   }
+  if (n.schedule) out << YAML::Key << "schedule" << YAML::Value << n.schedule->string();
   out << YAML::EndMap;
 }
 

@@ -235,7 +235,7 @@ NetworkConfig ReadNetwork(const Field& f) {
   NetworkConfig n;
   if (!f.present()) return n;
   f.ExpectMap({"model", "bandwidth", "latency", "queue_packets", "mtu", "loss", "links", "radio", "routing",
-               "disconnected"});
+               "disconnected", "schedule"});
   if (auto c = f.Child("model"); c.present()) {
     n.model = ReadList<LinkModelKind>(c, [](const Field& i) { return i.Named(ParseLinkModelKind); });
   }
@@ -275,6 +275,14 @@ NetworkConfig ReadNetwork(const Field& f) {
       c.Fail("applies to model radio, which network.model does not list (only a radio loses its routes)");
     }
     n.disconnected = ReadDisconnected(c);
+  }
+  if (const Field c = f.Child("schedule"); c.present()) {
+    n.schedule = c.ExistingFile();
+    try {
+      n.windows = ReadTalkSchedule(*n.schedule);
+    } catch (const std::invalid_argument& e) {
+      c.Fail(e.what());
+    }
   }
   return n;
 }

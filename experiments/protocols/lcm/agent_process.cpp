@@ -103,6 +103,10 @@ void CheckTeamSize(std::int64_t robots, std::int64_t frames) {
 }
 
 void CheckRealNetwork(const ExperimentConfig& config, const std::string& origin) {
+  if (config.network.schedule) {
+    throw std::invalid_argument(origin + ": network.schedule: talk windows are simulated only (dvpr run); "
+                                "a launched team's agents do not emulate them");
+  }
   EmulatedRange::CheckConfig(config, origin);
 }
 

@@ -94,6 +94,7 @@ Scenario::Scenario(const Dataset& data, const ScenarioParams& params, const Agen
 void Scenario::Run() {
   for (auto& daemon : daemons_) daemon->Start();
   for (auto& agent : agents_) agent->Start();
+  for (const auto& w : params_.talk_windows) network_.SetTalkWindows(NodeId(w.robot.value), w.windows);
   for (const auto& d : params_.dropouts) {
     network_.SetOffline(NodeId(d.robot.value), d.at);
     TeamAgent* agent = agents_[static_cast<std::size_t>(d.robot.value)].get();

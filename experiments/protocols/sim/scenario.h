@@ -30,6 +30,12 @@ struct RobotDropout {
   SimTime at;  // from this time on the robot is offline
 };
 
+// The robot talks only inside its windows (Network::SetTalkWindows), ascending and disjoint.
+struct RobotTalkWindows {
+  RobotId robot;
+  std::vector<TalkWindow> windows;
+};
+
 // The physics of a run, nothing about evaluation or outputs.
 struct ScenarioParams {
   int robots = 2;
@@ -37,6 +43,7 @@ struct ScenarioParams {
   AgentParams agent;
   NetworkModelParams network;
   std::vector<RobotDropout> dropouts;
+  std::vector<RobotTalkWindows> talk_windows;  // robots not named talk all the time
   std::int64_t start_utime = 0;  // virtual time 0 in microseconds since 1970 (messages' utime)
   // Throws std::invalid_argument naming the field: fewer than 2 robots, more robots than frames
   // or than int16 robot ids, descriptors wider than query_t's int16 dim, a trajectory without a

@@ -30,6 +30,14 @@ SimRunParams ToSimParams(const ExperimentConfig& c, const RunSpec& spec) {
   for (const Dropout& d : c.dropout) {
     if (d.robot < spec.robots) s.dropouts.push_back({RobotId(d.robot), d.at});
   }
+  // So do the talk windows (network.schedule; ReadTalkSchedule sorted them by robot and start).
+  for (const ScheduledWindow& w : c.network.windows) {
+    if (w.robot >= spec.robots) continue;
+    if (s.talk_windows.empty() || s.talk_windows.back().robot != RobotId(w.robot)) {
+      s.talk_windows.push_back({RobotId(w.robot), {}});
+    }
+    s.talk_windows.back().windows.push_back(w.window);
+  }
   s.start_utime = c.start_utime;
   p.evaluation.gt_radius_m = c.evaluation.radius_m;
   p.outputs.record_messages = c.outputs.messages;

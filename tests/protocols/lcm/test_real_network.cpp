@@ -47,5 +47,13 @@ TEST(RealNetworkTest, WhatARealTeamCannotEmulateIsRefusedNamingTheKey) {
             "use drop");
 }
 
+TEST(RealNetworkTest, TalkWindowsAreRefusedOnEveryModel) {
+  ExperimentConfig c;
+  c.network.schedule = "/somewhere/windows.csv";
+  c.network.windows = {ScheduledWindow{0, TalkWindow{SimTime::Seconds(1), SimTime::Seconds(2)}}};
+  EXPECT_EQ(ErrorOf(c), "my.yaml: network.schedule: talk windows are simulated only (dvpr run); a launched team's "
+                        "agents do not emulate them");
+}
+
 }  // namespace
 }  // namespace dvpr
