@@ -265,7 +265,8 @@ TEST_F(HostileNamesTest, PlotQuotesTheFieldsOfAnEditedRunsCsv) {
   }
   EXPECT_NE(Slurp(data / "place_recognition_bytes.gp")
                 .find("set title 'Place-recognition bytes per query (query + reply, every copy)'.\"\\n\"."
-                      "'p2p `touch PWNED` ''m'' \\x1B\\xC3 10 Mbit/s 2 ms $(touch PWNED) \"l\" loss, mean over runs'\n"),
+                      "'p2p `touch PWNED` ''m'' \\x1B\\xC3 10 Mbit/s 2 ms $(touch PWNED) \"l\" loss, mean over runs, "
+                      "bars: its 95 % confidence interval'\n"),
             std::string::npos);
   for (const std::string& name : Names(data)) {
     if (!name.ends_with(".gp")) continue;
