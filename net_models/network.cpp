@@ -148,10 +148,12 @@ bool Network::InTalkWindow(NodeId node, SimTime at) const {
   return it != w.begin() && at < std::prev(it)->until;
 }
 
-bool Network::IsOnline(NodeId node, SimTime at) const {
+bool Network::DroppedOut(NodeId node, SimTime at) const {
   const auto i = static_cast<std::size_t>(node.value);
-  return (at < offline_from_[i] || at >= offline_until_[i]) && InTalkWindow(node, at);
+  return offline_from_[i] <= at && at < offline_until_[i];
 }
+
+bool Network::IsOnline(NodeId node, SimTime at) const { return !DroppedOut(node, at) && InTalkWindow(node, at); }
 
 ObserverSubscription Network::Subscribe(NetworkObserver& observer) {
   observers_.push_back(&observer);
@@ -416,9 +418,7 @@ LinkModel::MediumUse Network::TransmitFrom(NodeId src, SimTime now, NodeCounters
   if (!IsOnline(src, now)) {
     // Outside its talk window a store-and-forward sender keeps what it has (routed traffic: a
     // link-local beacon is for the neighbours of the moment, not worth keeping).
-    const bool keeps = routed && StoreAndForward() && !InTalkWindow(src, now) &&
-                       (now < offline_from_[static_cast<std::size_t>(src.value)] ||
-                        now >= offline_until_[static_cast<std::size_t>(src.value)]);
+    const bool keeps = routed && StoreAndForward() && !InTalkWindow(src, now) && !DroppedOut(src, now);
     std::fill(outcomes_.begin(), outcomes_.end(), LinkDelivery{now, keeps ? DropReason::kNoRoute : DropReason::kOffline});
     return {};
   }

@@ -289,6 +289,7 @@ class Network {
   std::vector<SimTime> offline_until_;
   std::vector<std::vector<TalkWindow>> talk_windows_;  // by node; empty until the first window is set
   bool InTalkWindow(NodeId node, SimTime at) const;
+  bool DroppedOut(NodeId node, SimTime at) const;  // inside [offline_from_, offline_until_) (SetOffline)
 
   // A copy on its way: where to, the node it arrives at next (dst, or a relay), its number
   // (MessageCopy::copy), the transmissions it has made (the one under way included), when it
