@@ -10,6 +10,8 @@ namespace {
 // Runs this many ahead are prefetched while one is summed: a run of a common word is about 55
 // postings (7 cache lines), summed in about as long as a read from memory takes.
 constexpr std::size_t kRunsAhead = 8;
+// A search asks again for the postings of the run this many ahead of the one it sums.
+constexpr std::size_t kSearchAhead = 4;
 // Word starts are looked up this many words ahead.
 constexpr std::size_t kStartsAhead = 32;
 
@@ -89,7 +91,12 @@ BowPostings::Best BowPostings::Search(std::int32_t query, int window, std::span<
   std::int32_t* const touched = scratch.touched_.data();
   std::int32_t* last = touched;
   const auto sum = [&](auto track) {
-    for (const Run& run : runs) {
+    const std::size_t count = runs.size();
+    for (std::size_t k = 0; k < count; ++k) {
+      // The query's postings were read once (AppendRuns), but the searches of a batch's other
+      // assignments push them out of the first-level caches: ask for a run a few ahead again.
+      if (k + kSearchAhead < count) PrefetchRun(runs[k + kSearchAhead].begin, runs[k + kSearchAhead].end);
+      const Run& run = runs[k];
       const float q = run.weight;
       const Posting* const end = run.end;  // a local: through `run`, every store to sums reloaded it
       for (const Posting* p = run.begin; p != end; ++p) {

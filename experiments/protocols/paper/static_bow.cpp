@@ -1,6 +1,7 @@
 #include "experiments/protocols/paper/static_bow.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <exception>
 #include <optional>
@@ -280,34 +281,44 @@ void BowEvaluator::EvaluateBatch(const std::vector<std::size_t>& batch,
 }
 
 BowRunResult BowEvaluator::EvaluatePlanned(const std::string& name, int robots) const {
-  std::shared_future<BowRunResult> result;
-  std::vector<std::size_t> batch;
-  std::vector<std::promise<BowRunResult>> promises;
-  {
-    const std::lock_guard lock(shared_mutex_);
-    const auto it = std::find_if(planned_.begin(), planned_.end(), [&](const Planned& p) {
-      return p.assignment.name == name && p.assignment.robots == robots;
-    });
-    if (it == planned_.end()) {
-      throw std::logic_error("BowEvaluator::EvaluatePlanned: " + name + " at n = " + std::to_string(robots) +
-                             " was not planned");
-    }
-    if (!it->started) {  // this one and the next planned ones not started yet
-      // The batch's owners side by side take 2 bytes per word and assignment: at most 32 MB.
-      const auto per_assignment = 2 * static_cast<std::size_t>(std::max(bow_.vocabulary, 1));
-      const std::size_t most = std::clamp<std::size_t>((std::size_t{32} << 20) / per_assignment, 1, kBatch);
-      for (auto p = it; p != planned_.end() && batch.size() < most; ++p) {
-        if (p->started) continue;
-        p->started = true;
-        promises.emplace_back();
-        p->result = promises.back().get_future().share();
-        batch.push_back(static_cast<std::size_t>(p - planned_.begin()));
+  for (;;) {
+    std::shared_future<BowRunResult> result;
+    std::vector<std::size_t> batch;
+    std::vector<std::promise<BowRunResult>> promises;
+    {
+      const std::lock_guard lock(shared_mutex_);
+      const auto it = std::find_if(planned_.begin(), planned_.end(), [&](const Planned& p) {
+        return p.assignment.name == name && p.assignment.robots == robots;
+      });
+      if (it == planned_.end()) {
+        throw std::logic_error("BowEvaluator::EvaluatePlanned: " + name + " at n = " + std::to_string(robots) +
+                               " was not planned");
+      }
+      result = it->result;
+      // Not started: this one and the next planned ones not started yet. Under way in another
+      // thread: rather than wait, the next ones not started (the sweep's threads share the
+      // evaluations instead of one computing while the others wait). Each result is its own
+      // whichever batch computed it (BowPostingsTest), so the outputs do not depend on this.
+      const bool mine = !it->started;
+      const bool ready = it->started && result.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+      auto from = mine ? it : std::find_if(planned_.begin(), planned_.end(), [](const Planned& p) { return !p.started; });
+      if (!ready && from != planned_.end()) {
+        // The batch's owners side by side take 2 bytes per word and assignment: at most 32 MB.
+        const auto per_assignment = 2 * static_cast<std::size_t>(std::max(bow_.vocabulary, 1));
+        const std::size_t most = std::clamp<std::size_t>((std::size_t{32} << 20) / per_assignment, 1, kBatch);
+        for (auto p = from; p != planned_.end() && batch.size() < most; ++p) {
+          if (p->started) continue;
+          p->started = true;
+          promises.emplace_back();
+          p->result = promises.back().get_future().share();
+          batch.push_back(static_cast<std::size_t>(p - planned_.begin()));
+        }
+        if (mine) result = it->result;
       }
     }
-    result = it->result;
+    if (batch.empty()) return result.get();  // a copy: the caller sets its run's key
+    EvaluateBatch(batch, promises);
   }
-  if (!batch.empty()) EvaluateBatch(batch, promises);
-  return result.get();  // a copy: the caller sets its run's key
 }
 
 BowRunResult BowEvaluator::EvaluateShared(const WordOwners& owners, const std::string& name) const {

@@ -64,7 +64,7 @@ class BowEvaluator {
   // Assignments evaluated together by EvaluatePlanned: each query's postings are read from memory
   // once for all of them, while the batch's owners are held (2 MB each at a vocabulary of 10^6;
   // fewer assignments a batch when the vocabulary is larger, so they stay within 32 MB).
-  static constexpr std::size_t kBatch = 8;
+  static constexpr std::size_t kBatch = 16;
 
   // `paper` gives the deployment, ground truth and R; `bow` one vector per frame (kept by reference).
   BowEvaluator(const PaperEvaluator& paper, const BowData& bow);
@@ -84,7 +84,9 @@ class BowEvaluator {
   // assignments do not depend on the run (BowRouting takes none), so the runs of one n ask for
   // the same one. The first request evaluates it with the next planned ones not yet started,
   // kBatch in all (EvaluateMany). Safe to call from several threads; a call that finds its
-  // evaluation under way waits for it. Throws std::logic_error when (name, robots) is not planned.
+  // evaluation under way in another thread evaluates the next planned ones not started instead
+  // of waiting (so the sweep's threads share the evaluations), and waits only when none are left.
+  // Throws std::logic_error when (name, robots) is not planned.
   BowRunResult EvaluatePlanned(const std::string& name, int robots) const;
   // Evaluate without its curve, computed once per (name, owners) and then copied, for owners not
   // planned. Safe to call from several threads, as EvaluatePlanned.
