@@ -13,6 +13,7 @@
 
 #include "experiments/figures/figures.h"
 #include "experiments/protocols/inputs.h"
+#include "experiments/results/protocol_traits.h"
 #include "experiments/results/result_folder.h"
 #include "experiments/results/result_writers.h"
 #include "experiments/results/spread.h"
@@ -40,7 +41,9 @@ void CheckProtocolsAvailable(const ExperimentConfig& config, const std::string& 
 struct RowFiles {
   // radio: a network variant is a radio (radio.csv, and the radio columns of per_robot.csv,
   // messages.csv and queries.csv, result_writers.h).
-  RowFiles(const OutputDir& dir, const OutputsConfig& outputs, bool dropouts, bool bow_strategies, bool radio)
+  // teams: the sweep runs a team (closure_pairs.csv).
+  RowFiles(const OutputDir& dir, const OutputsConfig& outputs, bool dropouts, bool bow_strategies, bool radio,
+           bool teams)
       : radio_columns(radio), runs(dir, "runs.csv"), per_robot(dir, "per_robot.csv"), links(dir, "links.csv") {
     runs.stream() << kRunsHeader << '\n';
     per_robot.stream() << PerRobotHeader(radio) << '\n';
@@ -71,6 +74,10 @@ struct RowFiles {
       radio_rows.emplace(dir, "radio.csv");
       radio_rows->stream() << kRadioHeader << '\n';
     }
+    if (teams) {
+      closure_pairs.emplace(dir, "closure_pairs.csv");
+      closure_pairs->stream() << kClosurePairsHeader << '\n';
+    }
   }
   void Write(const RunOutput& out) {
     for (const auto& r : out.runs) runs.stream() << CsvRow(r) << '\n';
@@ -83,6 +90,7 @@ struct RowFiles {
     if (bow_sizes) for (const auto& r : out.bow_sizes) bow_sizes->stream() << CsvRow(r) << '\n';
     if (radio_rows) for (const auto& r : out.radio) radio_rows->stream() << CsvRow(r) << '\n';
     if (connectivity) for (const auto& r : out.connectivity) connectivity->stream() << CsvRow(r) << '\n';
+    if (closure_pairs) for (const auto& r : out.closure_pairs) closure_pairs->stream() << CsvRow(r) << '\n';
   }
   void Commit() {
     runs.Commit();
@@ -95,10 +103,11 @@ struct RowFiles {
     if (bow_sizes) bow_sizes->Commit();
     if (radio_rows) radio_rows->Commit();
     if (connectivity) connectivity->Commit();
+    if (closure_pairs) closure_pairs->Commit();
   }
   bool radio_columns;
   AtomicFile runs, per_robot, links;
-  std::optional<AtomicFile> queries, messages, failover, bow, bow_sizes, radio_rows, connectivity;
+  std::optional<AtomicFile> queries, messages, failover, bow, bow_sizes, radio_rows, connectivity, closure_pairs;
 };
 
 // synthetic_bow's vectors are made while the inputs load (hours at its largest parameters): a
@@ -149,7 +158,11 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
   const bool bow = std::any_of(config.sweep.strategies.begin(), config.sweep.strategies.end(),
                                [](const StrategySpec& s) { return s.bag_of_words(); });
   const bool radio = std::count(config.network.model.begin(), config.network.model.end(), LinkModelKind::kRadio) > 0;
-  RowFiles files(folder.output(), config.outputs, !config.dropout.empty() && config.failover.enabled, bow, radio);
+  // closure_pairs.csv when a team runs (inter-robot loop closures).
+  const bool teams = std::any_of(config.sweep.protocols.begin(), config.sweep.protocols.end(),
+                                 [](const std::string& p) { return p == kSimProtocol || p == kLcmProtocol; });
+  RowFiles files(folder.output(), config.outputs, !config.dropout.empty() && config.failover.enabled, bow, radio,
+                 teams);
   std::vector<RunResult> rows;
   std::vector<PrCurve> curves;
   std::vector<RunConnectivity> connectivity;  // one per simulated run that tracked it, in spec order

@@ -4,7 +4,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 #include <unordered_map>
+
+#include "experiments/evaluation/metrics.h"
 
 namespace dvpr {
 
@@ -72,24 +76,109 @@ class PositionGrid {
 }  // namespace
 
 OnlineTruth ComputeOnlineTruth(const std::vector<QueryRecord>& queries, const Positions& positions,
-                               const std::vector<SimTime>& capture_time, double radius_m, int window) {
+                               const std::vector<SimTime>& capture_time, const std::vector<RobotId>& taker,
+                               double radius_m, int window) {
+  if (taker.size() != capture_time.size() || static_cast<Eigen::Index>(taker.size()) != positions.rows()) {
+    throw std::invalid_argument("ComputeOnlineTruth: " + std::to_string(positions.rows()) + " positions, " +
+                                std::to_string(capture_time.size()) + " capture times and " +
+                                std::to_string(taker.size()) + " takers");
+  }
   const double r2 = radius_m * radius_m;
   const PositionGrid grid(positions, radius_m);
   OnlineTruth truth;
   truth.relevant.resize(queries.size());
   truth.correct.resize(queries.size());
+  truth.query_class.resize(queries.size(), QueryClass::kNotRelevant);
   for (std::size_t q = 0; q < queries.size(); ++q) {
     const Eigen::Index i = queries[q].frame.value;
     const SimTime t = capture_time[static_cast<std::size_t>(i)];
+    const RobotId robot = taker[static_cast<std::size_t>(i)];
+    bool other = false;  // a true match another robot took
     if (queries[q].best) {
-      truth.correct[q] = SquaredDistance(positions, i, queries[q].best->frame.value) < r2;
+      const Eigen::Index m = queries[q].best->frame.value;
+      truth.correct[q] = SquaredDistance(positions, i, m) < r2;
+      other = truth.correct[q] && taker[static_cast<std::size_t>(m)] != robot;
     }
-    truth.relevant[q] = truth.correct[q] || grid.AnyNear(i, [&](Eigen::Index j) {
-      return std::abs(i - j) > window && capture_time[static_cast<std::size_t>(j)] <= t &&
-             SquaredDistance(positions, i, j) < r2;
+    bool own = false;
+    // Stops at the first frame of another robot (the class is then known), else looks at all.
+    grid.AnyNear(i, [&](Eigen::Index j) {
+      if (std::abs(i - j) > window && capture_time[static_cast<std::size_t>(j)] <= t &&
+          SquaredDistance(positions, i, j) < r2) {
+        (taker[static_cast<std::size_t>(j)] == robot ? own : other) = true;
+      }
+      return other;
     });
+    truth.relevant[q] = truth.correct[q] || own || other;
+    if (truth.relevant[q]) truth.query_class[q] = other ? QueryClass::kInterRobot : QueryClass::kIntraRobot;
   }
   return truth;
+}
+
+const char* QueryClassName(QueryClass c) {
+  switch (c) {
+    case QueryClass::kInterRobot: return "inter";
+    case QueryClass::kIntraRobot: return "intra";
+    case QueryClass::kNotRelevant: break;
+  }
+  return "";
+}
+
+ClosureStats ComputeClosures(const std::vector<QueryRecord>& queries, const OnlineTruth& truth,
+                             const Positions& positions, const std::vector<RobotId>& taker, double radius_m,
+                             int robots) {
+  if (truth.query_class.size() != queries.size()) {
+    throw std::invalid_argument("ComputeClosures: the truth of " + std::to_string(truth.query_class.size()) +
+                                " queries for " + std::to_string(queries.size()));
+  }
+  ClosureStats s;
+  std::vector<MatchOutcome> inter, intra;
+  std::vector<std::optional<SimTime>> first(static_cast<std::size_t>(robots) * static_cast<std::size_t>(robots));
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    const QueryRecord& r = queries[q];
+    MatchOutcome o;
+    o.query = r.frame;
+    if (r.best) {
+      o.match = r.best->frame;
+      o.score = r.best->distance;
+    }
+    if (truth.query_class[q] == QueryClass::kInterRobot) {
+      ++s.inter_queries;
+      s.inter_recognised += truth.correct[q] ? 1 : 0;
+      inter.push_back(o);
+    } else if (truth.query_class[q] == QueryClass::kIntraRobot) {
+      ++s.intra_queries;
+      s.intra_recognised += truth.correct[q] ? 1 : 0;
+      intra.push_back(o);
+    }
+    if (!r.verify_requested || !r.best) continue;
+    const int a = taker[static_cast<std::size_t>(r.frame.value)].value;
+    const int b = taker[static_cast<std::size_t>(r.best->frame.value)].value;
+    if (a == b) continue;
+    ++s.inter_candidates;
+    if (!r.verify_accepted.value_or(false)) continue;
+    ++s.inter_closures;
+    std::optional<SimTime>& f = first[static_cast<std::size_t>(std::min(a, b) * robots + std::max(a, b))];
+    if (!f || r.sent < *f) f = r.sent;
+  }
+  s.inter_auc = EvaluatePr(inter, positions, radius_m, s.inter_queries).auc;
+  s.intra_auc = EvaluatePr(intra, positions, radius_m, s.intra_queries).auc;
+  for (int a = 0; a < robots; ++a) {
+    for (int b = a + 1; b < robots; ++b) {
+      s.pairs.push_back({RobotId(a), RobotId(b), first[static_cast<std::size_t>(a * robots + b)]});
+    }
+  }
+  return s;
+}
+
+std::optional<SimTime> MedianFirstClosure(const std::vector<PairClosure>& pairs) {
+  std::vector<std::int64_t> ns;
+  for (const PairClosure& p : pairs) {
+    if (p.first) ns.push_back(p.first->ns());
+  }
+  if (ns.empty()) return std::nullopt;
+  std::sort(ns.begin(), ns.end());
+  const std::size_t m = ns.size() / 2;
+  return SimTime::Nanos(ns.size() % 2 == 1 ? ns[m] : (ns[m - 1] + ns[m]) / 2);
 }
 
 }  // namespace dvpr

@@ -149,6 +149,8 @@ void AddTrafficFigures(const fs::path& out_dir, const fs::path& data, const std:
   add("robot_load", [&](std::string& why) { return WriteRobotLoadFigure(data, t, per_robot, why); });
   add("traffic_matrix", [&](std::string& why) { return WriteMatrixFigure(data, t, links, why); });
   add("saturation", [&](std::string& why) { return WriteSaturationFigure(data, t, why); });
+  const CsvTable closure_pairs = ReadCsvTable(out_dir / "closure_pairs.csv");
+  add("loop_closures", [&](std::string& why) { return WriteClosureFigure(data, t, closure_pairs, why); });
 }
 
 }  // namespace

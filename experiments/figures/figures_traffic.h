@@ -6,6 +6,8 @@
 //   robot_load.png               searches served per robot in one run, fair share, busiest robot
 //   traffic_matrix.png           sender x receiver bytes of one run
 //   saturation.png               offered vs delivered load and latency vs bandwidth, shared medium
+//   loop_closures.png            robot pairs with an inter-robot loop closure over time, and each
+//                                pair's first one (figures_closures.cpp)
 // Each Write* writes its data files into data_dir and returns the gnuplot commands that draw
 // them (without terminal and output, which DrawFigures puts in front), or nullopt when the
 // results hold nothing to draw (then `why` says what is missing).
@@ -31,6 +33,7 @@ struct TrafficCell {
   double offered_mbps = 0;        // offered wire bytes of every copy x 8 / duration
   double delivered_mbps = 0;
   double latency_ms = 0;          // a run without a latency counts 0, as in the mean
+  double longest_drive_s = 0;     // the longest duration_s of the runs
   double pr_bytes_ci95 = 0;
   double total_bytes_ci95 = 0;    // of the sum of role_bytes_per_query
   double offered_ci95 = 0;
@@ -81,6 +84,9 @@ std::optional<FigureScript> WriteRobotLoadFigure(const std::filesystem::path& da
                                                  const CsvTable& per_robot, std::string& why);
 std::optional<FigureScript> WriteMatrixFigure(const std::filesystem::path& data_dir, const TrafficTable& t,
                                               const CsvTable& links, std::string& why);
+// loop_closures.png (figures_closures.cpp), from closure_pairs.csv.
+std::optional<FigureScript> WriteClosureFigure(const std::filesystem::path& data_dir, const TrafficTable& t,
+                                               const CsvTable& closure_pairs, std::string& why);
 std::optional<FigureScript> WriteSaturationFigure(const std::filesystem::path& data_dir, const TrafficTable& t,
                                                   std::string& why);
 

@@ -70,6 +70,7 @@ TrafficTable TabulateTraffic(const std::vector<RunResult>& rows) {
     c.offered_mbps += v.offered.back();
     c.delivered_mbps += v.delivered.back();
     c.latency_ms += v.latency.back();
+    c.longest_drive_s = std::max(c.longest_drive_s, r.duration_s);
   }
   for (auto& [key, c] : t.cells) {
     const double n = c.runs;

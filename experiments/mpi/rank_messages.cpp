@@ -19,10 +19,15 @@ template <typename F> void Fields(RunKey& k, F&& f) { f(k.protocol, k.strategy, 
 template <typename F> void Fields(CopyBytes& c, F&& f) { f(c.payload, c.wire, c.delivered_payload, c.delivered_wire); }
 template <typename F> void Fields(RunRoleBytes& r, F&& f) { f(r.copies, r.medium); }
 template <typename F>
+void Fields(RunClosures& r, F&& f) {
+  f(r.inter_queries, r.intra_queries, r.inter_recognised, r.intra_recognised, r.inter_auc, r.intra_auc,
+    r.inter_candidates, r.inter_closures, r.pairs_closed, r.median_first_closure_ns);
+}
+template <typename F>
 void Fields(RunResult& r, F&& f) {
   f(r.key, r.seed, r.auc, r.auc_reference, r.relative_auc, r.worst_balance_ratio, r.queries, r.messages,
     r.payload_bytes, r.wire_bytes, r.bytes_per_query, r.mean_latency_ms, r.p99_latency_ms, r.dropped_messages,
-    r.roles, r.duration_s);
+    r.roles, r.duration_s, r.closures);
 }
 template <typename F>
 void Fields(RobotLoadRow& r, F&& f) {
@@ -36,7 +41,7 @@ void Fields(LinkRow& r, F&& f) {
 template <typename F>
 void Fields(QueryRow& r, F&& f) {
   f(r.key, r.robot, r.frame, r.sent_ns, r.match_robot, r.match_frame, r.distance, r.latency_ns, r.relevant,
-    r.correct, r.hops);
+    r.correct, r.query_class, r.hops);
 }
 template <typename F>
 void Fields(MessageRow& r, F&& f) {
@@ -64,10 +69,11 @@ void Fields(ConnectivityRow& r, F&& f) {
   f(r.key, r.time_ns, r.pairs_in_range, r.components, r.largest_component, r.mean_hops, r.max_hops,
     r.robots_in_range);
 }
+template <typename F> void Fields(ClosurePairRow& r, F&& f) { f(r.key, r.robot_a, r.robot_b, r.first_closure_ns); }
 template <typename F>
 void Fields(RunOutput& o, F&& f) {
   f(o.runs, o.per_robot, o.links, o.queries, o.messages, o.curves, o.failover, o.bow, o.bow_sizes, o.radio,
-    o.connectivity);
+    o.connectivity, o.closure_pairs);
 }
 
 template <typename T>

@@ -54,6 +54,19 @@ std::vector<std::string> RoleMetricNames() {
   return names;
 }
 
+// runs.csv's closure columns (RunClosures), for the runs of a team.
+const char* const kClosureMetrics[] = {"inter_queries",   "intra_queries",   "inter_recall",     "intra_recall",
+                                       "inter_auc",       "intra_auc",       "inter_candidates", "inter_closures",
+                                       "closure_precision", "pairs_closed", "median_first_closure_s"};
+
+std::vector<double> ClosureMetricValues(const RunResult& r) {
+  if (!r.closures) return std::vector<double>(std::size(kClosureMetrics), kNotApplicable);
+  const RunClosures& c = *r.closures;
+  return {double(c.inter_queries), double(c.intra_queries), c.inter_recall(),       c.intra_recall(),
+          c.inter_auc,              c.intra_auc,              double(c.inter_candidates), double(c.inter_closures),
+          c.closure_precision(),    double(c.pairs_closed),   c.median_first_closure_s()};
+}
+
 std::vector<double> RoleMetricValues(const RunResult& r) {
   const std::size_t count = 5 + std::size(kRoleSuffixes) * kMessageRoles;
   if (!r.roles) return std::vector<double>(count, kNotApplicable);
@@ -81,6 +94,8 @@ void AddRun(Group& g, const RunResult& r) {
   const std::vector<std::string> names = RoleMetricNames();
   const std::vector<double> role_values = RoleMetricValues(r);
   for (std::size_t i = 0; i < names.size(); ++i) g.means[names[i]].Add(role_values[i]);
+  const std::vector<double> closure_values = ClosureMetricValues(r);
+  for (std::size_t i = 0; i < std::size(kClosureMetrics); ++i) g.means[kClosureMetrics[i]].Add(closure_values[i]);
 }
 
 std::string JsonString(const std::string& s) {
@@ -121,11 +136,14 @@ void WriteGroup(std::ostringstream& s, const Group& g) {
   }
   s << ", \"runs\": " << g.runs;
   // The metrics written, in order: those of kMetricOrder, the bytes by role only where a network
-  // counted them, the connectivity ones only where it was tracked; each one's spread worked out once.
+  // counted them, the closures only where a team ran, the connectivity ones only where it was tracked; each one's spread worked out once.
   std::vector<std::pair<std::string, Spread>> metrics;
   for (const char* m : kMetricOrder) metrics.emplace_back(m, SpreadOf(g.means.at(m).values));
   if (!g.means.at("copy_wire_bytes").values.empty()) {
     for (const std::string& m : RoleMetricNames()) metrics.emplace_back(m, SpreadOf(g.means.at(m).values));
+  }
+  if (!g.means.at("inter_queries").values.empty()) {
+    for (const char* m : kClosureMetrics) metrics.emplace_back(m, SpreadOf(g.means.at(m).values));
   }
   for (const char* m : kConnectivityMetrics) {
     if (const auto it = g.means.find(m); it != g.means.end()) metrics.emplace_back(m, SpreadOf(it->second.values));
@@ -243,6 +261,31 @@ RunRoleBytes ParseRunRoles(const std::vector<std::string>& f, const std::string&
   return roles;
 }
 
+// runs.csv's closure columns, after the roles' (RunClosures). The recalls and the median are
+// written in seconds and shares: the counts and nanoseconds they came from are the nearest.
+constexpr std::size_t kClosureFields = 27 + 5 * kMessageRoles;
+
+RunClosures ParseRunClosures(const std::vector<std::string>& f, const std::string& where) {
+  const std::size_t at = kClosureFields;
+  RunClosures c;
+  c.inter_queries = Parse<std::int64_t>(f, at, where);
+  c.intra_queries = Parse<std::int64_t>(f, at + 1, where);
+  const auto count = [&](std::size_t i, std::int64_t of) {
+    const double share = Parse<double>(f, i, where);
+    return std::isnan(share) ? 0 : static_cast<std::int64_t>(std::llround(share * static_cast<double>(of)));
+  };
+  c.inter_recognised = count(at + 2, c.inter_queries);
+  c.intra_recognised = count(at + 3, c.intra_queries);
+  c.inter_auc = Parse<double>(f, at + 4, where);
+  c.intra_auc = Parse<double>(f, at + 5, where);
+  c.inter_candidates = Parse<std::int64_t>(f, at + 6, where);
+  c.inter_closures = Parse<std::int64_t>(f, at + 7, where);
+  c.pairs_closed = Parse<std::int64_t>(f, at + 9, where);
+  const double median_s = Parse<double>(f, at + 10, where);
+  if (!std::isnan(median_s)) c.median_first_closure_ns = std::llround(median_s * 1e9);
+  return c;
+}
+
 RunResult ParseRunRow(const std::vector<std::string>& f, const std::string& where) {
   RunResult r;
   r.key.protocol = f[0];
@@ -284,12 +327,13 @@ RunResult ParseRunRow(const std::vector<std::string>& f, const std::string& wher
   // f[22] is the network's name, made from the fields above.
   r.duration_s = Parse<double>(f, 23, where);
   if (!f[24].empty()) r.roles = ParseRunRoles(f, where);
+  if (!f[kClosureFields].empty()) r.closures = ParseRunClosures(f, where);
   return r;
 }
 
 }  // namespace
 
-constexpr std::size_t kRunsFields = 27 + 5 * kMessageRoles;
+constexpr std::size_t kRunsFields = kClosureFields + std::size(kClosureMetrics);
 
 std::vector<RunResult> ReadRunsCsv(const std::filesystem::path& path) {
   std::ifstream in(path);

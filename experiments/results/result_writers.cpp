@@ -33,7 +33,9 @@ const std::string& RunsHeaderText() {
       "queries,messages,payload_bytes,wire_bytes,bytes_per_query,mean_latency_ms,p99_latency_ms,"
       "dropped_messages," DVPR_NETWORK_COLUMNS ",duration_s,copy_wire_bytes,delivered_payload_bytes,delivered_wire_bytes" +
       RoleColumns({"payload_bytes", "wire_bytes", "copy_wire_bytes", "delivered_payload_bytes",
-                   "delivered_wire_bytes"});
+                   "delivered_wire_bytes"}) +
+      ",inter_queries,intra_queries,inter_recall,intra_recall,inter_auc,intra_auc,inter_candidates,inter_closures,"
+      "closure_precision,pairs_closed,median_first_closure_s";
   return h;
 }
 
@@ -54,7 +56,7 @@ const char* const kPerRobotHeader =
 const char* const kLinksHeader = LinksHeaderText().c_str();
 const char* const kQueriesHeader =
     "protocol,strategy,robots,run,robot,frame,sent_ns,match_robot,match_frame,distance,"
-    "latency_ns,relevant,correct," DVPR_NETWORK_COLUMNS;
+    "latency_ns,relevant,correct," DVPR_NETWORK_COLUMNS ",class";
 const char* const kMessagesHeader =
     "protocol,strategy,robots,run,sent_ns,delivered_ns,src,dst,channel,type,payload_bytes,"
     "wire_bytes,dropped," DVPR_NETWORK_COLUMNS ",role";
@@ -70,6 +72,8 @@ const char* const kRadioHeader =
     "routing_transmissions,routing_bytes,"
     "dropped_queue_full,dropped_loss,dropped_offline,dropped_no_route,dropped_out_of_range,dropped_hop_limit,"
     "dropped_buffer_full,dropped_expired,dropped_stale_route," DVPR_NETWORK_COLUMNS ",delivered_by_hops";
+const char* const kClosurePairsHeader =
+    "protocol,strategy,robots,run,robot_a,robot_b,first_closure_ns," DVPR_NETWORK_COLUMNS;
 #undef DVPR_NETWORK_COLUMNS
 
 std::string NetworkName(const NetworkLabel& n) {
@@ -146,6 +150,16 @@ std::string RunRoles(const std::optional<RunRoleBytes>& roles) {
   return out;
 }
 
+// runs.csv's last columns (RunClosures).
+std::string Closures(const std::optional<RunClosures>& c) {
+  if (!c) return Empty(11);
+  return "," + std::to_string(c->inter_queries) + "," + std::to_string(c->intra_queries) + "," +
+         FormatDouble(c->inter_recall()) + "," + FormatDouble(c->intra_recall()) + "," + FormatDouble(c->inter_auc) +
+         "," + FormatDouble(c->intra_auc) + "," + std::to_string(c->inter_candidates) + "," +
+         std::to_string(c->inter_closures) + "," + FormatDouble(c->closure_precision()) + "," +
+         std::to_string(c->pairs_closed) + "," + FormatDouble(c->median_first_closure_s());
+}
+
 std::string LinkRoles(const std::optional<RoleCopyBytes>& roles) {
   if (!roles) return Empty(2 + 4 * kMessageRoles);
   CopyBytes total;
@@ -168,7 +182,7 @@ std::string CsvRow(const RunResult& r) {
     << r.payload_bytes << ',' << r.wire_bytes << ',' << FormatDouble(r.bytes_per_query) << ','
     << FormatDouble(r.mean_latency_ms) << ',' << FormatDouble(r.p99_latency_ms) << ','
     << r.dropped_messages << ',' << Network(r.key.network) << ',' << FormatDouble(r.duration_s)
-    << RunRoles(r.roles);
+    << RunRoles(r.roles) << Closures(r.closures);
   return s.str();
 }
 
@@ -196,7 +210,12 @@ std::string CsvRow(const QueryRow& r) {
   return Key(r.key) + "," + std::to_string(r.robot) + "," + std::to_string(r.frame) + "," +
          std::to_string(r.sent_ns) + "," + Opt(r.match_robot) + "," + Opt(r.match_frame) + "," +
          FormatDouble(r.distance) + "," + Opt(r.latency_ns) + "," + (r.relevant ? "1" : "0") +
-         "," + (r.correct ? "1" : "0") + "," + Network(r.key.network);
+         "," + (r.correct ? "1" : "0") + "," + Network(r.key.network) + "," + r.query_class;
+}
+
+std::string CsvRow(const ClosurePairRow& r) {
+  return Key(r.key) + "," + std::to_string(r.robot_a) + "," + std::to_string(r.robot_b) + "," +
+         Opt(r.first_closure_ns) + "," + Network(r.key.network);
 }
 
 std::string CsvRow(const MessageRow& r) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "experiments/results/bow_rows.h"
+#include "experiments/results/closure_rows.h"
 #include "experiments/results/radio_rows.h"
 #include "experiments/results/connectivity_rows.h"
 #include "experiments/results/results.h"
@@ -50,6 +51,9 @@ std::string PerRobotHeader(bool radio);
 std::string CsvRow(const RobotLoadRow& r, bool radio);
 std::string MessagesHeader(bool radio);
 std::string CsvRow(const MessageRow& r, bool radio);
+// When the sweep runs a team (sim or lcm protocol): closure_pairs.csv.
+extern const char* const kClosurePairsHeader;
+std::string CsvRow(const ClosurePairRow& r);
 std::string QueriesHeader(bool radio);
 std::string CsvRow(const QueryRow& r, bool radio);
 

@@ -76,6 +76,36 @@ struct RunKey {
 };
 
 // One row of runs.csv.
+// A team run's place recognition by class and its inter-robot loop closures (docs/design.md
+// section 3, "Inter-robot loop closures"; experiments/evaluation/sim_metrics.h): the trailing
+// columns of runs.csv.
+struct RunClosures {
+  std::int64_t inter_queries = 0;     // relevant queries whose true match is another robot's frame
+  std::int64_t intra_queries = 0;     // relevant queries whose true matches are all the robot's own
+  std::int64_t inter_recognised = 0;  // of which the returned match was correct
+  std::int64_t intra_recognised = 0;
+  double inter_auc = kNotApplicable;  // PR AUC over the class's queries; not applicable when none
+  double intra_auc = kNotApplicable;
+  std::int64_t inter_candidates = 0;  // verifications asked for with another robot's frame
+  std::int64_t inter_closures = 0;    // of which accepted: inter-robot loop closures found
+  std::int64_t pairs_closed = 0;      // pairs of robots that found one
+  std::optional<std::int64_t> median_first_closure_ns;  // over those pairs: when their first was sent
+
+  // Each not applicable over none. Closure precision: every accepted verification is a true
+  // match (the verifier checks the ground truth), so it is the candidates' share of true ones.
+  double inter_recall() const { return Ratio(inter_recognised, inter_queries); }
+  double intra_recall() const { return Ratio(intra_recognised, intra_queries); }
+  double closure_precision() const { return Ratio(inter_closures, inter_candidates); }
+  double median_first_closure_s() const {
+    return median_first_closure_ns ? static_cast<double>(*median_first_closure_ns) / 1e9 : kNotApplicable;
+  }
+
+ private:
+  static double Ratio(std::int64_t a, std::int64_t b) {
+    return b > 0 ? static_cast<double>(a) / static_cast<double>(b) : kNotApplicable;
+  }
+};
+
 struct RunResult {
   RunKey key;
   std::uint64_t seed = 0;
@@ -93,6 +123,7 @@ struct RunResult {
   std::int64_t dropped_messages = 0;
   std::optional<RunRoleBytes> roles;        // sim only: the network's bytes by message role
   double duration_s = kNotApplicable;       // sim only: how long the robots drove (offered load = bytes / this)
+  std::optional<RunClosures> closures;      // sim and lcm only: inter- and intra-robot recognition
 };
 
 // One row of per_robot.csv.
@@ -149,6 +180,9 @@ struct QueryRow {
   std::optional<std::int64_t> latency_ns;
   bool relevant = false;
   bool correct = false;
+  // "inter" when one of the query's true matches is another robot's frame, "intra" when they
+  // are all its own, "" when it is not relevant (experiments/evaluation/sim_metrics.h).
+  std::string query_class;
   // How far the answer came (experiments/protocols/sim/query_hops.h): the transmissions of the
   // query's copy that reached the robot whose reply gave the best match, 0 when the robot's own
   // store gave it, empty when no match came back. A column of queries.csv only when a network

@@ -34,7 +34,7 @@ std::string SweepConfig(const std::string& name_yaml) {
 }
 
 const std::vector<std::string> kFigures = {
-    "confusion_matrix.png", "descriptor_dims.png", "place_recognition_bytes.png", "pr_curves.png",
+    "confusion_matrix.png", "descriptor_dims.png", "loop_closures.png", "place_recognition_bytes.png", "pr_curves.png",
     "relative_auc_balance.png", "robot_load.png", "saturation.png", "strategy_sweep.png", "strategy_tradeoff.png",
     "traffic_by_role.png", "traffic_matrix.png"};
 
@@ -293,7 +293,7 @@ TEST_F(HostileNamesTest, AFailingGnuplotFailsTheRunAndThePlot) {
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err.rfind("dvpr: error: figure confusion_matrix.png: gnuplot failed (exit status 1): "
                         "line 1: no such terminal; its log: ", 0), 0u) << r.err;
-  EXPECT_NE(r.err.find("/figures/data/confusion_matrix.log (and 10 more figures)\n"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("/figures/data/confusion_matrix.log (and 11 more figures)\n"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_EQ(SnapshotFolder(out), committed);
   EXPECT_EQ(Names(dir_), around);  // no temporary folder left
@@ -301,12 +301,12 @@ TEST_F(HostileNamesTest, AFailingGnuplotFailsTheRunAndThePlot) {
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "dvpr: error: figure confusion_matrix.png: gnuplot failed (exit status 1): line 1: no such "
                    "terminal; its log: " + (out / "figures" / "data" / "confusion_matrix.log").string() +
-                       " (and 10 more figures)\n");
+                       " (and 11 more figures)\n");
   Write(bin / "gnuplot", "#!/bin/sh\nprintf '\\211PNG\\r\\n\\032\\n'\n");
   r = DvprArgv({"plot", out.string()}, fake_path);
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "dvpr: error: figure confusion_matrix.png: gnuplot wrote no whole PNG (a full disk?); its log: " +
-                       (out / "figures" / "data" / "confusion_matrix.log").string() + " (and 10 more figures)\n");
+                       (out / "figures" / "data" / "confusion_matrix.log").string() + " (and 11 more figures)\n");
   for (const std::string& png : kFigures) {
     EXPECT_EQ(Slurp(out / "figures" / png), committed.at("figures/" + png)) << png;
   }

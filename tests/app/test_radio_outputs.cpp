@@ -230,7 +230,7 @@ TEST_F(RadioOutputsTest, QueryHopsAreThoseOfTheCopyThatReachedTheAnsweringRobot)
   const fs::path out =
       Run({"network.routing=shortest_path", "network.radio.range=[100m, 200m]", "outputs.queries=true"});
   const auto [query_header, queries] = ReadCsv(out / "queries.csv");
-  EXPECT_TRUE(EndsWith(query_header, ",network_name,hops")) << query_header;
+  EXPECT_TRUE(EndsWith(query_header, ",network_name,class,hops")) << query_header;
   const auto [message_header, messages] = ReadCsv(out / "messages.csv");
   std::map<std::string, std::vector<Row>> copies;
   for (const Row& m : messages) {

@@ -2,6 +2,7 @@
 // with bytes by role, and which figures are drawn for which configs. Pixels are not tested.
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <numbers>
 #include <sstream>
@@ -202,6 +203,44 @@ TEST_F(TrafficFigures, RobotIdsOutsideTheTeamAreRefused) {
   EXPECT_THROW(WriteMatrixFigure(dir_, TabulateTraffic(Rows()), links, why), std::runtime_error);
 }
 
+// loop_closures.png's numbers, worked by hand: decentralized at n = 3 (3 pairs), two runs of 30 s.
+// Run 0 closes pair (0, 1) at 10 s and (1, 2) at 20 s, run 1 pair (0, 1) at 15 s. The share of
+// pairs closed steps at 10 s (runs 1/3 and 0: mean 1/6), 15 s (1/3 and 1/3) and 20 s (2/3 and
+// 1/3: mean 1/2, lowest 1/3, highest 2/3); run 0's matrix is symmetric, blank (NaN) elsewhere.
+TEST_F(TrafficFigures, LoopClosuresByHand) {
+  const NetworkLabel p2p = Net(0, "point_to_point", 1e7);
+  std::vector<RunResult> rows = {SimRun("decentralized", 3, 0, p2p, 600, 100),
+                                 SimRun("decentralized", 3, 1, p2p, 600, 100)};
+  for (RunResult& r : rows) r.duration_s = 30;
+  const auto pair = [&](int run, int a, int b, std::optional<std::int64_t> ns) {
+    ClosurePairRow r{rows[0].key, a, b, ns};
+    r.key.run = run;
+    return r;
+  };
+  std::string csv = std::string(kClosurePairsHeader) + "\n";
+  for (const ClosurePairRow& r : {pair(0, 0, 1, 10'000'000'000), pair(0, 0, 2, std::nullopt),
+                                  pair(0, 1, 2, 20'000'000'000), pair(1, 0, 1, 15'000'000'000),
+                                  pair(1, 0, 2, std::nullopt), pair(1, 1, 2, std::nullopt)}) {
+    csv += CsvRow(r) + "\n";
+  }
+  std::ofstream(dir_ / "closure_pairs.csv") << csv;
+  std::string why;
+  const auto f = WriteClosureFigure(dir_, TabulateTraffic(rows), ReadCsvTable(dir_ / "closure_pairs.csv"), why);
+  ASSERT_TRUE(f.has_value()) << why;
+  EXPECT_EQ(Slurp(dir_ / "closures.dat"),
+            "# decentralized\n"
+            "0 0 0 0\n"
+            "10 0 0 0\n10 0.16666666666666666 0 0.3333333333333333\n"
+            "15 0.16666666666666666 0 0.3333333333333333\n15 0.3333333333333333 0.3333333333333333 0.3333333333333333\n"
+            "20 0.3333333333333333 0.3333333333333333 0.3333333333333333\n20 0.5 0.3333333333333333 0.6666666666666666\n"
+            "30 0.5 0.3333333333333333 0.6666666666666666\n\n\n");
+  EXPECT_EQ(Slurp(dir_ / "closure_matrix_0.dat"), "NaN 10 NaN\n10 NaN 20\nNaN 20 NaN\n");
+  EXPECT_NE(f->body.find("line: mean over runs, band: lowest to highest run"), std::string::npos) << f->body;
+  // Without closure_pairs.csv (the static protocol only) there is nothing to draw.
+  EXPECT_FALSE(WriteClosureFigure(dir_, TabulateTraffic(rows), CsvTable{}, why).has_value());
+  EXPECT_EQ(why, "needs protocol sim with two or more robots (closure_pairs.csv)");
+}
+
 TEST_F(TrafficFigures, StrategyFiguresOnlyBeyondThePapersTwo) {
   if (!FindProgram("gnuplot")) GTEST_SKIP() << "gnuplot is not installed";
   WriteRunsCsv(dir_ / "runs.csv", Rows());
@@ -213,6 +252,7 @@ TEST_F(TrafficFigures, StrategyFiguresOnlyBeyondThePapersTwo) {
   EXPECT_TRUE(fs::exists(dir_ / "figures" / "traffic_by_role.png")) << log.str();
   EXPECT_TRUE(fs::exists(dir_ / "figures" / "saturation.png")) << log.str();
   EXPECT_NE(log.str().find("robot_load.png skipped"), std::string::npos);  // no per_robot.csv here
+  EXPECT_NE(log.str().find("loop_closures.png skipped"), std::string::npos);  // nor closure_pairs.csv
 }
 
 }  // namespace

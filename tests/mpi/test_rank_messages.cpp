@@ -45,11 +45,15 @@ RunOutput Sample() {
   r.mean_latency_ms = 1.0 / 3.0;
   r.p99_latency_ms = 9.75;
   r.dropped_messages = 42;
+  r.closures = RunClosures{.inter_queries = 17, .intra_queries = 1, .inter_recognised = 3, .intra_recognised = 1,
+                           .inter_auc = 0.1 + 0.2, .intra_auc = kNotApplicable, .inter_candidates = 3,
+                           .inter_closures = 2, .pairs_closed = 1, .median_first_closure_ns = 30'000'000'001};
   o.runs = {r, RunResult{}};
+  o.closure_pairs = {ClosurePairRow{Key(), 0, 1, 30'000'000'001}, ClosurePairRow{Key(), 0, 2, std::nullopt}};
   o.per_robot = {RobotLoadRow{Key(), 4, 10, 20, 30, 0.125, 6}};
   o.links = {LinkRow{Key(), 1, 2, 3, 4, 5, 6, std::nullopt}};
-  o.queries = {QueryRow{Key(), 1, 1559, 155900000000, 0, 12, 0.5, 777, true, false, 0},
-               QueryRow{Key(), 2, 3, 4, std::nullopt, std::nullopt, kNotApplicable, std::nullopt, false, true, 3}};
+  o.queries = {QueryRow{Key(), 1, 1559, 155900000000, 0, 12, 0.5, 777, true, false, "inter", 0},
+               QueryRow{Key(), 2, 3, 4, std::nullopt, std::nullopt, kNotApplicable, std::nullopt, false, true, "", 3}};
   o.messages = {MessageRow{Key(), 10, std::nullopt, 0, 1, "DVPR_QUERY_1", "dvpr.query_t", 547, 600, true, ""}};
   o.curves = {PrCurve{std::string("centralized\0\n,", 14), 10, 0, {0.0, 0.5, 1.0}, {1.0, 0.75, 0.5}}};
   return o;
@@ -88,6 +92,19 @@ TEST(RankMessagesTest, OutputArrivesFieldForFieldAndBitForBit) {
   EXPECT_EQ(Bits(r.mean_latency_ms), Bits(1.0 / 3.0));
   EXPECT_EQ(r.p99_latency_ms, 9.75);
   EXPECT_EQ(r.dropped_messages, 42);
+  ASSERT_TRUE(r.closures.has_value());
+  EXPECT_EQ(r.closures->inter_queries, 17);
+  EXPECT_EQ(r.closures->intra_recognised, 1);
+  EXPECT_EQ(Bits(r.closures->inter_auc), 0x3fd3333333333334ULL);
+  EXPECT_TRUE(std::isnan(r.closures->intra_auc));
+  EXPECT_EQ(r.closures->inter_closures, 2);
+  EXPECT_EQ(r.closures->median_first_closure_ns, 30'000'000'001);
+  EXPECT_FALSE(o.runs[1].closures.has_value());
+  ASSERT_EQ(o.closure_pairs.size(), 2u);
+  EXPECT_EQ(o.closure_pairs[0].robot_b, 1);
+  EXPECT_EQ(o.closure_pairs[0].first_closure_ns, 30'000'000'001);
+  EXPECT_EQ(o.closure_pairs[1].robot_b, 2);
+  EXPECT_FALSE(o.closure_pairs[1].first_closure_ns.has_value());
   EXPECT_EQ(o.runs[1].key.protocol, "");
   ASSERT_EQ(o.per_robot.size(), 1u);
   EXPECT_EQ(o.per_robot[0].stored, 30);
@@ -103,6 +120,7 @@ TEST(RankMessagesTest, OutputArrivesFieldForFieldAndBitForBit) {
   EXPECT_EQ(o.queries[0].latency_ns, 777);
   EXPECT_TRUE(o.queries[0].relevant);
   EXPECT_FALSE(o.queries[0].correct);
+  EXPECT_EQ(o.queries[0].query_class, "inter");
   EXPECT_EQ(o.queries[0].hops, 0);  // present and zero: answered from its own store
   EXPECT_FALSE(o.queries[1].match_robot.has_value());
   EXPECT_FALSE(o.queries[1].match_frame.has_value());
@@ -182,9 +200,9 @@ TEST(RankMessagesTest, EmptyOutputArrivesEmpty) {
   const IndexedOutput got = DecodeOutput(EncodeOutput(0, RunOutput{}));
   EXPECT_EQ(got.index, 0u);
   EXPECT_TRUE(got.output.runs.empty() && got.output.queries.empty() && got.output.curves.empty());
-  // 8 bytes of index and an 8-byte count for each of the 11 row lists (runs, per_robot, links,
-  // queries, messages, curves, failover, bow, bow_sizes, radio, connectivity).
-  EXPECT_EQ(EncodeOutput(0, RunOutput{}).size(), 8u * 12u);
+  // 8 bytes of index and an 8-byte count for each of the 12 row lists (runs, per_robot, links,
+  // queries, messages, curves, failover, bow, bow_sizes, radio, connectivity, closure_pairs).
+  EXPECT_EQ(EncodeOutput(0, RunOutput{}).size(), 8u * 13u);
 }
 
 TEST(RankMessagesTest, ShortOrLongMessagesAreRefused) {

@@ -49,13 +49,75 @@ TEST(ResultWriters, RunsCsvColumnsAndFormatting) {
   EXPECT_EQ(CsvRow(SimRow(0, 0.8)),
             "sim,decentralized,4,0,99,0.5,0.625,0.8,0.6666666666666666,100,200,51700,54700,"
             "547,9.376,12.5,0,1,point_to_point,1e+06,5,none,point-to-point 1 Mbit/s 5 ms,"
-            + std::string(3 + 5 * 6, ','));  // no bytes by role: duration and 33 byte columns empty
+            + std::string(3 + 5 * 6 + 11, ','));  // no bytes by role: duration and 33 byte columns empty; no closures
   RunResult paper;
   paper.key.protocol = "paper";
   paper.key.strategy = "decentralized";
   paper.key.robots = 2;
   paper.key.run = 1;
-  EXPECT_EQ(CsvRow(paper), "paper,decentralized,2,1,0,,,,,0,0,0,0,,,,0," + std::string(5 + 1 + 3 + 30, ','));
+  EXPECT_EQ(CsvRow(paper), "paper,decentralized,2,1,0,,,,,0,0,0,0,,,,0," + std::string(5 + 1 + 3 + 30 + 11, ','));
+}
+
+// A team run's closure columns, last: hand-made counts. 17 inter-robot queries of which 3
+// recognised, 1 intra of 1, AUCs 29/204 and 1, 3 candidates of which 2 closed (precision 2/3),
+// 1 pair closed, first at 30 s.
+RunResult WithClosures(RunResult r) {
+  RunClosures& c = r.closures.emplace();
+  c.inter_queries = 17;
+  c.intra_queries = 1;
+  c.inter_recognised = 3;
+  c.intra_recognised = 1;
+  c.inter_auc = 0.125;
+  c.intra_auc = 1.0;
+  c.inter_candidates = 3;
+  c.inter_closures = 2;
+  c.pairs_closed = 1;
+  c.median_first_closure_ns = 30'000'000'000;
+  return r;
+}
+
+TEST(ResultWriters, RunsCsvClosureColumns) {
+  EXPECT_TRUE(std::string(kRunsHeader)
+                  .ends_with(",other_delivered_wire_bytes,inter_queries,intra_queries,inter_recall,intra_recall,"
+                             "inter_auc,intra_auc,inter_candidates,inter_closures,closure_precision,pairs_closed,"
+                             "median_first_closure_s"))
+      << kRunsHeader;
+  // 3/17 = 0.17647058823529413 and 2/3 = 0.6666666666666666 (python3's repr).
+  const std::string row = CsvRow(WithClosures(SimRow(0, 0.8)));
+  EXPECT_TRUE(row.ends_with(",17,1,0.17647058823529413,1,0.125,1,3,2,0.6666666666666666,1,30")) << row;
+  // A team run without a relevant query or a candidate: its ratios are not applicable (empty).
+  RunResult none = SimRow(1, 0.6);
+  none.closures.emplace();
+  EXPECT_TRUE(CsvRow(none).ends_with(",0,0,,,,,0,0,,0,")) << CsvRow(none);
+  // Read back as written (dvpr plot), the counts behind the ratios included.
+  const fs::path dir = fs::path(DVPR_TEST_TMP) / "writers_closures";
+  fs::remove_all(dir);
+  CreateOutputDir(dir);
+  WriteRunsCsv(dir / "runs.csv", {WithClosures(SimRow(0, 0.8)), none, SimRow(2, 0.7)});
+  const auto rows = ReadRunsCsv(dir / "runs.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(CsvRow(rows[0]), row);
+  ASSERT_TRUE(rows[0].closures.has_value());
+  EXPECT_EQ(rows[0].closures->inter_recognised, 3);
+  EXPECT_EQ(rows[0].closures->median_first_closure_ns, 30'000'000'000);
+  ASSERT_TRUE(rows[1].closures.has_value());
+  EXPECT_FALSE(rows[1].closures->median_first_closure_ns.has_value());
+  EXPECT_FALSE(rows[2].closures.has_value());
+}
+
+// summary.json: the closure metrics' means (with std and ci95) only for groups that ran a team.
+TEST(ResultWriters, SummaryHasClosureMeans) {
+  RunResult a = WithClosures(SimRow(0, 0.8));
+  RunResult b = WithClosures(SimRow(1, 0.6));
+  b.closures->inter_closures = 3;  // precision 1: mean (2/3 + 1) / 2 = 0.8333333333333333 (python3)
+  b.closures->median_first_closure_ns = 40'000'000'000;
+  const std::string json = SummaryJson({a, b});
+  EXPECT_NE(json.find("\"inter_queries\": 17, \"intra_queries\": 1, \"inter_recall\": 0.17647058823529413, "
+                      "\"intra_recall\": 1, \"inter_auc\": 0.125, \"intra_auc\": 1, \"inter_candidates\": 3, "
+                      "\"inter_closures\": 2.5, \"closure_precision\": 0.8333333333333333, \"pairs_closed\": 1, "
+                      "\"median_first_closure_s\": 35"),
+            std::string::npos) << json;
+  EXPECT_EQ(SummaryJson({SimRow(0, 0.8)}).find("inter_queries"), std::string::npos);
 }
 
 // Bytes by role: five columns per role in MessageRole order after the totals; hand-made numbers.
@@ -77,12 +139,13 @@ TEST(ResultWriters, RunsCsvBytesByRole) {
                         "delivered_wire_bytes,query_payload_bytes,query_wire_bytes,query_copy_wire_bytes,"
                         "query_delivered_payload_bytes,query_delivered_wire_bytes,reply_payload_bytes,"),
             std::string::npos) << header;
-  EXPECT_TRUE(header.ends_with(",other_copy_wire_bytes,other_delivered_payload_bytes,other_delivered_wire_bytes"));
+  EXPECT_NE(header.find(",other_copy_wire_bytes,other_delivered_payload_bytes,other_delivered_wire_bytes,inter_queries,"),
+            std::string::npos) << header;
   // Totals over roles 10..60: copy wire 11+21+..+61 = 216, delivered payload 222, delivered wire 228.
   const std::string row = CsvRow(WithRoles(SimRow(0, 0.8)));
   EXPECT_NE(row.find(",none,point-to-point 1 Mbit/s 5 ms,45.5,216,222,228,10,14,11,12,13,20,24,21,22,23,"),
             std::string::npos) << row;
-  EXPECT_TRUE(row.ends_with(",50,54,51,52,53,60,64,61,62,63")) << row;
+  EXPECT_TRUE(row.ends_with(",50,54,51,52,53,60,64,61,62,63" + std::string(11, ','))) << row;  // then no closures
   // runs.csv reads back with its roles (dvpr plot draws from the file).
   const fs::path dir = fs::path(DVPR_TEST_TMP) / "writers_roles";
   fs::remove_all(dir);
@@ -245,14 +308,18 @@ TEST(ResultWriters, QueryRowEmptyFieldsWhenNoMatch) {
   q.frame = 17;
   q.sent_ns = 1700000000;
   q.relevant = true;
-  EXPECT_EQ(CsvRow(q), "sim,broadcast,3,0,2,17,1700000000,,,,,1,0,,,,,,");
+  EXPECT_EQ(CsvRow(q), "sim,broadcast,3,0,2,17,1700000000,,,,,1,0,,,,,,,");
+  // The class follows the network's columns: inter, intra, or empty when not relevant.
+  q.query_class = "inter";
+  EXPECT_EQ(CsvRow(q), "sim,broadcast,3,0,2,17,1700000000,,,,,1,0,,,,,,,inter");
+  EXPECT_TRUE(std::string(kQueriesHeader).ends_with(",network_name,class")) << kQueriesHeader;
   // queries.csv of a radio sweep: hops last, empty when no match came back, 0 from the own store.
   EXPECT_EQ(CsvRow(q, false), CsvRow(q));
-  EXPECT_EQ(CsvRow(q, true), "sim,broadcast,3,0,2,17,1700000000,,,,,1,0,,,,,,,");
+  EXPECT_EQ(CsvRow(q, true), "sim,broadcast,3,0,2,17,1700000000,,,,,1,0,,,,,,,inter,");
   q.hops = 0;
-  EXPECT_EQ(CsvRow(q, true), "sim,broadcast,3,0,2,17,1700000000,,,,,1,0,,,,,,,0");
+  EXPECT_EQ(CsvRow(q, true), "sim,broadcast,3,0,2,17,1700000000,,,,,1,0,,,,,,,inter,0");
   q.hops = 3;
-  EXPECT_EQ(CsvRow(q, true), "sim,broadcast,3,0,2,17,1700000000,,,,,1,0,,,,,,,3");
+  EXPECT_EQ(CsvRow(q, true), "sim,broadcast,3,0,2,17,1700000000,,,,,1,0,,,,,,,inter,3");
 }
 
 TEST(ResultWriters, AtomicWriteLeavesNoTemporary) {

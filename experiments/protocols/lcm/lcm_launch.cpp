@@ -174,6 +174,7 @@ SimRunLog ToRunLog(const Dataset& data, int robots, const std::vector<std::optio
   log.senders.resize(n);
   const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), robots);
   log.capture_time.resize(static_cast<std::size_t>(data.size()));
+  log.taker = split.owner;
   for (const FrameRange& r : split.ranges) {
     const FrameStream frames{nullptr, r.begin, r.size(), data.fps};
     for (int k = 0; k < r.size(); ++k) log.capture_time[static_cast<std::size_t>(r.begin.value + k)] = frames.TimeOf(k);
@@ -339,6 +340,7 @@ void Append(RunOutput& all, const RunOutput& rows) {
   all.per_robot.insert(all.per_robot.end(), rows.per_robot.begin(), rows.per_robot.end());
   all.links.insert(all.links.end(), rows.links.begin(), rows.links.end());
   all.queries.insert(all.queries.end(), rows.queries.begin(), rows.queries.end());
+  all.closure_pairs.insert(all.closure_pairs.end(), rows.closure_pairs.begin(), rows.closure_pairs.end());
 }
 
 void WriteLaunchFiles(const std::filesystem::path& dir, const ExperimentConfig& config, const RunOutput& all,
@@ -353,6 +355,7 @@ void WriteLaunchFiles(const std::filesystem::path& dir, const ExperimentConfig& 
   write("per_robot.csv", kPerRobotHeader, all.per_robot);
   write("links.csv", kLinksHeader, all.links);
   if (config.outputs.queries) write("queries.csv", kQueriesHeader, all.queries);
+  write("closure_pairs.csv", kClosurePairsHeader, all.closure_pairs);
   WriteFileAtomic(dir / "agents.csv", agents_csv);
   WriteFileAtomic(dir / "summary.json", SummaryJson(all.runs));
 }

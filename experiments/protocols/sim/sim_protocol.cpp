@@ -140,6 +140,7 @@ void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLo
       if (q.latency) row.latency_ns = q.latency->ns();
       row.relevant = s.truth.relevant[i];
       row.correct = s.truth.correct[i];
+      row.query_class = QueryClassName(s.truth.query_class[i]);
       if (i < log.query_hops.size()) row.hops = log.query_hops[i];
       out.queries.push_back(row);
     }
@@ -147,6 +148,11 @@ void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLo
   for (MessageRow m : log.messages) {
     m.key = key;
     out.messages.push_back(std::move(m));
+  }
+  for (const PairClosure& p : s.closures.pairs) {
+    std::optional<std::int64_t> first;
+    if (p.first) first = p.first->ns();
+    out.closure_pairs.push_back(ClosurePairRow{key, p.a.value, p.b.value, first});
   }
   if (spec.network != nullptr && spec.network->params.model == LinkModelKind::kRadio) {
     out.radio.push_back(RadioRowOf(key, log));
@@ -181,6 +187,18 @@ RunResult MakeRow(const RunSpec& spec, const std::string& strategy, const SimRun
     row.p99_latency_ms = s.latency.p99_ms;
   }
   row.dropped_messages = s.dropped;
+  const ClosureStats& cl = s.closures;
+  RunClosures& c = row.closures.emplace();
+  c.inter_queries = cl.inter_queries;
+  c.intra_queries = cl.intra_queries;
+  c.inter_recognised = cl.inter_recognised;
+  c.intra_recognised = cl.intra_recognised;
+  if (cl.inter_queries > 0) c.inter_auc = cl.inter_auc;
+  if (cl.intra_queries > 0) c.intra_auc = cl.intra_auc;
+  c.inter_candidates = cl.inter_candidates;
+  c.inter_closures = cl.inter_closures;
+  for (const PairClosure& p : cl.pairs) c.pairs_closed += p.first ? 1 : 0;
+  if (const std::optional<SimTime> median = MedianFirstClosure(cl.pairs)) c.median_first_closure_ns = median->ns();
   return row;
 }
 

@@ -97,6 +97,7 @@ SimRunLog Harvest(const Scenario& scenario, const RunRecorders& recorders) {
   SimRunLog log;
   log.robots = scenario.params().robots;
   log.capture_time = scenario.CaptureTimes();
+  log.taker = scenario.split().owner;
   log.events = scenario.simulator().EventsExecuted();
   log.end = scenario.simulator().Now();
   for (const auto& agent : scenario.agents()) {
@@ -177,7 +178,7 @@ SimRunLog RunBowSimulation(const Dataset& data, const std::vector<BowVector>& ve
 
 SimRunSummary SummarizeSimRun(const SimRunLog& log, const Positions& positions, double radius_m, int window) {
   SimRunSummary s;
-  s.truth = ComputeOnlineTruth(log.queries, positions, log.capture_time, radius_m, window);
+  s.truth = ComputeOnlineTruth(log.queries, positions, log.capture_time, log.taker, radius_m, window);
   std::vector<MatchOutcome> outcomes;
   outcomes.reserve(log.queries.size());
   for (const auto& q : log.queries) {
@@ -207,6 +208,7 @@ SimRunSummary SummarizeSimRun(const SimRunLog& log, const Positions& positions, 
   std::vector<std::int64_t> served;
   for (const auto& l : log.loads) served.push_back(l.searches);
   s.worst_balance_ratio = WorstBalanceRatio(served);
+  s.closures = ComputeClosures(log.queries, s.truth, positions, log.taker, radius_m, log.robots);
   return s;
 }
 

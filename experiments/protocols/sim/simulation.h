@@ -70,6 +70,7 @@ struct SimRunLog {
   bool has_roles = false;                 // roles and links[].roles were counted (simulated networks)
   std::vector<MessageRow> messages;       // when record_messages
   std::vector<SimTime> capture_time;      // per frame of the sequence
+  std::vector<RobotId> taker;             // per frame of the sequence: the robot that took it
   std::int64_t verify_requested = 0;
   std::int64_t verify_accepted = 0;
   std::uint64_t events = 0;
@@ -99,6 +100,7 @@ struct SimRunSummary {
   double worst_balance_ratio = 0.0;       // from the searches each robot actually served
   std::vector<double> precision, recall;  // the PR curve
   OnlineTruth truth;
+  ClosureStats closures;                  // inter- and intra-robot (sim_metrics.h)
 };
 
 SimRunSummary SummarizeSimRun(const SimRunLog& log, const Positions& positions, double radius_m, int window);

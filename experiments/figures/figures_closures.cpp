@@ -1,0 +1,184 @@
+// loop_closures.png (figures_traffic.h): when the robots of a team find their first inter-robot
+// loop closure with each other, from closure_pairs.csv (docs/design.md section 3, "Inter-robot
+// loop closures"): the share of pairs closed against time per strategy, and each pair's first
+// closure as a matrix for the paper's two strategies.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "experiments/figures/figure_style.h"
+#include "experiments/figures/figures_traffic.h"
+#include "experiments/figures/gnuplot_text.h"
+#include "experiments/results/one_line_text.h"
+#include "experiments/results/protocol_traits.h"
+#include "experiments/results/result_writers.h"
+
+namespace dvpr {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The first closures (s) of each run of one (strategy, n, network variant), by run: one entry
+// per pair of the run, NaN for a pair that found none.
+std::map<int, std::vector<double>> FirstClosures(const CsvTable& pairs, const std::string& strategy, int v, int n) {
+  std::map<int, std::vector<double>> by_run;
+  if (pairs.header.empty()) return by_run;
+  const std::size_t p = pairs.Column("protocol"), s = pairs.Column("strategy"), r = pairs.Column("robots"),
+                    run = pairs.Column("run"), net = pairs.Column("network_variant"),
+                    first = pairs.Column("first_closure_ns");
+  for (std::size_t i = 0; i < pairs.rows.size(); ++i) {
+    const auto& row = pairs.rows[i];
+    if (row.size() != pairs.header.size()) continue;
+    if (!RowTraits(row[p]).simulated_network || row[s] != strategy || row[r] != std::to_string(n) ||
+        row[net] != std::to_string(v)) {
+      continue;
+    }
+    const int k = pairs.Integer(i, run, 0, std::numeric_limits<int>::max());
+    by_run[k].push_back(row[first].empty() ? std::numeric_limits<double>::quiet_NaN()
+                                           : pairs.Count(i, first) / 1e9);
+  }
+  return by_run;
+}
+
+// The share of pairs closed by time t, for each run, as steps: at every time a run closes a
+// pair, the mean over runs and the lowest and highest run's share, just before and from then on.
+// Lines "t mean low high"; from 0 to `end`. `top`: the highest share drawn, if higher.
+std::string ShareSteps(const std::map<int, std::vector<double>>& by_run, double end, double& top) {
+  struct Run {
+    std::vector<double> firsts;  // ascending, the pairs that found one
+    double pairs = 1;
+    std::size_t next = 0;        // firsts[0, next) are <= the current time
+  };
+  std::vector<Run> runs;
+  std::vector<double> times;
+  for (const auto& [index, firsts] : by_run) {
+    Run r;
+    for (double x : firsts) {
+      if (!std::isnan(x)) r.firsts.push_back(x);
+    }
+    std::sort(r.firsts.begin(), r.firsts.end());
+    r.pairs = static_cast<double>(std::max<std::size_t>(firsts.size(), 1));
+    times.insert(times.end(), r.firsts.begin(), r.firsts.end());
+    runs.push_back(std::move(r));
+  }
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  std::string out;
+  const auto line = [&](double t) {
+    double sum = 0, low = 1, high = 0;
+    for (const Run& r : runs) {
+      const double share = static_cast<double>(r.next) / r.pairs;
+      sum += share;
+      low = std::min(low, share);
+      high = std::max(high, share);
+    }
+    top = std::max(top, high);
+    out += FormatDouble(t) + " " + FormatDouble(sum / static_cast<double>(runs.size())) + " " + FormatDouble(low) +
+           " " + FormatDouble(high) + "\n";
+  };
+  line(0.0);
+  for (double t : times) {
+    line(t);  // just before t
+    for (Run& r : runs) {
+      while (r.next < r.firsts.size() && r.firsts[r.next] <= t) ++r.next;
+    }
+    line(t);
+  }
+  line(std::max(end, times.empty() ? 0.0 : times.back()));
+  return out;
+}
+
+// Run 0's first closures as a symmetric n x n matrix (s), NaN (drawn blank) on the diagonal and
+// where a pair found none; pairs are listed a < b, by a then b (closure_pairs.csv's order).
+void WriteFirstMatrix(const fs::path& file, const std::vector<double>& firsts, int n) {
+  std::vector<double> m(static_cast<std::size_t>(n * n), std::numeric_limits<double>::quiet_NaN());
+  std::size_t k = 0;
+  for (int a = 0; a < n; ++a) {
+    for (int b = a + 1; b < n && k < firsts.size(); ++b, ++k) {
+      m[static_cast<std::size_t>(a * n + b)] = m[static_cast<std::size_t>(b * n + a)] = firsts[k];
+    }
+  }
+  std::string dat;
+  for (int r = 0; r < n; ++r) {
+    for (int c = 0; c < n; ++c) {
+      const double x = m[static_cast<std::size_t>(r * n + c)];
+      dat += (c ? " " : "") + (std::isnan(x) ? std::string("NaN") : FormatDouble(x));
+    }
+    dat += "\n";
+  }
+  WriteFileAtomic(file, dat);
+}
+
+}  // namespace
+
+std::optional<FigureScript> WriteClosureFigure(const fs::path& dir, const TrafficTable& t, const CsvTable& pairs,
+                                               std::string& why) {
+  const int v = t.ShownVariant();
+  const int n = t.robots.empty() ? 0 : t.robots.back();
+  std::vector<std::pair<std::string, std::map<int, std::vector<double>>>> shown;
+  for (const std::string& s : t.strategies) {
+    auto by_run = FirstClosures(pairs, s, v, n);
+    if (!by_run.empty()) shown.emplace_back(s, std::move(by_run));
+  }
+  if (v < 0 || n < 2 || shown.empty()) {
+    why = "needs protocol sim with two or more robots (closure_pairs.csv)";
+    return std::nullopt;
+  }
+  double end = 0;  // the last frame's time: the runs' longest drive
+  for (const std::string& s : t.strategies) {
+    if (const TrafficCell* c = t.Find(s, v, n)) end = std::max(end, c->longest_drive_s);
+  }
+  std::string dat;
+  std::ostringstream plot;
+  plot << "plot ";
+  int block = 0;
+  double highest = 0;
+  for (const auto& [s, by_run] : shown) {
+    dat += "# " + OneLineText(s) + "\n" + ShareSteps(by_run, end, highest) + "\n\n";
+    const std::string colour = "lc rgb '" + figure_style::StrategyColour(t.StrategyIndex(s)) + "'";
+    plot << (block ? ", \\\n     " : "") << "'closures.dat' index " << block
+         << " using 1:3:4 with filledcurves fs transparent solid 0.15 noborder " << colour << " notitle, \\\n"
+         << "     'closures.dat' index " << block << " using 1:2 with lines lw 2 " << colour << " title "
+         << GnuplotQuote(s + " (" + std::to_string(by_run.size()) + (by_run.size() == 1 ? " run)" : " runs)"));
+    ++block;
+  }
+  WriteFileAtomic(dir / "closures.dat", dat);
+  const std::size_t matrices = std::min<std::size_t>(shown.size(), 2);
+  double top = 0;
+  for (std::size_t i = 0; i < matrices; ++i) {
+    const auto& runs = shown[i].second;
+    const std::vector<double>& firsts = runs.begin()->second;  // the lowest run (run 0)
+    for (double x : firsts) {
+      if (!std::isnan(x)) top = std::max(top, x);
+    }
+    WriteFirstMatrix(dir / ("closure_matrix_" + std::to_string(i) + ".dat"), firsts, n);
+  }
+  std::ostringstream s;
+  s << "set multiplot layout 1," << 1 + matrices << " title "
+    << GnuplotTitle({"Inter-robot loop closures, n = " + std::to_string(n) + ", " + NetworkName(*t.Network(v))})
+    << " font ',13'\n"
+    << "set title "
+    << GnuplotTitle({"Robot pairs with a loop closure between them", "line: mean over runs, band: lowest to highest run"})
+    << "\nset xlabel 'time [s]'\nset ylabel 'share of the n (n - 1) / 2 pairs'\nset xrange [0:"
+    << FormatDouble(std::max(end, 1.0)) << "]\nset yrange [0:" << FormatDouble(std::clamp(highest * 1.25, 0.1, 1.05))
+    << "]\nset key top left\n"
+    << plot.str() << "\n"
+    << "set size ratio -1\nunset grid\nunset key\nset xlabel 'robot'\nset ylabel 'robot'\n"
+    << "set xrange [-0.5:" << n - 0.5 << "]\nset yrange [" << n - 0.5 << ":-0.5]\nset cbrange [0:"
+    << FormatDouble(std::max(top, 1.0)) << "]\nset palette defined (0 '#08306b', 1 '#2171b5', 2 '#6baed6', 3 '#c6dbef')\n"
+    << "set tics out\nset xtics " << std::max(1, n / 10) << "\nset ytics " << std::max(1, n / 10) << "\n";
+  for (std::size_t i = 0; i < matrices; ++i) {
+    s << (i + 1 == matrices ? "set colorbox\nset cblabel 'first closure [s]'\n" : "unset colorbox\n") << "set title "
+      << GnuplotTitle({shown[i].first + ": first closure per pair", "run " +
+                                                                       std::to_string(shown[i].second.begin()->first) +
+                                                                       "; blank: none"})
+      << " tc rgb '" << figure_style::StrategyColour(t.StrategyIndex(shown[i].first))
+      << "'\nplot 'closure_matrix_" << i << ".dat' matrix with image notitle\n";
+  }
+  return FigureScript{s.str() + "unset multiplot\n", 700 + 550 * static_cast<int>(matrices), 600};
+}
+
+}  // namespace dvpr
