@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <set>
 #include <sstream>
@@ -14,6 +15,7 @@
 #include "experiments/results/protocol_traits.h"
 #include "experiments/results/result_writers.h"
 #include "experiments/results/safe_output.h"
+#include "experiments/results/spread.h"
 
 namespace dvpr {
 
@@ -66,20 +68,33 @@ void Add(Means& m, const std::string& strategy, int robots, double v) {
   sum += v;
   ++count;
 }
+
 std::string Mean(const Means& m, const std::string& strategy, int robots) {
   const auto it = m.find({strategy, robots});
   return it == m.end() ? std::string("NaN") : FormatDouble(it->second.first / it->second.second);
 }
 
-// One line per n, one column per design (NaN where it did not run).
-void WriteTable(const fs::path& file, const Means& m, const std::set<int>& robots, const std::string& what) {
+// Each run's value per (strategy, n), for the spread of the relative AUC (spread.h).
+using Values = std::map<std::pair<std::string, int>, std::vector<double>>;
+
+// The mean over the runs and the half-width of its 95 % confidence interval, NaN where it did
+// not run (the half-width NaN below 2 runs).
+std::string MeanAndHalfWidth(const Values& v, const std::string& strategy, int robots) {
+  const auto it = v.find({strategy, robots});
+  const Spread s = it == v.end() ? Spread{} : SpreadOf(it->second);
+  return (std::isnan(s.mean) ? "NaN" : FormatDouble(s.mean)) + " " + (std::isnan(s.ci95) ? "NaN" : FormatDouble(s.ci95));
+}
+
+// One line per n, then `cell` of each design (its column or columns).
+void WriteTable(const fs::path& file, const std::set<int>& robots, const std::string& what,
+                const std::function<std::string(const std::string&, int)>& cell) {
   std::ostringstream out;
   out << "# n, then " << what << " of:";
   for (const auto& [name, title] : kDesigns) out << ' ' << name;
   out << '\n';
   for (int n : robots) {
     out << n;
-    for (const auto& [name, title] : kDesigns) out << ' ' << Mean(m, name, n);
+    for (const auto& [name, title] : kDesigns) out << ' ' << cell(name, n);
     out << '\n';
   }
   WriteFileAtomic(file, out.str());
@@ -121,10 +136,12 @@ std::vector<int> WriteSizes(const fs::path& data_dir, const fs::path& out_dir) {
 bool WriteBowComparisonData(const fs::path& out_dir, const fs::path& data_dir, const std::vector<RunResult>& rows) {
   if (!fs::exists(out_dir / "bow.csv")) return false;
   Means auc, bytes, vote;
+  Values auc_runs;
   std::set<int> robots;
   for (const RunResult& r : rows) {
     if (!RowTraits(r.key.protocol).static_evaluation) continue;
     Add(auc, r.key.strategy, r.key.robots, r.relative_auc);
+    if (!std::isnan(r.relative_auc)) auc_runs[{r.key.strategy, r.key.robots}].push_back(r.relative_auc);
     robots.insert(r.key.robots);
   }
   for (const auto& row : ReadCsv(out_dir / "bow.csv")) {
@@ -134,9 +151,14 @@ bool WriteBowComparisonData(const fs::path& out_dir, const fs::path& data_dir, c
     Add(vote, row.at("strategy"), n, Number(row, "vote_not_centralized_fraction"));
   }
   if (robots.empty()) return false;
-  WriteTable(data_dir / "bow_auc.dat", auc, robots, "mean relative AUC (paper protocol)");
-  WriteTable(data_dir / "bow_bytes.dat", bytes, robots, "mean query bytes per query");
-  WriteTable(data_dir / "bow_vote.dat", vote, robots, "share of votes not the centralized BoW best");
+  const auto mean_of = [](const Means& m) {
+    return [&m](const std::string& design, int n) { return Mean(m, design, n); };
+  };
+  WriteTable(data_dir / "bow_auc.dat", robots, "mean relative AUC (paper protocol)", mean_of(auc));
+  WriteTable(data_dir / "bow_auc_ci.dat", robots, "relative AUC (paper protocol) (mean, 95 % CI half-width)",
+             [&](const std::string& design, int n) { return MeanAndHalfWidth(auc_runs, design, n); });
+  WriteTable(data_dir / "bow_bytes.dat", robots, "mean query bytes per query", mean_of(bytes));
+  WriteTable(data_dir / "bow_vote.dat", robots, "share of votes not the centralized BoW best", mean_of(vote));
   std::string titles;
   for (int n : WriteSizes(data_dir, out_dir)) titles += std::to_string(n) + '\n';
   WriteFileAtomic(data_dir / "bow_sizes.titles", titles);
@@ -158,9 +180,19 @@ std::string BowComparisonScript(const fs::path& data_dir, const fs::path& png) {
     }
     return p + "\n";
   };
-  s += "set title 'Relative AUC (static protocol; BoW against centralized BoW, global against centralized global)'\n"
+  // The mean's 95 % confidence interval as bars in the line's colour (bow_auc_ci.dat: mean and
+  // half-width per design), drawn under the lines.
+  std::string auc_plot = "plot ";
+  for (std::size_t i = 0; i < std::size(kDesigns); ++i) {
+    auc_plot += "'bow_auc_ci.dat' using 1:" + std::to_string(2 + 2 * i) + ":" + std::to_string(3 + 2 * i) +
+                " with yerrorbars ps 0 lw 1 lc rgb '" + kColours[i] + "' notitle, ";
+  }
+  auc_plot += lines("bow_auc.dat", {2, 3, 4, 5, 6}).substr(5);  // after its "plot "
+  auc_plot.pop_back();  // the newline
+  s += "set title 'Relative AUC (static protocol; BoW against centralized BoW, global against centralized global)'."
+       "\"\\n\".'mean over runs, bars: its 95 % confidence interval'\n"
        "set ylabel 'relative AUC'\nset yrange [0:1.05]\nset key bottom left\n" +
-       lines("bow_auc.dat", {2, 3, 4, 5, 6});
+       auc_plot + "\n";
   // The seed paper's sizes as reference lines: BoW's distributed query, 16 kB (about 2000 words
   // of 8 bytes) plus the overhead of sending to n robots, and NetVLAD's, 512 bytes to one robot.
   std::string bytes_plot = lines("bow_bytes.dat", {2, 3, 4, 5, 6});

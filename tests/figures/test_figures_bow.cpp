@@ -2,8 +2,11 @@
 // link planted at any of their names is replaced, never followed (they were written with
 // std::ofstream, which wrote through such a link into its target), and what they hold is worked
 // out by hand from a small runs, bow.csv and bow_sizes.csv.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -20,7 +23,7 @@ namespace fs = std::filesystem;
 using testing_support::Names;
 using testing_support::Slurp;
 
-const std::vector<std::string> kBowFiles = {"bow_auc.dat", "bow_bytes.dat", "bow_sizes.dat", "bow_sizes.titles",
+const std::vector<std::string> kBowFiles = {"bow_auc.dat", "bow_auc_ci.dat", "bow_bytes.dat", "bow_sizes.dat", "bow_sizes.titles",
                                             "bow_vote.dat"};
 
 RunResult Paper(const std::string& strategy, int robots, int run, double rel) {
@@ -63,6 +66,24 @@ TEST_F(BowFigureData, TheFilesHoldTheMeansWorkedByHand) {
   EXPECT_EQ(Names(data()), kBowFiles);  // no temporary left
   EXPECT_EQ(Slurp(data() / "bow_auc.dat"),
             std::string("# n, then mean relative AUC (paper protocol) of:") + kDesigns + "2 0.5 NaN 0.625 NaN NaN\n");
+  // The spread beside each mean: one run of decentralized has none; bow_decentralized's 0.5 and
+  // 0.75 have sample std 0.25 / sqrt(2), so the half-width is t(0.975, 1) x 0.25 / 2 with
+  // t(0.975, 1) = tan(0.475 pi) (the Cauchy quantile): 1.5882755920...
+  const std::string ci = Slurp(data() / "bow_auc_ci.dat");
+  const std::string header =
+      std::string("# n, then relative AUC (paper protocol) (mean, 95 % CI half-width) of:") + kDesigns;
+  ASSERT_EQ(ci.substr(0, header.size()), header);
+  std::istringstream line(ci.substr(header.size()));
+  std::vector<std::string> f;
+  for (std::string x; line >> x;) f.push_back(x);
+  ASSERT_EQ(f.size(), 11u) << ci;
+  EXPECT_EQ(f[0], "2");
+  EXPECT_EQ(f[1], "0.5");
+  EXPECT_EQ(f[2], "NaN");
+  EXPECT_EQ(f[3] + f[4], "NaNNaN");
+  EXPECT_EQ(f[5], "0.625");
+  EXPECT_NEAR(std::stod(f[6]), std::tan(0.475 * std::numbers::pi) * 0.125, 1e-12);
+  EXPECT_EQ(f[7] + f[8] + f[9] + f[10], "NaNNaNNaNNaN");
   EXPECT_EQ(Slurp(data() / "bow_bytes.dat"),
             std::string("# n, then mean query bytes per query of:") + kDesigns + "2 NaN NaN 300 NaN NaN\n");
   EXPECT_EQ(Slurp(data() / "bow_vote.dat"), std::string("# n, then share of votes not the centralized BoW best of:") +
