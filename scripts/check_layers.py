@@ -32,6 +32,8 @@ import pathlib
 import re
 import sys
 
+from source_tree import tree_files
+
 ROOT = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).resolve().parent.parent)
 DOC = ROOT / "docs" / "architecture.md"
 DOC_NAME = "docs/architecture.md"
@@ -142,7 +144,7 @@ def target_of(line, modules, packages):
 
 
 def source_files():
-    for f in sorted(ROOT.rglob("*")):
+    for f in tree_files(ROOT):
         rel = f.relative_to(ROOT)
         if f.suffix in SOURCE_SUFFIXES and rel.parts[0] != "build" and not rel.parts[0].startswith("."):
             yield f, rel.as_posix()

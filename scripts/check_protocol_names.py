@@ -19,6 +19,8 @@ import pathlib
 import re
 import sys
 
+from source_tree import tree_files
+
 ROOT = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).resolve().parent.parent)
 TRAITS = "experiments/results/protocol_traits.h"
 ALLOWED = {
@@ -80,7 +82,7 @@ def comparison(name):
 
 def violations(names):
     found = []
-    for f in sorted(ROOT.rglob("*")):
+    for f in tree_files(ROOT):
         rel = f.relative_to(ROOT)
         if f.suffix not in SOURCE_SUFFIXES or not f.is_file():
             continue

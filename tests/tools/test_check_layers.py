@@ -25,17 +25,18 @@ import tempfile
 
 SOURCE = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).resolve().parents[2])
 COPIED = (".h", ".hpp", ".cpp", ".lcm")
+sys.path.insert(0, str(SOURCE / "scripts"))
+from source_tree import tree_files  # noqa: E402 (found through SOURCE)
 
 
 def copy_tree(root):
     (root / "scripts").mkdir()
     (root / "docs").mkdir()
     shutil.copy(SOURCE / "scripts/check_layers.py", root / "scripts")
+    shutil.copy(SOURCE / "scripts/source_tree.py", root / "scripts")
     shutil.copy(SOURCE / "docs/architecture.md", root / "docs")
-    for f in SOURCE.rglob("*"):
+    for f in tree_files(SOURCE):  # not build/: the tests running beside this one write there
         rel = f.relative_to(SOURCE)
-        if rel.parts[0] == "build" or rel.parts[0].startswith("."):
-            continue
         if f.is_file() and (f.suffix in COPIED or f.name == "CMakeLists.txt"):
             (root / rel).parent.mkdir(parents=True, exist_ok=True)
             shutil.copy(f, root / rel)

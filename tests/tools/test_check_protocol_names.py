@@ -43,6 +43,7 @@ def main():
         root = pathlib.Path(tmp)
         (root / "scripts").mkdir()
         shutil.copy(SOURCE / "scripts/check_protocol_names.py", root / "scripts")
+        shutil.copy(SOURCE / "scripts/source_tree.py", root / "scripts")
         (root / TRAITS).parent.mkdir(parents=True)
         shutil.copy(SOURCE / TRAITS, root / TRAITS)
         code, err = run(root)
