@@ -158,9 +158,8 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
   const bool bow = std::any_of(config.sweep.strategies.begin(), config.sweep.strategies.end(),
                                [](const StrategySpec& s) { return s.bag_of_words(); });
   const bool radio = std::count(config.network.model.begin(), config.network.model.end(), LinkModelKind::kRadio) > 0;
-  // closure_pairs.csv when a team runs (inter-robot loop closures).
-  const bool teams = std::any_of(config.sweep.protocols.begin(), config.sweep.protocols.end(),
-                                 [](const std::string& p) { return p == kSimProtocol || p == kLcmProtocol; });
+  // closure_pairs.csv when a team runs (its robots exchange messages: inter-robot loop closures).
+  const bool teams = AnyProtocol(config.sweep.protocols, &ProtocolTraits::sends_messages);
   RowFiles files(folder.output(), config.outputs, !config.dropout.empty() && config.failover.enabled, bow, radio,
                  teams);
   std::vector<RunResult> rows;

@@ -8,8 +8,6 @@
 #include <string>
 #include <unordered_map>
 
-#include "experiments/evaluation/metrics.h"
-
 namespace dvpr {
 
 LatencyStats ComputeLatency(const std::vector<QueryRecord>& queries) {
@@ -114,6 +112,16 @@ OnlineTruth ComputeOnlineTruth(const std::vector<QueryRecord>& queries, const Po
   return truth;
 }
 
+MatchOutcome OutcomeOf(const QueryRecord& q) {
+  MatchOutcome o;
+  o.query = q.frame;
+  if (q.best) {
+    o.match = q.best->frame;
+    o.score = q.best->distance;
+  }
+  return o;
+}
+
 const char* QueryClassName(QueryClass c) {
   switch (c) {
     case QueryClass::kInterRobot: return "inter";
@@ -135,20 +143,14 @@ ClosureStats ComputeClosures(const std::vector<QueryRecord>& queries, const Onli
   std::vector<std::optional<SimTime>> first(static_cast<std::size_t>(robots) * static_cast<std::size_t>(robots));
   for (std::size_t q = 0; q < queries.size(); ++q) {
     const QueryRecord& r = queries[q];
-    MatchOutcome o;
-    o.query = r.frame;
-    if (r.best) {
-      o.match = r.best->frame;
-      o.score = r.best->distance;
-    }
     if (truth.query_class[q] == QueryClass::kInterRobot) {
       ++s.inter_queries;
       s.inter_recognised += truth.correct[q] ? 1 : 0;
-      inter.push_back(o);
+      inter.push_back(OutcomeOf(r));
     } else if (truth.query_class[q] == QueryClass::kIntraRobot) {
       ++s.intra_queries;
       s.intra_recognised += truth.correct[q] ? 1 : 0;
-      intra.push_back(o);
+      intra.push_back(OutcomeOf(r));
     }
     if (!r.verify_requested || !r.best) continue;
     const int a = taker[static_cast<std::size_t>(r.frame.value)].value;

@@ -8,6 +8,7 @@
 #include "agents/algorithms/ids.h"
 #include "agents/algorithms/query_record.h"
 #include "experiments/data/dataset.h"
+#include "experiments/evaluation/metrics.h"
 #include "sim/sim_time.h"
 
 namespace dvpr {
@@ -43,6 +44,9 @@ struct OnlineTruth {
 OnlineTruth ComputeOnlineTruth(const std::vector<QueryRecord>& queries, const Positions& positions,
                                const std::vector<SimTime>& capture_time, const std::vector<RobotId>& taker,
                                double radius_m, int window);
+
+// What a query got back, as the PR evaluation ranks it (metrics.h): its best match and distance.
+MatchOutcome OutcomeOf(const QueryRecord& q);
 
 // "inter" or "intra" (queries.csv's class column), "" when not relevant.
 const char* QueryClassName(QueryClass c);

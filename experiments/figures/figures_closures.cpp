@@ -21,13 +21,22 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The first closures (s) of each run of one (strategy, n, network variant), by run: one entry
-// per pair of the run, NaN for a pair that found none.
-std::map<int, std::vector<double>> FirstClosures(const CsvTable& pairs, const std::string& strategy, int v, int n) {
-  std::map<int, std::vector<double>> by_run;
+// One row of closure_pairs.csv: robots a and b and their first closure (s), NaN when none.
+struct PairFirst {
+  int a = 0;
+  int b = 0;
+  double first = std::numeric_limits<double>::quiet_NaN();
+};
+
+// The pairs of each run of one (strategy, n, network variant), by run. The robots index the
+// matrix: anything but a robot of the team is refused, naming file, line and column.
+std::map<int, std::vector<PairFirst>> FirstClosures(const CsvTable& pairs, const std::string& strategy, int v,
+                                                    int n) {
+  std::map<int, std::vector<PairFirst>> by_run;
   if (pairs.header.empty()) return by_run;
   const std::size_t p = pairs.Column("protocol"), s = pairs.Column("strategy"), r = pairs.Column("robots"),
                     run = pairs.Column("run"), net = pairs.Column("network_variant"),
+                    robot_a = pairs.Column("robot_a"), robot_b = pairs.Column("robot_b"),
                     first = pairs.Column("first_closure_ns");
   for (std::size_t i = 0; i < pairs.rows.size(); ++i) {
     const auto& row = pairs.rows[i];
@@ -37,8 +46,9 @@ std::map<int, std::vector<double>> FirstClosures(const CsvTable& pairs, const st
       continue;
     }
     const int k = pairs.Integer(i, run, 0, std::numeric_limits<int>::max());
-    by_run[k].push_back(row[first].empty() ? std::numeric_limits<double>::quiet_NaN()
-                                           : pairs.Count(i, first) / 1e9);
+    PairFirst f{pairs.Integer(i, robot_a, 0, n - 1), pairs.Integer(i, robot_b, 0, n - 1)};
+    if (!row[first].empty()) f.first = pairs.Count(i, first) / 1e9;
+    by_run[k].push_back(f);
   }
   return by_run;
 }
@@ -46,7 +56,7 @@ std::map<int, std::vector<double>> FirstClosures(const CsvTable& pairs, const st
 // The share of pairs closed by time t, for each run, as steps: at every time a run closes a
 // pair, the mean over runs and the lowest and highest run's share, just before and from then on.
 // Lines "t mean low high"; from 0 to `end`. `top`: the highest share drawn, if higher.
-std::string ShareSteps(const std::map<int, std::vector<double>>& by_run, double end, double& top) {
+std::string ShareSteps(const std::map<int, std::vector<PairFirst>>& by_run, double end, double& top) {
   struct Run {
     std::vector<double> firsts;  // ascending, the pairs that found one
     double pairs = 1;
@@ -54,13 +64,13 @@ std::string ShareSteps(const std::map<int, std::vector<double>>& by_run, double 
   };
   std::vector<Run> runs;
   std::vector<double> times;
-  for (const auto& [index, firsts] : by_run) {
+  for (const auto& [index, pairs] : by_run) {
     Run r;
-    for (double x : firsts) {
-      if (!std::isnan(x)) r.firsts.push_back(x);
+    for (const PairFirst& f : pairs) {
+      if (!std::isnan(f.first)) r.firsts.push_back(f.first);
     }
     std::sort(r.firsts.begin(), r.firsts.end());
-    r.pairs = static_cast<double>(std::max<std::size_t>(firsts.size(), 1));
+    r.pairs = static_cast<double>(std::max<std::size_t>(pairs.size(), 1));
     times.insert(times.end(), r.firsts.begin(), r.firsts.end());
     runs.push_back(std::move(r));
   }
@@ -91,15 +101,12 @@ std::string ShareSteps(const std::map<int, std::vector<double>>& by_run, double 
   return out;
 }
 
-// Run 0's first closures as a symmetric n x n matrix (s), NaN (drawn blank) on the diagonal and
-// where a pair found none; pairs are listed a < b, by a then b (closure_pairs.csv's order).
-void WriteFirstMatrix(const fs::path& file, const std::vector<double>& firsts, int n) {
+// One run's first closures as a symmetric n x n matrix (s), NaN (drawn blank) on the diagonal
+// and where a pair found none.
+void WriteFirstMatrix(const fs::path& file, const std::vector<PairFirst>& pairs, int n) {
   std::vector<double> m(static_cast<std::size_t>(n * n), std::numeric_limits<double>::quiet_NaN());
-  std::size_t k = 0;
-  for (int a = 0; a < n; ++a) {
-    for (int b = a + 1; b < n && k < firsts.size(); ++b, ++k) {
-      m[static_cast<std::size_t>(a * n + b)] = m[static_cast<std::size_t>(b * n + a)] = firsts[k];
-    }
+  for (const PairFirst& f : pairs) {
+    m[static_cast<std::size_t>(f.a * n + f.b)] = m[static_cast<std::size_t>(f.b * n + f.a)] = f.first;
   }
   std::string dat;
   for (int r = 0; r < n; ++r) {
@@ -118,7 +125,7 @@ std::optional<FigureScript> WriteClosureFigure(const fs::path& dir, const Traffi
                                                std::string& why) {
   const int v = t.ShownVariant();
   const int n = t.robots.empty() ? 0 : t.robots.back();
-  std::vector<std::pair<std::string, std::map<int, std::vector<double>>>> shown;
+  std::vector<std::pair<std::string, std::map<int, std::vector<PairFirst>>>> shown;
   for (const std::string& s : t.strategies) {
     auto by_run = FirstClosures(pairs, s, v, n);
     if (!by_run.empty()) shown.emplace_back(s, std::move(by_run));
@@ -150,11 +157,11 @@ std::optional<FigureScript> WriteClosureFigure(const fs::path& dir, const Traffi
   double top = 0;
   for (std::size_t i = 0; i < matrices; ++i) {
     const auto& runs = shown[i].second;
-    const std::vector<double>& firsts = runs.begin()->second;  // the lowest run (run 0)
-    for (double x : firsts) {
-      if (!std::isnan(x)) top = std::max(top, x);
+    const std::vector<PairFirst>& pairs_of_run = runs.begin()->second;  // the lowest run (run 0)
+    for (const PairFirst& f : pairs_of_run) {
+      if (!std::isnan(f.first)) top = std::max(top, f.first);
     }
-    WriteFirstMatrix(dir / ("closure_matrix_" + std::to_string(i) + ".dat"), firsts, n);
+    WriteFirstMatrix(dir / ("closure_matrix_" + std::to_string(i) + ".dat"), pairs_of_run, n);
   }
   std::ostringstream s;
   s << "set multiplot layout 1," << 1 + matrices << " title "

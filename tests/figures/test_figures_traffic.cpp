@@ -241,6 +241,22 @@ TEST_F(TrafficFigures, LoopClosuresByHand) {
   EXPECT_EQ(why, "needs protocol sim with two or more robots (closure_pairs.csv)");
 }
 
+// closure_pairs.csv's robots index the first-closure matrix: a robot outside the team is refused.
+TEST_F(TrafficFigures, ClosurePairRobotsOutsideTheTeamAreRefused) {
+  const NetworkLabel p2p = Net(0, "point_to_point", 1e7);
+  CsvTable pairs;
+  pairs.path = "closure_pairs.csv";
+  pairs.header = {"protocol", "strategy", "robots", "run", "robot_a", "robot_b", "first_closure_ns", "network_variant"};
+  pairs.rows = {{"sim", "decentralized", "3", "0", "0", "3", "100", "0"}};
+  std::string why;
+  try {
+    WriteClosureFigure(dir_, TabulateTraffic({SimRun("decentralized", 3, 0, p2p, 600, 100)}), pairs, why);
+    ADD_FAILURE() << "accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "closure_pairs.csv: line 2: robot_b: expected an integer from 0 to 2, got '3'");
+  }
+}
+
 TEST_F(TrafficFigures, StrategyFiguresOnlyBeyondThePapersTwo) {
   if (!FindProgram("gnuplot")) GTEST_SKIP() << "gnuplot is not installed";
   WriteRunsCsv(dir_ / "runs.csv", Rows());

@@ -181,15 +181,7 @@ SimRunSummary SummarizeSimRun(const SimRunLog& log, const Positions& positions, 
   s.truth = ComputeOnlineTruth(log.queries, positions, log.capture_time, log.taker, radius_m, window);
   std::vector<MatchOutcome> outcomes;
   outcomes.reserve(log.queries.size());
-  for (const auto& q : log.queries) {
-    MatchOutcome o;
-    o.query = q.frame;
-    if (q.best) {
-      o.match = q.best->frame;
-      o.score = q.best->distance;
-    }
-    outcomes.push_back(o);
-  }
+  for (const auto& q : log.queries) outcomes.push_back(OutcomeOf(q));
   for (bool r : s.truth.relevant) s.relevant += r ? 1 : 0;
   const PrResult pr = EvaluatePr(outcomes, positions, radius_m, s.relevant);
   s.auc = pr.auc;
