@@ -1,5 +1,6 @@
 #include "agents/agent_core.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -16,6 +17,18 @@ void AgentSetup::Validate(const std::string& agent) const {
   }
   if (!(frames.fps > 0.0)) throw std::invalid_argument(agent + ": fps must be positive");
   if (frames.count < 0) throw std::invalid_argument(agent + ": a negative frame count");
+  if (!frames.times.empty() && frames.times.size() != static_cast<std::size_t>(frames.count)) {
+    throw std::invalid_argument(agent + ": " + std::to_string(frames.times.size()) + " capture times for " +
+                                std::to_string(frames.count) + " frames");
+  }
+  if (!std::is_sorted(frames.times.begin(), frames.times.end()) ||
+      (!frames.times.empty() && frames.times.front() < SimTime::Zero())) {
+    throw std::invalid_argument(agent + ": capture times must be ascending from 0 on");
+  }
+  if (!std::is_sorted(window_streams.begin(), window_streams.end()) ||
+      (!window_streams.empty() && window_streams.front().value <= 0)) {
+    throw std::invalid_argument(agent + ": window streams must begin at ascending frames after 0");
+  }
 }
 
 AgentCore::AgentCore(const AgentSetup& setup, double verify_max_distance, Transport& transport,
@@ -23,6 +36,7 @@ AgentCore::AgentCore(const AgentSetup& setup, double verify_max_distance, Transp
     : id_(setup.id),
       transport_(transport),
       params_(setup.params),
+      window_(setup.params.suppression_frames, setup.window_streams),
       robots_(setup.robots),
       verify_max_distance_(static_cast<float>(verify_max_distance)),
       records_(std::make_unique<Records>()) {

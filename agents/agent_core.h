@@ -23,6 +23,7 @@
 
 #include "agents/agent_params.h"
 #include "agents/algorithms/frame_stream.h"
+#include "agents/algorithms/frame_window.h"
 #include "agents/algorithms/geometric_verifier.h"
 #include "agents/algorithms/ids.h"
 #include "agents/algorithms/query_record.h"
@@ -40,6 +41,10 @@ struct AgentSetup {
   int robots = 0;  // team size: robot ids outside [0, robots) are foreign
   AgentParams params;
   FrameStream frames;
+  // Where the team's streams begin (FrameWindow's stream_starts): empty for the paper's split,
+  // each robot's first frame but robot 0's for a planned team, so a search's suppression window
+  // stays inside the querying robot's own frames.
+  std::vector<FrameId> window_streams = {};
   // Throws std::invalid_argument naming the field, prefixed with `agent` (the class's name).
   void Validate(const std::string& agent) const;
 };
@@ -117,6 +122,7 @@ class AgentCore : public TeamAgent {
   bool online_ = true;
   Transport& transport_;
   AgentParams params_;
+  FrameWindow window_;  // params_.suppression_frames within the query's stream
   RobotLoad load_;
 
  private:

@@ -86,7 +86,7 @@ std::span<const float> BowRobotAgent::VerificationFeatures(FrameId frame) {
 // The part is scored against what is stored when service starts; the reply goes out (and the
 // part is stored) when the service time has elapsed.
 std::int64_t BowRobotAgent::Search(Task& task) {
-  const BowSearchResult result = index_.Search(task.job.part, task.frame, params_.suppression_frames);
+  const BowSearchResult result = index_.Search(task.job.part, task.frame, window_);
   service_best_ = result.best;
   return result.comparisons;
 }

@@ -98,7 +98,7 @@ void RobotAgent::SearchAhead() {
   const auto search = [&](Task& t) {
     if (!ahead || t.kind != Task::Kind::kSearch) return;
     if (t.job.searched_at != version) {
-      t.job.result = index_.Search(t.job.descriptor, t.frame, params_.suppression_frames);
+      t.job.result = index_.Search(t.job.descriptor, t.frame, window_);
       t.job.searched_at = version;
     }
     ahead = !t.store;

@@ -12,14 +12,15 @@ void BowIndex::Add(RobotId robot, FrameId frame, const BowVector& part) {
   if (static_cast<std::size_t>(frame.value) >= sums_.size()) sums_.resize(static_cast<std::size_t>(frame.value) + 1, 0.0);
 }
 
-BowSearchResult BowIndex::Search(const BowVector& part, FrameId query, int window) const {
+BowSearchResult BowIndex::Search(const BowVector& part, FrameId query, const FrameWindow& window) const {
   BowSearchResult result;
+  const FrameInterval skip = window.Around(query.value);
   touched_.clear();
   for (const BowEntry& q : part) {
     const auto it = postings_.find(q.word);
     if (it == postings_.end()) continue;
     for (const Posting& p : it->second) {
-      if (std::abs(static_cast<std::int64_t>(p.frame) - query.value) <= window) continue;
+      if (skip.Contains(p.frame)) continue;
       ++result.comparisons;
       double& sum = sums_[static_cast<std::size_t>(p.frame)];
       if (sum == 0.0) touched_.push_back(p.frame);

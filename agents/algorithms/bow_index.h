@@ -6,7 +6,7 @@
 // A search scores a part of a query against every stored frame sharing one of its words: the sum
 // over the shared words of min(query, stored) weight, which for L1-normalised vectors is the
 // share of DBoW2's L1 score these words contribute (agents/algorithms/bow_vector.h, SharedMinimum). The
-// best is the highest score, ties to the lower frame id, never a frame within `window` of the
+// best is the highest score, ties to the lower frame id, never a frame in the suppression window of the
 // query: the same rule and the same summation order (the query's words ascending) as the static
 // protocol's (experiments/protocols/paper/static_bow.h), so both compute identical scores.
 #include <cstdint>
@@ -38,7 +38,7 @@ class BowIndex final : public Index<const BowVector&, BowIndexMatch> {
   // Keeps `part` of `frame`, observed by `robot`. A frame already stored is kept once (a
   // duplicated message on a real network adds nothing).
   void Add(RobotId robot, FrameId frame, const BowVector& part) override;
-  BowSearchResult Search(const BowVector& part, FrameId query, int window) const override;
+  BowSearchResult Search(const BowVector& part, FrameId query, const FrameWindow& window) const override;
 
   std::int64_t postings() const { return postings_count_; }
 

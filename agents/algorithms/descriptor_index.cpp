@@ -14,9 +14,7 @@
 namespace dvpr {
 namespace {
 
-bool InWindow(FrameId stored, FrameId query, int window) {
-  return std::abs(static_cast<long>(stored.value) - query.value) <= window;
-}
+bool InWindow(FrameId stored, const FrameInterval& window) { return window.Contains(stored.value); }
 
 // The model's distance from a row's dot product: the one expression both searches round alike.
 float ExpandedDistance(float norm, float dot, float q_norm) { return norm - 2.0f * dot + q_norm; }
@@ -60,8 +58,10 @@ void IncrementalIndex::RemoveIf(const std::function<bool(std::size_t)>& remove) 
   ++changes_;
 }
 
-IndexSearchResult IncrementalIndex::SearchFullScan(const float* query, FrameId query_frame, int window) const {
+IndexSearchResult IncrementalIndex::SearchFullScan(const float* query, FrameId query_frame,
+                                                   const FrameWindow& window) const {
   IndexSearchResult result;
+  const FrameInterval skip = window.Around(query_frame.value);
   const auto n = static_cast<Eigen::Index>(entries_.size());
   result.comparisons = n;
   if (n == 0) return result;
@@ -77,7 +77,7 @@ IndexSearchResult IncrementalIndex::SearchFullScan(const float* query, FrameId q
   Eigen::Index best = -1;
   float best_distance = 0.0f;
   for (Eigen::Index i = 0; i < n; ++i) {
-    if (InWindow(entries_[static_cast<std::size_t>(i)].frame, query_frame, window)) continue;
+    if (InWindow(entries_[static_cast<std::size_t>(i)].frame, skip)) continue;
     const float d = ExpandedDistance(norms_[static_cast<std::size_t>(i)], dot[i], q_norm);
     if (best < 0 || d < best_distance) {
       best = i;
@@ -88,14 +88,15 @@ IndexSearchResult IncrementalIndex::SearchFullScan(const float* query, FrameId q
   return result;
 }
 
-IndexSearchResult IncrementalIndex::Search(const float* query, FrameId query_frame, int window) const {
+IndexSearchResult IncrementalIndex::Search(const float* query, FrameId query_frame, const FrameWindow& window) const {
   IndexSearchResult result;
+  const FrameInterval skip = window.Around(query_frame.value);
   const std::size_t n = entries_.size();
   result.comparisons = static_cast<std::int64_t>(n);
   if (n == 0) return result;
   const float q_norm = Eigen::Map<const Eigen::VectorXf>(query, dim_).squaredNorm();
   if (n <= kReadEveryRow && GemvRowKernelMatches(static_cast<Eigen::Index>(n), dim_)) {
-    result.best = SearchEveryRow(query, query_frame, window, q_norm);
+    result.best = SearchEveryRow(query, skip, q_norm);
     return result;
   }
   const double margin = GemmErrorBound(max_norm_, q_norm, dim_);
@@ -105,14 +106,14 @@ IndexSearchResult IncrementalIndex::Search(const float* query, FrameId query_fra
     best = i, best_distance = d;
     SetLimits(d, margin);
   };
-  if (hint_ < n && !InWindow(entries_[hint_].frame, query_frame, window)) {
+  if (hint_ < n && !InWindow(entries_[hint_].frame, skip)) {
     take(hint_, ModelDistance(hint_, query, q_norm));
   }
   for (std::size_t first = 0; first < n; first += HalfScreen::kTileRows) {
     const unsigned survivors = best < n ? screen_.Survivors(first, query, limits_.data()) : 0xFFu;
     for (std::size_t i = first; i < std::min(n, first + HalfScreen::kTileRows); ++i) {
       if ((survivors >> (i - first) & 1u) == 0 || i == best) continue;
-      if (InWindow(entries_[i].frame, query_frame, window)) continue;
+      if (InWindow(entries_[i].frame, skip)) continue;
       const float d = ModelDistance(i, query, q_norm);
       if (best == n || d < best_distance || (d == best_distance && i < best)) take(i, d);
     }
@@ -131,7 +132,7 @@ void IncrementalIndex::SetLimits(float best, double margin) const {
 
 // Every row's model distance, 8 rows at a time with the product's own kernel (gemv_row.h): the
 // full scan's answer without an Eigen call or a bound.
-std::optional<IndexMatch> IncrementalIndex::SearchEveryRow(const float* query, FrameId query_frame, int window,
+std::optional<IndexMatch> IncrementalIndex::SearchEveryRow(const float* query, const FrameInterval& skip,
                                                            float q_norm) const {
 #if DVPR_GEMV_ROW_KERNEL
   const std::size_t n = entries_.size();
@@ -153,7 +154,7 @@ std::optional<IndexMatch> IncrementalIndex::SearchEveryRow(const float* query, F
   std::size_t best = n;
   float best_distance = 0.0f;
   for (std::size_t i = 0; i < n; ++i) {
-    if (InWindow(entries_[i].frame, query_frame, window)) continue;
+    if (InWindow(entries_[i].frame, skip)) continue;
     const float d = ExpandedDistance(norms_[i], scratch_[i], q_norm);
     if (best == n || d < best_distance) best = i, best_distance = d;
   }
@@ -161,7 +162,7 @@ std::optional<IndexMatch> IncrementalIndex::SearchEveryRow(const float* query, F
   hint_ = best;
   return Match(best, best_distance);
 #else
-  (void)query, (void)query_frame, (void)window, (void)q_norm;
+  (void)query, (void)skip, (void)q_norm;
   throw std::logic_error("IncrementalIndex::SearchEveryRow: no row kernel in this build");
 #endif
 }

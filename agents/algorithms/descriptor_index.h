@@ -44,13 +44,13 @@ class IncrementalIndex final : public Index<const float*, IndexMatch> {
 
   void Add(RobotId robot, FrameId frame, const float* descriptor) override;
 
-  // Best stored entry whose frame is more than `window` frames from
-  // query_frame; ties go to the entry added first. Every stored entry counts
+  // Best stored entry whose frame is outside query_frame's suppression window (frame_window.h);
+  // ties go to the entry added first. Every stored entry counts
   // as a comparison (the model's cost, however few rows the search reads).
-  IndexSearchResult Search(const float* query, FrameId query_frame, int window) const override;
+  IndexSearchResult Search(const float* query, FrameId query_frame, const FrameWindow& window) const override;
   // The same answer from the full matrix-vector product over every row: the
   // definition Search is tested against, and the benchmarks' baseline.
-  IndexSearchResult SearchFullScan(const float* query, FrameId query_frame, int window) const;
+  IndexSearchResult SearchFullScan(const float* query, FrameId query_frame, const FrameWindow& window) const;
 
   const std::vector<IndexEntry>& entries() const { return entries_; }
   // Counts the calls that changed what is stored (Add, RemoveIf): a search's result still holds
@@ -74,7 +74,7 @@ class IncrementalIndex final : public Index<const float*, IndexMatch> {
   // to pay for their bookkeeping (KITTI 00 broadcast, 100 robots: about 45 rows a robot;
   // docs/performance.md).
   static constexpr std::size_t kReadEveryRow = 64;
-  std::optional<IndexMatch> SearchEveryRow(const float* query, FrameId query_frame, int window, float q_norm) const;
+  std::optional<IndexMatch> SearchEveryRow(const float* query, const FrameInterval& skip, float q_norm) const;
 
   // The screen's limits (one a check) for a best model distance so far.
   void SetLimits(float best, double margin) const;

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "agents/algorithms/frame_window.h"
 #include "agents/algorithms/ids.h"
 
 namespace dvpr {
@@ -44,8 +45,8 @@ class Index {
   virtual std::size_t size() const = 0;
   // Keeps `vector` of `frame`, observed by `robot`.
   virtual void Add(RobotId robot, FrameId frame, Vector vector) = 0;
-  // The best stored entry whose frame is more than `window` frames from query_frame.
-  virtual Result Search(Vector query, FrameId query_frame, int window) const = 0;
+  // The best stored entry whose frame is outside query_frame's suppression window.
+  virtual Result Search(Vector query, FrameId query_frame, const FrameWindow& window) const = 0;
 };
 
 }  // namespace dvpr

@@ -128,15 +128,21 @@ SyntheticBowParams ReadSyntheticBow(const Field& f) {
   return p;
 }
 
+ScenarioSpec ReadScenario(const Field& f);
+TrajectorySource ReadTrajectorySource(const Field& f);
+
 DatasetConfig ReadDataset(const Field& f) {
   DatasetConfig d;
   f.ExpectMap({"source", "poses", "descriptors", "bin_width", "dim", "fps", "frames", "synthetic", "bow",
-               "synthetic_bow"});
+               "synthetic_bow", "scenario", "trajectories"});
   if (auto c = f.Child("source"); c.present()) d.source = ReadEnum<DatasetSource>(c, kDatasetSources);
   const Field poses = f.Child("poses");
-  d.poses = poses.present() ? poses.ExistingFile()
-                            : Field(f.origin(), YAML::Node("data/kitti/00_poses.txt"), poses.path())
-                                  .ExistingFile();
+  // A team of dataset.trajectories reads no dataset.poses; the shipped KITTI 00 is the default.
+  if (poses.present()) {
+    d.poses = poses.ExistingFile();
+  } else if (!f.Child("trajectories").present()) {
+    d.poses = Field(f.origin(), YAML::Node("data/kitti/00_poses.txt"), poses.path()).ExistingFile();
+  }
   const Field desc = f.Child("descriptors");
   if (desc.present()) d.descriptors = desc.ExistingFile();
   if (d.source == DatasetSource::kFiles && !d.descriptors) {
@@ -153,7 +159,56 @@ DatasetConfig ReadDataset(const Field& f) {
   d.synthetic = ReadSyntheticModel(f.Child("synthetic"), d.dim);
   if (const Field bow = f.Child("bow"); bow.present()) d.bow = bow.ExistingFile();
   if (const Field model = f.Child("synthetic_bow"); model.present()) d.synthetic_bow = ReadSyntheticBow(model);
+  if (const Field s = f.Child("scenario"); s.present()) d.scenario = ReadScenario(s);
+  if (const Field t = f.Child("trajectories"); t.present()) {
+    for (const Field& item : t.Items()) d.trajectories.push_back(ReadTrajectorySource(item));
+    if (d.scenario.kind != ScenarioKind::kSplit) {
+      f.Child("scenario").Fail("a team of dataset.trajectories drives its own poses; leave the scenario split");
+    }
+  }
   return d;
+}
+
+// dataset.scenario: a kind, or a map {kind, offset, length, seed} (experiments/data/team_plan.h).
+ScenarioSpec ReadScenario(const Field& f) {
+  ScenarioSpec s;
+  if (f.node().IsScalar()) {
+    s.kind = f.Named(ParseScenarioKind);
+  } else {
+    f.ExpectMap({"kind", "offset", "length", "seed"});
+    const Field kind = f.Child("kind");
+    if (!kind.present()) kind.Fail("required: split, staggered, reverse or random_routes");
+    s.kind = kind.Named(ParseScenarioKind);
+    if (auto c = f.Child("offset"); c.present()) {
+      s.offset_s = c.Duration(SimTime::Zero(), SimTime::Seconds(360000000)).ToSeconds();
+    }
+    if (auto c = f.Child("length"); c.present()) s.length = static_cast<int>(c.Int(2, 1 << 30));
+    if (auto c = f.Child("seed"); c.present()) {
+      s.seed = static_cast<std::uint64_t>(c.Int(0, std::numeric_limits<long long>::max()));
+    }
+  }
+  f.Validate(s);
+  return s;
+}
+
+// One entry of dataset.trajectories: {poses, format, start, fps, times, frame}.
+TrajectorySource ReadTrajectorySource(const Field& f) {
+  f.ExpectMap({"poses", "format", "start", "fps", "times", "frame"});
+  TrajectorySource s;
+  const Field poses = f.Child("poses");
+  if (!poses.present()) poses.Fail("required: the robot's pose file");
+  s.poses = poses.ExistingFile();
+  const Field format = f.Child("format");
+  if (!format.present()) format.Fail("required: kitti, tum or csv");
+  s.format = ReadEnum<TrajectoryFormat>(format, kTrajectoryFormatNames);
+  if (auto c = f.Child("start"); c.present()) {
+    s.start_s = c.Duration(SimTime::Zero(), SimTime::Seconds(360000000)).ToSeconds();
+  }
+  if (auto c = f.Child("fps"); c.present()) s.fps = c.Double();  // TrajectorySource::Validate checks it
+  if (auto c = f.Child("times"); c.present()) s.times = c.ExistingFile();
+  if (auto c = f.Child("frame"); c.present()) s.frame = c.String();
+  f.Validate(s);
+  return s;
 }
 
 // Makes a centroid file pattern absolute and checks every file the sweep will read.
@@ -296,6 +351,43 @@ std::int64_t ReadStartTime(const Field& f) {
          FormatUtcInstant(kMaxUtcInstant) + "], got '" + s + "'");
 }
 
+// What a planned team (dataset.scenario other than split, or dataset.trajectories) can run with
+// (docs/config.md, "Team plans"): the one team its plan is made for, the simulation, descriptors
+// the synthetic model renders along every robot's own poses and times, and strategies that need
+// neither the paper's split nor bag-of-words vectors.
+void CheckTeamPlan(const Field& root, const ExperimentConfig& c) {
+  const DatasetConfig& d = c.dataset;
+  if (!d.Planned()) return;
+  const std::string plan = d.trajectories.empty() ? "dataset.scenario " + std::string(ToString(d.scenario.kind))
+                                                  : "dataset.trajectories";
+  const Field dataset = root.Child("dataset");
+  if (d.source != DatasetSource::kSynthetic) {
+    dataset.Child("source").Fail(plan + " renders its descriptors with the synthetic model along every robot's "
+                                 "own poses and times: source must be synthetic");
+  }
+  if (!d.trajectories.empty() && d.frames) {
+    dataset.Child("frames").Fail("dataset.frames cuts dataset.poses, which a team of dataset.trajectories does not read");
+  }
+  const std::size_t wanted = d.trajectories.empty() ? 0 : d.trajectories.size();
+  if (c.sweep.robots.size() != 1 || (wanted > 0 && static_cast<std::size_t>(c.sweep.robots.front()) != wanted)) {
+    root.Child("robots").Fail(plan + " plans one team" +
+                              (wanted > 0 ? " of " + std::to_string(wanted) + " robots (one per trajectory)" : std::string()) +
+                              ": give robots as that one count");
+  }
+  for (const std::string& p : c.sweep.protocols) {
+    if (p != "sim") {
+      root.Child("protocols").Fail(plan + " runs in the simulation (protocols: [sim]; dvpr launch for real agents); "
+                                   "the paper protocol evaluates the paper's split");
+    }
+  }
+  for (const StrategySpec& s : c.sweep.strategies) {
+    if (s.bag_of_words() || s.reclusters()) {
+      root.Child("strategies").Fail(plan + ": strategy " + s.name + " is not available for a planned team "
+                                    "(bag-of-words vectors and re-clustering epochs follow the paper's split)");
+    }
+  }
+}
+
 ExperimentConfig ReadExperiment(const Field& root, const std::string& default_name) {
   if (!root.present()) root.Fail("the config is empty");
   root.ExpectMap({"name", "seed", "start_time", "dataset", "training", "robots", "runs", "protocols",
@@ -332,6 +424,7 @@ ExperimentConfig ReadExperiment(const Field& root, const std::string& default_na
   c.dropout = config_detail::ReadDropout(root.Child("dropout"), c.sweep);
   c.outputs = config_detail::ReadOutputs(root.Child("outputs"), c.sweep, c.network);
   c.failover = config_detail::ReadFailover(root.Child("failover"), c.sweep);
+  CheckTeamPlan(root, c);
   return c;
 }
 

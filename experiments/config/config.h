@@ -31,6 +31,8 @@
 #include "experiments/config/talk_schedule.h"
 #include "experiments/data/synthetic.h"
 #include "experiments/data/synthetic_bow.h"
+#include "experiments/data/robot_trajectory.h"
+#include "experiments/data/team_plan.h"
 #include "experiments/evaluation/ground_truth.h"
 #include "experiments/strategies/run_centroids.h"
 #include "experiments/strategies/strategy_spec.h"
@@ -74,6 +76,13 @@ struct DatasetConfig {
   // its defaults by the reader when a bow_ strategy is configured and neither key is given).
   std::optional<std::filesystem::path> bow;
   std::optional<SyntheticBowParams> synthetic_bow;
+  // A planned team (experiments/data/team_plan.h): a scenario on the poses other than split, or
+  // one pose file per robot (dataset.trajectories; dataset.poses is then not read). Either needs
+  // the synthetic source, one robot count (robots: the trajectories' count), the sim protocol and
+  // strategies without bag-of-words or re-clustering (checked when the config is read).
+  ScenarioSpec scenario;
+  std::vector<TrajectorySource> trajectories;
+  bool Planned() const { return !trajectories.empty() || scenario.kind != ScenarioKind::kSplit; }
   bool operator==(const DatasetConfig&) const = default;
 };
 

@@ -44,10 +44,37 @@ void EmitLoss(YAML::Emitter& out, const LossParams& l) {
   out << YAML::EndMap;
 }
 
+// dataset.scenario and dataset.trajectories, only for a planned team (the paper's split writes
+// neither, so its config.yaml is what it was).
+void EmitTeamPlan(YAML::Emitter& out, const DatasetConfig& d) {
+  const ScenarioSpec& s = d.scenario;
+  if (s.kind != ScenarioKind::kSplit) {
+    out << YAML::Key << "scenario" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "kind"
+        << YAML::Value << std::string(ToString(s.kind));
+    if (s.offset_s > 0) out << YAML::Key << "offset" << YAML::Value << FormatDuration(SimTime::Seconds(s.offset_s));
+    if (s.kind == ScenarioKind::kRandomRoutes) {
+      out << YAML::Key << "length" << YAML::Value << s.length << YAML::Key << "seed" << YAML::Value << s.seed;
+    }
+    out << YAML::EndMap;
+  }
+  if (d.trajectories.empty()) return;
+  out << YAML::Key << "trajectories" << YAML::Value << YAML::BeginSeq;
+  for (const TrajectorySource& t : d.trajectories) {
+    out << YAML::Flow << YAML::BeginMap << YAML::Key << "poses" << YAML::Value << t.poses.string() << YAML::Key
+        << "format" << YAML::Value
+        << std::string(kTrajectoryFormatNames[static_cast<std::size_t>(t.format)]) << YAML::Key << "start" << YAML::Value
+        << FormatDuration(SimTime::Seconds(t.start_s));
+    if (t.fps > 0) out << YAML::Key << "fps" << YAML::Value << Num(t.fps);
+    if (t.times) out << YAML::Key << "times" << YAML::Value << t.times->string();
+    out << YAML::Key << "frame" << YAML::Value << t.frame << YAML::EndMap;
+  }
+  out << YAML::EndSeq;
+}
+
 void EmitDataset(YAML::Emitter& out, const DatasetConfig& d) {
   out << YAML::Key << "dataset" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "source" << YAML::Value << Name(ToString(d.source));
-  out << YAML::Key << "poses" << YAML::Value << d.poses.string();
+  if (!d.poses.empty()) out << YAML::Key << "poses" << YAML::Value << d.poses.string();
   if (d.descriptors) out << YAML::Key << "descriptors" << YAML::Value << d.descriptors->string();
   out << YAML::Key << "bin_width" << YAML::Value << d.bin_width;
   out << YAML::Key << "dim" << YAML::Value << d.dim;
@@ -81,6 +108,7 @@ void EmitDataset(YAML::Emitter& out, const DatasetConfig& d) {
         << YAML::Key << "common_share" << YAML::Value << Num(b.common_share)
         << YAML::Key << "view_sector_deg" << YAML::Value << Num(b.view_sector_deg) << YAML::EndMap;
   }
+  EmitTeamPlan(out, d);
   out << YAML::EndMap;
 }
 

@@ -6,9 +6,11 @@
 // sources of a team must all name the same `frame` (CheckOneWorldFrame). The heading is the
 // camera's forward axis, as for KITTI: the rotation's third column, R(q) (0, 0, 1) for a
 // quaternion.
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "experiments/data/dataset.h"
@@ -16,6 +18,8 @@
 namespace dvpr {
 
 enum class TrajectoryFormat { kKitti, kTum, kCsv };
+// Their names in a config (dataset.trajectories[].format), in the enum's order.
+inline constexpr std::array<std::string_view, 3> kTrajectoryFormatNames{"kitti", "tum", "csv"};
 
 struct TrajectorySource {
   std::filesystem::path poses;
@@ -27,6 +31,7 @@ struct TrajectorySource {
   // Throws std::invalid_argument naming the field: kitti without fps or times (or with both),
   // fps or times for another format, fps outside (0, 1000], start_s outside [0, 360000000] s.
   void Validate() const;
+  bool operator==(const TrajectorySource&) const = default;
 };
 
 struct TimedTrajectory {

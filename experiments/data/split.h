@@ -1,9 +1,15 @@
 #pragma once
 // Splitting the deployment sequence among the robots (docs/design.md §2): robot r drives the
 // contiguous frames [floor(r N / n), floor((r + 1) N / n)), so lengths differ by at most one.
+// A planned team (docs/design.md §3, "Team plans") lays its robots' own trajectories end to end
+// instead: robot r drives its range and takes each frame at its own capture time.
 #include <vector>
 
+#include "agents/algorithms/descriptors.h"
+#include "agents/algorithms/frame_stream.h"
+#include "agents/algorithms/frame_window.h"
 #include "agents/algorithms/ids.h"
+#include "sim/sim_time.h"
 
 namespace dvpr {
 
@@ -19,12 +25,29 @@ struct FrameRange {
 struct SequenceSplit {
   std::vector<FrameRange> ranges;  // ranges[r]: robot r's frames
   std::vector<RobotId> owner;      // owner[f]: the robot that took frame f
+  // A planned team: capture[f], when frame f is taken on the team's clock (ascending within each
+  // robot's range). Empty for the paper's split: robot r's k-th frame at k / fps.
+  std::vector<SimTime> capture;
   int robots() const { return static_cast<int>(ranges.size()); }
   int frames() const { return static_cast<int>(owner.size()); }
   RobotId OwnerOf(FrameId f) const { return owner.at(static_cast<std::size_t>(f.value)); }
+  bool planned() const { return !capture.empty(); }
+  // Robot r's frames as its agent takes them (descriptors may be null where only times matter).
+  FrameStream StreamOf(int r, const DescriptorMatrix* descriptors, double fps) const;
+  // FrameWindow's stream starts: every robot's first frame but robot 0's for a planned team (a
+  // robot never matches its own last seconds, and nothing else is suppressed); none for the split.
+  std::vector<FrameId> WindowStreams() const;
+  FrameWindow Window(int frames) const { return FrameWindow(frames, WindowStreams()); }
+  // Per frame of the sequence, when its robot takes it.
+  std::vector<SimTime> CaptureTimes(double fps) const;
 };
 
 // Throws std::invalid_argument unless 1 <= robots <= frames (every robot gets a frame).
 SequenceSplit SplitSequence(int frames, int robots);
+
+// A planned team: robot r takes times[r].size() frames, the robots' rows laid end to end in robot
+// order, the k-th at times[r][k]. Throws std::invalid_argument when a robot has no frame or its
+// times are negative or not ascending.
+SequenceSplit PlannedSplit(const std::vector<std::vector<SimTime>>& times);
 
 }  // namespace dvpr

@@ -222,7 +222,18 @@ void SyntheticTrainingParams::Validate() const {
 
 DescriptorMatrix SyntheticDeployment(const Trajectory& trajectory, const SyntheticParams& params,
                                      std::uint64_t seed) {
+  std::vector<double> times(static_cast<std::size_t>(trajectory.size()));
+  for (std::size_t i = 0; i < times.size(); ++i) times[i] = static_cast<double>(i);
+  return SyntheticDeployment(trajectory, times, params, seed);
+}
+
+DescriptorMatrix SyntheticDeployment(const Trajectory& trajectory, std::span<const double> time_frames,
+                                     const SyntheticParams& params, std::uint64_t seed) {
   params.Validate();
+  if (time_frames.size() != static_cast<std::size_t>(trajectory.size())) {
+    throw std::invalid_argument("synthetic deployment: " + std::to_string(time_frames.size()) + " times for " +
+                                std::to_string(trajectory.size()) + " poses");
+  }
   Rng env_rng = StreamRng(seed, kDeploymentEnvironment);
   const Environment env = MakeEnvironment(params, env_rng);
   std::vector<Sample> samples(static_cast<std::size_t>(trajectory.size()));
@@ -232,7 +243,7 @@ DescriptorMatrix SyntheticDeployment(const Trajectory& trajectory, const Synthet
     const double hn = std::hypot(hx, hz);
     samples[static_cast<std::size_t>(i)] = {trajectory.positions(i, 0), trajectory.positions(i, 2),
                                             hn > 0 ? hx / hn : 0.0, hn > 0 ? hz / hn : 0.0,
-                                            static_cast<double>(i)};
+                                            time_frames[static_cast<std::size_t>(i)]};
   }
   DescriptorMatrix out(trajectory.size(), params.dim);
   Rng noise = StreamRng(seed, kDeploymentFrames);

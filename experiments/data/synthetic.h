@@ -11,6 +11,7 @@
 // of the variance, as a PCA layer does. Deterministic for a seed, byte-identical across standard
 // libraries (own PRNG and normal sampler; only libm's cos/log/sqrt are used).
 #include <cstdint>
+#include <span>
 
 #include "agents/algorithms/descriptors.h"
 #include "experiments/data/dataset.h"
@@ -49,6 +50,11 @@ struct SyntheticTrainingParams {
 // Descriptors along `trajectory` (frame index = time) in the deployment environment of `seed`.
 DescriptorMatrix SyntheticDeployment(const Trajectory& trajectory, const SyntheticParams& params,
                                      std::uint64_t seed);
+// The same with each pose's time given, in frame periods on the team's common clock (a planned
+// team: two robots at one place at one time see the same light). Frame index i as its time gives
+// the overload above, byte for byte.
+DescriptorMatrix SyntheticDeployment(const Trajectory& trajectory, std::span<const double> time_frames,
+                                     const SyntheticParams& params, std::uint64_t seed);
 
 // training.samples descriptors from training.environments environments, none of them the
 // deployment's, at random places, headings and times, spread evenly over the environments.

@@ -75,7 +75,7 @@ class PositionGrid {
 
 OnlineTruth ComputeOnlineTruth(const std::vector<QueryRecord>& queries, const Positions& positions,
                                const std::vector<SimTime>& capture_time, const std::vector<RobotId>& taker,
-                               double radius_m, int window) {
+                               double radius_m, const FrameWindow& window) {
   if (taker.size() != capture_time.size() || static_cast<Eigen::Index>(taker.size()) != positions.rows()) {
     throw std::invalid_argument("ComputeOnlineTruth: " + std::to_string(positions.rows()) + " positions, " +
                                 std::to_string(capture_time.size()) + " capture times and " +
@@ -90,6 +90,7 @@ OnlineTruth ComputeOnlineTruth(const std::vector<QueryRecord>& queries, const Po
   for (std::size_t q = 0; q < queries.size(); ++q) {
     const Eigen::Index i = queries[q].frame.value;
     const SimTime t = capture_time[static_cast<std::size_t>(i)];
+    const FrameInterval skip = window.Around(i);
     const RobotId robot = taker[static_cast<std::size_t>(i)];
     bool other = false;  // a true match another robot took
     if (queries[q].best) {
@@ -100,7 +101,7 @@ OnlineTruth ComputeOnlineTruth(const std::vector<QueryRecord>& queries, const Po
     bool own = false;
     // Stops at the first frame of another robot (the class is then known), else looks at all.
     grid.AnyNear(i, [&](Eigen::Index j) {
-      if (std::abs(i - j) > window && capture_time[static_cast<std::size_t>(j)] <= t &&
+      if (!skip.Contains(j) && capture_time[static_cast<std::size_t>(j)] <= t &&
           SquaredDistance(positions, i, j) < r2) {
         (taker[static_cast<std::size_t>(j)] == robot ? own : other) = true;
       }

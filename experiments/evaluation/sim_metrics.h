@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "agents/algorithms/frame_window.h"
 #include "agents/algorithms/ids.h"
 #include "agents/algorithms/query_record.h"
 #include "experiments/data/dataset.h"
@@ -24,8 +25,8 @@ struct LatencyStats {
 LatencyStats ComputeLatency(const std::vector<QueryRecord>& queries);
 
 // Relevance in the online setting: query i is relevant when a frame taken at
-// or before it (by any robot), more than `window` frames away in the
-// sequence, lies within `radius_m`. A query whose returned match is correct is
+// or before it (by any robot), outside its suppression window (frame_window.h),
+// lies within `radius_m`. A query whose returned match is correct is
 // relevant too: that frame was in a store when the query was served, even if
 // network delay let it be taken after the query.
 // capture_time[j] is when frame j was taken, taker[j] the robot that took it.
@@ -43,7 +44,7 @@ struct OnlineTruth {
 };
 OnlineTruth ComputeOnlineTruth(const std::vector<QueryRecord>& queries, const Positions& positions,
                                const std::vector<SimTime>& capture_time, const std::vector<RobotId>& taker,
-                               double radius_m, int window);
+                               double radius_m, const FrameWindow& window);
 
 // What a query got back, as the PR evaluation ranks it (metrics.h): its best match and distance.
 MatchOutcome OutcomeOf(const QueryRecord& q);

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "agents/algorithms/ids.h"
 #include "experiments/data/bow_file.h"
 #include "experiments/data/loaders.h"
 #include "experiments/data/synthetic_bow.h"
+#include "experiments/data/team_plan.h"
 #include "experiments/results/protocol_traits.h"
 
 namespace dvpr {
@@ -28,8 +31,33 @@ auto WithKey(const std::string& origin, const std::string& key, Fn&& load) {
 // The pose file and the descriptor file are loaded apart, so an error names the key of the file
 // at fault; dataset.frames is checked against the pose file whatever the source (a synthetic
 // deployment longer than its poses would silently run fewer frames than config.yaml says).
+// A planned team's poses (experiments/data/team_plan.h), its descriptors rendered along every
+// robot's own poses at their times on the common clock.
+Dataset LoadTeamPlan(const ExperimentConfig& c, const Trajectory& poses, const std::string& origin) {
+  const DatasetConfig& d = c.dataset;
+  Dataset team;
+  if (!d.trajectories.empty()) {
+    std::vector<TimedTrajectory> trajectories;
+    for (std::size_t r = 0; r < d.trajectories.size(); ++r) {
+      trajectories.push_back(WithKey(origin, "dataset.trajectories[" + std::to_string(r) + "]",
+                                     [&] { return LoadRobotTrajectory(d.trajectories[r]); }));
+    }
+    team = WithKey(origin, "dataset.trajectories", [&] { return TeamOfTrajectories(d.trajectories, trajectories, d.fps); });
+  } else {
+    team = WithKey(origin, "dataset.scenario", [&] {
+      return DriveTeam(poses, PlanDrives(d.scenario, static_cast<int>(poses.size()), c.sweep.robots.front(), d.fps), d.fps);
+    });
+  }
+  team.name = c.name;
+  team.descriptors = WithKey(origin, "dataset.synthetic", [&] {
+    return SyntheticDeployment(team.trajectory, TimesInFrames(*team.plan, d.fps), d.synthetic, c.seed);
+  });
+  return team;
+}
+
 Dataset LoadDeployment(const ExperimentConfig& c, const std::string& origin) {
   const DatasetConfig& d = c.dataset;
+  if (!d.trajectories.empty()) return LoadTeamPlan(c, Trajectory{}, origin);
   Dataset ds;
   ds.name = c.name.empty() && d.descriptors ? d.descriptors->stem().string() : c.name;
   ds.fps = d.fps;
@@ -45,6 +73,7 @@ Dataset LoadDeployment(const ExperimentConfig& c, const std::string& origin) {
     ds.descriptors.conservativeResize(ds.trajectory.size(), Eigen::NoChange);
     return ds;
   }
+  if (d.Planned()) return LoadTeamPlan(c, ds.trajectory, origin);
   ds.descriptors = WithKey(origin, "dataset.synthetic",
                            [&] { return SyntheticDeployment(ds.trajectory, d.synthetic, c.seed); });
   return ds;

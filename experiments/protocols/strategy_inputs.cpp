@@ -11,6 +11,7 @@ StrategyInputs StrategyInputsOf(const SharedInputs& inputs) {
   s.training = &inputs.training;
   s.deployment = &inputs.deployment.descriptors;
   s.fps = inputs.deployment.fps;
+  if (inputs.deployment.plan) s.plan = &*inputs.deployment.plan;
   s.bow = &inputs.bow;
   s.centroids = c.training.run_centroids;  // the config seed, clusters per robot, centroid files
   s.failover = c.failover;

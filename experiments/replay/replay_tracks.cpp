@@ -13,6 +13,11 @@ Tracks LoadTracks(const std::filesystem::path& config_yaml, int robots) {
     throw std::runtime_error(config_yaml.string() + ": not found (a replay needs the result folder's config.yaml)");
   }
   const ExperimentConfig config = LoadConfig(config_yaml);
+  if (config.dataset.Planned()) {
+    throw std::runtime_error(config_yaml.string() + ": dataset: the replay draws the paper's split of one drive; "
+                             "a team of its own trajectories (dataset.trajectories or a scenario other than split) "
+                             "cannot be replayed yet");
+  }
   Trajectory trajectory;
   try {
     trajectory = LoadKittiPoses(config.dataset.poses);

@@ -83,6 +83,7 @@ ReclusterParams ReclusterParamsOf(const StrategySpec& spec, const StrategyInputs
 // waits half a period for the samples.
 ReclusterPlan ReclusterPlanOf(const ReclusterParams& params, std::shared_ptr<const CentroidTable> initial,
                               const StrategyInputs& in, int robots) {
+  if (in.plan != nullptr) throw std::invalid_argument("a re-clustering strategy needs the paper's split, not a team plan");
   ReclusterPlan plan;
   plan.params = params;
   plan.initial = std::move(initial);
@@ -99,11 +100,10 @@ ReclusterPlan ReclusterPlanOf(const ReclusterParams& params, std::shared_ptr<con
 
 // The agent time of the team's last frame (the longest sub-sequence's).
 SimTime LastFrameTime(const StrategyInputs& in, int robots) {
-  int longest = 0;
-  for (const FrameRange& r : SplitSequence(static_cast<int>(in.deployment->rows()), robots).ranges) {
-    longest = std::max(longest, r.size());
-  }
-  return FrameStream{nullptr, FrameId(0), longest, in.fps}.TimeOf(std::max(0, longest - 1));
+  const std::vector<SimTime> times = in.plan != nullptr
+                                         ? in.plan->capture
+                                         : SplitSequence(static_cast<int>(in.deployment->rows()), robots).CaptureTimes(in.fps);
+  return *std::max_element(times.begin(), times.end());
 }
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include "agents/recluster/recluster.h"
 #include "agents/routing/routing.h"
 #include "experiments/data/bow_data.h"
+#include "experiments/data/split.h"
 #include "experiments/strategies/run_centroids.h"
 #include "experiments/strategies/strategy_spec.h"
 
@@ -31,6 +32,7 @@ struct StrategyInputs {
   const DescriptorMatrix* training = nullptr;    // k-means' input (no rows when centroid files are given)
   const DescriptorMatrix* deployment = nullptr;  // sample tables' input; re-clustering splits its frames
   double fps = 10.0;                             // frames per second: the re-clustering leader's timeout
+  const SequenceSplit* plan = nullptr;           // a planned team (Dataset::plan): its capture times
   RunCentroidParams centroids;                   // config seed, clusters per robot, centroid files
   RunCentroidCache* cache = nullptr;             // optional, one per run: k-means shared by its strategies
   // enabled: every stateless strategy's team routes around lost robots (FailoverTeam); the

@@ -102,6 +102,15 @@ void CheckDropouts(const SharedInputs& in, const std::string& origin) {
     const std::string key = origin + ": dropout[" + std::to_string(i) + "]";
     for (const int n : c.sweep.robots) {
       if (d.robot >= n || frames < n) continue;
+      if (const auto& plan = in.deployment.plan) {  // a planned team: one frame period after its last frame
+        const SimTime last = *std::max_element(plan->capture.begin(), plan->capture.end());
+        const SimTime end = last + SimTime::Nanos(std::llround(1e9 / in.deployment.fps));
+        if (d.at >= end) {
+          throw ConfigError(key + ".at: " + FormatDuration(d.at) + " is not inside the run of the team plan, which ends at " +
+                            FormatDuration(end) + " (its last frame at " + FormatDuration(last) + ")");
+        }
+        continue;
+      }
       const std::int64_t longest = (frames + n - 1) / n;
       const auto end = SimTime::Nanos(static_cast<std::int64_t>(std::ceil(static_cast<double>(longest) / in.deployment.fps * 1e9)));
       if (d.at >= end) {

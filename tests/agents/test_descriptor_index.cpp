@@ -42,6 +42,26 @@ TEST_F(IndexTest, SuppressionWindowIsInclusive) {
   EXPECT_EQ(r.best->frame, FrameId(10));
 }
 
+// A planned team's window (agents/algorithms/frame_window.h): a stream beginning at frame 12 cuts
+// the window of a query at 15 there, so frame 10 (another robot's) is a candidate again while 20
+// (the query's own stream, 5 away) is not.
+TEST_F(IndexTest, AStreamCutsTheWindowAtItsStart) {
+  const std::array<float, 2> q{3.0f, 3.0f};  // to a: 18, to b (frame 10): 1, to c (frame 20): 8
+  auto r = index_.Search(q.data(), FrameId(15), FrameWindow(5, {FrameId(12)}));
+  ASSERT_TRUE(r.best.has_value());
+  EXPECT_EQ(r.best->frame, FrameId(10));
+  EXPECT_EQ(r.comparisons, 3);
+  EXPECT_EQ(index_.SearchFullScan(q.data(), FrameId(15), FrameWindow(5, {FrameId(12)})).best->frame, FrameId(10));
+  // A stream from 11 to 19 (the next from 20): frame 20 is someone else's; 10 too. b wins.
+  r = index_.Search(q.data(), FrameId(15), FrameWindow(5, {FrameId(11), FrameId(20)}));
+  EXPECT_EQ(r.best->frame, FrameId(10));
+  // A query at 8 in a stream [0, 20) with window 12: 0 and 10 suppressed; 20, 12 away, is the next
+  // stream's -> c.
+  r = index_.Search(q.data(), FrameId(8), FrameWindow(12, {FrameId(20)}));
+  EXPECT_EQ(r.best->frame, FrameId(20));
+  EXPECT_FLOAT_EQ(r.best->distance, 8.0f);
+}
+
 TEST_F(IndexTest, NothingOutsideWindowGivesNoMatchButCountsComparisons) {
   const std::array<float, 2> q{0.0f, 0.0f};
   const auto r = index_.Search(q.data(), FrameId(10), 10);

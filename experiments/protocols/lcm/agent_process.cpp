@@ -393,11 +393,8 @@ Team LoadTeam(const AgentProcessOptions& o, ExperimentConfig config) {
 
 // Agent time of the team's last frame: no robot sends a query after it.
 SimTime LastFrameTime(const SequenceSplit& split, double fps) {
-  SimTime last = SimTime::Zero();
-  for (const FrameRange& r : split.ranges) {
-    if (r.size() > 0) last = std::max(last, FrameStream{nullptr, r.begin, r.size(), fps}.TimeOf(r.size() - 1));
-  }
-  return last;
+  const std::vector<SimTime> times = split.CaptureTimes(fps);
+  return times.empty() ? SimTime::Zero() : *std::max_element(times.begin(), times.end());
 }
 
 AgentLog MakeLog(const AgentProcessOptions& o, const Team& t, const TeamAgent& agent, const LcmTransport& transport,
@@ -441,17 +438,18 @@ AgentLog MakeLog(const AgentProcessOptions& o, const Team& t, const TeamAgent& a
 
 // The robot's agent: a BoW agent for the bow_ strategies (docs/bow.md), else a RobotAgent.
 std::unique_ptr<TeamAgent> MakeAgent(const AgentProcessOptions& o, const Team& t, Transport& transport,
-                                     const FrameRange& range) {
+                                     const SequenceSplit& split) {
   const Dataset& data = t.inputs.deployment;
-  const FrameStream frames{&data.descriptors, range.begin, range.size(), data.fps};
+  const FrameStream frames = split.StreamOf(o.robot, &data.descriptors, data.fps);
   GeometricVerifier verifier = PoseOracle(data.trajectory.positions, t.config.evaluation.radius_m);
   return t.routing->Visit(
       [&](const BowFamily& f) -> std::unique_ptr<TeamAgent> {
-        const AgentSetup setup{RobotId(o.robot), f.team.robots, t.config.agent, frames};
+        const AgentSetup setup{RobotId(o.robot), f.team.robots, t.config.agent, frames, split.WindowStreams()};
         return std::make_unique<BowRobotAgent>(setup, transport, f.team, t.inputs.bow.frames, std::move(verifier));
       },
       [&](const auto& descriptor) -> std::unique_ptr<TeamAgent> {
-        const AgentSetup setup{RobotId(o.robot), descriptor.team->num_robots(), t.config.agent, frames};
+        const AgentSetup setup{RobotId(o.robot), descriptor.team->num_robots(), t.config.agent, frames,
+                               split.WindowStreams()};
         return std::make_unique<RobotAgent>(setup, transport, descriptor.team->MakeAgentRouting(),
                                             std::move(verifier));
       });
@@ -515,8 +513,7 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   LcmTransport transport(o.lcm_url, o.speedup, ReceiveLimits(config));
   const Team t = LoadTeam(o, std::move(config));
   const Dataset& data = t.inputs.deployment;
-  const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), t.robots);
-  const FrameRange range = split.ranges.at(static_cast<std::size_t>(o.robot));
+  const SequenceSplit split = TeamSplit(data, t.robots);
 
   TrafficCounters traffic{o.robot, WireParams{}, std::vector<AgentLinkCount>(static_cast<std::size_t>(t.robots)),
                           std::vector<std::int64_t>(static_cast<std::size_t>(t.robots), 0), 0,
@@ -536,7 +533,7 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   // The filter takes the heartbeats (it knows their sender); this keeps their channel open and
   // counts one that does not decode as malformed.
   Subscription status = transport.Subscribe<agent_status_t>(channels::kStatus, [](const agent_status_t&) {});
-  const std::unique_ptr<TeamAgent> agent_owner = MakeAgent(o, t, transport, range);
+  const std::unique_ptr<TeamAgent> agent_owner = MakeAgent(o, t, transport, split);
   TeamAgent& agent = *agent_owner;
 
   const std::int64_t ready_utime = WallUtime();

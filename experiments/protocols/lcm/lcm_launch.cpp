@@ -172,13 +172,9 @@ SimRunLog ToRunLog(const Dataset& data, int robots, const std::vector<std::optio
   const auto n = static_cast<std::size_t>(robots);
   log.loads.resize(n);
   log.senders.resize(n);
-  const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), robots);
-  log.capture_time.resize(static_cast<std::size_t>(data.size()));
+  const SequenceSplit split = TeamSplit(data, robots);
+  log.capture_time = split.CaptureTimes(data.fps);
   log.taker = split.owner;
-  for (const FrameRange& r : split.ranges) {
-    const FrameStream frames{nullptr, r.begin, r.size(), data.fps};
-    for (int k = 0; k < r.size(); ++k) log.capture_time[static_cast<std::size_t>(r.begin.value + k)] = frames.TimeOf(k);
-  }
   for (std::size_t s = 0; s < n; ++s) {
     if (!logs[s]) continue;
     const AgentLog& l = *logs[s];
@@ -225,7 +221,7 @@ GatheredRun GatherTeam(const ExperimentConfig& config, const SharedInputs& input
   const Dataset& data = inputs.deployment;
   const SimRunLog log = ToRunLog(data, robots, logs);
   const SimRunSummary summary = SummarizeSimRun(log, data.trajectory.positions, config.evaluation.radius_m,
-                                                config.evaluation.suppression_frames);
+                                                SuppressionWindow(data, config.evaluation.suppression_frames));
   NetworkVariant network;
   network.label.model = "lcm";
   RunSpec spec;

@@ -26,6 +26,10 @@ void ScenarioParams::Validate(const Dataset& data) const {
     throw std::invalid_argument("dataset: " + std::to_string(data.trajectory.size()) + " poses for " +
                                 std::to_string(data.size()) + " frames (the robots drive the poses)");
   }
+  if (data.plan && data.plan->robots() != robots) {
+    throw std::invalid_argument("robots: the team plan of the dataset is for " + std::to_string(data.plan->robots()) +
+                                " robots, the run has " + std::to_string(robots));
+  }
   agent.Validate();
   network.Validate(robots);
   for (const auto& d : dropouts) {
@@ -38,10 +42,6 @@ void ScenarioParams::Validate(const Dataset& data) const {
 
 namespace {
 
-FrameStream FramesOf(const Dataset& data, const FrameRange& range) {
-  return FrameStream{&data.descriptors, range.begin, range.size(), data.fps};
-}
-
 const ScenarioParams& Validated(const ScenarioParams& params, const Dataset& data) {
   params.Validate(data);
   return params;
@@ -51,12 +51,11 @@ const ScenarioParams& Validated(const ScenarioParams& params, const Dataset& dat
 
 TrackMobility RobotTracks(const Dataset& data, const SequenceSplit& split) {
   std::vector<std::vector<Waypoint>> tracks(split.ranges.size());
-  for (std::size_t r = 0; r < split.ranges.size(); ++r) {
-    const FrameRange range = split.ranges[r];
-    const FrameStream frames = FramesOf(data, range);
-    for (int k = 0; k < range.size(); ++k) {
-      const auto row = data.trajectory.positions.row(range.begin.value + k);
-      tracks[r].push_back(Waypoint{frames.TimeOf(k), Position{row(0), row(1), row(2)}});
+  for (int r = 0; r < split.robots(); ++r) {
+    const FrameStream frames = split.StreamOf(r, nullptr, data.fps);
+    for (int k = 0; k < frames.count; ++k) {
+      const auto row = data.trajectory.positions.row(frames.first.value + k);
+      tracks[static_cast<std::size_t>(r)].push_back(Waypoint{frames.TimeOf(k), Position{row(0), row(1), row(2)}});
     }
   }
   return TrackMobility(std::move(tracks));
@@ -65,7 +64,7 @@ TrackMobility RobotTracks(const Dataset& data, const SequenceSplit& split) {
 Scenario::Scenario(const Dataset& data, const ScenarioParams& params, const AgentFactory& make_agent)
     : data_(data),
       params_(Validated(params, data)),
-      split_(SplitSequence(static_cast<int>(data.size()), params.robots)),
+      split_(TeamSplit(data, params.robots)),
       network_(sim_, params.robots,
                MakeNetworkStack(params.network, params.robots, params.seed,
                                 std::make_unique<TrackMobility>(RobotTracks(data, split_))),
@@ -74,7 +73,8 @@ Scenario::Scenario(const Dataset& data, const ScenarioParams& params, const Agen
     auto& transport = transports_.emplace_back(std::make_unique<SimTransport>(network_, NodeId(r), params_.start_utime));
     transport->UseBuffers(&network_.payload_buffers());
     transport->ShareDecodes(&decoded_);
-    const AgentSetup setup{RobotId(r), params_.robots, params_.agent, FramesOf(data_, split_.ranges[static_cast<std::size_t>(r)])};
+    const AgentSetup setup{RobotId(r), params_.robots, params_.agent, split_.StreamOf(r, &data_.descriptors, data_.fps),
+                           split_.WindowStreams()};
     agents_.push_back(make_agent(setup, *transport));
   }
   if (params_.network.routing == RoutingKind::kLinkState) {
@@ -110,13 +110,6 @@ bool Scenario::IsDropped(RobotId robot) const {
   return false;
 }
 
-std::vector<SimTime> Scenario::CaptureTimes() const {
-  std::vector<SimTime> times(static_cast<std::size_t>(data_.size()));
-  for (const FrameRange& range : split_.ranges) {
-    const FrameStream frames = FramesOf(data_, range);
-    for (int k = 0; k < range.size(); ++k) times[static_cast<std::size_t>(range.begin.value + k)] = frames.TimeOf(k);
-  }
-  return times;
-}
+std::vector<SimTime> Scenario::CaptureTimes() const { return split_.CaptureTimes(data_.fps); }
 
 }  // namespace dvpr

@@ -55,8 +55,8 @@ struct ScenarioParams {
 using AgentFactory = std::function<std::unique_ptr<TeamAgent>(const AgentSetup& setup, Transport& transport)>;
 
 // Where each robot is: robot r's track is the poses of its frames at their capture times
-// (FrameStream::TimeOf), from the split of `data` among `split.robots()`; a robot that has
-// taken its last frame stays there.
+// (FrameStream::TimeOf), from `split` (TeamSplit of `data`); a robot is at its first pose until
+// it takes its first frame and stays at its last after its last.
 TrackMobility RobotTracks(const Dataset& data, const SequenceSplit& split);
 
 class Scenario {

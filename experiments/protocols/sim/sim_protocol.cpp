@@ -224,7 +224,7 @@ RunFunction MakeSimRun(const SharedInputs& in) {
           [&](const BowFamily& f) { return RunBowSimulation(*data, bow->frames, f.team, params); },
           [&](const auto& descriptor) { return RunSimulation(*data, *descriptor.team, params); });
       SimRunSummary summary = SummarizeSimRun(log, data->trajectory.positions, config->evaluation.radius_m,
-                                              config->evaluation.suppression_frames);
+                                              SuppressionWindow(*data, config->evaluation.suppression_frames));
       return std::make_pair(std::move(log), std::move(summary));
     };
     // The references first: broadcast for the descriptor strategies' relative AUC, the BoW team's

@@ -176,7 +176,8 @@ SimRunLog RunBowSimulation(const Dataset& data, const std::vector<BowVector>& ve
   });
 }
 
-SimRunSummary SummarizeSimRun(const SimRunLog& log, const Positions& positions, double radius_m, int window) {
+SimRunSummary SummarizeSimRun(const SimRunLog& log, const Positions& positions, double radius_m,
+                              const FrameWindow& window) {
   SimRunSummary s;
   s.truth = ComputeOnlineTruth(log.queries, positions, log.capture_time, log.taker, radius_m, window);
   std::vector<MatchOutcome> outcomes;

@@ -103,6 +103,7 @@ struct SimRunSummary {
   ClosureStats closures;                  // inter- and intra-robot (sim_metrics.h)
 };
 
-SimRunSummary SummarizeSimRun(const SimRunLog& log, const Positions& positions, double radius_m, int window);
+SimRunSummary SummarizeSimRun(const SimRunLog& log, const Positions& positions, double radius_m,
+                              const FrameWindow& window);
 
 }  // namespace dvpr

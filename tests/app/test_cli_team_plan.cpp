@@ -1,0 +1,197 @@
+// A team of its own trajectories through the dvpr binary (issue 35, items 1 and 2): robot 0
+// drives a 40 m square, robot 1 the same square the other way round 30 s later, each from its
+// own Kimera-Multi CSV file (dataset.trajectories). The inter- and intra-robot revisits and the
+// first inter-robot closure are counted by hand from the poses and times alone; the scenarios on
+// KITTI 00 run and keep their plan; what a planned team cannot run with is one named error.
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "tests/app/cli_test_support.h"
+
+namespace dvpr::testing_support {
+namespace {
+
+namespace fs = std::filesystem;
+
+using Row = std::map<std::string, std::string>;
+
+std::vector<Row> ReadCsv(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  std::istringstream h(line);
+  for (std::string f; std::getline(h, f, ',');) header.push_back(f);
+  std::vector<Row> rows;
+  while (std::getline(in, line)) {
+    std::istringstream s(line);
+    Row row;
+    std::size_t i = 0;
+    for (std::string f; std::getline(s, f, ',') && i < header.size(); ++i) row[header[i]] = f;
+    for (; i < header.size(); ++i) row[header[i]] = "";  // trailing empty cells
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+// The perimeter of a 40 m square on the ground plane (x, z), a point every 10 m: p(0) = (0, 0),
+// p(4) = (40, 0), p(8) = (40, 40), p(12) = (0, 40), p(16) = p(0). The camera faces +z throughout
+// (identity quaternion), so both robots see a place from the same side.
+std::string SquareCsv(bool reversed) {
+  std::string csv = "timestamp_kf(ns),x,y,z,qw,qx,qy,qz\n";
+  for (int m = 0; m <= 16; ++m) {
+    const int k = reversed ? 16 - m : m;
+    double x = 0, z = 0;
+    if (k <= 4) x = 10.0 * k;
+    else if (k <= 8) x = 40, z = 10.0 * (k - 4);
+    else if (k <= 12) x = 40 - 10.0 * (k - 8), z = 40;
+    else z = 40 - 10.0 * (k - 12);
+    csv += std::to_string(static_cast<long long>(m) * 1000000000LL) + "," + std::to_string(x) + ",0," +
+           std::to_string(z) + ",1,0,0,0\n";
+  }
+  return csv;
+}
+
+class TeamPlanCliTest : public CliTest {
+ protected:
+  std::string SquaresYaml() {
+    std::ofstream(dir_ / "robot0.csv") << SquareCsv(false);
+    std::ofstream(dir_ / "robot1.csv") << SquareCsv(true);
+    return "name: squares\nseed: 1\n"
+           "dataset:\n  source: synthetic\n  dim: 16\n  fps: 1\n  synthetic: {noise: 0.05}\n  trajectories:\n"
+           "    - {poses: '" + (dir_ / "robot0.csv").string() + "', format: csv, start: 0s}\n"
+           "    - {poses: '" + (dir_ / "robot1.csv").string() + "', format: csv, start: 30s}\n"
+           "training: {synthetic: {samples: 500}}\nrobots: [2]\nruns: 1\nprotocols: [sim]\n"
+           "strategies: [decentralized, broadcast]\nevaluation: {gt_radius_m: 5, suppression_frames: 2}\n"
+           "verification: {max_distance: 100}\nnetwork: {model: point_to_point}\n"
+           "outputs: {figures: false, queries: true}\n";
+  }
+  std::string KittiYaml(const std::string& scenario, int robots) const {
+    return "name: scenario\nseed: 1\ndataset: {source: synthetic, poses: '" + std::string(DVPR_SOURCE_DIR) +
+           "/data/kitti/00_poses.txt', dim: 16, fps: 10, frames: 200, scenario: " + scenario +
+           "}\ntraining: {synthetic: {samples: 500}}\nrobots: [" + std::to_string(robots) +
+           "]\nruns: 1\nprotocols: [sim]\nstrategies: [decentralized, broadcast]\n"
+           "evaluation: {gt_radius_m: 5, suppression_frames: 20}\nnetwork: {model: point_to_point}\n"
+           "outputs: {figures: false, queries: true}\n";
+  }
+};
+
+TEST_F(TeamPlanCliTest, SquareAndItsReverseThirtySecondsLaterCountedByHand) {
+  const Result r = RunConfig(SquaresYaml());
+  ASSERT_EQ(r.status, 0) << r.err;
+  // Team rows: robot 0's frames 0..16 at p(0..16), taken at 0..16 s; robot 1's 17..33 at p(16),
+  // p(15), ..., p(0), taken at 30..46 s. Window 2 frames, inside each robot's own stream.
+  // Robot 0's frames 0..15 lie 10 m from every earlier frame: not relevant. Frame 16 is back at
+  // p(0), where its own frame 0 lies (16 frames back): intra. Every frame of robot 1 lies where
+  // robot 0 passed before 30 s: inter (frame 33 also at its own frame 17, but another robot's
+  // frame makes it inter). Frame 17 (robot 1's first, at p(0)) is one team row after robot 0's
+  // frame 16 at the same place; another robot's stream, so not suppressed.
+  std::map<std::string, std::map<std::string, int>> classes;  // strategy -> class -> queries
+  std::map<std::string, int> queries;
+  for (const Row& q : ReadCsv(Out() / "queries.csv")) {
+    ++queries[q.at("strategy")];
+    const int frame = std::stoi(q.at("frame"));
+    const std::string expected = frame < 16 ? "" : frame == 16 ? "intra" : "inter";
+    EXPECT_EQ(q.at("class"), expected) << q.at("strategy") << " frame " << frame;
+    EXPECT_EQ(q.at("robot"), frame < 17 ? "0" : "1") << frame;
+    // Taken at the robot's own times: frame 17 at 30 s, frame 33 at 46 s.
+    const long long taken_s = frame < 17 ? frame : 30 + (frame - 17);
+    EXPECT_EQ(std::stoll(q.at("sent_ns")), taken_s * 1000000000LL) << frame;
+    ++classes[q.at("strategy")][q.at("class")];
+  }
+  for (const std::string s : {"decentralized", "broadcast"}) {
+    EXPECT_EQ(queries[s], 34) << s;
+    EXPECT_EQ(classes[s]["inter"], 17) << s;
+    EXPECT_EQ(classes[s]["intra"], 1) << s;
+  }
+  // runs.csv: the same counts. Broadcast searches robot 1's first query (at 30 s, at p(0)) in
+  // robot 0's store, which holds frames 0 and 16 at p(0) (descriptor noise 0.05: the same place,
+  // seen from the same side, is the nearest); its verification closes the pair at 30 s.
+  for (const Row& run : ReadCsv(Out() / "runs.csv")) {
+    EXPECT_EQ(run.at("inter_queries"), "17") << run.at("strategy");
+    EXPECT_EQ(run.at("intra_queries"), "1") << run.at("strategy");
+    if (run.at("strategy") == "broadcast") {
+      EXPECT_EQ(run.at("pairs_closed"), "1");
+      EXPECT_EQ(std::stod(run.at("median_first_closure_s")), 30.0);
+    }
+  }
+  bool broadcast_pair = false;
+  for (const Row& p : ReadCsv(Out() / "closure_pairs.csv")) {
+    EXPECT_EQ(p.at("robot_a"), "0");
+    EXPECT_EQ(p.at("robot_b"), "1");
+    if (p.at("strategy") == "broadcast") {
+      broadcast_pair = true;
+      EXPECT_EQ(p.at("first_closure_ns"), "30000000000");
+    } else if (!p.at("first_closure_ns").empty()) {
+      // No closure can come before robot 1 takes its first frame.
+      EXPECT_GE(std::stoll(p.at("first_closure_ns")), 30000000000LL);
+    }
+  }
+  EXPECT_TRUE(broadcast_pair);
+  // config.yaml keeps the trajectories, and runs again to the same queries.
+  const std::string written = [&] {
+    std::ifstream in(Out() / "config.yaml");
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }();
+  EXPECT_NE(written.find("trajectories:"), std::string::npos);
+  EXPECT_NE(written.find("start: 30s"), std::string::npos) << written;
+}
+
+TEST_F(TeamPlanCliTest, StaggeredAndReverseRunOnKitti) {
+  {
+    const Result r = RunConfig(KittiYaml("{kind: staggered, offset: 5s}", 3));
+    ASSERT_EQ(r.status, 0) << r.err;
+    // Three robots each drive all 200 frames, robot r from 5 r s: robot 2's first frame at 10 s.
+    int robot2_first = -1;
+    long long sent = -1;
+    for (const Row& q : ReadCsv(Out() / "queries.csv")) {
+      if (q.at("strategy") != "broadcast" || q.at("robot") != "2") continue;
+      if (robot2_first < 0 || std::stoi(q.at("frame")) < robot2_first) {
+        robot2_first = std::stoi(q.at("frame"));
+        sent = std::stoll(q.at("sent_ns"));
+      }
+    }
+    EXPECT_EQ(robot2_first, 400);
+    EXPECT_EQ(sent, 10000000000LL);
+  }
+  fs::remove_all(Out());
+  const Result r = RunConfig(KittiYaml("reverse", 2));
+  ASSERT_EQ(r.status, 0) << r.err;
+  // Both drive all 200 frames from 0 s, robot 1 backwards: its frames are team rows 200..399.
+  int frames = 0;
+  for (const Row& q : ReadCsv(Out() / "queries.csv")) frames += q.at("strategy") == "broadcast" ? 1 : 0;
+  EXPECT_EQ(frames, 400);
+}
+
+TEST_F(TeamPlanCliTest, WhatAPlannedTeamCannotRunWithIsANamedError) {
+  const auto error = [&](const std::string& yaml) {
+    const Result r = RunConfig(yaml);
+    EXPECT_NE(r.status, 0);
+    EXPECT_FALSE(fs::exists(Out() / "runs.csv"));
+    return r.err;
+  };
+  std::string yaml = KittiYaml("{kind: staggered, offset: 5s}", 3);
+  EXPECT_NE(error(yaml.replace(yaml.find("protocols: [sim]"), 16, "protocols: [paper, sim]"))
+                .find("protocols: dataset.scenario staggered runs in the simulation"),
+            std::string::npos);
+  yaml = KittiYaml("{kind: staggered, offset: 5s}", 3);
+  EXPECT_NE(error(yaml.replace(yaml.find("robots: [3]"), 11, "robots: [2, 3]")).find("robots: dataset.scenario staggered plans one team"),
+            std::string::npos);
+  EXPECT_NE(error(KittiYaml("{kind: staggered}", 3)).find("dataset.scenario.offset: staggered needs a positive offset"),
+            std::string::npos);
+  EXPECT_NE(error(KittiYaml("{kind: random_routes, length: 5000}", 3)).find("dataset.scenario: length: 5000 frames, the sequence has 200"),
+            std::string::npos);
+  EXPECT_NE(error(KittiYaml("zigzag", 3)).find("dataset.scenario"), std::string::npos);
+  yaml = SquaresYaml();
+  EXPECT_NE(error(yaml.replace(yaml.find("robots: [2]"), 11, "robots: [3]")).find("one team of 2 robots (one per trajectory)"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace dvpr::testing_support
