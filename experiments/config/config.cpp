@@ -352,9 +352,9 @@ std::int64_t ReadStartTime(const Field& f) {
 }
 
 // What a planned team (dataset.scenario other than split, or dataset.trajectories) can run with
-// (docs/config.md, "Team plans"): the one team its plan is made for, the simulation, descriptors
-// the synthetic model renders along every robot's own poses and times, and strategies that need
-// neither the paper's split nor bag-of-words vectors.
+// (docs/config.md, "Team plans"): the one team its plan is made for, descriptors the synthetic
+// model renders along every robot's own poses and times, and strategies that need neither the
+// paper's split nor bag-of-words vectors.
 void CheckTeamPlan(const Field& root, const ExperimentConfig& c) {
   const DatasetConfig& d = c.dataset;
   if (!d.Planned()) return;
@@ -373,12 +373,6 @@ void CheckTeamPlan(const Field& root, const ExperimentConfig& c) {
     root.Child("robots").Fail(plan + " plans one team" +
                               (wanted > 0 ? " of " + std::to_string(wanted) + " robots (one per trajectory)" : std::string()) +
                               ": give robots as that one count");
-  }
-  for (const std::string& p : c.sweep.protocols) {
-    if (p != "sim") {
-      root.Child("protocols").Fail(plan + " runs in the simulation (protocols: [sim]; dvpr launch for real agents); "
-                                   "the paper protocol evaluates the paper's split");
-    }
   }
   for (const StrategySpec& s : c.sweep.strategies) {
     if (s.bag_of_words() || s.reclusters()) {

@@ -78,8 +78,8 @@ struct DatasetConfig {
   std::optional<SyntheticBowParams> synthetic_bow;
   // A planned team (experiments/data/team_plan.h): a scenario on the poses other than split, or
   // one pose file per robot (dataset.trajectories; dataset.poses is then not read). Either needs
-  // the synthetic source, one robot count (robots: the trajectories' count), the sim protocol and
-  // strategies without bag-of-words or re-clustering (checked when the config is read).
+  // the synthetic source, one robot count (robots: the trajectories' count) and strategies
+  // without bag-of-words or re-clustering (checked when the config is read).
   ScenarioSpec scenario;
   std::vector<TrajectorySource> trajectories;
   bool Planned() const { return !trajectories.empty() || scenario.kind != ScenarioKind::kSplit; }

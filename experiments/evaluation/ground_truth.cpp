@@ -24,23 +24,23 @@ double SquaredDistance(const Positions& p, Eigen::Index i, Eigen::Index j) {
   return (p.row(i) - p.row(j)).squaredNorm();
 }
 
-// Calls fn(j) for every j outside the window of i: [0, i - w) and (i + w, N).
+// Calls fn(j) for every j outside the window of i: [0, lo) and (hi, N).
 template <typename Fn>
-void ForEachOutsideWindow(Eigen::Index n, Eigen::Index i, int window, Fn&& fn) {
-  const Eigen::Index below = std::max<Eigen::Index>(0, i - window);  // j < below
+void ForEachOutsideWindow(Eigen::Index n, const FrameInterval& window, Fn&& fn) {
+  const Eigen::Index below = std::clamp<Eigen::Index>(window.lo, 0, n);  // j < below
   for (Eigen::Index j = 0; j < below; ++j) fn(j);
-  for (Eigen::Index j = i + window + 1; j < n; ++j) fn(j);
+  for (Eigen::Index j = std::max<Eigen::Index>(window.hi + 1, 0); j < n; ++j) fn(j);
 }
 
 }  // namespace
 
-std::vector<double> NearestOutsideWindowSquared(const Positions& positions, int suppression_frames) {
-  GroundTruthParams{.radius_m = 1.0, .suppression_frames = suppression_frames}.Validate();
+std::vector<double> NearestOutsideWindowSquared(const Positions& positions, const FrameWindow& window) {
+  GroundTruthParams{.radius_m = 1.0, .suppression_frames = window.frames()}.Validate();
   const Eigen::Index n = positions.rows();
   std::vector<double> g(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
   for (Eigen::Index i = 0; i < n; ++i) {
     double best = std::numeric_limits<double>::infinity();
-    ForEachOutsideWindow(n, i, suppression_frames,
+    ForEachOutsideWindow(n, window.Around(i),
                          [&](Eigen::Index j) { best = std::min(best, SquaredDistance(positions, i, j)); });
     g[static_cast<std::size_t>(i)] = best;
   }
@@ -48,16 +48,24 @@ std::vector<double> NearestOutsideWindowSquared(const Positions& positions, int 
 }
 
 std::vector<std::uint8_t> RelevantFlags(const Positions& positions, const GroundTruthParams& params) {
-  params.Validate();
-  const double r2 = params.radius_m * params.radius_m;
-  const std::vector<double> g = NearestOutsideWindowSquared(positions, params.suppression_frames);
+  return RelevantFlags(positions, params.radius_m, FrameWindow(params.suppression_frames));
+}
+
+std::vector<std::uint8_t> RelevantFlags(const Positions& positions, double radius_m, const FrameWindow& window) {
+  GroundTruthParams{.radius_m = radius_m, .suppression_frames = window.frames()}.Validate();
+  const double r2 = radius_m * radius_m;
+  const std::vector<double> g = NearestOutsideWindowSquared(positions, window);
   std::vector<std::uint8_t> relevant(g.size());
   std::transform(g.begin(), g.end(), relevant.begin(), [r2](double v) { return v < r2 ? 1 : 0; });
   return relevant;
 }
 
 std::int64_t CountRelevant(const Positions& positions, const GroundTruthParams& params) {
-  const auto flags = RelevantFlags(positions, params);
+  return CountRelevant(positions, params.radius_m, FrameWindow(params.suppression_frames));
+}
+
+std::int64_t CountRelevant(const Positions& positions, double radius_m, const FrameWindow& window) {
+  const auto flags = RelevantFlags(positions, radius_m, window);
   return std::count(flags.begin(), flags.end(), std::uint8_t{1});
 }
 

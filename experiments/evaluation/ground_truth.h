@@ -1,10 +1,12 @@
 #pragma once
 // Ground truth of place recognition (docs/design.md section 2), from positions only. Frames are
 // indexed in the full sequence; frame j is a candidate for query i only outside the suppression
-// window, |i - j| > suppression_frames.
+// window, |i - j| > suppression_frames (within i's own robot's frames for a team plan:
+// agents/algorithms/frame_window.h).
 #include <cstdint>
 #include <vector>
 
+#include "agents/algorithms/frame_window.h"
 #include "experiments/data/dataset.h"
 
 namespace dvpr {
@@ -16,14 +18,17 @@ struct GroundTruthParams {
   bool operator==(const GroundTruthParams&) const = default;
 };
 
-// g(i) = min over |i - j| > window of ||P_i - P_j||^2; +inf when no frame is outside the window.
-std::vector<double> NearestOutsideWindowSquared(const Positions& positions, int suppression_frames);
+// g(i) = min over j outside i's window of ||P_i - P_j||^2; +inf when no frame is outside it.
+std::vector<double> NearestOutsideWindowSquared(const Positions& positions, const FrameWindow& window);
 
-// relevant[i] = g(i) < r^2 (1 or 0).
+// relevant[i] = g(i) < r^2 (1 or 0): over the window of params (one stream, the paper's split), or
+// over `window` (a team plan's: SuppressionWindow in experiments/data/dataset.h).
 std::vector<std::uint8_t> RelevantFlags(const Positions& positions, const GroundTruthParams& params);
+std::vector<std::uint8_t> RelevantFlags(const Positions& positions, double radius_m, const FrameWindow& window);
 
 // R: the number of relevant queries.
 std::int64_t CountRelevant(const Positions& positions, const GroundTruthParams& params);
+std::int64_t CountRelevant(const Positions& positions, double radius_m, const FrameWindow& window);
 
 // Whether a reported match is correct: ||P_query - P_match||^2 < r^2.
 bool IsCorrectMatch(const Positions& positions, std::int64_t query, std::int64_t match,

@@ -16,10 +16,10 @@ constexpr std::int64_t kBlockRows = 128;  // rows of D alive at once per thread
 constexpr double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 
-WindowedNeighbours::WindowedNeighbours(const DescriptorMatrix& descriptors, int suppression_frames,
+WindowedNeighbours::WindowedNeighbours(const DescriptorMatrix& descriptors, const FrameWindow& window,
                                        int list_size, int threads)
-    : x_(descriptors), n_(descriptors.rows()), window_(suppression_frames), list_size_(list_size) {
-  if (suppression_frames < 0) throw std::invalid_argument("WindowedNeighbours: window < 0");
+    : x_(descriptors), n_(descriptors.rows()), window_(window), list_size_(list_size) {
+  if (window.frames() < 0) throw std::invalid_argument("WindowedNeighbours: window < 0");
   if (list_size < 1) throw std::invalid_argument("WindowedNeighbours: list_size must be >= 1");
   if (!AllFinite(descriptors)) {
     throw std::invalid_argument("WindowedNeighbours: descriptors contain NaN or Inf");
@@ -45,9 +45,10 @@ void WindowedNeighbours::BuildRows(const Eigen::VectorXf& norms, std::int64_t fi
   std::vector<std::pair<double, std::int32_t>> exact;
   for (std::int64_t r = 0; r < count; ++r) {
     const std::int64_t i = first + r;
+    const FrameInterval skip = window_.Around(i);
     pool.clear();
     for (std::int64_t j = 0; j < n_; ++j) {
-      if (j >= i - window_ && j <= i + window_) continue;
+      if (skip.Contains(j)) continue;
       pool.emplace_back(d(r, j), static_cast<std::int32_t>(j));
     }
     const auto keep = std::min<std::size_t>(pool.size(), static_cast<std::size_t>(list_size_));
@@ -83,8 +84,9 @@ MatchOutcome WindowedNeighbours::Scan(std::int64_t i,
                                       const std::vector<std::int32_t>& members) const {
   MatchOutcome out{FrameId(static_cast<std::int32_t>(i)), std::nullopt, 0};
   double best = kInf;
+  const FrameInterval skip = window_.Around(i);
   for (std::int32_t j : members) {  // ascending, so strict < keeps the lowest frame on ties
-    if (j >= i - window_ && j <= i + window_) continue;
+    if (skip.Contains(j)) continue;
     const double dist = ExactSquaredL2(x_.row(i).data(), x_.row(j).data(), x_.cols());
     if (!out.match || dist < best) best = dist, out.match = FrameId(j);
   }
@@ -155,8 +157,9 @@ std::vector<MatchOutcome> WindowedNeighbours::BestMatchesWhere(const CandidateTe
     if (!proven && complete_below < kInf) {
       ++fell_back;
       double best = kInf;
+      const FrameInterval skip = window_.Around(i);
       for (std::int64_t j = 0; j < n_; ++j) {  // ascending: strict < keeps the lowest frame
-        if ((j >= i - window_ && j <= i + window_) || !candidate(i, j)) continue;
+        if (skip.Contains(j) || !candidate(i, j)) continue;
         const double dist = ExactSquaredL2(x_.row(i).data(), x_.row(j).data(), x_.cols());
         if (!out.match || dist < best) best = dist, out.match = FrameId(static_cast<std::int32_t>(j));
       }

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "agents/algorithms/descriptors.h"
+#include "agents/algorithms/frame_window.h"
 #include "agents/algorithms/ids.h"
 #include "experiments/evaluation/metrics.h"
 
@@ -24,7 +25,7 @@ namespace dvpr {
 class WindowedNeighbours {
  public:
   // Keeps a reference to `descriptors` (N x d), which must outlive this object.
-  WindowedNeighbours(const DescriptorMatrix& descriptors, int suppression_frames, int list_size,
+  WindowedNeighbours(const DescriptorMatrix& descriptors, const FrameWindow& window, int list_size,
                      int threads);
 
   std::int64_t size() const { return n_; }
@@ -53,7 +54,7 @@ class WindowedNeighbours {
 
   const DescriptorMatrix& x_;
   std::int64_t n_;
-  int window_;
+  FrameWindow window_;
   int list_size_;
   std::vector<std::int32_t> frame_;   // n x list_size, row i = query i's nearest, sorted
   std::vector<double> distance_;      // exact squared distances of frame_

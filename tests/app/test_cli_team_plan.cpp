@@ -2,7 +2,8 @@
 // drives a 40 m square, robot 1 the same square the other way round 30 s later, each from its
 // own Kimera-Multi CSV file (dataset.trajectories). The inter- and intra-robot revisits and the
 // first inter-robot closure are counted by hand from the poses and times alone; the scenarios on
-// KITTI 00 run and keep their plan; what a planned team cannot run with is one named error.
+// KITTI 00 run in both protocols and keep their plan; what a planned team cannot run with is one
+// named error.
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -145,8 +146,17 @@ TEST_F(TeamPlanCliTest, SquareAndItsReverseThirtySecondsLaterCountedByHand) {
 
 TEST_F(TeamPlanCliTest, StaggeredAndReverseRunOnKitti) {
   {
-    const Result r = RunConfig(KittiYaml("{kind: staggered, offset: 5s}", 3));
+    std::string yaml = KittiYaml("{kind: staggered, offset: 5s}", 3);
+    const Result r = RunConfig(yaml.replace(yaml.find("protocols: [sim]"), 16, "protocols: [paper, sim]"));
     ASSERT_EQ(r.status, 0) << r.err;
+    // The paper protocol takes every one of the team's 600 frames as a query.
+    int paper = 0;
+    for (const Row& run : ReadCsv(Out() / "runs.csv")) {
+      if (run.at("protocol") != "paper") continue;
+      ++paper;
+      EXPECT_EQ(run.at("queries"), "600") << run.at("strategy");
+    }
+    EXPECT_EQ(paper, 2);
     // Three robots each drive all 200 frames, robot r from 5 r s: robot 2's first frame at 10 s.
     int robot2_first = -1;
     long long sent = -1;
@@ -177,10 +187,6 @@ TEST_F(TeamPlanCliTest, WhatAPlannedTeamCannotRunWithIsANamedError) {
     return r.err;
   };
   std::string yaml = KittiYaml("{kind: staggered, offset: 5s}", 3);
-  EXPECT_NE(error(yaml.replace(yaml.find("protocols: [sim]"), 16, "protocols: [paper, sim]"))
-                .find("protocols: dataset.scenario staggered runs in the simulation"),
-            std::string::npos);
-  yaml = KittiYaml("{kind: staggered, offset: 5s}", 3);
   EXPECT_NE(error(yaml.replace(yaml.find("robots: [3]"), 11, "robots: [2, 3]")).find("robots: dataset.scenario staggered plans one team"),
             std::string::npos);
   EXPECT_NE(error(KittiYaml("{kind: staggered}", 3)).find("dataset.scenario.offset: staggered needs a positive offset"),
@@ -188,6 +194,9 @@ TEST_F(TeamPlanCliTest, WhatAPlannedTeamCannotRunWithIsANamedError) {
   EXPECT_NE(error(KittiYaml("{kind: random_routes, length: 5000}", 3)).find("dataset.scenario: length: 5000 frames, the sequence has 200"),
             std::string::npos);
   EXPECT_NE(error(KittiYaml("zigzag", 3)).find("dataset.scenario"), std::string::npos);
+  yaml = KittiYaml("reverse", 2);
+  EXPECT_NE(error(yaml.replace(yaml.find("strategies: ["), 13, "strategies: [bow_decentralized, ")).find("strategies: dataset.scenario reverse: strategy bow_decentralized is not available"),
+            std::string::npos);
   yaml = SquaresYaml();
   EXPECT_NE(error(yaml.replace(yaml.find("robots: [2]"), 11, "robots: [3]")).find("one team of 2 robots (one per trajectory)"),
             std::string::npos);

@@ -35,6 +35,31 @@ TEST(GroundTruth, WindowExcludesNeighboursInTheSequence) {
   EXPECT_EQ(relevant, (std::vector<std::uint8_t>{1, 1, 0, 0, 0, 0, 1, 0}));
 }
 
+TEST(GroundTruth, ATeamPlansWindowStaysInsideEachRobotsFrames) {
+  // The same eight frames as two robots' streams, robot 1 from frame 4 (a team plan). Window 3 now
+  // stops at frame 3 | 4:
+  //   g(3): its own 0..2 are within 3 frames; robot 1's 4..7 all count -> frame 4 at 10 m -> 100
+  //   g(4): candidates 0..3 (robot 0's) and 7 -> frame 3 at 10 m -> 100
+  //   g(6): candidates 0..3 and none of its own (4, 5, 7 within 3) -> frame 1 at 0.4 m -> 0.16
+  //   g(0): 4..7 as before and nothing of its own beyond 3 -> frame 6 -> 0.25
+  const Positions p = OnLine({0, 0.1, 20, 30, 40, 50, 0.5, 70});
+  const FrameWindow streams(3, {FrameId(4)});
+  const std::vector<double> g = NearestOutsideWindowSquared(p, streams);
+  EXPECT_NEAR(g[3], 100.0, 1e-9);
+  EXPECT_NEAR(g[4], 100.0, 1e-9);
+  EXPECT_NEAR(g[6], 0.16, 1e-12);
+  EXPECT_NEAR(g[0], 0.25, 1e-12);
+  // Frame 2 (x = 20): its own 0, 1, 3 are within 3 frames; robot 1's 4..7 at 40, 50, 0.5, 70 ->
+  // 19.5 m. Frame 5 (x = 50): its own are within 3; robot 0's 0..3 -> 20 m at frame 3.
+  EXPECT_NEAR(g[2], 19.5 * 19.5, 1e-9);
+  EXPECT_NEAR(g[5], 400.0, 1e-9);
+  EXPECT_EQ(CountRelevant(p, 1.0, streams), 3);  // frames 0, 1 and 6, as with one stream
+  // Radius 10.001 m: frames 3 and 4 (10 m apart across the streams' seam) become relevant too,
+  // which the one-stream window (|3 - 4| = 1) never lets them be.
+  EXPECT_EQ(RelevantFlags(p, 10.001, streams), (std::vector<std::uint8_t>{1, 1, 0, 1, 1, 0, 1, 0}));
+  EXPECT_EQ(RelevantFlags(p, 10.001, FrameWindow(3)), (std::vector<std::uint8_t>{1, 1, 0, 0, 0, 0, 1, 0}));
+}
+
 TEST(GroundTruth, WindowBoundaryAndStrictRadius) {
   // Two frames 5 m apart. Window 1: |0 - 1| = 1 is inside, so no candidate at all (+inf).
   // Window 0: they are candidates, but 5 m is not < r = 5 m; r = 5.001 m makes both relevant.

@@ -34,8 +34,9 @@ PaperEvaluator::PaperEvaluator(const Dataset& deployment, const GroundTruthParam
                                int candidate_list_size, int threads)
     : deployment_(deployment),
       evaluation_((evaluation.Validate(), evaluation)),
+      window_(SuppressionWindow(deployment, evaluation.suppression_frames)),
       build_start_(std::chrono::steady_clock::now()),
-      neighbours_(deployment.descriptors, evaluation.suppression_frames, candidate_list_size,
+      neighbours_(deployment.descriptors, window_, candidate_list_size,
                   threads) {
   if (deployment.trajectory.size() != deployment.size()) {
     throw std::invalid_argument("PaperEvaluator: " + std::to_string(deployment.trajectory.size()) +
@@ -43,7 +44,7 @@ PaperEvaluator::PaperEvaluator(const Dataset& deployment, const GroundTruthParam
   }
   const double build_s = SecondsSince(build_start_);
   auto start = std::chrono::steady_clock::now();
-  relevant_ = CountRelevant(deployment.trajectory.positions, evaluation_);
+  relevant_ = CountRelevant(deployment.trajectory.positions, evaluation_.radius_m, window_);
   timings_.ground_truth_s = SecondsSince(start);
   start = std::chrono::steady_clock::now();
   const std::vector<MatchOutcome> matches = neighbours_.BestMatches();
@@ -60,11 +61,10 @@ std::vector<std::int64_t> PaperEvaluator::Comparisons(const std::vector<RobotId>
     members[static_cast<std::size_t>(routes[i].value)].push_back(static_cast<std::int64_t>(i));
   }
   std::vector<std::int64_t> comparisons(static_cast<std::size_t>(robots), 0);
-  const std::int64_t w = evaluation_.suppression_frames;
   for (const auto& m : members) {
     for (std::int64_t i : m) {  // candidates of i: its robot's frames outside the window
-      const auto in_window = std::upper_bound(m.begin(), m.end(), i + w) -
-                             std::lower_bound(m.begin(), m.end(), i - w);
+      const FrameInterval w = window_.Around(i);
+      const auto in_window = std::upper_bound(m.begin(), m.end(), w.hi) - std::lower_bound(m.begin(), m.end(), w.lo);
       comparisons[static_cast<std::size_t>(&m - members.data())] +=
           static_cast<std::int64_t>(m.size()) - in_window;
     }

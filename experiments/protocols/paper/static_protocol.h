@@ -77,6 +77,8 @@ class PaperEvaluator {
   // For evaluations of other routings (experiments/protocols/paper/static_strategies.h) over the same data.
   const Dataset& deployment() const { return deployment_; }
   const GroundTruthParams& evaluation() const { return evaluation_; }
+  // evaluation().suppression_frames over the deployment (within each robot's frames for a plan).
+  const FrameWindow& window() const { return window_; }
   const WindowedNeighbours& neighbours() const { return neighbours_; }
 
   // One routing: every frame goes to table.RouteOf(descriptor). Fills everything but the row's
@@ -96,6 +98,7 @@ class PaperEvaluator {
 
   const Dataset& deployment_;
   GroundTruthParams evaluation_;
+  FrameWindow window_;
   std::chrono::steady_clock::time_point build_start_;  // before neighbours_: times its build
   WindowedNeighbours neighbours_;
   std::int64_t relevant_ = 0;

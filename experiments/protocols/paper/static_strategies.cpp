@@ -34,9 +34,10 @@ void SetBit(std::vector<std::uint64_t>& bits, std::size_t frame, int words, Robo
       std::uint64_t{1} << (r.value % 64);
 }
 
-RoutedFrames RouteEveryFrame(const DescriptorMatrix& x, const RoutingStrategy& routing) {
+RoutedFrames RouteEveryFrame(const Dataset& data, const RoutingStrategy& routing) {
+  const DescriptorMatrix& x = data.descriptors;
   const int n = routing.num_robots();
-  const SequenceSplit split = SplitSequence(static_cast<int>(x.rows()), n);
+  const SequenceSplit split = TeamSplit(data, n);
   RoutedFrames f;
   f.words = (n + 63) / 64;
   const auto cells = static_cast<std::size_t>(x.rows()) * static_cast<std::size_t>(f.words);
@@ -59,15 +60,15 @@ RoutedFrames RouteEveryFrame(const DescriptorMatrix& x, const RoutingStrategy& r
 }
 
 // Per robot: descriptors its searches compare with (its stored frames outside each window).
-std::vector<std::int64_t> Comparisons(const RoutedFrames& f, std::int64_t frames, int window) {
+std::vector<std::int64_t> Comparisons(const RoutedFrames& f, std::int64_t frames, const FrameWindow& window) {
   std::vector<std::int64_t> comparisons(f.stores.size(), 0);
   for (std::int64_t i = 0; i < frames; ++i) {
     for (std::size_t r = 0; r < f.stores.size(); ++r) {
       const std::size_t bit = static_cast<std::size_t>(i) * static_cast<std::size_t>(f.words) + r / 64;
       if (!(f.search[bit] >> (r % 64) & 1U)) continue;
       const auto& m = f.stores[r];
-      const auto in_window = std::upper_bound(m.begin(), m.end(), i + window) -
-                             std::lower_bound(m.begin(), m.end(), i - window);
+      const FrameInterval w = window.Around(i);
+      const auto in_window = std::upper_bound(m.begin(), m.end(), w.hi) - std::lower_bound(m.begin(), m.end(), w.lo);
       comparisons[r] += static_cast<std::int64_t>(m.size()) - in_window;
     }
   }
@@ -79,14 +80,14 @@ std::vector<std::int64_t> Comparisons(const RoutedFrames& f, std::int64_t frames
 PaperRunResult EvaluateRouting(const PaperEvaluator& evaluator, const RoutingStrategy& routing,
                                const std::string& name, bool keep_curve) {
   const Dataset& data = evaluator.deployment();
-  const RoutedFrames f = RouteEveryFrame(data.descriptors, routing);
+  const RoutedFrames f = RouteEveryFrame(data, routing);
   PaperRunResult result;
   const auto matches = evaluator.neighbours().BestMatchesWhere(
       [&f](std::int64_t i, std::int64_t j) { return f.Candidate(i, j); }, &result.fallback_scans);
   PrResult pr = EvaluatePr(matches, data.trajectory.positions, evaluator.evaluation().radius_m,
                            evaluator.relevant());
   const std::vector<std::int64_t> comparisons =
-      Comparisons(f, data.size(), evaluator.evaluation().suppression_frames);
+      Comparisons(f, data.size(), evaluator.window());
   evaluator.FillResult(name, std::move(pr), f.searches, comparisons, f.stored, keep_curve, result);
   return result;
 }
