@@ -200,6 +200,15 @@ TEST_F(TeamPlanCliTest, WhatAPlannedTeamCannotRunWithIsANamedError) {
   yaml = SquaresYaml();
   EXPECT_NE(error(yaml.replace(yaml.find("robots: [2]"), 11, "robots: [3]")).find("one team of 2 robots (one per trajectory)"),
             std::string::npos);
+  // A launched team of another size than the plan's is refused before any agent starts.
+  std::ofstream(Config()) << KittiYaml("{kind: staggered, offset: 5s}", 3);
+  const Result launch = Dvpr("launch --config '" + Config().string() + "' --robots 2 --out '" + Out().string() + "'");
+  EXPECT_NE(launch.status, 0);
+  EXPECT_NE(launch.err.find("--robots: 2 robots, but the config's team plan (dataset.trajectories or "
+                            "dataset.scenario) is for 3"),
+            std::string::npos)
+      << launch.err;
+  EXPECT_FALSE(fs::exists(Out()));
 }
 
 }  // namespace
