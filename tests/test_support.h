@@ -13,6 +13,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,31 @@ namespace dvpr::testing_support {
 inline std::string Slurp(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A result CSV's rows by column name (a field the row lacks reads as empty; no quoting: dvpr's
+// result files quote no field these tests read).
+using Row = std::map<std::string, std::string>;
+inline std::vector<Row> ReadCsv(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  EXPECT_TRUE(in.good()) << path;
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  std::stringstream hs(line);
+  for (std::string c; std::getline(hs, c, ',');) header.push_back(c);
+  std::vector<Row> rows;
+  while (std::getline(in, line)) {
+    Row row;
+    std::stringstream ls(line);
+    std::size_t i = 0;
+    for (std::string c; i < header.size(); ++i) {
+      if (!std::getline(ls, c, ',')) c.clear();
+      row[header[i]] = c;
+    }
+    rows.push_back(row);
+  }
+  return rows;
 }
 
 // Every entry below `root` (hidden ones too), relative path -> bytes; folders map to "<dir>".

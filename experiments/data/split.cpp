@@ -70,6 +70,15 @@ std::vector<FrameId> SequenceSplit::WindowStreams() const {
   return starts;
 }
 
+SimTime SequenceSplit::LastCapture(double fps) const {
+  SimTime last = SimTime::Zero();
+  for (int r = 0; r < robots(); ++r) {  // a robot's times ascend: its last frame is its latest
+    const FrameStream stream = StreamOf(r, nullptr, fps);
+    if (stream.count > 0) last = std::max(last, stream.TimeOf(stream.count - 1));
+  }
+  return last;
+}
+
 std::vector<SimTime> SequenceSplit::CaptureTimes(double fps) const {
   if (planned()) return capture;
   std::vector<SimTime> times(owner.size());

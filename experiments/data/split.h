@@ -40,6 +40,8 @@ struct SequenceSplit {
   FrameWindow Window(int frames) const { return FrameWindow(frames, WindowStreams()); }
   // Per frame of the sequence, when its robot takes it.
   std::vector<SimTime> CaptureTimes(double fps) const;
+  // When the team takes its last frame (0 for no frame): no robot sends a query after it.
+  SimTime LastCapture(double fps) const;
 };
 
 // Throws std::invalid_argument unless 1 <= robots <= frames (every robot gets a frame).

@@ -98,12 +98,10 @@ ReclusterPlan ReclusterPlanOf(const ReclusterParams& params, std::shared_ptr<con
   return plan;
 }
 
-// The agent time of the team's last frame (the longest sub-sequence's).
+// The agent time of the team's last frame (the longest sub-sequence's, or a team plan's latest).
 SimTime LastFrameTime(const StrategyInputs& in, int robots) {
-  const std::vector<SimTime> times = in.plan != nullptr
-                                         ? in.plan->capture
-                                         : SplitSequence(static_cast<int>(in.deployment->rows()), robots).CaptureTimes(in.fps);
-  return *std::max_element(times.begin(), times.end());
+  if (in.plan != nullptr) return in.plan->LastCapture(in.fps);
+  return SplitSequence(static_cast<int>(in.deployment->rows()), robots).LastCapture(in.fps);
 }
 
 }  // namespace

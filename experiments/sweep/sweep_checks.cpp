@@ -103,7 +103,7 @@ void CheckDropouts(const SharedInputs& in, const std::string& origin) {
     for (const int n : c.sweep.robots) {
       if (d.robot >= n || frames < n) continue;
       if (const auto& plan = in.deployment.plan) {  // a planned team: one frame period after its last frame
-        const SimTime last = *std::max_element(plan->capture.begin(), plan->capture.end());
+        const SimTime last = plan->LastCapture(in.deployment.fps);
         const SimTime end = last + SimTime::Nanos(std::llround(1e9 / in.deployment.fps));
         if (d.at >= end) {
           throw ConfigError(key + ".at: " + FormatDuration(d.at) + " is not inside the run of the team plan, which ends at " +

@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -19,27 +18,6 @@ namespace dvpr::testing_support {
 namespace {
 
 namespace fs = std::filesystem;
-
-using Row = std::map<std::string, std::string>;
-
-std::vector<Row> ReadCsv(const fs::path& file) {
-  std::ifstream in(file);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> header;
-  std::istringstream h(line);
-  for (std::string f; std::getline(h, f, ',');) header.push_back(f);
-  std::vector<Row> rows;
-  while (std::getline(in, line)) {
-    std::istringstream s(line);
-    Row row;
-    std::size_t i = 0;
-    for (std::string f; std::getline(s, f, ',') && i < header.size(); ++i) row[header[i]] = f;
-    for (; i < header.size(); ++i) row[header[i]] = "";  // trailing empty cells
-    rows.push_back(std::move(row));
-  }
-  return rows;
-}
 
 // The perimeter of a 40 m square on the ground plane (x, z), a point every 10 m: p(0) = (0, 0),
 // p(4) = (40, 0), p(8) = (40, 40), p(12) = (0, 40), p(16) = p(0). The camera faces +z throughout

@@ -396,12 +396,6 @@ Team LoadTeam(const AgentProcessOptions& o, ExperimentConfig config) {
   return t;
 }
 
-// Agent time of the team's last frame: no robot sends a query after it.
-SimTime LastFrameTime(const SequenceSplit& split, double fps) {
-  const std::vector<SimTime> times = split.CaptureTimes(fps);
-  return times.empty() ? SimTime::Zero() : *std::max_element(times.begin(), times.end());
-}
-
 AgentLog MakeLog(const AgentProcessOptions& o, const Team& t, const TeamAgent& agent, const LcmTransport& transport,
                  const TeamSync& sync, const TrafficCounters& traffic, std::int64_t start_utime,
                  const std::string& end_reason) {
@@ -569,7 +563,7 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   ScheduleDropout(t.config, o.robot, transport);
 
   // The run: serve until every robot is done, or give up at the deadline.
-  const SimTime deadline = LastFrameTime(split, data.fps) + SimTime::Seconds(o.grace_s * o.speedup);
+  const SimTime deadline = split.LastCapture(data.fps) + SimTime::Seconds(o.grace_s * o.speedup);
   std::string end_reason = "deadline";
   int final_announcements = 0;
   while (transport.Now() < deadline) {

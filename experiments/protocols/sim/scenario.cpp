@@ -82,8 +82,7 @@ Scenario::Scenario(const Dataset& data, const ScenarioParams& params, const Agen
     if (routing == nullptr) throw std::logic_error("Scenario: routing link_state without a LinkStateRouting");
     network_.SetLinkLocal(network_.InternChannel(channels::kHello));
     network_.SetLinkLocal(network_.InternChannel(channels::kTopology));
-    SimTime last_frame;
-    for (const SimTime t : CaptureTimes()) last_frame = std::max(last_frame, t);
+    const SimTime last_frame = split_.LastCapture(data_.fps);
     for (int r = 0; r < params_.robots; ++r) {
       daemons_.push_back(std::make_unique<LinkStateDaemon>(*transports_[static_cast<std::size_t>(r)], NodeId(r),
                                                            *routing, last_frame));

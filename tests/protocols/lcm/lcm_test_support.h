@@ -48,29 +48,9 @@ inline std::string IsolateNetwork() {
 // socket buffer, an agent process starved for a moment on a loaded machine overflowed it and the
 // kernel dropped datagrams (seen as dropped_messages > 0 and a verification that never ended).
 // 4 MiB is what LCM's documentation advises for udpm (the kernel caps it at net.core.rmem_max).
-// A result CSV's rows by column name (a field the row lacks reads as empty).
-using Row = std::map<std::string, std::string>;
-inline std::vector<Row> ReadCsv(const fs::path& path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << path;
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> header;
-  std::stringstream hs(line);
-  for (std::string c; std::getline(hs, c, ',');) header.push_back(c);
-  std::vector<Row> rows;
-  while (std::getline(in, line)) {
-    Row row;
-    std::stringstream ls(line);
-    std::size_t i = 0;
-    for (std::string c; i < header.size(); ++i) {
-      if (!std::getline(ls, c, ',')) c.clear();
-      row[header[i]] = c;
-    }
-    rows.push_back(row);
-  }
-  return rows;
-}
+// A result CSV's rows by column name (tests/test_support.h).
+using testing_support::ReadCsv;
+using testing_support::Row;
 
 inline std::string Url(int port) {
   return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0&recv_buf_size=4194304";
