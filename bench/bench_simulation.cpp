@@ -115,6 +115,31 @@ void BM_Kitti00_100Robots_Radio200m(benchmark::State& state, RoutingKind kind) {
 BENCHMARK_CAPTURE(BM_Kitti00_100Robots_Radio200m, shortest_path, RoutingKind::kShortestPath)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Kitti00_100Robots_Radio200m, link_state, RoutingKind::kLinkState)->Unit(benchmark::kMillisecond);
 
+// All of KITTI 00 for a team on one contending medium, both strategies (network and matching):
+// the trace the ns-3 peers replay (bench/peers/README.md). Args: robots; wifi rate in Mbit/s
+// (0: csma at 10 Mbit/s, 2 ms).
+void BM_Kitti00_Contending(benchmark::State& state, const char* strategy) {
+  static const Dataset data = Kitti00();
+  const int robots = static_cast<int>(state.range(0));
+  std::unique_ptr<RoutingStrategy> routing;
+  if (std::string(strategy) == "broadcast") {
+    routing = std::make_unique<BroadcastRouting>(robots);
+  } else {
+    routing = std::make_unique<DecentralizedRouting>(Table(robots, 30));
+  }
+  const SimRunParams params = state.range(1) == 0 ? Csma(robots) : Wifi(robots, state.range(1));
+  SimRunLog log;
+  for (auto _ : state) {
+    log = RunSimulation(data, *routing, params);
+    benchmark::DoNotOptimize(log.queries.data());
+  }
+  Report(state, log);
+}
+BENCHMARK_CAPTURE(BM_Kitti00_Contending, decentralized, "decentralized")
+    ->Args({10, 6})->Args({10, 54})->Args({20, 0})->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Kitti00_Contending, broadcast, "broadcast")
+    ->Args({10, 6})->Args({10, 54})->Args({20, 0})->Unit(benchmark::kMillisecond);
+
 void BM_Decentralized_1000Robots_100kFrames(benchmark::State& state) {
   static const Dataset data = bench::Tiled(23 * 4541);  // 23 copies: 104 443 frames
   const auto table = Table(1000, 10);  // training is not what this measures

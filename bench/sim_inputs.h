@@ -81,6 +81,20 @@ inline SimRunParams Radio(int robots, double range_m) {
   return p;
 }
 
+// The same team on one contending medium (docs/network_model.md, "Contending media"): ns-3's CSMA
+// at 10 Mbit/s with a 2 ms channel delay, or 802.11a DCF at `wifi_mbps` with every robot in range.
+inline SimRunParams Csma(int robots) {
+  SimRunParams p = PointToPoint(robots);
+  p.scenario.network.model = LinkModelKind::kCsma;
+  return p;
+}
+inline SimRunParams Wifi(int robots, std::int64_t wifi_mbps) {
+  SimRunParams p = PointToPoint(robots);
+  p.scenario.network.model = LinkModelKind::kWifi;
+  p.scenario.network.wifi.rate = DataRate::Mbps(wifi_mbps);
+  return p;
+}
+
 inline double PeakRssMiB() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);

@@ -1,10 +1,12 @@
 #include "net_models/link_factory.h"
 
+#include <algorithm>
 #include <array>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
+#include "net_models/csma_link.h"
 #include "net_models/ideal_link.h"
 #include "net_models/lossy_link.h"
 #include "net_models/param_checks.h"
@@ -29,11 +31,21 @@ SharedMediumParams ToSharedMedium(const NetworkModelParams& p) {
 
 RadioLinkParams ToRadio(const NetworkModelParams& p) { return RadioLinkParams{p.bandwidth, p.latency, p.queue_packets}; }
 
-constexpr std::array<std::pair<LinkModelKind, std::string_view>, 4> kNames{{
+CsmaParams ToCsma(const NetworkModelParams& p) { return CsmaParams{p.bandwidth, p.latency, p.queue_packets}; }
+
+WifiParams ToWifi(const NetworkModelParams& p) {
+  WifiParams w = p.wifi;
+  w.queue_packets = p.queue_packets;
+  return w;
+}
+
+constexpr std::array<std::pair<LinkModelKind, std::string_view>, 6> kNames{{
     {LinkModelKind::kIdeal, "ideal"},
     {LinkModelKind::kPointToPoint, "point_to_point"},
     {LinkModelKind::kSharedMedium, "shared_medium"},
     {LinkModelKind::kRadio, "radio"},
+    {LinkModelKind::kCsma, "csma"},
+    {LinkModelKind::kWifi, "wifi"},
 }};
 
 void ValidateLink(const LinkOverrideParams& o, std::size_t i, LinkModelKind model, int nodes) {
@@ -58,6 +70,16 @@ void ValidateLink(const LinkOverrideParams& o, std::size_t i, LinkModelKind mode
 }
 
 }  // namespace
+
+bool Contends(LinkModelKind kind) { return kind == LinkModelKind::kCsma || kind == LinkModelKind::kWifi; }
+
+WireParams WireOf(const NetworkModelParams& params) {
+  switch (params.model) {
+    case LinkModelKind::kCsma: return LinkWire(params.wire, LinkFraming::kEthernetDix);
+    case LinkModelKind::kWifi: return LinkWire(params.wire, LinkFraming::kWifi);
+    default: return LinkWire(params.wire, LinkFraming::kPpp);
+  }
+}
 
 LinkModelKind ParseLinkModelKind(std::string_view name) {
   std::string expected;
@@ -88,12 +110,25 @@ void NetworkModelParams::Validate(int nodes) const {
   wire.Validate();  // its fields (mtu, link_framing) sit at the top of a network section
   ValidateNested("loss.", [&] { loss.Validate(); });
   for (std::size_t i = 0; i < links.size(); ++i) ValidateLink(links[i], i, model, nodes);
-  if (model == LinkModelKind::kRadio) ValidateNested("radio.", [&] { radio.Validate(); });
+  if (Contends(model)) {
+    // The loss decorator draws each frame's fate when it is sent; a contending MAC settles its
+    // frames later (link_model.h), so there is nothing to decorate yet.
+    const bool pair_loss = std::any_of(links.begin(), links.end(), [](const LinkOverrideParams& o) { return o.loss; });
+    if (loss.model != LossModelKind::kNone || pair_loss) {
+      InvalidParam("loss", "a loss model needs a medium access that decides at send time, not model " +
+                               std::string(ToString(model)));
+    }
+  }
+  if (model == LinkModelKind::kRadio || (model == LinkModelKind::kWifi && wifi_radio)) {
+    ValidateNested("radio.", [&] { radio.Validate(); });
+  }
+  if (model == LinkModelKind::kWifi) ValidateNested("wifi.", [&] { ToWifi(*this).Validate(); });
   ValidateNested("disconnected.", [&] { disconnected.Validate(); });
   if (routing == RoutingKind::kLinkState) ValidateNested("routing.", [&] { link_state.Validate(); });
 }
 
-std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int nodes, std::uint64_t run_seed) {
+std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int nodes, std::uint64_t run_seed,
+                                         PropagationModel* propagation) {
   params.Validate(nodes);
   std::unique_ptr<LinkModel> link;
   switch (params.model) {
@@ -105,6 +140,11 @@ std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int n
       link = std::make_unique<SharedMediumLink>(ToSharedMedium(params), nodes);
       break;
     case LinkModelKind::kRadio: link = std::make_unique<RadioLink>(ToRadio(params), nodes); break;
+    case LinkModelKind::kCsma: link = std::make_unique<CsmaLink>(ToCsma(params), nodes, run_seed); break;
+    case LinkModelKind::kWifi:
+      if (propagation == nullptr) throw std::invalid_argument("model wifi senses through a propagation model: none given");
+      link = std::make_unique<WifiLink>(ToWifi(params), nodes, run_seed, *propagation);
+      break;
   }
   std::vector<PairLossOverride> loss_overrides;
   for (const auto& o : params.links) {

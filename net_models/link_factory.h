@@ -13,13 +13,17 @@
 #include "net_models/loss_params.h"
 #include "net_models/next_hop_routing.h"
 #include "net_models/radio_params.h"
+#include "net_models/wifi_link.h"
 #include "net_models/wire_format.h"
 
 namespace dvpr {
 
-enum class LinkModelKind { kIdeal, kPointToPoint, kSharedMedium, kRadio };
+// shared_medium is the ideal bus (first come, first served, no gaps, no contention): the
+// optimistic bound of csma, ns-3's CSMA (csma_link.h).
+enum class LinkModelKind { kIdeal, kPointToPoint, kSharedMedium, kRadio, kCsma, kWifi };
 
-// The one spelling of each kind: "ideal" | "point_to_point" | "shared_medium" | "radio". Parse throws
+// The one spelling of each kind: "ideal" | "point_to_point" | "shared_medium" | "radio" | "csma" |
+// "wifi". Parse throws
 // std::invalid_argument "unknown value '<name>' (expected one of: ...)" for anything else.
 LinkModelKind ParseLinkModelKind(std::string_view name);
 std::string_view ToString(LinkModelKind kind);
@@ -51,7 +55,9 @@ struct NetworkModelParams {
   WireParams wire;  // mtu, link framing
   LossParams loss;  // for every pair unless overridden
   std::vector<LinkOverrideParams> links;
-  RadioParams radio;  // model radio: who hears whom (the stack's propagation, MakeNetworkStack)
+  RadioParams radio;  // model radio (and wifi over the radio): who hears whom (the stack's propagation)
+  WifiParams wifi;    // model wifi: its rates (queue_packets is the one above)
+  bool wifi_radio = false;  // model wifi: who senses and hears whom is `radio`'s, else every robot
   RoutingKind routing = RoutingKind::kDirect;  // which way a copy goes (the stack's routing)
   LinkStateParams link_state;  // routing link_state: its beacon periods
   DisconnectedParams disconnected;  // a copy without a route: dropped, or held (store-and-forward)
@@ -62,13 +68,23 @@ struct NetworkModelParams {
   // range above, an MTU outside WireParams', a probability outside [0, 1], an override naming a
   // node outside [0, nodes) or its own link, a bandwidth/latency override
   // on a model other than point_to_point, or (model radio) radio parameters out of range
-  // ("radio.range").
+  // ("radio.range"), a wifi without a rate or with one outside 802.11a's ("wifi.rate"), or a
+  // loss model on a contending model ("loss").
   void Validate(int nodes) const;
   bool operator==(const NetworkModelParams&) const = default;
 };
 
+// A contending medium access: it runs events of its own and settles copies later (link_model.h).
+bool Contends(LinkModelKind kind);
+
+// The wire format of a network of these parameters: params.wire with its model's framing (PPP;
+// DIX Ethernet for csma; 802.11 for wifi).
+WireParams WireOf(const NetworkModelParams& params);
+
 // The link model for `nodes` nodes, wrapped in a LossyLink when any pair has
-// loss. run_seed seeds the loss streams.
-std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int nodes, std::uint64_t run_seed);
+// loss. run_seed seeds the loss streams. Model wifi senses through `propagation` (the stack's,
+// which must outlive it; required for wifi, std::invalid_argument without it).
+std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int nodes, std::uint64_t run_seed,
+                                         PropagationModel* propagation = nullptr);
 
 }  // namespace dvpr

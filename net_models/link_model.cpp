@@ -16,6 +16,8 @@ std::string_view ToString(DropReason reason) {
     case DropReason::kBufferFull: return "buffer_full";
     case DropReason::kExpired: return "expired";
     case DropReason::kStaleRoute: return "stale_route";
+    case DropReason::kRetryLimit: return "retry_limit";
+    case DropReason::kCollision: return "collision";
   }
   return "unknown";
 }

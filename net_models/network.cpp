@@ -47,6 +47,7 @@ Network::Network(Simulator& sim, int nodes, NetworkStack stack, WireParams wire)
   if (!stack_.access) throw std::invalid_argument("Network: no link model");
   stack_.CompleteDefaults(nodes);
   stack_.disconnected.Validate();
+  stack_.access->Bind(sim_, *this);
   wire_.Validate();
   const auto n = static_cast<std::size_t>(nodes);
   endpoints_.assign(n, nullptr);
@@ -237,6 +238,11 @@ void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::v
       }
     }
     if (!observers_.empty()) NotifySent(p, dst, copy, drop);
+    if (outcomes_[i].later) {
+      ++p.refs;
+      Await(slot, i, PendingCopy{dst, hops_[i], copy, 1, now});
+      continue;
+    }
     if (drop != DropReason::kNone) {
       ++c.dropped;
       CountDrop(drop);
@@ -304,12 +310,7 @@ void Network::Relay(std::uint32_t slot, std::span<const PendingCopy> copies, std
   Payload& p = payloads_[slot];
   std::uint32_t dropped = 0;
   const auto drop = [&](const PendingCopy& c, DropReason reason) {
-    ++pairs_.At(p.src, c.dst).dropped;
-    CountDrop(reason);
-    if (!observers_.empty()) {
-      const MessageCopy m = CopyOf(p, c.dst, c.copy, static_cast<int>(c.hops));
-      for (NetworkObserver* o : observers_) o->OnDropped(m, now, reason);
-    }
+    DropCopy(slot, c, reason);
     ++dropped;
   };
   relay_copies_.clear();
@@ -341,7 +342,9 @@ void Network::Relay(std::uint32_t slot, std::span<const PendingCopy> copies, std
   const auto from = static_cast<std::uint32_t>(pending_[slot].size());
   for (std::size_t i = 0; i < relay_copies_.size(); ++i) {
     const PendingCopy& c = relay_copies_[i];
-    if (outcomes_[i].drop == DropReason::kNone) {
+    if (outcomes_[i].later) {
+      Await(slot, i, PendingCopy{c.dst, hops_[i], c.copy, std::uint64_t{c.hops} + 1, now});
+    } else if (outcomes_[i].drop == DropReason::kNone) {
       pending_[slot].push_back(PendingCopy{c.dst, hops_[i], c.copy, std::uint64_t{c.hops} + 1, outcomes_[i].arrival});
     } else if (outcomes_[i].drop == DropReason::kNoRoute && StoreAndForward()) {
       if (!Hold(slot, PendingCopy{c.dst, at, c.copy, c.hops, now}, relay_since_[i])) drop(c, DropReason::kBufferFull);
@@ -352,6 +355,49 @@ void Network::Relay(std::uint32_t slot, std::span<const PendingCopy> copies, std
   if (pending_[slot].size() > from) ScheduleCopies(slot, from);
   // Last: releasing the last reference frees the slot.
   for (std::uint32_t k = 0; k < dropped; ++k) ReleasePayload(slot);
+}
+
+void Network::DropCopy(std::uint32_t slot, const PendingCopy& c, DropReason reason) {
+  const Payload& p = payloads_[slot];
+  ++pairs_.At(p.src, c.dst).dropped;
+  CountDrop(reason);
+  if (!observers_.empty()) {
+    const MessageCopy m = CopyOf(p, c.dst, c.copy, static_cast<int>(c.hops));
+    for (NetworkObserver* o : observers_) o->OnDropped(m, sim_.Now(), reason);
+  }
+}
+
+// The copy waits for the transmission just handed to the medium access (its ticket is the last).
+void Network::Await(std::uint32_t slot, std::size_t i, const PendingCopy& copy) {
+  Awaited& a = awaited_[tickets_ - 1];
+  a.slot = slot;
+  a.copies.push_back(AwaitedCopy{copy, receiver_of_[i]});
+}
+
+// The copies that arrive are scheduled as any others; the lost ones are dropped last (releasing
+// the last reference frees the slot).
+void Network::Complete(std::uint64_t ticket, std::span<const LinkDelivery> outcomes) {
+  const auto it = awaited_.find(ticket);
+  if (it == awaited_.end()) throw std::logic_error("Network: a medium access completed an unknown transmission");
+  const Awaited a = std::move(it->second);
+  awaited_.erase(it);
+  std::vector<PendingCopy>& pending = pending_[a.slot];
+  const auto from = static_cast<std::uint32_t>(pending.size());
+  for (const AwaitedCopy& w : a.copies) {
+    const LinkDelivery& d = outcomes[w.receiver];
+    if (d.later) throw std::logic_error("Network: a medium access completed a copy it left open");
+    if (d.drop != DropReason::kNone) continue;
+    PendingCopy c = w.copy;
+    c.arrival = d.arrival;
+    pending.push_back(c);
+  }
+  if (pending.size() > from) ScheduleCopies(a.slot, from);
+  for (const AwaitedCopy& w : a.copies) {
+    const DropReason reason = outcomes[w.receiver].drop;
+    if (reason == DropReason::kNone) continue;
+    DropCopy(a.slot, w.copy, reason);
+    ReleasePayload(a.slot);
+  }
 }
 
 bool Network::Hold(std::uint32_t slot, const PendingCopy& c, SimTime since) {
@@ -422,7 +468,7 @@ LinkModel::MediumUse Network::TransmitFrom(NodeId src, SimTime now, NodeCounters
     std::fill(outcomes_.begin(), outcomes_.end(), LinkDelivery{now, keeps ? DropReason::kNoRoute : DropReason::kOffline});
     return {};
   }
-  const LinkModel::MediumUse use = TransmitRouted(LinkTransmission{src, dsts_, now, frames_}, routed);
+  const LinkModel::MediumUse use = TransmitRouted(LinkTransmission{src, dsts_, now, frames_, tickets_++}, routed);
   sender.transmissions += use.transmissions;
   sender.medium_bytes += use.bytes.value();
   return use;
@@ -440,7 +486,9 @@ LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t, bool rou
     std::copy(dsts_.begin(), dsts_.end(), hops_.begin());
   }
   const DropReason unheard = routed ? stack_.routing->UnheardHop() : DropReason::kOutOfRange;
+  receiver_of_.resize(dsts_.size());
   if (std::equal(hops_.begin(), hops_.end(), dsts_.begin())) {  // one hop each: the usual case
+    for (std::size_t i = 0; i < dsts_.size(); ++i) receiver_of_[i] = static_cast<std::uint32_t>(i);
     const LinkModel::MediumUse use = stack_.access->Transmit(t, outcomes_);
     ApplyPropagation(t.src, dsts_, t.now, outcomes_, unheard);
     return use;
@@ -470,6 +518,7 @@ LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t, bool rou
   for (std::size_t i = 0; i < dsts_.size(); ++i) {
     outcomes_[i] = hop_slot_[i] < 0 ? LinkDelivery{t.now, DropReason::kNoRoute}
                                     : routed_outcomes_[static_cast<std::size_t>(hop_slot_[i])];
+    receiver_of_[i] = static_cast<std::uint32_t>(std::max(hop_slot_[i], 0));
   }
   return use;
 }
@@ -480,6 +529,8 @@ LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t, bool rou
 // The full mesh changes nothing.
 void Network::ApplyPropagation(NodeId src, std::span<const NodeId> receivers, SimTime now,
                                std::span<LinkDelivery> outcomes, DropReason unheard) {
+  // A copy decided later is the contending medium access's to propagate: it knows who hears whom.
+  if (std::any_of(outcomes.begin(), outcomes.end(), [](const LinkDelivery& d) { return d.later; })) return;
   receptions_.resize(receivers.size());
   stack_.propagation->Reach(src, receivers, now, receptions_);
   for (std::size_t i = 0; i < receivers.size(); ++i) {

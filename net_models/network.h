@@ -125,7 +125,7 @@ class [[nodiscard]] ObserverSubscription {
   NetworkObserver* observer_ = nullptr;
 };
 
-class Network {
+class Network final : private LinkCompletions {
  public:
   // A copy is sent on at most this many times (IP's usual TTL): routing that changes under a
   // copy could pass it back and forth; the next relay drops it (DropReason::kHopLimit).
@@ -135,7 +135,7 @@ class Network {
   Network(Simulator& sim, int nodes, NetworkStack stack, WireParams wire = {});
   // `link` as the medium access, every other layer its default.
   Network(Simulator& sim, int nodes, std::unique_ptr<LinkModel> link, WireParams wire = {});
-  ~Network();
+  ~Network() override;
   Network(const Network&) = delete;
   Network& operator=(const Network&) = delete;
 
@@ -213,6 +213,7 @@ class Network {
 
  private:
   friend class ObserverSubscription;
+  struct PendingCopy;
 
   struct Channel {
     std::string name;
@@ -245,6 +246,14 @@ class Network {
   // copy goes straight to its destination.
   LinkModel::MediumUse TransmitFrom(NodeId src, SimTime now, NodeCounters& sender, bool routed);
   LinkModel::MediumUse TransmitRouted(const LinkTransmission& t, bool routed);
+  // A contending medium access decided the copies of transmission `ticket` it had left open.
+  void Complete(std::uint64_t ticket, std::span<const LinkDelivery> outcomes) override;
+  // Keeps a copy whose outcome the medium access decides later (outcomes_[i].later): i is its
+  // index in dsts_, copy what it becomes when it arrives (its arrival filled in then).
+  void Await(std::uint32_t slot, std::size_t i, const PendingCopy& copy);
+  // Drops copy c of the slot's message at a relay or later: counted against its original pair,
+  // reported, and its reference released.
+  void DropCopy(std::uint32_t slot, const PendingCopy& c, DropReason reason);
   // unheard: the drop reason of a receiver that does not hear the transmission when it starts.
   void ApplyPropagation(NodeId src, std::span<const NodeId> receivers, SimTime now, std::span<LinkDelivery> outcomes,
                         DropReason unheard);
@@ -254,7 +263,6 @@ class Network {
   void NotifyMedium(const Payload& p, NodeId sender, const LinkModel::MediumUse& use);
   std::uint32_t AllocatePayload(std::vector<std::uint8_t>&& bytes);
   void ReleasePayload(std::uint32_t slot);
-  struct PendingCopy;
   void ScheduleCopies(std::uint32_t slot, std::uint32_t from);
   // Delivers copies [first, end) of the slot's pending copies (they arrive now), or relays them.
   void DeliverCopies(std::uint32_t slot, std::uint32_t first, std::uint32_t end);
@@ -307,6 +315,20 @@ class Network {
   // By payload slot: its copies on their way, by arrival time, then destination order (the
   // vectors keep their capacity when a slot is reused).
   std::vector<std::vector<PendingCopy>> pending_;
+  // Copies whose medium access decides later, by the ticket of their transmission (a contending
+  // MAC: csma_link.h, wifi_link.h): the slot, and for each copy the index of its receiver among
+  // the transmission's destinations.
+  struct AwaitedCopy {
+    PendingCopy copy;
+    std::uint32_t receiver = 0;
+  };
+  struct Awaited {
+    std::uint32_t slot = 0;
+    std::vector<AwaitedCopy> copies;
+  };
+  std::unordered_map<std::uint64_t, Awaited> awaited_;
+  std::uint64_t tickets_ = 0;  // transmissions handed to the medium access so far: the next ticket
+  std::vector<std::uint32_t> receiver_of_;  // TransmitRouted: by destination, its receiver's index in the transmission
   std::vector<PendingCopy> relay_copies_;  // Relay's scratch: the copies it sends on
   std::vector<SimTime> relay_since_;       // and when each was first held
 

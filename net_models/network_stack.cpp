@@ -42,17 +42,21 @@ std::unique_ptr<PropagationModel> MakeRadioPropagation(const RadioParams& radio,
 
 NetworkStack MakeNetworkStack(const NetworkModelParams& params, int nodes, std::uint64_t run_seed,
                               std::unique_ptr<MobilityModel> mobility) {
-  if (params.model == LinkModelKind::kRadio && !mobility) {
-    throw std::invalid_argument("model: radio needs the robots' positions over time (a trajectory)");
+  params.Validate(nodes);  // before any model is built from them
+  const bool radio = params.model == LinkModelKind::kRadio || (params.model == LinkModelKind::kWifi && params.wifi_radio);
+  if (radio && !mobility) {
+    throw std::invalid_argument("model: " + std::string(ToString(params.model)) +
+                                " over the radio needs the robots' positions over time (a trajectory)");
   }
   NetworkStack stack;
   stack.mobility = std::move(mobility);
-  stack.access = MakeLinkModel(params, nodes, run_seed);
+  if (!stack.mobility) stack.mobility = std::make_unique<FixedMobility>(FixedMobility::AtOrigin(nodes));
+  // wifi senses through the propagation: it comes first.
+  if (radio) stack.propagation = MakeRadioPropagation(params.radio, *stack.mobility, run_seed);
+  if (!stack.propagation) stack.propagation = std::make_unique<FullMeshPropagation>();
+  stack.access = MakeLinkModel(params, nodes, run_seed, stack.propagation.get());
   stack.disconnected = params.disconnected;
   stack.CompleteDefaults(nodes);
-  if (params.model == LinkModelKind::kRadio) {
-    stack.propagation = MakeRadioPropagation(params.radio, *stack.mobility, run_seed);
-  }
   switch (params.routing) {
     case RoutingKind::kDirect: break;
     case RoutingKind::kShortestPath:

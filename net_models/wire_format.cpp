@@ -13,6 +13,8 @@ namespace {
 void AddDatagram(std::int64_t udp_payload, const WireParams& p, WireFootprint& fp, std::vector<Bytes>* frames) {
   const std::int64_t ip_data = udp_payload + wire::kUdpHeader;
   const std::int64_t framing = p.link_framing.value();
+  // A link frame carries its IP packet padded to the link's minimum payload (Ethernet: 46 B).
+  const auto frame = [&](std::int64_t ip_packet) { return std::max(ip_packet, p.link_min_payload.value()) + framing; };
   fp.lcm_datagrams += 1;
   fp.udp_payload_bytes += Bytes(udp_payload);
   std::int64_t per_fragment = ip_data;  // unfragmented: everything in one packet
@@ -24,12 +26,13 @@ void AddDatagram(std::int64_t udp_payload, const WireParams& p, WireFootprint& f
   const std::int64_t last_data = ip_data - (packets - 1) * per_fragment;
   fp.ip_packets += packets;
   fp.ip_bytes += Bytes(ip_data + packets * wire::kIpv4Header);
-  fp.wire_bytes += Bytes(ip_data + packets * (wire::kIpv4Header + framing));
-  const std::int64_t first_frame = (packets > 1 ? per_fragment : last_data) + wire::kIpv4Header + framing;
-  fp.largest_frame = std::max(fp.largest_frame, Bytes(first_frame));
+  const std::int64_t full_frame = frame(per_fragment + wire::kIpv4Header);
+  const std::int64_t last_frame = frame(last_data + wire::kIpv4Header);
+  fp.wire_bytes += Bytes((packets - 1) * full_frame + last_frame);
+  fp.largest_frame = std::max(fp.largest_frame, Bytes(packets > 1 ? full_frame : last_frame));
   if (frames != nullptr) {
-    for (std::int64_t i = 0; i + 1 < packets; ++i) frames->push_back(Bytes(per_fragment + wire::kIpv4Header + framing));
-    frames->push_back(Bytes(last_data + wire::kIpv4Header + framing));
+    for (std::int64_t i = 0; i + 1 < packets; ++i) frames->push_back(Bytes(full_frame));
+    frames->push_back(Bytes(last_frame));
   }
 }
 
@@ -57,7 +60,28 @@ void WireParams::Validate() const {
                             std::to_string(mtu.value()) + "B");
   }
   CheckInRange("mtu", mtu, Bytes(wire::kIpv4Header + 8), kMaxMtu);
-  CheckNonNegativeCount("link_framing", link_framing.value());
+  // Framing comes with the link model (LinkWire), never from a config: a bad one is a bug.
+  if (link_framing.value() < 0 || link_min_payload.value() < 0) {
+    throw std::logic_error("WireParams: negative link framing or minimum payload");
+  }
+}
+
+WireParams LinkWire(WireParams wire, LinkFraming framing) {
+  switch (framing) {
+    case LinkFraming::kPpp:
+      wire.link_framing = Bytes(2);
+      wire.link_min_payload = Bytes(0);
+      break;
+    case LinkFraming::kEthernetDix:
+      wire.link_framing = Bytes(wire::kEthernetHeader + wire::kEthernetFcs);
+      wire.link_min_payload = Bytes(wire::kEthernetMinPayload);
+      break;
+    case LinkFraming::kWifi:
+      wire.link_framing = Bytes(wire::kWifiMacHeader + wire::kWifiFcs + wire::kLlcSnap);
+      wire.link_min_payload = Bytes(0);
+      break;
+  }
+  return wire;
 }
 
 WireFootprint ComputeWireFootprint(Bytes payload, std::int64_t channel_length, const WireParams& params) {

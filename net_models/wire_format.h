@@ -13,8 +13,10 @@
 //     exceeds the MTU, IPv4 fragments it: every fragment has its own 20-byte
 //     IP header and carries a multiple of 8 data bytes (1480 at MTU 1500),
 //     the UDP header riding in the first fragment's data.
-//  3. Link frames. Each IP packet gains the link's framing (2 bytes for PPP,
-//     as ns-3's PointToPointNetDevice adds).
+//  3. Link frames. Each IP packet gains the link's framing (LinkWire): 2 bytes for PPP, as
+//     ns-3's PointToPointNetDevice adds; DIX Ethernet's 14-byte header and 4-byte FCS around
+//     a payload padded to 46 bytes (csma, as ns-3's CsmaNetDevice); 802.11's 24-byte MAC
+//     header, 8-byte LLC/SNAP header and 4-byte FCS (wifi, as ns-3's WifiNetDevice).
 //
 // Worked example: a 517-byte UDP payload is a 517 + 8 + 20 = 545-byte IP
 // packet and a 547-byte PPP frame.
@@ -33,8 +35,9 @@ struct WireParams {
 
   Bytes mtu{1500};          // IP MTU of the link: largest IP packet, headers included
   Bytes link_framing{2};    // per-packet link-layer overhead (PPP: 2)
-  // Throws std::invalid_argument "<field>: ..." (mtu must leave room for the
-  // IP header and 8 data bytes, i.e. >= 28, and be at most kMaxMtu; framing >= 0).
+  Bytes link_min_payload{0};  // an IP packet shorter than this is padded to it (Ethernet: 46)
+  // Throws std::invalid_argument "mtu: ..." (mtu must leave room for the IP header and 8 data
+  // bytes, i.e. >= 28, and be at most kMaxMtu); std::logic_error for a negative framing.
   void Validate() const;
   bool operator==(const WireParams&) const = default;
 };
@@ -46,7 +49,19 @@ inline constexpr std::int64_t kLcmShortMessageMax = 65499;   // channel + NUL + 
 inline constexpr std::int64_t kLcmFragmentMaxPayload = 65487;
 inline constexpr std::int64_t kUdpHeader = 8;
 inline constexpr std::int64_t kIpv4Header = 20;
+inline constexpr std::int64_t kEthernetHeader = 14;     // DIX: destination, source, EtherType
+inline constexpr std::int64_t kEthernetFcs = 4;
+inline constexpr std::int64_t kEthernetMinPayload = 46;  // 64-byte minimum frame less header and FCS
+inline constexpr std::int64_t kWifiMacHeader = 24;       // 802.11 data frame, no QoS, no address 4
+inline constexpr std::int64_t kWifiFcs = 4;
+inline constexpr std::int64_t kLlcSnap = 8;
 }  // namespace wire
+
+// The framing of each link model: PPP (point_to_point, shared_medium, radio; ideal counts it
+// too), DIX Ethernet (csma), 802.11 data frames (wifi).
+enum class LinkFraming { kPpp, kEthernetDix, kWifi };
+// `wire` with the framing's link_framing and link_min_payload.
+WireParams LinkWire(WireParams wire, LinkFraming framing);
 
 // The wire footprint of one message: counts and total bytes at each layer.
 struct WireFootprint {

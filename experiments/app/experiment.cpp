@@ -41,12 +41,14 @@ void CheckProtocolsAvailable(const ExperimentConfig& config, const std::string& 
 struct RowFiles {
   // radio: a network variant is a radio (radio.csv, and the radio columns of per_robot.csv,
   // messages.csv and queries.csv, result_writers.h).
-  // teams: the sweep runs a team (closure_pairs.csv).
+  // mac: a network variant contends for its medium (medium.csv, and the MAC columns of
+  // per_robot.csv). teams: the sweep runs a team (closure_pairs.csv).
   RowFiles(const OutputDir& dir, const OutputsConfig& outputs, bool dropouts, bool bow_strategies, bool radio,
-           bool teams)
-      : radio_columns(radio), runs(dir, "runs.csv"), per_robot(dir, "per_robot.csv"), links(dir, "links.csv") {
+           bool mac, bool teams)
+      : radio_columns(radio), mac_columns(mac), runs(dir, "runs.csv"), per_robot(dir, "per_robot.csv"),
+        links(dir, "links.csv") {
     runs.stream() << kRunsHeader << '\n';
-    per_robot.stream() << PerRobotHeader(radio) << '\n';
+    per_robot.stream() << PerRobotHeader(radio, mac) << '\n';
     links.stream() << kLinksHeader << '\n';
     if (outputs.queries) {
       queries.emplace(dir, "queries.csv");
@@ -74,6 +76,10 @@ struct RowFiles {
       radio_rows.emplace(dir, "radio.csv");
       radio_rows->stream() << kRadioHeader << '\n';
     }
+    if (mac) {
+      medium_rows.emplace(dir, "medium.csv");
+      medium_rows->stream() << kMediumHeader << '\n';
+    }
     if (teams) {
       closure_pairs.emplace(dir, "closure_pairs.csv");
       closure_pairs->stream() << kClosurePairsHeader << '\n';
@@ -81,7 +87,7 @@ struct RowFiles {
   }
   void Write(const RunOutput& out) {
     for (const auto& r : out.runs) runs.stream() << CsvRow(r) << '\n';
-    for (const auto& r : out.per_robot) per_robot.stream() << CsvRow(r, radio_columns) << '\n';
+    for (const auto& r : out.per_robot) per_robot.stream() << CsvRow(r, radio_columns, mac_columns) << '\n';
     for (const auto& r : out.links) links.stream() << CsvRow(r) << '\n';
     if (queries) for (const auto& r : out.queries) queries->stream() << CsvRow(r, radio_columns) << '\n';
     if (messages) for (const auto& r : out.messages) messages->stream() << CsvRow(r, radio_columns) << '\n';
@@ -89,6 +95,7 @@ struct RowFiles {
     if (bow) for (const auto& r : out.bow) bow->stream() << CsvRow(r) << '\n';
     if (bow_sizes) for (const auto& r : out.bow_sizes) bow_sizes->stream() << CsvRow(r) << '\n';
     if (radio_rows) for (const auto& r : out.radio) radio_rows->stream() << CsvRow(r) << '\n';
+    if (medium_rows) for (const auto& r : out.medium) medium_rows->stream() << CsvRow(r) << '\n';
     if (connectivity) for (const auto& r : out.connectivity) connectivity->stream() << CsvRow(r) << '\n';
     if (closure_pairs) for (const auto& r : out.closure_pairs) closure_pairs->stream() << CsvRow(r) << '\n';
   }
@@ -102,12 +109,15 @@ struct RowFiles {
     if (bow) bow->Commit();
     if (bow_sizes) bow_sizes->Commit();
     if (radio_rows) radio_rows->Commit();
+    if (medium_rows) medium_rows->Commit();
     if (connectivity) connectivity->Commit();
     if (closure_pairs) closure_pairs->Commit();
   }
   bool radio_columns;
+  bool mac_columns;
   AtomicFile runs, per_robot, links;
-  std::optional<AtomicFile> queries, messages, failover, bow, bow_sizes, radio_rows, connectivity, closure_pairs;
+  std::optional<AtomicFile> queries, messages, failover, bow, bow_sizes, radio_rows, medium_rows, connectivity,
+      closure_pairs;
 };
 
 // synthetic_bow's vectors are made while the inputs load (hours at its largest parameters): a
@@ -160,8 +170,10 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
   const bool radio = std::count(config.network.model.begin(), config.network.model.end(), LinkModelKind::kRadio) > 0;
   // closure_pairs.csv when a team runs (its robots exchange messages: inter-robot loop closures).
   const bool teams = AnyProtocol(config.sweep.protocols, &ProtocolTraits::sends_messages);
+  // medium.csv and the MAC columns when a variant contends (csma, wifi); only sim runs fill them.
+  const bool mac = std::any_of(config.network.model.begin(), config.network.model.end(), Contends);
   RowFiles files(folder.output(), config.outputs, !config.dropout.empty() && config.failover.enabled, bow, radio,
-                 teams);
+                 mac, teams);
   std::vector<RunResult> rows;
   std::vector<PrCurve> curves;
   std::vector<RunConnectivity> connectivity;  // one per simulated run that tracked it, in spec order

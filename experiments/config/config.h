@@ -126,6 +126,10 @@ struct NetworkConfig {
   // model radio: one variant per entry (network.radio, a `range` list gives one entry per range);
   // a radio section without model radio is refused when the config is read.
   std::vector<RadioParams> radio{RadioParams{}};
+  // model wifi: network.wifi's rate (required) and basic_rate; wifi_radio: its `propagation` is
+  // radio (network.radio's entries, one variant each), else every robot hears every other.
+  WifiParams wifi;
+  bool wifi_radio = false;
   // network.routing: model radio runs one variant per entry (a list sweeps routings); the other
   // models reach every robot in one hop and route direct (a routing for them is refused).
   std::vector<RoutingEntry> routing{RoutingEntry{}};

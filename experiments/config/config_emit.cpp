@@ -205,7 +205,15 @@ void EmitNetwork(YAML::Emitter& out, const NetworkConfig& n) {
   out << YAML::EndSeq;
   // Only a radio config has the section (and only a routed one the routing), so every other
   // config's emitted form stays as it was.
-  if (std::find(n.model.begin(), n.model.end(), LinkModelKind::kRadio) != n.model.end()) EmitRadio(out, n.radio);
+  const bool wifi = std::find(n.model.begin(), n.model.end(), LinkModelKind::kWifi) != n.model.end();
+  if (std::find(n.model.begin(), n.model.end(), LinkModelKind::kRadio) != n.model.end() || (wifi && n.wifi_radio)) {
+    EmitRadio(out, n.radio);
+  }
+  if (wifi) {
+    out << YAML::Key << "wifi" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "rate" << YAML::Value
+        << ToString(n.wifi.rate) << YAML::Key << "basic_rate" << YAML::Value << ToString(n.wifi.basic_rate)
+        << YAML::Key << "propagation" << YAML::Value << (n.wifi_radio ? "radio" : "full_mesh") << YAML::EndMap;
+  }
   if (n.routing != std::vector<RoutingEntry>{RoutingEntry{}}) {
     out << YAML::Key << "routing" << YAML::Value << YAML::Flow << YAML::BeginSeq;
     for (const RoutingEntry& e : n.routing) {

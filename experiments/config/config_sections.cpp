@@ -229,13 +229,45 @@ std::vector<RoutingEntry> ReadRouting(const Field& f) {
   return out;
 }
 
+bool Lists(const NetworkConfig& n, LinkModelKind kind) {
+  return std::find(n.model.begin(), n.model.end(), kind) != n.model.end();
+}
+
+// network.wifi: {rate, basic_rate, propagation: full_mesh | radio}; rate required.
+void ReadWifi(const Field& f, NetworkConfig& n) {
+  const char* rates = "one of 6, 9, 12, 18, 24, 36, 48, 54 Mbit/s";
+  if (!f.present()) {
+    if (Lists(n, LinkModelKind::kWifi)) {
+      f.Fail(std::string("model wifi needs this section with its data rate: {rate: 54Mbps}, ") + rates);
+    }
+    return;
+  }
+  if (!Lists(n, LinkModelKind::kWifi)) f.Fail("applies to model wifi, which network.model does not list");
+  if (!f.node().IsMap()) f.Fail("expected a map such as {rate: 54Mbps}");
+  f.ExpectMap({"rate", "basic_rate", "propagation"});
+  const Field rate = f.Child("rate");
+  if (!rate.present()) rate.Fail(std::string("model wifi needs a data rate: ") + rates);
+  n.wifi.rate = rate.Rate(NetworkModelParams::kMinBandwidth, NetworkModelParams::kMaxBandwidth);
+  if (auto c = f.Child("basic_rate"); c.present()) {
+    n.wifi.basic_rate = c.Rate(NetworkModelParams::kMinBandwidth, NetworkModelParams::kMaxBandwidth);
+  }
+  if (auto c = f.Child("propagation"); c.present()) {
+    n.wifi_radio = c.Named([](std::string_view name) {
+      if (name == "full_mesh") return false;
+      if (name == "radio") return true;
+      throw std::invalid_argument("unknown value '" + std::string(name) + "' (expected one of: full_mesh, radio)");
+    });
+  }
+  f.Validate(n.wifi);
+}
+
 }  // namespace
 
 NetworkConfig ReadNetwork(const Field& f) {
   NetworkConfig n;
   if (!f.present()) return n;
   f.ExpectMap({"model", "bandwidth", "latency", "queue_packets", "mtu", "loss", "links", "radio", "routing",
-               "disconnected", "schedule"});
+               "disconnected", "schedule", "wifi"});
   if (auto c = f.Child("model"); c.present()) {
     n.model = ReadList<LinkModelKind>(c, [](const Field& i) { return i.Named(ParseLinkModelKind); });
   }
@@ -255,10 +287,21 @@ NetworkConfig ReadNetwork(const Field& f) {
     });
   }
   n.loss = ReadLoss(f.Child("loss"));
+  if (n.loss.model != LossModelKind::kNone) {
+    for (const LinkModelKind kind : n.model) {
+      if (Contends(kind)) {
+        f.Child("loss").Fail("a loss model needs a medium access that decides at send time, not model " +
+                             std::string(ToString(kind)));
+      }
+    }
+  }
   n.links = ReadLinks(f.Child("links"));
+  ReadWifi(f.Child("wifi"), n);
   if (const Field radio = f.Child("radio"); radio.present()) {
-    if (std::find(n.model.begin(), n.model.end(), LinkModelKind::kRadio) == n.model.end()) {
-      radio.Fail("applies to model radio, which network.model does not list");
+    if (!Lists(n, LinkModelKind::kRadio) && !(Lists(n, LinkModelKind::kWifi) && n.wifi_radio)) {
+      radio.Fail(Lists(n, LinkModelKind::kWifi)
+                     ? "applies to model radio, or wifi with propagation radio (network.wifi.propagation)"
+                     : "applies to model radio, which network.model does not list");
     }
     n.radio = ReadRadio(radio);
   }

@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 
+#include "experiments/figures/figures_contention.h"
 #include "experiments/figures/figures_radio.h"
 #include "experiments/figures/figures_traffic.h"
 #include "experiments/figures/gnuplot_run.h"
@@ -201,6 +202,10 @@ std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::ostream& log) {
   }
   // Figure 9 only where bag-of-words ran (no "skipped" line elsewhere).
   if (WriteBowComparisonData(out_dir, data, rows)) draw("bow_comparison", BowComparisonScript);
+  // contention.png only where a variant contends for its medium (figures_contention.h).
+  if (const std::optional<FigureScript> f = WriteContentionFigure(data, TabulateTraffic(rows))) {
+    draw("contention", [f](const fs::path&, const fs::path& png) { return Preamble(png, f->width, f->height) + f->body; });
+  }
   // The radio's figures only where the results have them (figures_radio.h).
   for (const auto& [name, f] : RadioFigures(out_dir, data, rows)) {
     draw(name, [f](const fs::path&, const fs::path& png) { return Preamble(png, f.width, f.height) + f.body; });

@@ -32,7 +32,8 @@ void Fields(RunResult& r, F&& f) {
 template <typename F>
 void Fields(RobotLoadRow& r, F&& f) {
   f(r.key, r.robot, r.queries_received, r.comparisons, r.stored, r.busy_fraction, r.max_queue,
-    r.relay_transmissions, r.relay_bytes, r.routing_transmissions, r.routing_bytes);
+    r.relay_transmissions, r.relay_bytes, r.routing_transmissions, r.routing_bytes, r.mac_attempts, r.mac_backoffs,
+    r.mac_collisions, r.mac_retries, r.mac_dropped_queue_full, r.mac_dropped_retry_limit, r.airtime_share);
 }
 template <typename F>
 void Fields(LinkRow& r, F&& f) {
@@ -65,6 +66,11 @@ void Fields(RadioRow& r, F&& f) {
     r.routing_transmissions, r.routing_bytes, r.dropped, r.delivered_by_hops);
 }
 template <typename F>
+void Fields(MediumRow& r, F&& f) {
+  f(r.key, r.delivered_copies, r.attempts, r.backoffs, r.collisions, r.retries, r.airtime_ns, r.busy_ns,
+    r.utilisation, r.dropped);
+}
+template <typename F>
 void Fields(ConnectivityRow& r, F&& f) {
   f(r.key, r.time_ns, r.pairs_in_range, r.components, r.largest_component, r.mean_hops, r.max_hops,
     r.robots_in_range);
@@ -73,7 +79,7 @@ template <typename F> void Fields(ClosurePairRow& r, F&& f) { f(r.key, r.robot_a
 template <typename F>
 void Fields(RunOutput& o, F&& f) {
   f(o.runs, o.per_robot, o.links, o.queries, o.messages, o.curves, o.failover, o.bow, o.bow_sizes, o.radio,
-    o.connectivity, o.closure_pairs);
+    o.medium, o.connectivity, o.closure_pairs);
 }
 
 template <typename T>

@@ -19,6 +19,7 @@
 #include "experiments/data/dataset.h"
 #include "experiments/results/bow_rows.h"
 #include "experiments/results/closure_rows.h"
+#include "experiments/results/medium_rows.h"
 #include "experiments/results/radio_rows.h"
 #include "experiments/results/connectivity_rows.h"
 #include "experiments/results/results.h"
@@ -68,6 +69,7 @@ struct RunOutput {
   std::vector<BowRow> bow;            // bow_ strategies only (bow.csv)
   std::vector<BowSizeRow> bow_sizes;  // bow_ strategies only (bow_sizes.csv)
   std::vector<RadioRow> radio;        // sim on a radio variant only (radio.csv)
+  std::vector<MediumRow> medium;      // sim on a contending variant only (medium.csv)
   std::vector<ConnectivityRow> connectivity;  // sim on a radio variant, when outputs.connectivity
   std::vector<ClosurePairRow> closure_pairs;  // sim and lcm (closure_pairs.csv)
 };

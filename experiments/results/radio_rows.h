@@ -11,9 +11,9 @@
 namespace dvpr {
 
 // Why a copy was lost, in radio.csv's column order (net_models' DropReason without kNone).
-inline constexpr std::array<const char*, 9> kRadioDropReasons = {
-    "queue_full", "loss",        "offline", "no_route",   "out_of_range",
-    "hop_limit",  "buffer_full", "expired", "stale_route"};
+inline constexpr std::array<const char*, 11> kRadioDropReasons = {
+    "queue_full", "loss",    "offline",     "no_route",    "out_of_range", "hop_limit",
+    "buffer_full", "expired", "stale_route", "retry_limit", "collision"};
 
 // One row of radio.csv: one run of one strategy on a radio variant.
 struct RadioRow {

@@ -71,7 +71,13 @@ const char* const kRadioHeader =
     "protocol,strategy,robots,run,delivered_copies,mean_hops,max_hops,relay_transmissions,relay_bytes,held_copies,"
     "routing_transmissions,routing_bytes,"
     "dropped_queue_full,dropped_loss,dropped_offline,dropped_no_route,dropped_out_of_range,dropped_hop_limit,"
-    "dropped_buffer_full,dropped_expired,dropped_stale_route," DVPR_NETWORK_COLUMNS ",delivered_by_hops";
+    "dropped_buffer_full,dropped_expired,dropped_stale_route,dropped_retry_limit,dropped_collision," DVPR_NETWORK_COLUMNS
+    ",delivered_by_hops";
+const char* const kMediumHeader =
+    "protocol,strategy,robots,run,delivered_copies,attempts,backoffs,collisions,retries,airtime_ns,busy_ns,"
+    "medium_utilisation,dropped_queue_full,dropped_loss,dropped_offline,dropped_no_route,dropped_out_of_range,"
+    "dropped_hop_limit,dropped_buffer_full,dropped_expired,dropped_stale_route,dropped_retry_limit,"
+    "dropped_collision," DVPR_NETWORK_COLUMNS;
 const char* const kClosurePairsHeader =
     "protocol,strategy,robots,run,robot_a,robot_b,first_closure_ns," DVPR_NETWORK_COLUMNS;
 #undef DVPR_NETWORK_COLUMNS
@@ -238,16 +244,34 @@ std::string CsvRow(const RadioRow& r) {
   return out;
 }
 
-std::string PerRobotHeader(bool radio) {
-  return std::string(kPerRobotHeader) +
-         (radio ? ",relay_transmissions,relay_bytes,routing_transmissions,routing_bytes" : "");
+std::string CsvRow(const MediumRow& r) {
+  std::string out = Key(r.key) + "," + std::to_string(r.delivered_copies) + "," + std::to_string(r.attempts) + "," +
+                    std::to_string(r.backoffs) + "," + std::to_string(r.collisions) + "," +
+                    std::to_string(r.retries) + "," + std::to_string(r.airtime_ns) + "," +
+                    std::to_string(r.busy_ns) + "," + FormatDouble(r.utilisation);
+  for (const std::int64_t d : r.dropped) out += "," + std::to_string(d);
+  return out + "," + Network(r.key.network);
 }
 
-std::string CsvRow(const RobotLoadRow& r, bool radio) {
+std::string PerRobotHeader(bool radio, bool mac) {
+  return std::string(kPerRobotHeader) +
+         (radio ? ",relay_transmissions,relay_bytes,routing_transmissions,routing_bytes" : "") +
+         (mac ? ",mac_attempts,mac_backoffs,mac_collisions,mac_retries,mac_dropped_queue_full,"
+                "mac_dropped_retry_limit,airtime_share"
+              : "");
+}
+
+std::string CsvRow(const RobotLoadRow& r, bool radio, bool mac) {
   std::string out = CsvRow(r);
   if (radio) {
     out += "," + std::to_string(r.relay_transmissions) + "," + std::to_string(r.relay_bytes) + "," +
            std::to_string(r.routing_transmissions) + "," + std::to_string(r.routing_bytes);
+  }
+  if (mac) {
+    out += "," + std::to_string(r.mac_attempts) + "," + std::to_string(r.mac_backoffs) + "," +
+           std::to_string(r.mac_collisions) + "," + std::to_string(r.mac_retries) + "," +
+           std::to_string(r.mac_dropped_queue_full) + "," + std::to_string(r.mac_dropped_retry_limit) + "," +
+           FormatDouble(r.airtime_share);
   }
   return out;
 }

@@ -13,6 +13,7 @@
 
 #include "experiments/results/bow_rows.h"
 #include "experiments/results/closure_rows.h"
+#include "experiments/results/medium_rows.h"
 #include "experiments/results/radio_rows.h"
 #include "experiments/results/connectivity_rows.h"
 #include "experiments/results/results.h"
@@ -47,8 +48,13 @@ std::string CsvRow(const BowSizeRow& r);
 // the files are as above.
 extern const char* const kRadioHeader;
 std::string CsvRow(const RadioRow& r);
-std::string PerRobotHeader(bool radio);
-std::string CsvRow(const RobotLoadRow& r, bool radio);
+// When a network variant contends for its medium (csma, wifi): medium.csv, and per_robot.csv
+// gains, after any radio columns, each robot's mac_attempts, mac_backoffs, mac_collisions,
+// mac_retries, mac_dropped_queue_full, mac_dropped_retry_limit and airtime_share.
+extern const char* const kMediumHeader;
+std::string CsvRow(const MediumRow& r);
+std::string PerRobotHeader(bool radio, bool mac = false);
+std::string CsvRow(const RobotLoadRow& r, bool radio, bool mac = false);
 std::string MessagesHeader(bool radio);
 std::string CsvRow(const MessageRow& r, bool radio);
 // When the sweep runs a team (sim or lcm protocol): closure_pairs.csv.

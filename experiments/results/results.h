@@ -142,6 +142,16 @@ struct RobotLoadRow {
   // Sim only, the same columns: its routing beacons' transmissions and frame bytes (link_state).
   std::int64_t routing_transmissions = 0;
   std::int64_t routing_bytes = 0;
+  // Sim on a contending medium (csma, wifi) only: what its medium access did (mac_counters.h);
+  // per_robot.csv has these columns only when a network variant contends. airtime_share: its
+  // attempts' medium time over the run's simulated time.
+  std::int64_t mac_attempts = 0;
+  std::int64_t mac_backoffs = 0;
+  std::int64_t mac_collisions = 0;
+  std::int64_t mac_retries = 0;
+  std::int64_t mac_dropped_queue_full = 0;
+  std::int64_t mac_dropped_retry_limit = 0;
+  double airtime_share = kNotApplicable;
 };
 
 // One row of failover.csv (written when the config has a dropout): one dropped robot of a run

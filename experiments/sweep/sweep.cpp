@@ -14,20 +14,28 @@ NetworkVariant MakeVariant(int index, const NetworkConfig& n, LinkModelKind mode
   v.index = index;
   v.params = NetworkModelParams{.model = model, .bandwidth = rate, .latency = latency, .queue_packets = queue,
                                 .wire = WireParams{.mtu = mtu}, .loss = n.loss, .links = n.links, .radio = radio,
-                                .routing = routing.kind, .link_state = routing.link_state,
+                                .wifi = n.wifi, .wifi_radio = n.wifi_radio, .routing = routing.kind, .link_state = routing.link_state,
                                 .disconnected = n.disconnected};
   v.label.variant = index;
   v.label.model = ToString(model);
   v.label.loss = ToString(n.loss.model);
   v.name = v.label.model;
-  if (model != LinkModelKind::kIdeal) {
+  if (model == LinkModelKind::kWifi) {
+    // Its rate is the wifi's (the bandwidth and latency keys do not apply); the air's delay is
+    // the propagation's.
+    v.label.bandwidth_bps = static_cast<double>(n.wifi.rate.bps());
+    v.label.latency_ms = 0;
+    v.name += " " + ToString(n.wifi.rate);
+    if (n.queue_packets.size() > 1) v.name += " q" + std::to_string(queue);
+    if (n.mtu.size() > 1) v.name += " mtu" + std::to_string(mtu.value());
+  } else if (model != LinkModelKind::kIdeal) {
     v.label.bandwidth_bps = static_cast<double>(rate.bps());
     v.label.latency_ms = latency.ToMillis();
     v.name += " " + ToString(rate) + " " + FormatDuration(latency);
     if (n.queue_packets.size() > 1) v.name += " q" + std::to_string(queue);
     if (n.mtu.size() > 1) v.name += " mtu" + std::to_string(mtu.value());
   }
-  if (model == LinkModelKind::kRadio) {
+  if (model == LinkModelKind::kRadio || (model == LinkModelKind::kWifi && n.wifi_radio)) {
     v.label.radio = radio.propagation == PropagationKind::kRange ? "range " + FormatMeters(radio.range_m)
                                                                  : std::string(ToString(radio.propagation));
     v.name += " " + v.label.radio;
@@ -54,12 +62,17 @@ std::vector<NetworkVariant> ExpandNetworks(const NetworkConfig& n) {
     // Only the radio sweeps its radio and routing entries; every other model has the default
     // ones (unused: one hop to every robot).
     const bool radio_model = model == LinkModelKind::kRadio;
-    const std::vector<RadioParams> radios = radio_model ? n.radio : std::vector<RadioParams>{RadioParams{}};
+    const bool radios_swept = radio_model || (model == LinkModelKind::kWifi && n.wifi_radio);
+    const std::vector<RadioParams> radios = radios_swept ? n.radio : std::vector<RadioParams>{RadioParams{}};
     const std::vector<RoutingEntry> routings = radio_model ? n.routing : std::vector<RoutingEntry>{RoutingEntry{}};
+    // wifi has its own rate: the bandwidth and latency lists do not multiply it.
+    const bool wifi = model == LinkModelKind::kWifi;
+    const std::vector<DataRate> rates = wifi ? std::vector<DataRate>{n.bandwidth.front()} : n.bandwidth;
+    const std::vector<SimTime> latencies = wifi ? std::vector<SimTime>{n.latency.front()} : n.latency;
     for (const RadioParams& radio : radios) {
       for (const RoutingEntry& routing : routings) {
-        for (DataRate rate : n.bandwidth) {
-          for (SimTime latency : n.latency) {
+        for (DataRate rate : rates) {
+          for (SimTime latency : latencies) {
             for (int queue : n.queue_packets) {
               for (Bytes mtu : n.mtu) {
                 out.push_back(

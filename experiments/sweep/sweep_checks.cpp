@@ -15,6 +15,7 @@
 #include "experiments/strategies/run_routing.h"
 #include "experiments/sweep/sweep.h"
 #include "experiments/sweep/sweep_size.h"
+#include "net_models/csma_link.h"
 #include "net_models/param_checks.h"
 
 namespace dvpr {
@@ -54,8 +55,21 @@ SimTime WorstHeartbeatDelay(const NetworkModelParams& p, int robots) {
   // include the generated type).
   const Bytes payload(41);
   const Bytes frames =
-      ComputeWireFootprint(payload, static_cast<std::int64_t>(channels::kStatus.size()), p.wire).wire_bytes;
+      ComputeWireFootprint(payload, static_cast<std::int64_t>(channels::kStatus.size()), WireOf(p)).wire_bytes;
   if (p.model == LinkModelKind::kSharedMedium) return p.latency + p.bandwidth.TxTime(frames) * robots;
+  // csma: each teammate's heartbeat holds the bus for its frame and the channel delay, and a
+  // station that finds it busy may wait out the longest backoff (1000 slots) before it looks again.
+  if (p.model == LinkModelKind::kCsma) {
+    return (p.latency + p.bandwidth.TxTime(frames) + CsmaParams::kSlot * CsmaParams::kMaxSlots) * robots;
+  }
+  // wifi: each teammate's heartbeat, broadcast at the basic rate after DIFS and at most a full
+  // first window of backoff (a broadcast is never retried).
+  if (p.model == LinkModelKind::kWifi) {
+    const Bytes frame = ComputeWireFootprint(payload, static_cast<std::int64_t>(channels::kStatus.size()),
+                                             WireOf(p)).largest_frame;
+    return (WifiParams::kDifs + WifiParams::kSlot * WifiParams::kCwMin + OfdmDuration(frame, p.wifi.basic_rate)) *
+           robots;
+  }
   SimTime worst = p.latency + p.bandwidth.TxTime(frames);
   for (const LinkOverrideParams& o : p.links) {
     if (o.src.value >= robots || o.dst.value >= robots) continue;

@@ -28,11 +28,13 @@ std::string GiB(double bytes) { return Figure(bytes / (1024.0 * 1024.0 * 1024.0)
 double NetworkVariants(const NetworkConfig& n) {
   double count = 0;
   for (const LinkModelKind model : n.model) {
-    const double radios = model == LinkModelKind::kRadio ? static_cast<double>(n.radio.size()) : 1.0;
+    const bool wifi = model == LinkModelKind::kWifi;
+    const bool radios_swept = model == LinkModelKind::kRadio || (wifi && n.wifi_radio);
+    const double radios = radios_swept ? static_cast<double>(n.radio.size()) : 1.0;
+    // wifi has its own rate: the bandwidth and latency lists do not multiply it (ExpandNetworks).
+    const double rates = wifi ? 1.0 : static_cast<double>(n.bandwidth.size()) * static_cast<double>(n.latency.size());
     count += model == LinkModelKind::kIdeal ? 1.0
-                                            : radios * static_cast<double>(n.bandwidth.size()) *
-                                                  static_cast<double>(n.latency.size()) *
-                                                  static_cast<double>(n.queue_packets.size()) *
+                                            : radios * rates * static_cast<double>(n.queue_packets.size()) *
                                                   static_cast<double>(n.mtu.size());
   }
   return count;

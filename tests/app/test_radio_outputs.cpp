@@ -88,7 +88,7 @@ TEST_F(RadioOutputsTest, RadioCsvPerRobotAndMessagesAgree) {
             "protocol,strategy,robots,run,delivered_copies,mean_hops,max_hops,relay_transmissions,relay_bytes,"
             "held_copies,routing_transmissions,routing_bytes,dropped_queue_full,dropped_loss,dropped_offline,"
             "dropped_no_route,dropped_out_of_range,dropped_hop_limit,dropped_buffer_full,dropped_expired,"
-            "dropped_stale_route,network_variant,network_model,bandwidth_bps,latency_ms,loss,network_name,"
+            "dropped_stale_route,dropped_retry_limit,dropped_collision,network_variant,network_model,bandwidth_bps,latency_ms,loss,network_name,"
             "delivered_by_hops");
   // One row per strategy of the radio variant; the full mesh has none.
   ASSERT_EQ(radio.size(), 2u);
@@ -146,7 +146,7 @@ TEST_F(RadioOutputsTest, RadioCsvPerRobotAndMessagesAgree) {
     long long by_reason = 0;
     for (const char* reason :
          {"queue_full", "loss", "offline", "no_route", "out_of_range", "hop_limit", "buffer_full", "expired",
-          "stale_route"}) {
+          "stale_route", "retry_limit", "collision"}) {
       by_reason += std::stoll(r.at(std::string("dropped_") + reason));
     }
     EXPECT_EQ(by_reason, dropped[key]);

@@ -163,7 +163,7 @@ TEST_F(ConfigTest, ParamsErrorsCarryTheKeyPath) {
               "test.yaml: network.links[0].loss.p_good_to_bad: a probability must lie in [0, 1], got 2");
   starts_with(ErrorOf("network: {model: [ideal, token_ring]}\n"),
               "test.yaml: network.model[1]: unknown value 'token_ring' (expected one of: ideal, "
-              "point_to_point, shared_medium, radio)");
+              "point_to_point, shared_medium, radio, csma, wifi)");
   starts_with(ErrorOf("network: {loss: {model: sometimes}}\n"),
               "test.yaml: network.loss.model: unknown value 'sometimes' (expected one of: none, bernoulli, "
               "gilbert_elliott)");

@@ -51,6 +51,15 @@ RunOutput Sample() {
   o.runs = {r, RunResult{}};
   o.closure_pairs = {ClosurePairRow{Key(), 0, 1, 30'000'000'001}, ClosurePairRow{Key(), 0, 2, std::nullopt}};
   o.per_robot = {RobotLoadRow{Key(), 4, 10, 20, 30, 0.125, 6}};
+  o.per_robot[0].mac_retries = 9;
+  o.per_robot[0].airtime_share = 0.1 + 0.2;
+  MediumRow m;
+  m.key = Key();
+  m.attempts = 1001;
+  m.busy_ns = 150'000'000'001;
+  m.utilisation = 1.0 / 3.0;
+  m.dropped.back() = 5;  // collision
+  o.medium = {m};
   o.links = {LinkRow{Key(), 1, 2, 3, 4, 5, 6, std::nullopt}};
   o.queries = {QueryRow{Key(), 1, 1559, 155900000000, 0, 12, 0.5, 777, true, false, "inter", 0},
                QueryRow{Key(), 2, 3, 4, std::nullopt, std::nullopt, kNotApplicable, std::nullopt, false, true, "", 3}};
@@ -108,6 +117,13 @@ TEST(RankMessagesTest, OutputArrivesFieldForFieldAndBitForBit) {
   EXPECT_EQ(o.runs[1].key.protocol, "");
   ASSERT_EQ(o.per_robot.size(), 1u);
   EXPECT_EQ(o.per_robot[0].stored, 30);
+  EXPECT_EQ(o.per_robot[0].mac_retries, 9);
+  EXPECT_EQ(Bits(o.per_robot[0].airtime_share), 0x3fd3333333333334ULL);
+  ASSERT_EQ(o.medium.size(), 1u);
+  EXPECT_EQ(o.medium[0].attempts, 1001);
+  EXPECT_EQ(o.medium[0].busy_ns, 150'000'000'001);
+  EXPECT_EQ(Bits(o.medium[0].utilisation), Bits(1.0 / 3.0));
+  EXPECT_EQ(o.medium[0].dropped.back(), 5);
   EXPECT_EQ(o.per_robot[0].busy_fraction, 0.125);
   EXPECT_EQ(o.per_robot[0].max_queue, 6);
   ASSERT_EQ(o.links.size(), 1u);
@@ -200,9 +216,10 @@ TEST(RankMessagesTest, EmptyOutputArrivesEmpty) {
   const IndexedOutput got = DecodeOutput(EncodeOutput(0, RunOutput{}));
   EXPECT_EQ(got.index, 0u);
   EXPECT_TRUE(got.output.runs.empty() && got.output.queries.empty() && got.output.curves.empty());
-  // 8 bytes of index and an 8-byte count for each of the 12 row lists (runs, per_robot, links,
-  // queries, messages, curves, failover, bow, bow_sizes, radio, connectivity, closure_pairs).
-  EXPECT_EQ(EncodeOutput(0, RunOutput{}).size(), 8u * 13u);
+  // 8 bytes of index and an 8-byte count for each of the 13 row lists (runs, per_robot, links,
+  // queries, messages, curves, failover, bow, bow_sizes, radio, medium, connectivity,
+  // closure_pairs).
+  EXPECT_EQ(EncodeOutput(0, RunOutput{}).size(), 8u * 14u);
 }
 
 TEST(RankMessagesTest, ShortOrLongMessagesAreRefused) {

@@ -219,7 +219,7 @@ TEST(LinkParams, BadValuesNameTheFieldAndTheValue) {
   p.model = LinkModelKind::kSharedMedium;
   p.links.push_back({NodeId(0), NodeId(1), DataRate::Mbps(1), std::nullopt, std::nullopt});
   ExpectInvalid([&] { p.Validate(3); }, "links[0]: bandwidth/latency overrides need model point_to_point");
-  ExpectInvalid([] { ParseLinkModelKind("token_ring"); }, "unknown value 'token_ring' (expected one of: ideal, point_to_point, shared_medium, radio)");
+  ExpectInvalid([] { ParseLinkModelKind("token_ring"); }, "unknown value 'token_ring' (expected one of: ideal, point_to_point, shared_medium, radio, csma, wifi)");
   ExpectInvalid([] { ParseLossModelKind("sometimes"); }, "unknown value 'sometimes' (expected one of: none, bernoulli, gilbert_elliott)");
   ExpectInvalid([] { PointToPointLink(PointToPointParams{DataRate(), kLatency, 1, {}}, 2); }, "rate: a data rate must be positive");
   ExpectInvalid([] { SharedMediumLink(SharedMediumParams{DataRate(), kLatency, 1}, 2); }, "rate: a data rate must be positive");

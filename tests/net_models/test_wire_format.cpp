@@ -98,3 +98,58 @@ TEST(WireFormat, ValidateNamesTheFieldAndValue) {
 
 }  // namespace
 }  // namespace dvpr
+
+namespace dvpr {
+namespace {
+
+// csma's DIX Ethernet framing, by hand: 14-byte header + 4-byte FCS around each IP packet, the
+// packet padded to 46 bytes (ns-3's CsmaNetDevice; no preamble).
+TEST(WireFormat, EthernetFramesAQueryInOne611ByteFrame) {
+  // query_t (544 B) on "DVPR_QUERY_3" (12 characters): LCM 8 + 12 + 1 + 544 = 565; IP 565 + 28 =
+  // 593; Ethernet 593 + 18 = 611.
+  const WireParams dix = LinkWire(WireParams{}, LinkFraming::kEthernetDix);
+  std::vector<Bytes> frames;
+  const WireFootprint fp = AppendLinkFrames(Bytes(544), 12, dix, frames);
+  EXPECT_EQ(fp.ip_bytes, Bytes(593));
+  EXPECT_EQ(frames, (std::vector<Bytes>{Bytes(611)}));
+  EXPECT_EQ(fp.wire_bytes, Bytes(611));
+}
+
+TEST(WireFormat, EthernetFramesAVerificationRequestIn17Frames) {
+  // 25 032 B on "DVPR_VREQ_3" (11 characters): LCM 8 + 11 + 1 + 25 032 = 25 052; IP data 25 060 =
+  // 16 x 1480 + 1380: 16 frames of 1480 + 20 + 18 = 1518 and one of 1380 + 38 = 1418, in all
+  // 16 x 1518 + 1418 = 25 706 bytes on the wire.
+  const WireParams dix = LinkWire(WireParams{}, LinkFraming::kEthernetDix);
+  std::vector<Bytes> frames;
+  const WireFootprint fp = AppendLinkFrames(Bytes(25032), 11, dix, frames);
+  ASSERT_EQ(frames.size(), 17u);
+  for (std::size_t i = 0; i < 16; ++i) EXPECT_EQ(frames[i], Bytes(1518)) << i;
+  EXPECT_EQ(frames[16], Bytes(1418));
+  EXPECT_EQ(fp.ip_packets, 17);
+  EXPECT_EQ(fp.wire_bytes, Bytes(25706));
+  EXPECT_EQ(fp.largest_frame, Bytes(1518));
+}
+
+TEST(WireFormat, EthernetPadsAShortLastFragmentTo46Bytes) {
+  // 1470 B on "X": LCM 8 + 1 + 1 + 1470 = 1480; IP data 1488 = 1480 + 8: the last fragment is an
+  // IP packet of 20 + 8 = 28 bytes, padded to 46: a 64-byte frame (Ethernet's minimum).
+  const WireParams dix = LinkWire(WireParams{}, LinkFraming::kEthernetDix);
+  std::vector<Bytes> frames;
+  const WireFootprint fp = AppendLinkFrames(Bytes(1470), 1, dix, frames);
+  EXPECT_EQ(frames, (std::vector<Bytes>{Bytes(1518), Bytes(64)}));
+  EXPECT_EQ(fp.wire_bytes, Bytes(1582));
+  EXPECT_EQ(fp.ip_bytes, Bytes(1488 + 2 * 20));  // padding is the link's, not IP's
+}
+
+TEST(WireFormat, WifiFramesAQueryWith36BytesOfMacHeaders) {
+  // 802.11 data frame: MAC header 24 + LLC/SNAP 8 + FCS 4 = 36 around the 593-byte IP packet.
+  std::vector<Bytes> frames;
+  AppendLinkFrames(Bytes(544), 12, LinkWire(WireParams{}, LinkFraming::kWifi), frames);
+  EXPECT_EQ(frames, (std::vector<Bytes>{Bytes(629)}));
+  // PPP again, whatever came before.
+  const WireParams ppp = LinkWire(LinkWire(WireParams{}, LinkFraming::kWifi), LinkFraming::kPpp);
+  EXPECT_EQ(ppp, WireParams{});
+}
+
+}  // namespace
+}  // namespace dvpr

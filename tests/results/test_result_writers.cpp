@@ -247,10 +247,10 @@ TEST(ResultWriters, RadioCsvRow) {
   r.held_copies = 5;
   r.routing_transmissions = 30;
   r.routing_bytes = 1950;
-  r.dropped = {0, 0, 1, 2, 3, 0, 4, 6, 7};
+  r.dropped = {0, 0, 1, 2, 3, 0, 4, 6, 7, 8, 9};
   r.delivered_by_hops = {6, 0, 2};  // 6 x 1 + 2 x 3 = 12 hops
   EXPECT_EQ(CsvRow(r),
-            "sim,broadcast,4,1,8,1.5,3,4,2188,5,30,1950,0,0,1,2,3,0,4,6,7,1,radio,1e+07,2,none,"
+            "sim,broadcast,4,1,8,1.5,3,4,2188,5,30,1950,0,0,1,2,3,0,4,6,7,8,9,1,radio,1e+07,2,none,"
             "radio 10 Mbit/s 2 ms range 200m shortest_path,6 0 2");
   EXPECT_TRUE(std::string(kRadioHeader).ends_with(",network_name,delivered_by_hops"));
   r.delivered_copies = 0;
@@ -281,6 +281,55 @@ TEST(ResultWriters, RadioColumnsOnlyWithARadio) {
   message.hops = 2;
   EXPECT_EQ(CsvRow(message, false), CsvRow(message));
   EXPECT_EQ(CsvRow(message, true), CsvRow(message) + ",2");
+}
+
+// medium.csv: the run's key, the medium access's counters, busy time and utilisation, then the
+// drops in kRadioDropReasons' order and the network columns.
+TEST(ResultWriters, MediumCsvRow) {
+  MediumRow m;
+  m.key = RunKey{.protocol = "sim", .strategy = "decentralized", .robots = 10, .run = 0,
+                 .network = NetworkLabel{.variant = 2, .model = "wifi", .bandwidth_bps = 5.4e7, .latency_ms = 2,
+                                         .loss = "none", .radio = "", .routing = ""}};
+  m.delivered_copies = 900;
+  m.attempts = 1000;
+  m.backoffs = 1010;
+  m.collisions = 40;
+  m.retries = 30;
+  m.airtime_ns = 116'000'000;  // 1000 frames of 116 us
+  m.busy_ns = 150'000'000;
+  m.utilisation = 0.25;        // 150 ms busy of 600 ms
+  m.dropped = {0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 5};
+  const std::string row = CsvRow(m);
+  EXPECT_EQ(row.substr(0, row.find(",2,wifi,")),
+            "sim,decentralized,10,0,900,1000,1010,40,30,116000000,150000000,0.25,0,0,0,0,0,0,0,0,0,2,5");
+  // As many columns as the header names.
+  const std::string header = kMediumHeader;
+  EXPECT_EQ(std::count(row.begin(), row.end(), ','), std::count(header.begin(), header.end(), ','));
+  for (const char* reason : kRadioDropReasons) {
+    EXPECT_NE(std::string(kMediumHeader).find(std::string("dropped_") + reason), std::string::npos) << reason;
+  }
+  m.utilisation = kNotApplicable;
+  EXPECT_NE(CsvRow(m).find(",150000000,,0,"), std::string::npos);
+}
+
+// The MAC columns come after any radio columns; a robot of the ideal bus has no airtime share.
+TEST(ResultWriters, MacColumnsOnlyWithAContendingMedium) {
+  EXPECT_EQ(PerRobotHeader(false, false), kPerRobotHeader);
+  EXPECT_EQ(PerRobotHeader(true, true),
+            std::string(kPerRobotHeader) + ",relay_transmissions,relay_bytes,routing_transmissions,routing_bytes,"
+                                           "mac_attempts,mac_backoffs,mac_collisions,mac_retries,"
+                                           "mac_dropped_queue_full,mac_dropped_retry_limit,airtime_share");
+  RobotLoadRow robot;
+  EXPECT_EQ(CsvRow(robot, false, true), CsvRow(robot) + ",0,0,0,0,0,0,");
+  robot.mac_attempts = 7;
+  robot.mac_backoffs = 8;
+  robot.mac_collisions = 2;
+  robot.mac_retries = 1;
+  robot.mac_dropped_queue_full = 3;
+  robot.mac_dropped_retry_limit = 4;
+  robot.airtime_share = 0.125;
+  EXPECT_EQ(CsvRow(robot, false, true), CsvRow(robot) + ",7,8,2,1,3,4,0.125");
+  EXPECT_EQ(CsvRow(robot, true, true), CsvRow(robot) + ",0,0,0,0,7,8,2,1,3,4,0.125");
 }
 
 // The place-recognition ratio: broadcast over decentralized (query + reply copy wire) per query.

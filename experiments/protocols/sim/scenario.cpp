@@ -68,7 +68,7 @@ Scenario::Scenario(const Dataset& data, const ScenarioParams& params, const Agen
       network_(sim_, params.robots,
                MakeNetworkStack(params.network, params.robots, params.seed,
                                 std::make_unique<TrackMobility>(RobotTracks(data, split_))),
-               params.network.wire) {
+               WireOf(params.network)) {
   for (int r = 0; r < params_.robots; ++r) {
     auto& transport = transports_.emplace_back(std::make_unique<SimTransport>(network_, NodeId(r), params_.start_utime));
     transport->UseBuffers(&network_.payload_buffers());

@@ -88,6 +88,28 @@ RadioRow RadioRowOf(const RunKey& key, const SimRunLog& log) {
   return row;
 }
 
+// medium.csv's row: what the medium access of a contending variant did in the run.
+MediumRow MediumRowOf(const RunKey& key, const SimRunLog& log) {
+  MediumRow row;
+  row.key = key;
+  row.delivered_copies = static_cast<std::int64_t>(log.routes.delivered);
+  SimTime airtime;
+  for (const MacCounters& m : log.mac) {
+    row.attempts += static_cast<std::int64_t>(m.attempts);
+    row.backoffs += static_cast<std::int64_t>(m.backoffs);
+    row.collisions += static_cast<std::int64_t>(m.collisions);
+    row.retries += static_cast<std::int64_t>(m.retries);
+    airtime += m.airtime;
+  }
+  row.airtime_ns = airtime.ns();
+  row.busy_ns = log.medium_busy.ns();
+  if (log.end.ns() > 0) row.utilisation = static_cast<double>(row.busy_ns) / static_cast<double>(log.end.ns());
+  for (std::size_t i = 0; i < row.dropped.size(); ++i) {
+    row.dropped[i] = static_cast<std::int64_t>(log.routes.dropped[i + 1]);
+  }
+  return row;
+}
+
 std::string LogName(const RunSpec& spec, const std::string& strategy) {
   return "sim_" + strategy + "_n" + std::to_string(spec.robots) + "_r" + std::to_string(spec.run) + "_v" +
          std::to_string(spec.network->index) + ".lcmlog";
@@ -114,6 +136,18 @@ void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLo
     row.relay_bytes = sent.relay_bytes;
     row.routing_transmissions = static_cast<std::int64_t>(sent.routing_transmissions);
     row.routing_bytes = sent.routing_bytes;
+    if (static_cast<std::size_t>(r) < log.mac.size()) {
+      const MacCounters& m = log.mac[static_cast<std::size_t>(r)];
+      row.mac_attempts = static_cast<std::int64_t>(m.attempts);
+      row.mac_backoffs = static_cast<std::int64_t>(m.backoffs);
+      row.mac_collisions = static_cast<std::int64_t>(m.collisions);
+      row.mac_retries = static_cast<std::int64_t>(m.retries);
+      row.mac_dropped_queue_full = static_cast<std::int64_t>(m.dropped_queue_full);
+      row.mac_dropped_retry_limit = static_cast<std::int64_t>(m.dropped_retry_limit);
+      if (log.end.ns() > 0) {
+        row.airtime_share = static_cast<double>(m.airtime.ns()) / static_cast<double>(log.end.ns());
+      }
+    }
     out.per_robot.push_back(row);
     for (; next_link < log.links.size() && log.links[next_link].src == r; ++next_link) {
       const PairTraffic& pair = log.links[next_link];
@@ -157,6 +191,7 @@ void AppendRows(const RunSpec& spec, const std::string& strategy, const SimRunLo
   if (spec.network != nullptr && spec.network->params.model == LinkModelKind::kRadio) {
     out.radio.push_back(RadioRowOf(key, log));
   }
+  if (spec.network != nullptr && Contends(spec.network->params.model)) out.medium.push_back(MediumRowOf(key, log));
   for (const DropoutOutcome& d : log.dropouts) {
     std::optional<std::int64_t> detected;
     if (d.detected) detected = d.detected->ns();

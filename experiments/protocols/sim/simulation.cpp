@@ -114,6 +114,9 @@ SimRunLog Harvest(const Scenario& scenario, const RunRecorders& recorders) {
     log.links.push_back(PairTraffic{src.value, dst.value, c, recorders.roles.Pair(src.value, dst.value)});
   });
   for (int s = 0; s < log.robots; ++s) log.senders.push_back(network.Sender(NodeId(s)));
+  const std::span<const MacCounters> mac = network.link().Mac();
+  log.mac.assign(mac.begin(), mac.end());
+  log.medium_busy = network.link().MediumBusy();
   log.routes = network.Routes();
   log.delivered_by_hops = recorders.hop_counts.by_hops();
   log.roles = recorders.roles.Run();

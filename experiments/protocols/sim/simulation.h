@@ -64,6 +64,8 @@ struct SimRunLog {
   std::vector<RobotLoad> loads;           // per robot
   std::vector<PairTraffic> links;         // the pairs that carried a message, by source, then destination
   std::vector<NodeCounters> senders;      // per robot: transmissions it put on the medium
+  std::vector<MacCounters> mac;           // per robot, on a contending medium (LinkModel::Mac); else empty
+  SimTime medium_busy;                    // on a contending medium: its busy time (LinkModel::MediumBusy)
   RouteCounters routes;                   // hops of the delivered copies, dropped ones by reason
   std::vector<std::int64_t> delivered_by_hops;  // when outputs.hop_counts: [k] copies delivered after k + 1 hops
   RunRoleBytes roles;                     // the run's bytes by message role
