@@ -19,11 +19,13 @@
 namespace dvpr {
 namespace {
 
+using bench::Csma;
 using bench::Kitti00;
 using bench::PeakRssMiB;
 using bench::PointToPoint;
 using bench::Radio;
 using bench::Table;
+using bench::Wifi;
 
 // FNV-1a over every output of the run a change of speed must leave alone: each query record,
 // each robot's load, each pair's counters and role bytes, the senders' medium, the role totals
