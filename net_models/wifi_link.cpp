@@ -36,6 +36,14 @@ SimTime Eifs(const WifiParams& params) {
   return WifiParams::kSifs + OfdmDuration(WifiParams::kAck, params.basic_rate) + WifiParams::kDifs;
 }
 
+DataRate AckRate(const WifiParams& params) {
+  DataRate mandatory = DataRate::Mbps(6);
+  for (const std::int64_t m : {12, 24}) {
+    if (DataRate::Mbps(m) <= params.rate) mandatory = DataRate::Mbps(m);
+  }
+  return std::max(mandatory, params.basic_rate);
+}
+
 void WifiParams::Validate() const {
   if (rate == DataRate()) InvalidParam("rate", "model wifi needs a data rate: one of " + OfdmRates());
   if (!IsOfdmRate(rate)) InvalidParam("rate", "must be an 802.11a rate (" + OfdmRates() + "), got " + ToString(rate));
@@ -50,7 +58,8 @@ WifiLink::WifiLink(const WifiParams& params, int nodes, std::uint64_t run_seed, 
   if (nodes <= 0) InvalidParam("nodes", "a network needs at least one node, got " + std::to_string(nodes));
   params_.Validate();
   eifs_ = Eifs(params_);
-  ack_time_ = OfdmDuration(WifiParams::kAck, params_.basic_rate);
+  ack_rate_ = AckRate(params_);
+  ack_time_ = OfdmDuration(WifiParams::kAck, ack_rate_);
   stations_.reserve(static_cast<std::size_t>(nodes));
   for (int s = 0; s < nodes; ++s) {
     stations_.emplace_back(RandomStream(run_seed, ComponentId("wifi/backoff/" + std::to_string(s))));
@@ -81,6 +90,14 @@ LinkModel::MediumUse WifiLink::DoTransmit(const LinkTransmission& t, std::span<L
   }
   if (st.phase == Phase::kIdle && !st.queue.empty()) {
     EnsureDrawn(s);
+    // A frame for an empty queue whose backoff has run out (ns-3.37's
+    // ChannelAccessManager::NeedBackoffUponAccess): on an idle medium it goes DIFS after it
+    // arrived if the medium stays idle; on a busy one it draws a new backoff.
+    if (st.busy) {
+      if (st.slots == 0) st.slots = Draw(s);
+    } else if (SlotsLeft(st) == 0) {
+      st.not_before = sim_->Now() + WifiParams::kDifs;
+    }
     st.current = st.queue.front();
     st.queue.pop_front();
     st.phase = Phase::kContend;
@@ -144,7 +161,7 @@ void WifiLink::Reassess(std::size_t s) {
 void WifiLink::ScheduleAccess(std::size_t s) {
   Station& st = stations_[s];
   if (st.attempt.IsValid()) return;  // due now, from before the medium went busy
-  st.access_at = std::max(sim_->Now(), st.idle_since + Ifs(st) + WifiParams::kSlot * st.slots);
+  st.access_at = std::max({sim_->Now(), st.idle_since + Ifs(st) + WifiParams::kSlot * st.slots, st.not_before});
   st.attempt = sim_->ScheduleAt(st.access_at, [this, s] { Access(s); });
 }
 
@@ -320,7 +337,7 @@ void WifiLink::SendAck(std::size_t from, std::size_t to) {
   what.to = to;
   st.tx_on = true;
   Reassess(from);
-  StartAir(from, WifiParams::kAck, params_.basic_rate, what);
+  StartAir(from, WifiParams::kAck, ack_rate_, what);
 }
 
 // No ACK has begun by the timeout (ns-3: SIFS + a slot + the ACK's preamble and SIGNAL): the
@@ -361,6 +378,7 @@ void WifiLink::NextFrame(std::size_t s) {
   ++st.ack_token;  // a pending timeout is stale
   st.cw = WifiParams::kCwMin;
   st.slots = Draw(s);
+  st.not_before = SimTime::Zero();
   st.transmissions = 0;
   st.settled = false;
   st.dst_heard = false;

@@ -14,7 +14,7 @@
 // a line that cannot hear each other both transmit to the middle: hidden terminals.
 //
 // A message for one robot is unicast at `rate` and acknowledged: the receiver sends a 14-byte ACK
-// SIFS after the frame at the basic rate; without one by the ACK timeout the sender doubles its
+// SIFS after the frame at AckRate (below); without one by the ACK timeout the sender doubles its
 // contention window (15, 31, ... 1023) and tries again, up to 7 transmissions of the frame
 // (ns-3's MaxSsrc), then drops it. A message for several robots is one broadcast frame at the
 // basic rate, never acknowledged or retried. A frame's time on the air: 16 us preamble + 4 us
@@ -68,6 +68,10 @@ bool IsOfdmRate(DataRate rate);
 SimTime OfdmDuration(Bytes bytes, DataRate rate);
 // EIFS = SIFS + an ACK at the basic rate + DIFS.
 SimTime Eifs(const WifiParams& params);
+// The rate of the ACK to a unicast frame at params.rate: as ns-3, the highest of 802.11a's
+// mandatory rates (6, 12, 24 Mbit/s) not above it, and at least the basic rate (24 Mbit/s for
+// data at 54).
+DataRate AckRate(const WifiParams& params);
 
 class WifiLink final : public LinkModel {
  public:
@@ -109,6 +113,7 @@ class WifiLink final : public LinkModel {
     bool eifs = false;           // the last frame it heard was in error
     EventId attempt;
     SimTime access_at;
+    SimTime not_before;          // a frame that arrived with the backoff run out: DIFS after it
     std::vector<std::uint32_t> hearing;  // the Air ids it hears
     RandomStream rng;
   };
@@ -154,6 +159,7 @@ class WifiLink final : public LinkModel {
 
   WifiParams params_;
   SimTime eifs_;
+  DataRate ack_rate_;
   SimTime ack_time_;
   PropagationModel& propagation_;
   Simulator* sim_ = nullptr;

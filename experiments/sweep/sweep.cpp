@@ -24,7 +24,7 @@ NetworkVariant MakeVariant(int index, const NetworkConfig& n, LinkModelKind mode
     // Its rate is the wifi's (the bandwidth and latency keys do not apply); the air's delay is
     // the propagation's.
     v.label.bandwidth_bps = static_cast<double>(n.wifi.rate.bps());
-    v.label.latency_ms = 0;
+    v.label.latency_ms = kNotApplicable;
     v.name += " " + ToString(n.wifi.rate);
     if (n.queue_packets.size() > 1) v.name += " q" + std::to_string(queue);
     if (n.mtu.size() > 1) v.name += " mtu" + std::to_string(mtu.value());

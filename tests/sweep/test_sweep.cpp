@@ -1,4 +1,5 @@
 // Sweep expansion: cross-product counts, order and seeds.
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <utility>
@@ -56,6 +57,28 @@ TEST(Sweep, RadioRangesAreVariantsOfTheRadioOnly) {
   ASSERT_EQ(w.size(), 1u);
   EXPECT_EQ(w[0].name, "radio 10Mbps 2ms log_distance");
   EXPECT_EQ(w[0].params.radio.log_distance.exponent, 2.0);
+}
+
+// wifi has its own rate: one variant however many bandwidths and latencies the others sweep, its
+// label's bandwidth the wifi rate and no latency; over the radio, one per radio entry.
+TEST(Sweep, WifiIsOneVariantAtItsOwnRate) {
+  const ExperimentConfig c = Config(
+      "network: {model: [csma, wifi], bandwidth: [1Mbps, 10Mbps], latency: [1ms, 5ms], wifi: {rate: 54Mbps}}\n");
+  const auto v = ExpandNetworks(c.network);
+  ASSERT_EQ(v.size(), 2u * 2u + 1u);
+  EXPECT_EQ(v[0].name, "csma 1Mbps 1ms");
+  EXPECT_EQ(v[4].name, "wifi 54Mbps");
+  EXPECT_EQ(v[4].params.model, LinkModelKind::kWifi);
+  EXPECT_EQ(v[4].params.wifi.rate, DataRate::Mbps(54));
+  EXPECT_EQ(v[4].label.bandwidth_bps, 54e6);
+  EXPECT_TRUE(std::isnan(v[4].label.latency_ms));
+  EXPECT_EQ(NetworkName(v[4].label), "wifi 54 Mbit/s");
+  const ExperimentConfig r = Config(
+      "network: {model: wifi, wifi: {rate: 6Mbps, propagation: radio}, radio: {range: [100m, 200m]}}\n");
+  const auto w = ExpandNetworks(r.network);
+  ASSERT_EQ(w.size(), 2u);
+  EXPECT_TRUE(w[1].params.wifi_radio);
+  EXPECT_EQ(w[1].params.radio.range_m, 200.0);
 }
 
 TEST(Sweep, IdealNetworkIsOneVariant) {
