@@ -43,13 +43,15 @@ std::optional<FigureScript> WriteContentionFigure(const fs::path& data_dir, cons
       if (lines.empty()) continue;
       const std::string title = s + ", " + NetworkName(net);
       dat += "# " + OneLineText(title) + "\n" + lines + "\n\n";
-      const std::string style = " lw 2 lc rgb '" + figure_style::StrategyColour(t.StrategyIndex(s)) + "' dt " +
-                                std::to_string(figure_style::NetworkDash(i)) + " pt " +
-                                std::to_string(figure_style::NetworkPoint(i)) + " title " + GnuplotQuote(title);
+      // Points, not lines: a saturated team offers less as it grows (fewer replies and
+      // verifications get through), so joining the team sizes in order would zig-zag.
+      const std::string style = " lw 1.5 ps 1.4 lc rgb '" + figure_style::StrategyColour(t.StrategyIndex(s)) +
+                                "' pt " + std::to_string(figure_style::NetworkPoint(i)) + " title " +
+                                GnuplotQuote(title);
       share << (block ? ", \\\n     " : "") << "'contention.dat' index " << block
-            << " using 1:2:4:5 with xyerrorlines" << style;
+            << " using 1:2:4:5 with xyerrorbars" << style;
       latency << (block ? ", \\\n     " : "") << "'contention.dat' index " << block
-              << " using 1:3:4:6 with xyerrorlines" << style;
+              << " using 1:3:4:6 with xyerrorbars" << style;
       ++block;
     }
   }
@@ -60,11 +62,11 @@ std::optional<FigureScript> WriteContentionFigure(const fs::path& data_dir, cons
                      "bus, ns-3 CSMA, 802.11 DCF' font ',13'\nset grid\nset logscale x\n";
   body += "set title " + GnuplotTitle({"Delivered share of the offered load", sizes}) +
           "\nset xlabel 'offered load, every copy sent [Mbit/s]'\nset ylabel 'delivered [% of offered]'\n"
-          "set yrange [0:105]\nset key bottom left\nplot " + share.str() + "\n";
+          "set yrange [0:105]\nset key at graph 0.01, graph 0.8 left top box samplen 1.5 width -8 font ',9'\nplot " + share.str() + "\n";
   body += "set title " + GnuplotTitle({"Mean query latency", sizes}) +
           "\nset xlabel 'offered load, every copy sent [Mbit/s]'\nset ylabel 'mean query latency [ms]'\n"
-          "set autoscale y\nset logscale y\nset key top left\nplot " + latency.str() + "\nunset multiplot\n";
-  return FigureScript{body, 1500, 680};
+          "set autoscale y\nset logscale y\nset key top left box samplen 1.5 width -8 font ',9'\nplot " + latency.str() + "\nunset multiplot\n";
+  return FigureScript{body, 1600, 700};
 }
 
 }  // namespace dvpr
