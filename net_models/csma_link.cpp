@@ -125,7 +125,15 @@ std::uint32_t CsmaLink::DrawSlots(std::size_t s, std::uint32_t retries) {
   const std::uint32_t exponent = std::min(retries, CsmaParams::kCeiling);
   const std::uint32_t max_slot = std::min((std::uint32_t{1} << exponent) - 1, CsmaParams::kMaxSlots);
   const std::uint32_t min_slot = CsmaParams::kMinSlots;
-  if (draw_) return draw_(min_slot, max_slot);
+  if (draw_) {
+    // ns-3 draws from [min_slot, max_slot) (a whole number of slots, at least one).
+    const std::uint32_t slots = draw_(min_slot, max_slot);
+    if (slots < min_slot || slots > std::max(min_slot, max_slot - 1)) {
+      throw std::logic_error("CsmaLink: a drawn backoff of " + std::to_string(slots) + " slots outside [" +
+                             std::to_string(min_slot) + ", " + std::to_string(std::max(min_slot, max_slot - 1)) + "]");
+    }
+    return slots;
+  }
   if (max_slot <= min_slot) return min_slot;
   return min_slot + static_cast<std::uint32_t>(stations_[s].rng.UniformInt(max_slot - min_slot));
 }

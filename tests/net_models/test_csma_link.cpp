@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -118,6 +120,18 @@ TEST(CsmaLink, AFrameThatFindsTheBusBusy1000TimesIsDropped) {
   EXPECT_EQ(bus.net->link().Mac()[1].dropped_retry_limit, 1u);
   EXPECT_EQ(bus.net->link().Mac()[1].backoffs, 1000u);
   EXPECT_EQ(bus.net->Routes().dropped[static_cast<std::size_t>(DropReason::kRetryLimit)], 1u);
+}
+
+// A fixed draw outside ns-3's [min, max) - no slot at all, or one past the window - is a bug in
+// the test that fixed it, not a backoff: refused at the draw.
+TEST(CsmaLink, ADrawOutsideTheWindowIsRefused) {
+  for (const std::uint32_t slots : {0u, 2u}) {
+    Bus bus(2, SimTime::Zero());
+    bus.csma->SetSlotDraw([slots](std::uint32_t, std::uint32_t) { return slots; });  // the first window is [1, 1]
+    bus.QueryAt(SimTime::Zero(), 0, 1);
+    bus.QueryAt(SimTime::Zero(), 1, 0);
+    EXPECT_THROW(bus.sim.Run(), std::logic_error) << slots;
+  }
 }
 
 TEST(CsmaLink, AFullQueueRefusesAFrameAtOnce) {
