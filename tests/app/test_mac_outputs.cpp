@@ -88,4 +88,51 @@ TEST(MacOutputsTest, MediumCsvAndPerRobotColumnsAgree) {
   EXPECT_TRUE(fs::exists(out / "figures" / "contention.png")) << Slurp(dir / "run.log");
 }
 
+// wifi over the radio (network.wifi.propagation: radio): carrier sense and reception follow the
+// range. 4 robots on 1200 frames of KITTI 00 are farther than 100 m apart, so at 100 m no copy
+// arrives: every unicast frame goes 7 times unanswered (6 retries each) and is lost out of range,
+// and every broadcast query is lost out of range at its 3 destinations; at 200 m some arrive.
+TEST(MacOutputsTest, WifiOverTheRadioLosesWhatNoRobotInRangeHears) {
+  const fs::path dir = dvpr::testing_support::FreshTestDir("mac_outputs");
+  const fs::path out = dir / "out";
+  std::vector<std::string> argv{std::string(DVPR_BINARY_DIR) + "/dvpr", "run",
+                                std::string(DVPR_SOURCE_DIR) + "/experiments/configs/contention.yaml",
+                                "--quiet", "--out", out.string()};
+  for (const char* set : {"dataset.frames=1200", "robots=[4]", "runs=1", "training.synthetic.samples=2000",
+                          "network.model=wifi", "network.wifi={rate: 54Mbps, propagation: radio}",
+                          "network.radio.range=[100m, 200m]", "outputs.figures=false", "outputs.messages=true"}) {
+    argv.insert(argv.end(), {"--set", set});
+  }
+  ASSERT_EQ(RunProgram(argv, dir / "run.log"), 0) << Slurp(dir / "run.log");
+  const std::vector<Row> medium = ReadCsv(out / "medium.csv");
+  ASSERT_EQ(medium.size(), 4u);  // two strategies on two ranges
+  std::map<std::string, std::int64_t> dropped_rows;  // messages.csv's dropped copies per run
+  for (const Row& m : ReadCsv(out / "messages.csv")) dropped_rows[Key(m)] += m.at("dropped") == "1" ? 1 : 0;
+  for (const Row& m : medium) {
+    const std::string key = Key(m);
+    SCOPED_TRACE(key);
+    std::int64_t drops = 0;
+    for (const auto& [column, value] : m) {
+      if (column.rfind("dropped_", 0) == 0) drops += std::stoll(value);
+    }
+    EXPECT_EQ(drops, dropped_rows[key]);
+    if (m.at("network_name").find("range 100m") != std::string::npos) {
+      EXPECT_EQ(Int(m, "delivered_copies"), 0);
+      EXPECT_EQ(Int(m, "collisions"), 0) << "no frame reaches anyone: nothing to collide at";
+      EXPECT_GT(Int(m, "dropped_out_of_range"), 0);
+      if (m.at("strategy") == "decentralized") {
+        // Queries and replies only (no match, no verification), one frame each, all unicast.
+        EXPECT_EQ(Int(m, "retries"), 6 * Int(m, "dropped_out_of_range"));
+        EXPECT_EQ(Int(m, "attempts"), 7 * Int(m, "dropped_out_of_range"));
+      } else {
+        // One broadcast frame per query, never retried, lost at its 3 destinations.
+        EXPECT_EQ(Int(m, "retries"), 0);
+        EXPECT_EQ(Int(m, "dropped_out_of_range"), 3 * Int(m, "attempts"));
+      }
+    } else {
+      EXPECT_GT(Int(m, "delivered_copies"), 0);
+    }
+  }
+}
+
 }  // namespace
