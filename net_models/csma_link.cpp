@@ -37,25 +37,15 @@ LinkModel::MediumUse CsmaLink::DoTransmit(const LinkTransmission& t, std::span<L
   if (sim_ == nullptr) throw std::logic_error("CsmaLink: Transmit before Bind (csma runs on a network's simulator)");
   const auto s = static_cast<std::size_t>(t.src.value);
   Station& st = stations_[s];
-  const std::uint32_t id = messages_.Open(t.ticket, t.dsts, t.frames.size());
   MediumUse use{t.dsts.empty() ? 0u : 1u, Bytes(0)};
-  for (const Bytes frame : t.frames) {
-    if (st.queue.size() >= static_cast<std::size_t>(params_.queue_packets)) {
-      ++counters_[s].dropped_queue_full;
-      messages_.Refused(id, DropReason::kQueueFull);
-      continue;
-    }
-    use.bytes += frame;
-    st.queue.push_back(Frame{frame, id});
-    if (st.state == TxState::kReady) {
-      st.current = st.queue.front();
-      st.queue.pop_front();
-      TransmitStart(s);
-    }
-  }
-  if (!messages_.SettledAtOnce(id, out)) {
-    for (LinkDelivery& d : out) d.later = true;
-  }
+  const std::uint32_t id = messages_.Enqueue(t, st.queue, static_cast<std::size_t>(params_.queue_packets),
+                                             counters_[s], use, [&] {
+                                               if (st.state != TxState::kReady) return;
+                                               st.current = st.queue.front();
+                                               st.queue.pop_front();
+                                               TransmitStart(s);
+                                             });
+  messages_.HandOver(id, out);
   return use;
 }
 

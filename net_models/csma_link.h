@@ -57,14 +57,10 @@ class CsmaLink final : public LinkModel {
  private:
   enum class TxState : std::uint8_t { kReady, kBusy, kGap, kBackoff };
   enum class BusState : std::uint8_t { kIdle, kTransmitting, kPropagating };
-  struct Frame {
-    Bytes size;
-    std::uint32_t message = 0;  // MacMessages id
-  };
   struct Station {
     explicit Station(RandomStream stream) : rng(stream) {}
-    std::deque<Frame> queue;
-    Frame current;
+    std::deque<MacFrame> queue;
+    MacFrame current;
     TxState state = TxState::kReady;
     std::uint32_t retries = 0;  // backoffs of the current frame
     RandomStream rng;

@@ -53,12 +53,14 @@ void MacMessages::Refused(std::uint32_t id, DropReason reason) {
   --entries_[id].frames_left;
 }
 
-bool MacMessages::SettledAtOnce(std::uint32_t id, std::span<LinkDelivery> out) {
+void MacMessages::HandOver(std::uint32_t id, std::span<LinkDelivery> out) {
   Entry& e = entries_[id];
-  if (e.frames_left > 0) return false;
+  if (e.frames_left > 0) {
+    for (LinkDelivery& d : out) d.later = true;
+    return;
+  }
   std::copy(e.outcomes.begin(), e.outcomes.end(), out.begin());
   Free(id);
-  return true;
 }
 
 void MacMessages::Free(std::uint32_t id) { free_.push_back(id); }

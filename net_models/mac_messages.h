@@ -4,17 +4,51 @@
 // arrives at a destination when its last frame does and all of them reached it, and is reported
 // to the network (LinkCompletions) when its last frame is settled.
 #include <cstdint>
+#include <deque>
 #include <span>
 #include <vector>
 
 #include "net_models/link_model.h"
+#include "net_models/mac_counters.h"
 #include "net_models/node_id.h"
+#include "net_models/units.h"
 #include "sim/sim_time.h"
 
 namespace dvpr {
 
+// One frame in a station's queue: its bytes and the message (MacMessages id) it belongs to.
+struct MacFrame {
+  Bytes size;
+  std::uint32_t message = 0;
+};
+
 class MacMessages {
  public:
+  // Transmit's part every contending model shares: opens t's message and puts its frames at the
+  // back of the sending station's drop-tail `queue` of `capacity` frames, calling queued() after
+  // each (csma starts a ready station's frame at once); a frame that finds the queue full is
+  // refused (DropReason::kQueueFull, counted in counters.dropped_queue_full). Returns the
+  // message's id; use.bytes grows by the frames queued.
+  template <typename Queued>
+  std::uint32_t Enqueue(const LinkTransmission& t, std::deque<MacFrame>& queue, std::size_t capacity,
+                        MacCounters& counters, LinkModel::MediumUse& use, Queued&& queued) {
+    const std::uint32_t id = Open(t.ticket, t.dsts, t.frames.size());
+    for (const Bytes frame : t.frames) {
+      if (queue.size() >= capacity) {
+        ++counters.dropped_queue_full;
+        Refused(id, DropReason::kQueueFull);
+        continue;
+      }
+      use.bytes += frame;
+      queue.push_back(MacFrame{frame, id});
+      queued();
+    }
+    return id;
+  }
+  // Transmit's last step: when the queue refused every frame the outcomes are final and written
+  // to `out` (the id freed); otherwise every copy is decided later (LinkDelivery::later).
+  void HandOver(std::uint32_t id, std::span<LinkDelivery> out);
+
   // A message of `frames` frames for dsts, sent in transmission `ticket`; returns its id.
   std::uint32_t Open(std::uint64_t ticket, std::span<const NodeId> dsts, std::size_t frames);
   std::span<const NodeId> Destinations(std::uint32_t id) const { return entries_[id].dsts; }
@@ -26,11 +60,6 @@ class MacMessages {
   // One more frame settled. When it was the last, the message is reported to `completions` and
   // its id freed; returns whether it was.
   bool Settle(std::uint32_t id, LinkCompletions& completions);
-  // Inside Transmit: a frame the queue refused is settled at once, never reported from there.
-  void Refused(std::uint32_t id, DropReason reason);
-  // Inside Transmit, when every frame settled at once (a full queue refused them all): writes the
-  // outcomes to `out` instead and frees the id; false (and nothing written) while frames remain.
-  bool SettledAtOnce(std::uint32_t id, std::span<LinkDelivery> out);
   std::size_t open() const { return entries_.size() - free_.size(); }
 
  private:
@@ -41,6 +70,8 @@ class MacMessages {
     std::vector<LinkDelivery> outcomes;
   };
   void Free(std::uint32_t id);
+  // Inside Transmit: a frame the queue refused is settled at once, never reported from there.
+  void Refused(std::uint32_t id, DropReason reason);
 
   std::vector<Entry> entries_;
   std::vector<std::uint32_t> free_;

@@ -251,8 +251,8 @@ class Network final : private LinkCompletions {
   // Keeps a copy whose outcome the medium access decides later (outcomes_[i].later): i is its
   // index in dsts_, copy what it becomes when it arrives (its arrival filled in then).
   void Await(std::uint32_t slot, std::size_t i, const PendingCopy& copy);
-  // Drops copy c of the slot's message at a relay or later: counted against its original pair,
-  // reported, and its reference released.
+  // Drops copy c of the slot's message at a relay or later: counted against its original pair and
+  // reported; the caller releases its reference.
   void DropCopy(std::uint32_t slot, const PendingCopy& c, DropReason reason);
   // unheard: the drop reason of a receiver that does not hear the transmission when it starts.
   void ApplyPropagation(NodeId src, std::span<const NodeId> receivers, SimTime now, std::span<LinkDelivery> outcomes,

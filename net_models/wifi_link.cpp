@@ -77,17 +77,9 @@ LinkModel::MediumUse WifiLink::DoTransmit(const LinkTransmission& t, std::span<L
   if (sim_ == nullptr) throw std::logic_error("WifiLink: Transmit before Bind (wifi runs on a network's simulator)");
   const auto s = static_cast<std::size_t>(t.src.value);
   Station& st = stations_[s];
-  const std::uint32_t id = messages_.Open(t.ticket, t.dsts, t.frames.size());
   MediumUse use{t.dsts.empty() ? 0u : 1u, Bytes(0)};
-  for (const Bytes frame : t.frames) {
-    if (st.queue.size() >= static_cast<std::size_t>(params_.queue_packets)) {
-      ++counters_[s].dropped_queue_full;
-      messages_.Refused(id, DropReason::kQueueFull);
-      continue;
-    }
-    use.bytes += frame;
-    st.queue.push_back(Frame{frame, id});
-  }
+  const std::uint32_t id =
+      messages_.Enqueue(t, st.queue, static_cast<std::size_t>(params_.queue_packets), counters_[s], use, [] {});
   if (st.phase == Phase::kIdle && !st.queue.empty()) {
     EnsureDrawn(s);
     // A frame for an empty queue whose backoff has run out (ns-3.37's
@@ -103,9 +95,7 @@ LinkModel::MediumUse WifiLink::DoTransmit(const LinkTransmission& t, std::span<L
     st.phase = Phase::kContend;
     if (!st.busy) ScheduleAccess(s);
   }
-  if (!messages_.SettledAtOnce(id, out)) {
-    for (LinkDelivery& d : out) d.later = true;
-  }
+  messages_.HandOver(id, out);
   return use;
 }
 
@@ -216,13 +206,10 @@ void WifiLink::StartAir(std::size_t src, Bytes bytes, DataRate rate, const Air& 
   reach_.resize(others_.size());
   propagation_.Reach(NodeId(static_cast<int>(src)), others_, now, reach_);
   Air& a = air_[id];
-  const std::vector<std::size_t> keep_hearers = std::move(a.hearers);
   a = what;
-  a.hearers = keep_hearers;
   a.hearers.clear();
   a.corrupted.clear();
   a.delay.clear();
-  a.collided = false;
   for (std::size_t i = 0; i < others_.size(); ++i) {
     if (!reach_[i].reaches) continue;
     const auto h = static_cast<std::size_t>(others_[i].value);
@@ -243,13 +230,15 @@ void WifiLink::StartAir(std::size_t src, Bytes bytes, DataRate rate, const Air& 
 void WifiLink::EndAir(std::uint32_t id) {
   const SimTime now = sim_->Now();
   if (--on_air_ == 0) medium_busy_ += now - on_air_since_;
-  const Air a = air_[id];  // a copy: what follows may put new transmissions on the air
+  const Air a = std::move(air_[id]);  // moved out: what follows may put new transmissions on the air
   free_air_.push_back(id);
   stations_[a.src].tx_on = false;
   bool acked = false;
   bool ack_lost = false;
   const std::span<const NodeId> dsts = a.ack ? std::span<const NodeId>() : messages_.Destinations(a.message);
-  std::vector<char> reached(dsts.size(), 0);
+  std::vector<char>& reached = reached_;  // by destination: 0 not heard, 1 received, 2 lost to a collision
+  reached.assign(dsts.size(), 0);
+  bool collided = false;  // lost at a receiver it was for (counted once per transmission)
   for (std::size_t k = 0; k < a.hearers.size(); ++k) {
     const std::size_t h = a.hearers[k];
     Station& hs = stations_[h];
@@ -267,6 +256,7 @@ void WifiLink::EndAir(std::uint32_t id) {
     if (a.broadcast) {
       const std::size_t i = IndexOf(a.message, h);
       if (i == dsts.size()) continue;
+      collided = collided || !ok;
       if (ok) {
         messages_.Reached(a.message, i, now + a.delay[k]);
         reached[i] = 1;
@@ -277,6 +267,7 @@ void WifiLink::EndAir(std::uint32_t id) {
       continue;
     }
     if (h == a.to) {
+      collided = collided || !ok;
       if (!ok) continue;
       Station& sender = stations_[a.src];
       if (!sender.settled) {  // a retransmission after a lost ACK arrives twice: the first counts
@@ -294,14 +285,7 @@ void WifiLink::EndAir(std::uint32_t id) {
       }
     }
   }
-  if (!a.ack) {
-    for (std::size_t k = 0; k < a.hearers.size(); ++k) {
-      if (a.corrupted[k] != kClean && (a.broadcast ? IndexOf(a.message, a.hearers[k]) < dsts.size() : a.hearers[k] == a.to)) {
-        ++counters_[a.src].collisions;
-        break;
-      }
-    }
-  }
+  if (collided) ++counters_[a.src].collisions;
   if (a.ack) {
     Station& target = stations_[a.to];
     if (target.phase == Phase::kAwaitAck) {

@@ -87,14 +87,10 @@ class WifiLink final : public LinkModel {
 
  private:
   enum class Phase : std::uint8_t { kIdle, kContend, kTransmit, kAwaitAck };
-  struct Frame {
-    Bytes size;
-    std::uint32_t message = 0;  // MacMessages id
-  };
   struct Station {
     explicit Station(RandomStream stream) : rng(stream) {}
-    std::deque<Frame> queue;
-    Frame current;
+    std::deque<MacFrame> queue;
+    MacFrame current;
     Phase phase = Phase::kIdle;
     std::uint32_t cw = WifiParams::kCwMin;
     std::uint32_t slots = 0;     // backoff left when the medium last went busy (or was drawn)
@@ -129,7 +125,6 @@ class WifiLink final : public LinkModel {
     std::vector<std::size_t> hearers;
     std::vector<char> corrupted;  // by hearer: kClean, kCollided or kUnheard
     std::vector<SimTime> delay;   // by hearer: the propagation delay
-    bool collided = false;        // corrupted at a receiver it was for
   };
 
   MediumUse DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) override;
@@ -176,6 +171,7 @@ class WifiLink final : public LinkModel {
   SimTime medium_busy_;
   std::vector<NodeId> others_;  // scratch: every station but the sender
   std::vector<Reception> reach_;
+  std::vector<char> reached_;   // scratch of EndAir: by destination, what became of a broadcast frame
 };
 
 }  // namespace dvpr
