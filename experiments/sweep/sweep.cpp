@@ -20,18 +20,18 @@ NetworkVariant MakeVariant(int index, const NetworkConfig& n, LinkModelKind mode
   v.label.model = ToString(model);
   v.label.loss = ToString(n.loss.model);
   v.name = v.label.model;
-  if (model == LinkModelKind::kWifi) {
-    // Its rate is the wifi's (the bandwidth and latency keys do not apply); the air's delay is
-    // the propagation's.
-    v.label.bandwidth_bps = static_cast<double>(n.wifi.rate.bps());
-    v.label.latency_ms = kNotApplicable;
-    v.name += " " + ToString(n.wifi.rate);
-    if (n.queue_packets.size() > 1) v.name += " q" + std::to_string(queue);
-    if (n.mtu.size() > 1) v.name += " mtu" + std::to_string(mtu.value());
-  } else if (model != LinkModelKind::kIdeal) {
-    v.label.bandwidth_bps = static_cast<double>(rate.bps());
-    v.label.latency_ms = latency.ToMillis();
-    v.name += " " + ToString(rate) + " " + FormatDuration(latency);
+  if (model != LinkModelKind::kIdeal) {
+    if (model == LinkModelKind::kWifi) {
+      // Its rate is the wifi's (the bandwidth and latency keys do not apply); the air's delay is
+      // the propagation's.
+      v.label.bandwidth_bps = static_cast<double>(n.wifi.rate.bps());
+      v.label.latency_ms = kNotApplicable;
+      v.name += " " + ToString(n.wifi.rate);
+    } else {
+      v.label.bandwidth_bps = static_cast<double>(rate.bps());
+      v.label.latency_ms = latency.ToMillis();
+      v.name += " " + ToString(rate) + " " + FormatDuration(latency);
+    }
     if (n.queue_packets.size() > 1) v.name += " q" + std::to_string(queue);
     if (n.mtu.size() > 1) v.name += " mtu" + std::to_string(mtu.value());
   }

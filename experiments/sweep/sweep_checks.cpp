@@ -54,8 +54,9 @@ SimTime WorstHeartbeatDelay(const NetworkModelParams& p, int robots) {
   // state 1, ready_utime 8, frames_taken 4 (lcmtypes/dvpr/agent_status_t.lcm; this layer may not
   // include the generated type).
   const Bytes payload(41);
-  const Bytes frames =
-      ComputeWireFootprint(payload, static_cast<std::int64_t>(channels::kStatus.size()), WireOf(p)).wire_bytes;
+  const WireFootprint heartbeat =
+      ComputeWireFootprint(payload, static_cast<std::int64_t>(channels::kStatus.size()), WireOf(p));
+  const Bytes frames = heartbeat.wire_bytes;
   if (p.model == LinkModelKind::kSharedMedium) return p.latency + p.bandwidth.TxTime(frames) * robots;
   // csma: each teammate's heartbeat holds the bus for its frame and the channel delay, and a
   // station that finds it busy may wait out the longest backoff (1000 slots) before it looks again.
@@ -65,9 +66,8 @@ SimTime WorstHeartbeatDelay(const NetworkModelParams& p, int robots) {
   // wifi: each teammate's heartbeat, broadcast at the basic rate after DIFS and at most a full
   // first window of backoff (a broadcast is never retried).
   if (p.model == LinkModelKind::kWifi) {
-    const Bytes frame = ComputeWireFootprint(payload, static_cast<std::int64_t>(channels::kStatus.size()),
-                                             WireOf(p)).largest_frame;
-    return (WifiParams::kDifs + WifiParams::kSlot * WifiParams::kCwMin + OfdmDuration(frame, p.wifi.basic_rate)) *
+    return (WifiParams::kDifs + WifiParams::kSlot * WifiParams::kCwMin +
+            OfdmDuration(heartbeat.largest_frame, p.wifi.basic_rate)) *
            robots;
   }
   SimTime worst = p.latency + p.bandwidth.TxTime(frames);
