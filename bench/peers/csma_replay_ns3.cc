@@ -93,10 +93,7 @@ int main(int argc, char** argv) {
                 QueueSizeValue(QueueSize(QueueSizeUnit::PACKETS, queue)));
   NetDeviceContainer devices = csma.Install(nodes);
 
-  const std::vector<Ipv4Address> addresses = replay::InstallIpv4(nodes, devices);
-  replay::Replayer replayer(replay::GroupTransmissions(trace.rows), trace.rows.size(), nodes, addresses,
-                            Ipv4Address("10.1.255.255"));
-  replayer.Install();
+  const std::unique_ptr<replay::Replayer> replayer = replay::Prepare(trace, nodes, devices);
   for (uint32_t i = 0; i < devices.GetN(); ++i) {
     Ptr<NetDevice> d = devices.Get(i);
     d->TraceConnectWithoutContext("PhyTxBegin", MakeCallback(&OnPhyTxBegin));
@@ -108,16 +105,11 @@ int main(int argc, char** argv) {
   const double setup_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_wall).count();
 
-  const replay::RunTimes times = replay::TimedRun(trace.rows);
-  try {
-    replay::WriteOutput(out, trace.rows, replayer.delivered());
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "csma_replay_ns3: %s\n", e.what());
-    return 1;
-  }
+  replay::RunTimes times;
+  if (!replay::RunAndWrite("csma_replay_ns3", trace, *replayer, out, times)) return 1;
   std::printf("ns-3.37 csma %s %s, queue %u packets, MTU %u; %s -> %s\n", rate.c_str(), delay.c_str(),
               queue, mtu, messages.c_str(), out.c_str());
-  replay::PrintSummary(trace, replayer, times);
+  replay::PrintSummary(trace, *replayer, times);
   uint64_t frames = 0;
   for (const auto& [type, n] : g_counters.frames_by_ethertype) frames += n;
   std::printf("frames %llu (IPv4 %llu of which not UDP %llu, ARP %llu), backoffs %llu, queue-full drops %llu (device %llu, "

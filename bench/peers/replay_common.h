@@ -25,6 +25,7 @@
 #include <ctime>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -366,6 +367,29 @@ inline RunTimes TimedRun(const std::vector<Row>& rows) {
   const std::clock_t cpu1 = std::clock();
   const auto wall1 = std::chrono::steady_clock::now();
   return RunTimes{std::chrono::duration<double>(wall1 - wall0).count(), double(cpu1 - cpu0) / CLOCKS_PER_SEC};
+}
+
+// IPv4 over `devices` (InstallIpv4) and the trace's sockets and sends: the replay, ready to run.
+inline std::unique_ptr<Replayer> Prepare(const Trace& trace, ns3::NodeContainer& nodes,
+                                         ns3::NetDeviceContainer& devices) {
+  auto replayer = std::make_unique<Replayer>(GroupTransmissions(trace.rows), trace.rows.size(), nodes,
+                                             InstallIpv4(nodes, devices), ns3::Ipv4Address("10.1.255.255"));
+  replayer->Install();
+  return replayer;
+}
+
+// Runs the replay and writes `out`; false, with one line naming `program` on stderr, when the
+// file cannot be written.
+inline bool RunAndWrite(const char* program, const Trace& trace, const Replayer& replayer, const std::string& out,
+                        RunTimes& times) {
+  times = TimedRun(trace.rows);
+  try {
+    WriteOutput(out, trace.rows, replayer.delivered());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: %s\n", program, e.what());
+    return false;
+  }
+  return true;
 }
 
 inline void PrintSummary(const Trace& trace, const Replayer& r, const RunTimes& times) {

@@ -177,10 +177,7 @@ int main(int argc, char** argv) {
     }
   }
 
-  const std::vector<Ipv4Address> addresses = replay::InstallIpv4(nodes, devices);
-  replay::Replayer replayer(replay::GroupTransmissions(trace.rows), trace.rows.size(), nodes, addresses,
-                            Ipv4Address("10.1.255.255"));
-  replayer.Install();
+  const std::unique_ptr<replay::Replayer> replayer = replay::Prepare(trace, nodes, devices);
   for (uint32_t i = 0; i < devices.GetN(); ++i) {
     Ptr<WifiNetDevice> dev = DynamicCast<WifiNetDevice>(devices.Get(i));
     dev->GetPhy()->TraceConnectWithoutContext("PhyTxBegin", MakeCallback(&OnPhyTxBegin));
@@ -192,18 +189,13 @@ int main(int argc, char** argv) {
   const double setup_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_wall).count();
 
-  const replay::RunTimes times = replay::TimedRun(trace.rows);
-  try {
-    replay::WriteOutput(out, trace.rows, replayer.delivered());
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "wifi_replay_ns3: %s\n", e.what());
-    return 1;
-  }
+  replay::RunTimes times;
+  if (!replay::RunAndWrite("wifi_replay_ns3", trace, *replayer, out, times)) return 1;
   std::printf("ns-3.37 wifi 802.11a %u Mbit/s, ACKs %s, queue %u + 1 packets, MTU %u, %s; %s -> %s\n", rate_mbps,
               ack6 ? "at 6 Mbit/s (--ack6)" : "at ns-3's rate", queue, mtu,
               positions.empty() ? "full mesh" : ("range " + std::to_string(range) + " m").c_str(), messages.c_str(),
               out.c_str());
-  replay::PrintSummary(trace, replayer, times);
+  replay::PrintSummary(trace, *replayer, times);
   std::printf("PHY frames: data unicast %llu, data broadcast %llu, ACK %llu, other %llu, ARP %llu, IPv4 not UDP %llu; "
               "data failures (no ACK) %llu, RX drops %llu\n",
               (unsigned long long)g_counters.data_unicast, (unsigned long long)g_counters.data_broadcast,
