@@ -230,7 +230,7 @@ void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::v
     DropReason drop = outcomes_[i].drop;
     if (drop == DropReason::kNoRoute && StoreAndForward()) {
       // The sender keeps it: no transmission yet (0 hops).
-      drop = Hold(slot, PendingCopy{dst, src, copy, 0, now}, now) ? DropReason::kNone : DropReason::kBufferFull;
+      drop = Hold(slot, PendingCopy{dst, src, copy, 0, 0, now}, now);
       if (drop == DropReason::kNone) {
         ++p.refs;
         if (!observers_.empty()) NotifySent(p, dst, copy, drop);
@@ -240,7 +240,7 @@ void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::v
     if (!observers_.empty()) NotifySent(p, dst, copy, drop);
     if (outcomes_[i].later) {
       ++p.refs;
-      Await(slot, i, PendingCopy{dst, hops_[i], copy, 1, now});
+      Await(slot, i, PendingCopy{dst, hops_[i], copy, 1, 0, now});
       continue;
     }
     if (drop != DropReason::kNone) {
@@ -249,7 +249,7 @@ void Network::Dispatch(NodeId src, ChannelId channel, MessageTypeId type, std::v
       continue;
     }
     ++p.refs;
-    pending.push_back(PendingCopy{dst, hops_[i], copy, 1, outcomes_[i].arrival});
+    pending.push_back(PendingCopy{dst, hops_[i], copy, 1, 0, outcomes_[i].arrival});
   }
   if (!observers_.empty()) NotifyMedium(p, src, use);
   if (p.refs == 0) {
@@ -343,11 +343,13 @@ void Network::Relay(std::uint32_t slot, std::span<const PendingCopy> copies, std
   for (std::size_t i = 0; i < relay_copies_.size(); ++i) {
     const PendingCopy& c = relay_copies_[i];
     if (outcomes_[i].later) {
-      Await(slot, i, PendingCopy{c.dst, hops_[i], c.copy, std::uint64_t{c.hops} + 1, now});
+      Await(slot, i, PendingCopy{c.dst, hops_[i], c.copy, std::uint64_t{c.hops} + 1, c.held, now});
     } else if (outcomes_[i].drop == DropReason::kNone) {
-      pending_[slot].push_back(PendingCopy{c.dst, hops_[i], c.copy, std::uint64_t{c.hops} + 1, outcomes_[i].arrival});
+      pending_[slot].push_back(
+          PendingCopy{c.dst, hops_[i], c.copy, std::uint64_t{c.hops} + 1, c.held, outcomes_[i].arrival});
     } else if (outcomes_[i].drop == DropReason::kNoRoute && StoreAndForward()) {
-      if (!Hold(slot, PendingCopy{c.dst, at, c.copy, c.hops, now}, relay_since_[i])) drop(c, DropReason::kBufferFull);
+      const PendingCopy kept{c.dst, at, c.copy, c.hops, c.held, now};
+      if (const DropReason why = Hold(slot, kept, relay_since_[i]); why != DropReason::kNone) drop(c, why);
     } else {
       drop(c, outcomes_[i].drop);
     }
@@ -400,13 +402,17 @@ void Network::Complete(std::uint64_t ticket, std::span<const LinkDelivery> outco
   }
 }
 
-bool Network::Hold(std::uint32_t slot, const PendingCopy& c, SimTime since) {
+DropReason Network::Hold(std::uint32_t slot, const PendingCopy& c, SimTime since) {
+  if (sim_.Now() > hold_horizon_) return c.held ? DropReason::kExpired : DropReason::kNoRoute;
   const auto node = static_cast<std::size_t>(c.at.value);
   const std::int64_t bytes = payloads_[slot].wire_bytes;
-  if (held_bytes_[node] + bytes > stack_.disconnected.hold_bytes.value()) return false;
+  if (held_bytes_[node] + bytes > stack_.disconnected.hold_bytes.value()) return DropReason::kBufferFull;
   held_bytes_[node] += bytes;
+  // Counted once per copy: not again when a retry holds it again, nor at the next robot that
+  // holds it after a retry sent it on.
+  if (!c.held) ++routes_.held;
   held_[node].push_back(HeldCopy{slot, c, since});
-  if (since == sim_.Now()) ++routes_.held;  // taken now, not held again by a retry
+  held_[node].back().copy.held = 1;
   if (!retry_scheduled_[node]) {
     // The next whole multiple of retry after now: every holder asks at the same instants.
     const std::int64_t retry = stack_.disconnected.retry.ns();
@@ -414,7 +420,7 @@ bool Network::Hold(std::uint32_t slot, const PendingCopy& c, SimTime since) {
     retry_scheduled_[node] = 1;
     sim_.ScheduleAt(at, [this, n = c.at] { Retry(n); });
   }
-  return true;
+  return DropReason::kNone;
 }
 
 // Copies held hold_time or longer are dropped; the others are offered to the routing again, one

@@ -100,7 +100,7 @@ struct NodeCounters {
 // What became of all copies, whatever their pair: delivered ones and the hops they took (1 for
 // a copy that went straight to its destination), dropped ones by DropReason.
 struct RouteCounters {
-  std::uint64_t held = 0;            // copies a robot took into its buffer (store-and-forward)
+  std::uint64_t held = 0;            // copies taken into a buffer (store-and-forward), each once: when first held
   std::uint64_t delivered = 0;
   std::uint64_t delivered_hops = 0;  // summed over the delivered copies
   int max_hops = 0;                  // the most any delivered copy took
@@ -181,6 +181,13 @@ class Network final : private LinkCompletions {
   // disjoint, from < until; throws std::invalid_argument otherwise. No windows: always talks.
   void SetTalkWindows(NodeId node, std::vector<TalkWindow> windows);
   bool IsOnline(NodeId node, SimTime at) const;
+  // With store_and_forward: after `horizon` nothing a held copy waits for changes any more (the
+  // robots stand where their trajectories end, the talk windows and beacons are over), so a copy
+  // without a way then is not held: one held before is dropped kExpired at its first retry after
+  // the horizon that finds no way, one sent after it is dropped kNoRoute at once. No retry is
+  // scheduled past the mission's end (hold_time of 100000 h on radios that never meet retried
+  // every 100 ms for ever). Default: no horizon.
+  void SetHoldHorizon(SimTime horizon) { hold_horizon_ = horizon; }
 
   // --- sending ------------------------------------------------------------
   // Publishes payload from src on channel to every node that joined it, except
@@ -274,7 +281,9 @@ class Network final : private LinkCompletions {
   void CountDrop(DropReason reason) { ++routes_.dropped[static_cast<std::size_t>(reason)]; }
   // Store-and-forward (disconnected_params.h): keeps copy c at c.at, held since `since`, and
   // schedules that node's retry; false when its buffer has no room.
-  bool Hold(std::uint32_t slot, const PendingCopy& c, SimTime since);
+  // Keeps c at its node until the next retry: kNone, or why it cannot (kBufferFull past hold_bytes;
+  // past the hold horizon kExpired for a copy held before, kNoRoute for one never held).
+  DropReason Hold(std::uint32_t slot, const PendingCopy& c, SimTime since);
   // The node's retry: expired copies are dropped, the others sent on or held again.
   void Retry(NodeId node);
   bool StoreAndForward() const { return stack_.disconnected.kind == DisconnectedKind::kStoreAndForward; }
@@ -300,13 +309,16 @@ class Network final : private LinkCompletions {
   bool DroppedOut(NodeId node, SimTime at) const;  // inside [offline_from_, offline_until_) (SetOffline)
 
   // A copy on its way: where to, the node it arrives at next (dst, or a relay), its number
-  // (MessageCopy::copy), the transmissions it has made (the one under way included), when it
-  // arrives there. 48 bits number 2.8e14 copies; hops stay <= kMaxHops.
+  // (MessageCopy::copy), the transmissions it has made (the one under way included), whether a
+  // robot has held it (store-and-forward: RouteCounters::held counts a copy once, however many
+  // robots and retries hold it), when it arrives there. 48 bits number 2.8e14 copies; hops stay
+  // <= kMaxHops.
   struct PendingCopy {
     NodeId dst;
     NodeId at;
     std::uint64_t copy : 48;
-    std::uint64_t hops : 16;
+    std::uint64_t hops : 15;
+    std::uint64_t held : 1;
     SimTime arrival;
   };
   static_assert(sizeof(PendingCopy) <= 24);
@@ -342,6 +354,7 @@ class Network final : private LinkCompletions {
   std::vector<std::vector<HeldCopy>> held_;
   std::vector<std::int64_t> held_bytes_;
   std::vector<char> retry_scheduled_;
+  SimTime hold_horizon_ = SimTime::Max();
   std::vector<std::uint32_t> free_payloads_;
   PayloadBuffers buffers_;
 

@@ -38,7 +38,7 @@ void AddDatagram(std::int64_t udp_payload, const WireParams& p, WireFootprint& f
 
 WireFootprint Compute(Bytes payload, std::int64_t channel_length, const WireParams& p, std::vector<Bytes>* frames) {
   WireFootprint fp;
-  const std::int64_t stream = channel_length + 1 + payload.value();  // channel, NUL, payload
+  const std::int64_t stream = channel_length + 1 + payload.value() + p.trailer.value();  // channel, NUL, payload, trailer
   if (stream <= wire::kLcmShortMessageMax) {
     AddDatagram(wire::kLcmShortHeader + stream, p, fp, frames);
     return fp;
@@ -61,7 +61,7 @@ void WireParams::Validate() const {
   }
   CheckInRange("mtu", mtu, Bytes(wire::kIpv4Header + 8), kMaxMtu);
   // Framing comes with the link model (LinkWire), never from a config: a bad one is a bug.
-  if (link_framing.value() < 0 || link_min_payload.value() < 0) {
+  if (link_framing.value() < 0 || link_min_payload.value() < 0 || trailer.value() < 0) {
     throw std::logic_error("WireParams: negative link framing or minimum payload");
   }
 }

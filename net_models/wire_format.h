@@ -2,6 +2,10 @@
 // Bytes on the wire for one LCM message (docs/design.md §4), following what LCM's
 // UDP multicast provider (lcm/lcm_udpm.c, LCM 1.3.x on Linux) puts on a socket:
 //
+//  0. The team's trailer. A team's transport appends its authentication trailer to every LCM
+//     message (34 bytes: robot, instance, counter and a 16-byte tag; agents/auth/message_auth.h,
+//     docs/security.md): LCM carries payload + trailer. WireParams::trailer says how many bytes;
+//     every team dvpr runs or launches has it (wire::kTeamTrailer), a bare WireParams has none.
 //  1. LCM datagrams. If channel + NUL + payload <= 65499 bytes, one "short"
 //     datagram: 8-byte header (magic, sequence number), channel, NUL, payload.
 //     Otherwise the channel + NUL + payload stream is cut into fragments of at
@@ -36,6 +40,7 @@ struct WireParams {
   Bytes mtu{1500};          // IP MTU of the link: largest IP packet, headers included
   Bytes link_framing{2};    // per-packet link-layer overhead (PPP: 2)
   Bytes link_min_payload{0};  // an IP packet shorter than this is padded to it (Ethernet: 46)
+  Bytes trailer{0};         // appended to each LCM message by the team's transport (step 0 above)
   // Throws std::invalid_argument "mtu: ..." (mtu must leave room for the IP header and 8 data
   // bytes, i.e. >= 28, and be at most kMaxMtu); std::logic_error for a negative framing.
   void Validate() const;
@@ -43,6 +48,9 @@ struct WireParams {
 };
 
 namespace wire {
+// A launched team's authentication trailer: robot u16, instance u64, counter u64, 16-byte tag
+// (agents/auth/message_auth.h's kTrailerBytes; experiments/protocols/lcm checks they agree).
+inline constexpr std::int64_t kTeamTrailer = 2 + 8 + 8 + 16;
 inline constexpr std::int64_t kLcmShortHeader = 8;
 inline constexpr std::int64_t kLcmFragmentHeader = 20;
 inline constexpr std::int64_t kLcmShortMessageMax = 65499;   // channel + NUL + payload

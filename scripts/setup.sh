@@ -7,6 +7,7 @@ PACKAGES=(
   cmake g++ make pkg-config
   liblcm-dev liblcm-bin libglib2.0-dev       # LCM, lcm-gen, lcm-logplayer, lcm-spy
   libeigen3-dev libboost-dev libyaml-cpp-dev
+  libssl-dev                                 # OpenSSL: HMAC-SHA-256 tags of a launched team's messages
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
   libgtest-dev libbenchmark-dev
   libclang-rt-14-dev                         # libFuzzer's archive (scripts/fuzz.sh links it with g++)

@@ -19,6 +19,9 @@ std::int64_t SystemUtime(std::chrono::system_clock::time_point t) {
   return std::chrono::duration_cast<std::chrono::microseconds>(t.time_since_epoch()).count();
 }
 
+// What a held message costs: its bytes and its bookkeeping (a flood of empty messages is bounded too).
+std::size_t HeldCharge(std::size_t bytes) { return bytes + 64; }
+
 // At most this many datagrams are read per wait, so that timers due meanwhile are not held up
 // by a flood.
 constexpr int kDatagramsPerWait = 64;
@@ -131,17 +134,33 @@ void LcmTransport::ScheduleAfter(SimTime delay, Callback fn) {
   timer_callbacks_.emplace(id, std::move(fn));
 }
 
+void LcmTransport::Authenticate(auth::MessageAuth auth) {
+  auth_.emplace(std::move(auth));
+  // Repeats are told after the tag, by the authenticated sender (udpm::Limits::drop_repeats).
+  udpm::Limits limits = reassembler_.limits();
+  limits.drop_repeats = false;
+  reassembler_ = udpm::Reassembler(limits);
+}
+
 void LcmTransport::DoPublish(const std::string& channel, const char*, std::vector<std::uint8_t> bytes) {
+  const std::size_t message = bytes.size();
+  if (auth_) auth_->Seal(channel, bytes);
+  Send(channel, bytes, message);
+}
+
+void LcmTransport::Send(const std::string& channel, const std::vector<std::uint8_t>& bytes, std::size_t message) {
   if (lcm_->publish(channel, bytes.data(), static_cast<unsigned>(bytes.size())) != 0) {
     ++publish_failures_;  // a full socket buffer: the message is lost, like a dropped packet
     return;
   }
   ++published_;
   published_bytes_ += bytes.size();
-  if (on_publish_) on_publish_(channel, bytes);
+  // The observer sees the LCM message without its trailer (the wire model adds the trailer).
+  if (on_publish_) on_publish_(channel, std::span<const std::uint8_t>(bytes.data(), message));
 }
 
-void LcmTransport::HoldUntilSubscribed(const std::vector<std::string>& channels) {
+void LcmTransport::HoldUntilSubscribed(const std::vector<std::string>& channels, std::size_t max_bytes) {
+  hold_limit_ = max_bytes;
   for (const std::string& channel : channels) {
     ChannelSubscription& sub = channels_[channel];
     sub.hold = sub.handlers.empty();
@@ -157,6 +176,7 @@ std::uint64_t LcmTransport::DoSubscribe(const std::string& channel, RawHandler h
     sub.hold = false;
     if (!sub.held.empty()) {
       // Handled from the loop, not from inside Subscribe: the subscriber may not be ready yet.
+      for (const Held& h : sub.held) held_bytes_ -= HeldCharge(h.bytes.size());
       ScheduleAfter(SimTime::Zero(), [this, channel, held = std::move(sub.held)] {
         for (const Held& h : held) Dispatch(channel, h.bytes, h.sender);
       });
@@ -190,12 +210,32 @@ void LcmTransport::ReceiveWaiting() {
     const auto sub = channels_.find(message->channel);
     if (sub == channels_.end()) continue;
     const std::string channel = sub->first;  // a copy: a handler may unsubscribe and erase the key
-    Dispatch(channel, message->payload, message->sender.Key());
+    if (!auth_) {
+      Dispatch(channel, message->payload, message->sender.Key());
+      continue;
+    }
+    const std::optional<auth::Opened> opened = auth_->Open(channel, message->payload);
+    if (!opened) {
+      ++auth_counts_.unauthenticated;
+      continue;
+    }
+    if (!replay_.Take(opened->origin)) {
+      ++auth_counts_.replayed;
+      continue;
+    }
+    Dispatch(channel, opened->message, opened->origin.SenderKey());
   }
 }
 
 void LcmTransport::Dispatch(const std::string& channel, std::span<const std::uint8_t> bytes, std::uint64_t sender) {
   if (const auto held = channels_.find(channel); held != channels_.end() && held->second.hold) {
+    const std::size_t charge = HeldCharge(bytes.size());
+    if (held_bytes_ >= hold_limit_ || charge > hold_limit_ - held_bytes_) {
+      ++auth_counts_.held_dropped;
+      return;
+    }
+    held_bytes_ += charge;
+    auth_counts_.held_bytes_peak = std::max(auth_counts_.held_bytes_peak, held_bytes_);
     held->second.held.push_back(Held{std::vector<std::uint8_t>(bytes.begin(), bytes.end()), sender});  // counted when handled
     return;
   }

@@ -11,6 +11,14 @@
 // is counted (ReceiveCounts): malformed ones and repeats of one already taken (the same sender
 // and sequence number: a duplicating network) are dropped, never handed to a handler.
 //
+// A team's transport authenticates (Authenticate, agents/auth/message_auth.h): every message
+// it publishes carries a tag made with the team's secret, and a message received on a channel it
+// listens to is handed on only when its tag verifies and it is not a repeat of one taken from
+// the same authenticated sender (AuthCounts); the handlers then see the message without its
+// trailer and CurrentSender() names the authenticated process (auth::RobotOfSender gives its
+// robot). Nothing of an unauthenticated message reaches the held channels, the replay guard or
+// a handler.
+//
 // The agent clock: agent time = (wall time since the epoch) x speedup. The
 // epoch is construction time until SetEpoch() moves it (a team starts
 // together at an agreed wall-clock instant). Timers are kept in wall time, so
@@ -34,6 +42,7 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include "agents/auth/message_auth.h"
 #include "agents/messages/transport.h"
 #include "agents/udpm/udpm_reassembler.h"
 #include "agents/udpm/udpm_socket.h"
@@ -78,9 +87,14 @@ class LcmTransport final : public Transport {
   bool RunUntilWall(WallClock::time_point deadline);
   void Stop() { stopped_ = true; }
 
-  // Publishes bytes as they are, typed or not (tools, fault-injection tests).
+  // From now on every publication is sealed and every message received must open (above). Call
+  // before the loop runs first.
+  void Authenticate(auth::MessageAuth auth);
+  bool Authenticates() const { return auth_.has_value(); }
+
+  // Publishes bytes as they are, typed or not, never sealed (tools, fault-injection tests).
   void PublishRaw(const std::string& channel, std::span<const std::uint8_t> bytes) {
-    DoPublish(channel, "", std::vector<std::uint8_t>(bytes.begin(), bytes.end()));
+    Send(channel, std::vector<std::uint8_t>(bytes.begin(), bytes.end()), bytes.size());
   }
 
   // Listens on `channels` now and keeps what arrives there until a handler subscribes; then the
@@ -88,7 +102,11 @@ class LcmTransport final : public Transport {
   // the start barrier one by one (each when it has heard the others): a teammate that left
   // first may send before this agent subscribed, and UDP keeps nothing for a channel nobody
   // listens to, so without this the first queries of a loaded machine's slow agent were lost.
-  void HoldUntilSubscribed(const std::vector<std::string>& channels);
+  // At most `max_bytes` (messages' bytes and 64 bytes of bookkeeping each, over all held
+  // channels) are kept; what arrives past
+  // that is dropped and counted (AuthCounts::held_dropped).
+  static constexpr std::size_t kDefaultHoldBytes = std::size_t{16} << 20;
+  void HoldUntilSubscribed(const std::vector<std::string>& channels, std::size_t max_bytes = kDefaultHoldBytes);
   void SetReceiveFilter(Filter fn) { on_receive_ = std::move(fn); }
   void SetPublishObserver(Observer fn) { on_publish_ = std::move(fn); }
 
@@ -98,6 +116,14 @@ class LcmTransport final : public Transport {
   std::uint64_t Received() const { return received_; }
   // Every datagram read from the group, by what became of it.
   const udpm::Counts& ReceiveCounts() const { return reassembler_.counts(); }
+  // Messages on the channels listened to that the team's tags refused, and held messages dropped.
+  struct AuthCounts {
+    std::uint64_t unauthenticated = 0;  // no trailer, another secret, a byte changed: dropped
+    std::uint64_t replayed = 0;         // authenticated, but taken before (or too old to tell): dropped
+    std::uint64_t held_dropped = 0;     // kept for a channel without its handler yet, past the bound
+    std::size_t held_bytes_peak = 0;    // the most bytes held at once
+  };
+  const AuthCounts& auth_counts() const { return auth_counts_; }
   // Datagrams the kernel dropped because the receive buffer was full (read late).
   std::uint64_t KernelDropped() const { return socket_.kernel_dropped(); }
   // The sender (udpm::Sender::Key()) of the message being handled; 0 outside a handler.
@@ -120,6 +146,8 @@ class LcmTransport final : public Transport {
   };
 
   void DoPublish(const std::string& channel, const char* type_name, std::vector<std::uint8_t> bytes) override;
+  // Publishes `bytes` as they are; the observer sees their first `message` bytes.
+  void Send(const std::string& channel, const std::vector<std::uint8_t>& bytes, std::size_t message);
   std::uint64_t DoSubscribe(const std::string& channel, RawHandler handler) override;
   void DoUnsubscribe(std::uint64_t id) override;
   // Reads and handles what waits on the socket (a bounded number of datagrams).
@@ -133,6 +161,11 @@ class LcmTransport final : public Transport {
   udpm::Socket socket_;
   udpm::Reassembler reassembler_;
   std::vector<std::uint8_t> datagram_;
+  std::optional<auth::MessageAuth> auth_;
+  auth::ReplayGuard replay_;
+  AuthCounts auth_counts_;
+  std::size_t hold_limit_ = kDefaultHoldBytes;
+  std::size_t held_bytes_ = 0;
   std::unique_ptr<lcm::LCM> lcm_;  // publishing only: it never subscribes, so it never receives
   std::uint64_t current_sender_ = 0;
   double speedup_;

@@ -89,7 +89,7 @@ std::optional<Message> Reassembler::Take(const Sender& sender, std::span<const s
     return std::nullopt;
   }
   SenderState& state = StateOf(sender, now);
-  if (state.taken.Seen(d.seqno)) {
+  if (limits_.drop_repeats && state.taken.Seen(d.seqno)) {
     ++counts_.duplicates;
     return std::nullopt;
   }

@@ -12,7 +12,8 @@
 //   for a new one); a partial message nothing was added to for `partial_timeout` is dropped;
 // - at most `max_senders` senders are remembered (the one heard longest ago is forgotten);
 // - per sender the sequence numbers of the last 1024 messages taken are remembered: a datagram
-//   of one of them, or a fragment already held, is a duplicate. A number more than 1024 behind
+//   of one of them (unless Limits::drop_repeats is off), or a fragment already held, is a
+//   duplicate. A number more than 1024 behind
 //   the newest is taken (a sender that restarted on the same port numbers from 0 again).
 //
 // Every datagram is counted once: malformed, duplicate, or taken; a message that completes
@@ -52,6 +53,11 @@ struct Limits {
   int partials_per_sender = 4;
   int max_senders = 256;
   Clock::duration partial_timeout = std::chrono::seconds(2);
+  // Whether a message whose sender and sequence number were taken before is dropped here. A
+  // receiver that authenticates its messages (agents/auth/) turns this off and drops repeats
+  // after the tag verified, keyed on the authenticated sender: keyed on the socket, 64 forged
+  // datagrams from a teammate's address and port made its next genuine messages "repeats".
+  bool drop_repeats = true;
   void Validate() const;  // throws std::invalid_argument naming the field
 };
 

@@ -50,16 +50,20 @@ Usage:
   dvpr plot DIR      redraw DIR/figures/*.png from the files in DIR
   dvpr agent --config C --robot R [--robots N] [--run K] [--strategy S] [--lcm URL]
              [--speedup X] [--out FILE] [--set key.path=value ...] [--grace SEC]
-             [--team-nonce HEX]
+             [--team-nonce HEX] --team-secret FILE [--hold-bytes B]
                      one robot as a real process over LCM (UDP multicast, udpm://
                      URLs only), in wall-clock time at the config's fps x speedup;
                      writes its log; agents with another --team-nonce (dvpr launch
-                     draws one per launch) are another team
+                     draws one per launch) are another team; every message is
+                     tagged with the secret in FILE (64 hex digits, mode 0600) and
+                     only messages tagged with it are taken (docs/security.md);
+                     --hold-bytes bounds what it keeps while it waits (16 MiB)
   dvpr launch --config C --robots N [--run K] [--out DIR] [--lcm URL] [--speedup X]
-              [--set key.path=value ...] [--grace SEC] [--timeout SEC]
+              [--set key.path=value ...] [--grace SEC] [--timeout SEC] [--hold-bytes B]
                      N agent processes on this machine, each configured strategy
-                     in turn; gathers their logs into DIR (default
-                     results/<config name>_lcm) with protocol=lcm
+                     in turn, with a fresh team secret per launch; gathers their
+                     logs into DIR (default results/<config name>_lcm) with
+                     protocol=lcm
   dvpr replay RESULT_DIR [--robots N] [--run K] [--network V] [--strategy S ...]
               [--out FILE]
                      one self-contained HTML page replaying a simulated run of

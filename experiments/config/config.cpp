@@ -14,6 +14,7 @@
 #include "experiments/config/config_reader.h"
 #include "experiments/config/utc_instant.h"
 #include "experiments/config/yaml_check.h"
+#include "experiments/data/text_file.h"
 #include "experiments/strategies/strategy_spec.h"
 
 namespace dvpr {
@@ -211,22 +212,25 @@ TrajectorySource ReadTrajectorySource(const Field& f) {
   return s;
 }
 
-// Makes a centroid file pattern absolute and checks every file the sweep will read.
+// Makes a centroid file pattern absolute and checks every file the sweep will read. A file that is
+// there but is not a regular file (a FIFO, ...) is named as what it is (text_file::NotARegularFile).
 std::string ResolveCentroids(const Field& f, const SweepConfig& sweep) {
   const std::string pattern = f.String();
   for (const auto& dir : config_detail::SearchDirs(f.origin())) {
     const std::filesystem::path candidate =
         std::filesystem::path(pattern).is_absolute() ? std::filesystem::path(pattern) : dir / pattern;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(ExpandCentroidPattern(candidate.string(), sweep.robots[0], 0), ec)) {
+    if (text_file::NotARegularFile(ExpandCentroidPattern(candidate.string(), sweep.robots[0], 0)) ==
+        text_file::kNoSuchFile) {
       continue;
     }
     for (int n : sweep.robots) {
       for (int r = 0; r < sweep.runs; ++r) {
         const auto file = ExpandCentroidPattern(candidate.string(), n, r);
-        if (!std::filesystem::is_regular_file(file, ec)) {
-          f.Fail("file not found: '" + file.string() + "' (robots " + std::to_string(n) +
-                 ", run " + std::to_string(r) + ")");
+        const std::string why = text_file::NotARegularFile(file);
+        if (!why.empty()) {
+          f.Fail((why == text_file::kNoSuchFile ? "file not found: '" + file.string() + "'"
+                                                : "'" + file.string() + "' " + why) +
+                 " (robots " + std::to_string(n) + ", run " + std::to_string(r) + ")");
         }
       }
     }
@@ -334,7 +338,7 @@ GroundTruthParams ReadEvaluation(const Field& f) {
 
 // Declared in config_sections.cpp (network, verification, service, dropout, outputs).
 namespace config_detail {
-NetworkConfig ReadNetwork(const Field& f);
+NetworkConfig ReadNetwork(const Field& f, const SweepConfig& sweep);
 VerificationParams ReadVerification(const Field& f);
 ServiceParams ReadService(const Field& f);
 std::vector<Dropout> ReadDropout(const Field& f, const SweepConfig& sweep);
@@ -411,7 +415,7 @@ ExperimentConfig ReadExperiment(const Field& root, const std::string& default_na
   if (bow && !c.dataset.bow && !c.dataset.synthetic_bow) c.dataset.synthetic_bow = SyntheticBowParams{};
   c.training = ReadTraining(root.Child("training"), c.sweep, c.seed);
   c.evaluation = ReadEvaluation(root.Child("evaluation"));
-  c.network = config_detail::ReadNetwork(root.Child("network"));
+  c.network = config_detail::ReadNetwork(root.Child("network"), c.sweep);
   c.agent.suppression_frames = c.evaluation.suppression_frames;
   c.agent.verification = config_detail::ReadVerification(root.Child("verification"));
   c.agent.service = config_detail::ReadService(root.Child("service"));

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "experiments/data/text_file.h"
 #include "net_models/param_checks.h"
 
 namespace dvpr::config_detail {
@@ -149,6 +150,10 @@ SimTime Field::Duration(SimTime min, SimTime max) const {
   } catch (const std::invalid_argument& e) {
     Fail(std::string("expected a duration with a unit, e.g. 5ms (") + e.what() + ")");
   }
+  if (t.ns() == 0 && min.ns() > 0 && NonZeroNumber(s)) {
+    Fail(s + " rounds to 0 at the resolution of durations (1ns), below the smallest allowed value " +
+         FormatDuration(min));
+  }
   if (t < min || t > max) FailRange(FormatDuration(min), FormatDuration(max));
   return t;
 }
@@ -193,6 +198,14 @@ std::vector<std::filesystem::path> SearchDirs(const Origin& origin) {
   return dirs;
 }
 
+bool NonZeroNumber(std::string_view quantity) {
+  for (const char c : quantity) {
+    if (c >= '1' && c <= '9') return true;
+    if (c != '0' && c != '.' && c != '+' && c != ' ' && c != '\t') return false;
+  }
+  return false;
+}
+
 std::filesystem::path Field::ExistingFile() const {
   const std::filesystem::path p = String();
   if (p.empty()) Fail("expected a file path, got an empty string");
@@ -203,13 +216,10 @@ std::filesystem::path Field::ExistingFile() const {
     for (const auto& dir : SearchDirs(*origin_)) tried.push_back(dir / p);
   }
   for (const auto& candidate : tried) {
-    std::error_code ec;
-    if (std::filesystem::is_regular_file(candidate, ec)) {
-      return std::filesystem::absolute(candidate).lexically_normal();
-    }
-    if (std::filesystem::is_directory(candidate, ec)) {
-      Fail(Quoted(candidate.string()) + " is a directory, expected a file");
-    }
+    const std::string why = text_file::NotARegularFile(candidate);
+    if (why.empty()) return std::filesystem::absolute(candidate).lexically_normal();
+    // Something is there: "not found" would mislead.
+    if (why != text_file::kNoSuchFile) Fail(Quoted(candidate.string()) + " " + why);
   }
   std::ostringstream where;
   for (std::size_t i = 0; i < tried.size(); ++i) where << (i ? ", " : "") << tried[i].string();

@@ -75,7 +75,9 @@ class Field {
   // One of `names`; returns its index.
   std::size_t Choice(const std::vector<std::string>& names) const;
   // A file that must exist: absolute, or resolved against the config's folder, the current
-  // directory, then the source tree.
+  // directory, then the source tree. A candidate that is there but is not a regular file (a
+  // folder, a FIFO, a device, a loop of symbolic links) is an error saying which, found by stat
+  // without opening it; a symbolic link to a regular file is that file.
   std::filesystem::path ExistingFile() const;
 
  private:
@@ -90,5 +92,9 @@ class Field {
 
 // Candidate locations of a relative path, in the order they are tried.
 std::vector<std::filesystem::path> SearchDirs(const Origin& origin);
+
+// Whether the number that begins `quantity` ("0.4mm", "0.0001 s") has a digit other than 0: a
+// quantity the parser rounded to 0 at its resolution (1 ns, 1 mm) although it is not 0.
+bool NonZeroNumber(std::string_view quantity);
 
 }  // namespace dvpr::config_detail

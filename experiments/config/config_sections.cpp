@@ -92,6 +92,9 @@ double ReadRange(const Field& f) {
   } catch (const std::invalid_argument& e) {
     f.Fail(std::string("expected a length with a unit, e.g. 200m (") + e.what() + ")");
   }
+  if (metres == 0 && NonZeroNumber(text)) {
+    f.Fail(text + " rounds to 0 at the resolution of lengths (1mm), below the smallest allowed value 1mm");
+  }
   if (!(metres > 0) || metres > RadioParams::kMaxRangeM) f.Fail("must be in (0m, 1000000km], got " + text);
   return metres;
 }
@@ -263,7 +266,7 @@ void ReadWifi(const Field& f, NetworkConfig& n) {
 
 }  // namespace
 
-NetworkConfig ReadNetwork(const Field& f) {
+NetworkConfig ReadNetwork(const Field& f, const SweepConfig& sweep) {
   NetworkConfig n;
   if (!f.present()) return n;
   f.ExpectMap({"model", "bandwidth", "latency", "queue_packets", "mtu", "loss", "links", "radio", "routing",
@@ -322,10 +325,20 @@ NetworkConfig ReadNetwork(const Field& f) {
   if (const Field c = f.Child("schedule"); c.present()) {
     n.schedule = c.ExistingFile();
     try {
-      n.windows = ReadTalkSchedule(*n.schedule);
+      n.windows = ReadTalkSchedule(*n.schedule, *std::max_element(sweep.robots.begin(), sweep.robots.end()) - 1);
     } catch (const std::invalid_argument& e) {
       c.Fail(e.what());
     }
+  }
+  // Store-and-forward holds what routing finds no way for; direct routing always names the
+  // destination (one hop, lost out of range if unheard), so it would hold only what a sender
+  // sends outside its talk window (network.schedule). Without windows it would silently drop.
+  const bool relays = std::any_of(n.routing.begin(), n.routing.end(),
+                                  [](const RoutingEntry& e) { return e.kind != RoutingKind::kDirect; });
+  if (n.disconnected.kind == DisconnectedKind::kStoreAndForward && !relays && n.windows.empty()) {
+    f.Child("disconnected").Fail("store_and_forward holds nothing with network.routing: direct (every copy goes "
+                                 "straight to its destination, or is lost out of range): use shortest_path or "
+                                 "link_state routing, or a network.schedule, or drop");
   }
   return n;
 }

@@ -26,6 +26,7 @@ class OptionReader {
     return args_[++i_];
   }
   int Int() { return Number<int>("an integer"); }
+  long long Int64() { return Number<long long>("an integer"); }
   double Double() { return Number<double>("a number"); }
   [[noreturn]] void Unknown() const { throw std::invalid_argument("unknown option " + flag()); }
 

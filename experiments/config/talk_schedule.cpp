@@ -11,6 +11,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "experiments/data/printable.h"
+#include "experiments/data/text_file.h"
+
 namespace dvpr {
 
 namespace {
@@ -42,10 +45,26 @@ struct Located {
   int line = 0;
 };
 
+// Sets `col` to header column i; a column named twice (robot and ROBOT_ID, start_s and START_S)
+// is refused, as either could be meant.
+void SetColumn(std::optional<std::size_t>& col, std::size_t i, const std::vector<std::string>& header,
+               const std::string& where) {
+  if (col) {
+    throw std::invalid_argument(where + "the header names both '" + Printable(header[*col]) + "' (column " +
+                                std::to_string(*col + 1) + ") and '" + Printable(header[i]) + "' (column " +
+                                std::to_string(i + 1) + "); keep one");
+  }
+  col = i;
+}
+
 }  // namespace
 
-std::vector<ScheduledWindow> ReadTalkSchedule(const std::filesystem::path& path) {
+std::vector<ScheduledWindow> ReadTalkSchedule(const std::filesystem::path& path, int largest_robot) {
   const std::string file = path.string();
+  // By stat, before opening: a FIFO would wait for a writer.
+  if (const std::string why = text_file::ThereButNotARegularFile(path); !why.empty()) {
+    throw std::invalid_argument(file + ": " + why);
+  }
   std::ifstream in(path);
   if (!in) throw std::invalid_argument(file + ": cannot be read");
   auto fail = [&file](int line, const std::string& problem) -> void {
@@ -57,18 +76,20 @@ std::vector<ScheduledWindow> ReadTalkSchedule(const std::filesystem::path& path)
   std::size_t columns = 0;
   while (std::getline(in, text)) {
     ++line;
+    if (line == 1) text = std::string(text_file::WithoutByteOrderMark(text));
     if (Trim(text).empty()) continue;
     const std::vector<std::string> header = Fields(text);
     columns = header.size();
+    const std::string where = file + ": line " + std::to_string(line) + ": ";
     for (std::size_t i = 0; i < header.size(); ++i) {
       const std::string h = Lower(header[i]);
-      if (h == "robot" || h == "robot_id") robot_col = i;
-      if (h == "start_s") start_col = i;
-      if (h == "end_s") end_col = i;
+      if (h == "robot" || h == "robot_id") SetColumn(robot_col, i, header, where);
+      if (h == "start_s") SetColumn(start_col, i, header, where);
+      if (h == "end_s") SetColumn(end_col, i, header, where);
     }
     if (!robot_col || !start_col || !end_col) {
       fail(line, "expected a header naming the columns robot, start_s and end_s (or ROBOT_ID, START_S, END_S), got '" +
-                     Trim(text) + "'");
+                     Printable(Trim(text)) + "'");
     }
     break;
   }
@@ -86,14 +107,18 @@ std::vector<ScheduledWindow> ReadTalkSchedule(const std::filesystem::path& path)
     const std::string& r = f[*robot_col];
     const auto [rend, rec] = std::from_chars(r.data(), r.data() + r.size(), robot);
     if (rec != std::errc() || rend != r.data() + r.size() || robot < 0 || robot > 32767) {
-      fail(line, "robot: expected an integer in [0, 32767], got '" + r + "'");
+      fail(line, "robot: expected an integer in [0, 32767], got '" + Printable(r) + "'");
+    }
+    if (robot > largest_robot) {
+      fail(line, "robot " + std::to_string(robot) + " is in no team of the sweep (its largest robot id is " +
+                     std::to_string(largest_robot) + ")");
     }
     auto seconds = [&](std::size_t col, const char* name) {
       const std::string& s = f[col];
       double v = 0;
       const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
       if (ec != std::errc() || end != s.data() + s.size() || s.empty() || !std::isfinite(v) || v < 0 || v > kMaxSeconds) {
-        fail(line, std::string(name) + ": expected seconds in [0, 360000000], got '" + s + "'");
+        fail(line, std::string(name) + ": expected seconds in [0, 360000000], got '" + Printable(s) + "'");
       }
       return SimTime::Nanos(std::llround(v * 1e9));
     };

@@ -17,10 +17,14 @@ struct ScheduledWindow {
 };
 
 // The file's windows, by robot and then start. Throws std::invalid_argument naming the file, the
-// line and what was expected: no header or a header without one of the three columns, a robot
-// that is not an integer in [0, 32767], a time that is not a finite number of seconds in
-// [0, 360 000 000] (100 000 h, the dropout's limit), a window whose end is not after its start,
-// two windows of one robot that overlap (both lines named), or a file without a window.
-std::vector<ScheduledWindow> ReadTalkSchedule(const std::filesystem::path& path);
+// line and what was expected: a path that is not a regular file (a folder, a FIFO, a device, a
+// loop of symbolic links; found by stat, never opened), no header or a header without one of the
+// three columns or naming one twice (robot and ROBOT_ID), a robot that is not an integer in
+// [0, 32767] or is above `largest_robot` (in no team of the sweep), a time that is not a finite
+// number of seconds in [0, 360 000 000] (100 000 h, the dropout's limit), a window whose end is
+// not after its start, two windows of one robot that overlap (both lines named), or a file without
+// a window. A UTF-8 byte-order mark before the header is skipped; quoted file text is printable
+// (printable.h).
+std::vector<ScheduledWindow> ReadTalkSchedule(const std::filesystem::path& path, int largest_robot = 32767);
 
 }  // namespace dvpr

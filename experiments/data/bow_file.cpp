@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "experiments/data/printable.h"
+#include "experiments/data/text_file.h"
 
 namespace dvpr {
 namespace {
@@ -107,6 +108,7 @@ Triple ParseTriple(const fs::path& path, std::size_t i, const unsigned char* p) 
 }
 
 std::vector<unsigned char> ReadBytes(const fs::path& path) {
+  if (const std::string why = text_file::ThereButNotARegularFile(path); !why.empty()) text_file::Fail(path, why);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path.string() + ": cannot open for reading");
   std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -154,11 +156,13 @@ BowData LoadBowTriples(const fs::path& path) {
 }
 
 BowData LoadBowText(const fs::path& path) {
+  if (const std::string why = text_file::ThereButNotARegularFile(path); !why.empty()) text_file::Fail(path, why);
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path.string() + ": cannot open for reading");
   std::vector<std::string> lines;
   for (std::string text; std::getline(in, text);) lines.push_back(std::move(text));
   if (in.bad()) throw std::runtime_error(path.string() + ": read error");
+  if (!lines.empty()) lines.front() = std::string(text_file::WithoutByteOrderMark(lines.front()));
   // Trailing blank lines end the file (as in the other loaders); a blank line before is an error.
   const auto blank = [](const std::string& s) { return std::all_of(s.begin(), s.end(), IsSpace); };
   while (!lines.empty() && blank(lines.back())) lines.pop_back();

@@ -85,6 +85,7 @@ DescriptorMatrix LoadBin(const fs::path& path, int dim, int frame_width) {
     Fail(path, "bin_frame_width must be positive, got " + std::to_string(frame_width));
   }
   CheckDim(path, dim, frame_width);
+  if (const std::string why = ThereButNotARegularFile(path); !why.empty()) Fail(path, why);
   std::ifstream in(path, std::ios::binary);
   if (!in) Fail(path, "cannot open for reading");
   const std::uintmax_t bytes = fs::file_size(path);

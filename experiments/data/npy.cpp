@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "experiments/data/printable.h"
+#include "experiments/data/text_file.h"
 
 namespace dvpr {
 namespace {
@@ -144,6 +145,7 @@ class HeaderParser {
 };
 
 std::vector<char> ReadAll(const std::filesystem::path& path) {
+  if (const std::string why = text_file::ThereButNotARegularFile(path); !why.empty()) Fail(path, why);
   std::ifstream in(path, std::ios::binary);
   if (!in) Fail(path, "cannot open for reading");
   std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

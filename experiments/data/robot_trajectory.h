@@ -6,6 +6,17 @@
 // sources of a team must all name the same `frame` (CheckOneWorldFrame). The heading is the
 // camera's forward axis, as for KITTI: the rotation's third column, R(q) (0, 0, 1) for a
 // quaternion.
+//
+// A CSV's time column holds nanoseconds: each value a whole number in digits in
+// [0, 9223372036854775807] (int64), else an error naming the file, line and column ("out of range"
+// beyond it; for a value such as 1317643200.5, what it would be as seconds). Poses less than 1 us
+// apart on average (over the whole file: last minus first < 1000 ns x (poses - 1)) are refused as
+// seconds or milliseconds written where nanoseconds were meant: no camera or odometry runs at
+// 1 MHz, and a time in seconds (1317643200, 1317643201, ...) puts its poses a few ns apart. Every
+// format's poses lie within 360000000 s (100000 h) of the first pose, as a robot's start does, so
+// a robot's times on the team's clock fit in int64 nanoseconds. Every reader skips a UTF-8
+// byte-order mark before the first line and refuses a path that is not a regular file (a folder,
+// a FIFO, a device, a loop of symbolic links; text_file.h) without opening it.
 #include <array>
 #include <filesystem>
 #include <optional>
@@ -40,8 +51,9 @@ struct TimedTrajectory {
 };
 
 // Throws std::runtime_error naming the file and line: a missing or short line or column, NaN or
-// Inf, a zero quaternion or heading, timestamps not strictly increasing, fewer than 2 poses, a
-// times file whose length differs from the poses'.
+// Inf, a zero quaternion or heading, timestamps not strictly increasing or out of range, CSV
+// nanoseconds that are not whole numbers or look like seconds (above), fewer than 2 poses, a times
+// file whose length differs from the poses'.
 TimedTrajectory LoadRobotTrajectory(const TrajectorySource& source);
 
 // Throws std::invalid_argument unless every source names the same frame (the documented rule).

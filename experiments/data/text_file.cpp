@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
+#include <system_error>
 
 #include "experiments/data/printable.h"
 
@@ -27,14 +28,45 @@ std::string_view Trim(std::string_view s) {
   return s;
 }
 
-// The file's lines without their terminators (LF or CRLF); trailing blank lines are dropped, a
-// blank line before the last non-blank one is an error (it would shift every later frame).
+// By stat: a FIFO is never opened, so a reader never waits for a writer that does not come.
+std::string NotARegularFile(const fs::path& path) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec == std::errc::too_many_symbolic_link_levels) return "is a loop of symbolic links";
+  switch (st.type()) {
+    case fs::file_type::regular: return "";
+    case fs::file_type::not_found: return std::string(kNoSuchFile);
+    case fs::file_type::directory: return "is a folder, not a regular file";
+    case fs::file_type::fifo: return "is a FIFO, not a regular file";
+    case fs::file_type::block:
+    case fs::file_type::character: return "is a device, not a regular file";
+    case fs::file_type::socket: return "is a socket, not a regular file";
+    default: break;
+  }
+  return ec ? "cannot be examined (" + ec.message() + ")" : "is not a regular file";
+}
+
+std::string ThereButNotARegularFile(const fs::path& path) {
+  std::string why = NotARegularFile(path);
+  return why == kNoSuchFile ? std::string() : why;
+}
+
+std::string_view WithoutByteOrderMark(std::string_view line) {
+  if (line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);
+  return line;
+}
+
+// The file's lines without their terminators (LF or CRLF) or a leading byte-order mark; trailing
+// blank lines are dropped, a blank line before the last non-blank one is an error (it would shift
+// every later frame).
 std::vector<std::string> ReadLines(const fs::path& path) {
+  if (const std::string why = ThereButNotARegularFile(path); !why.empty()) Fail(path, why);
   std::ifstream in(path);
   if (!in) Fail(path, "cannot open for reading");
   std::vector<std::string> lines;
   for (std::string line; std::getline(in, line);) lines.push_back(std::move(line));
   if (in.bad()) Fail(path, "read error");
+  if (!lines.empty()) lines.front() = std::string(WithoutByteOrderMark(lines.front()));
   while (!lines.empty() && Trim(lines.back()).empty()) lines.pop_back();
   if (lines.empty()) Fail(path, "file is empty (expected one frame per line)");
   for (std::size_t i = 0; i < lines.size(); ++i) {

@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "experiments/results/protocol_traits.h"
+#include "experiments/results/results.h"
 
 namespace dvpr::replay {
 
@@ -26,6 +27,8 @@ constexpr std::array<const char*, kColumns> kNames = {
     "src",      "dst",      "channel", "wire_bytes",    "dropped",       "network_variant",
     "network_model", "bandwidth_bps", "latency_ms", "loss", "hops", "network_name"};
 constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
+// Network::kMaxHops: a relay drops a copy that has made this many transmissions (hop_limit).
+constexpr int kMaxHops = 64;
 
 std::vector<std::string_view> Split(std::string_view line) {
   std::vector<std::string_view> out;
@@ -62,12 +65,16 @@ class Row {
     return v;
   }
   bool Empty(Column c) const { return Text(c).empty(); }
+  // A number, or NaN (kNotApplicable) when empty: wifi has no latency, ideal neither bandwidth.
+  double NumberOrNotApplicable(Column c) const { return Empty(c) ? kNotApplicable : Number<double>(c); }
   bool Has(Column c) const { return index_[c] != kAbsent; }
   std::size_t size() const { return fields_.size(); }
-  // A whole number of at least 0 (a copy's hops).
-  int Count(Column c) const {
+  // A copy's hops: at least 0 (1 when it was delivered) and at most `max`, which `why` explains.
+  int Hops(Column c, bool delivered, int max, const std::string& why) const {
     const int n = Number<int>(c);
     if (n < 0) Fail(c, "a count of at least 0", std::to_string(n));
+    if (delivered && n == 0) Fail(c, "at least 1 for a delivered copy", "0");
+    if (n > max) Fail(c, "at most " + std::to_string(max) + " " + why, std::to_string(n));
     return n;
   }
   // A robot of a team of `robots`: the page draws it at that index.
@@ -109,7 +116,43 @@ std::array<std::size_t, kColumns> HeaderIndex(std::string_view header, const std
   return index;
 }
 
-Message MessageOf(const Row& row, int robots) {
+// What the run's network can do to a copy: how many transmissions a copy can have made (and why,
+// for the error), and whether one transmission reaches every robot (a broadcast's bytes count once).
+struct NetworkTraits {
+  int max_hops = 1;
+  std::string why;
+  bool one_transmission = false;
+};
+
+bool EndsWith(std::string_view s, std::string_view end) {
+  return s.size() >= end.size() && s.substr(s.size() - end.size()) == end;
+}
+
+// Only a radio with shortest_path or link_state routing relays (its network_name ends with the
+// routing; an older folder without network_name may have relayed). Relays may hand a copy back
+// while the graph changes, so a copy can make more than robots - 1 transmissions, never more than
+// kMaxHops; in a team of 2 there is no robot but the destination to relay.
+NetworkTraits TraitsOf(const ReplayRun& run, bool has_name) {
+  NetworkTraits t;
+  const bool radio = run.network_model == "radio";
+  const bool relays = radio && (!has_name || EndsWith(run.network_name, " shortest_path") ||
+                                EndsWith(run.network_name, " link_state"));
+  if (!relays) {
+    t.why = "(one transmission: network " + run.network_model + " has no relays)";
+  } else if (run.robots <= 2) {
+    t.why = "(one transmission: a team of " + std::to_string(run.robots) + " has no robot to relay)";
+  } else {
+    t.max_hops = kMaxHops;
+    t.why = "(a relay drops a copy after " + std::to_string(kMaxHops) + " transmissions, hop_limit)";
+  }
+  // A sender's transmission reaches every receiver on the shared media and on a radio that does
+  // not relay; with relays each relay adds transmissions that messages.csv does not list.
+  t.one_transmission = run.network_model == "shared_medium" || run.network_model == "csma" ||
+                       run.network_model == "wifi" || (radio && !relays);
+  return t;
+}
+
+Message MessageOf(const Row& row, int robots, const NetworkTraits& network) {
   Message m;
   m.sent_ns = row.Number<std::int64_t>(kSent);
   if (!row.Empty(kDelivered)) m.delivered_ns = row.Number<std::int64_t>(kDelivered);
@@ -120,7 +163,7 @@ Message MessageOf(const Row& row, int robots) {
   m.queue = QueueEffectOfChannel(channel);
   m.counted_bytes = row.Number<std::int64_t>(kWireBytes);
   m.dropped = row.Number<int>(kDropped) != 0;
-  if (row.Has(kHops)) m.hops = row.Count(kHops);
+  if (row.Has(kHops)) m.hops = row.Hops(kHops, m.delivered_ns >= 0, network.max_hops, network.why);
   return m;
 }
 
@@ -148,6 +191,7 @@ using RunId = std::tuple<int, int, int>;  // robots, run, network variant
 struct Scan {
   std::optional<RunId> chosen;
   ReplayRun run;
+  NetworkTraits network;
   std::vector<std::string> order;                      // strategies, first appearance
   std::map<std::string, std::vector<Message>> by_strategy;
   std::map<std::string, std::string> last_channel;     // shared medium: the previous copy's channel
@@ -165,21 +209,23 @@ void Take(Scan& scan, const Row& row, const RunId& id) {
     scan.chosen = id;
     std::tie(scan.run.robots, scan.run.run, scan.run.network_variant) = id;
     scan.run.network_model = row.Text(kModel);
-    scan.run.bandwidth_bps = row.Number<double>(kBandwidth);
-    scan.run.latency_ms = row.Number<double>(kLatency);
+    scan.run.bandwidth_bps = row.NumberOrNotApplicable(kBandwidth);
+    scan.run.latency_ms = row.NumberOrNotApplicable(kLatency);
     scan.run.loss = row.Text(kLoss);
     if (row.Has(kNetworkName)) scan.run.network_name = row.Text(kNetworkName);
     scan.run.radio_range_m = RadioRangeMetres(scan.run.network_name);
+    scan.network = TraitsOf(scan.run, row.Has(kNetworkName));
   }
   if (id != *scan.chosen) return;
   const std::string strategy(row.Text(kStrategy));
   auto [it, added] = scan.by_strategy.try_emplace(strategy);
   if (added) scan.order.push_back(strategy);
-  Message m = MessageOf(row, std::get<0>(id));
-  // A shared-medium broadcast is one transmission: its copies follow each other in the file.
+  Message m = MessageOf(row, std::get<0>(id), scan.network);
+  // A broadcast on a medium that one transmission crosses (runs.csv's wire_bytes counts it once,
+  // docs/design.md section 4): its copies follow each other in the file.
   std::string& last = scan.last_channel[strategy];
   const std::string channel(row.Text(kChannel));
-  if (scan.run.network_model == "shared_medium" && !it->second.empty() && last == channel &&
+  if (scan.network.one_transmission && !it->second.empty() && last == channel &&
       it->second.back().src == m.src && it->second.back().sent_ns == m.sent_ns) {
     m.counted_bytes = 0;
   }

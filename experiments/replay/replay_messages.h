@@ -29,11 +29,14 @@ struct Message {
   int dst = 0;
   MessageRole role = MessageRole::kOther;
   QueueEffect queue = QueueEffect::kNone;
-  // The bytes this copy added to what was sent: its wire bytes, except on a shared medium,
-  // where one transmission reaches every receiver and only the first copy counts.
+  // The bytes this copy added to what was sent: its wire bytes, except where one transmission
+  // reaches every receiver (shared_medium, csma, wifi, a radio without relays): there only a
+  // broadcast's first copy counts, as runs.csv's wire_bytes counts it.
   std::int64_t counted_bytes = 0;
   bool dropped = false;
-  int hops = 1;  // transmissions it took (messages.csv `hops`, written with a radio; else 1)
+  // Transmissions it took (messages.csv `hops`, written with a radio; else 1): 0 to 1 without
+  // relays, up to Network::kMaxHops (64) with them; at least 1 when delivered.
+  int hops = 1;
 };
 
 struct StrategyMessages {
@@ -45,9 +48,9 @@ struct ReplayRun {
   int robots = 0;
   int run = 0;
   int network_variant = 0;
-  std::string network_model;  // point_to_point | shared_medium | ideal | radio
-  double bandwidth_bps = 0;
-  double latency_ms = 0;
+  std::string network_model;  // point_to_point | shared_medium | ideal | radio | csma | wifi
+  double bandwidth_bps = 0;   // NaN: not applicable (ideal)
+  double latency_ms = 0;      // NaN: not applicable (ideal; wifi, whose air delay is the propagation's)
   std::string loss;
   std::string network_name;   // as messages.csv names it ("radio 10 Mbit/s 2 ms range 200m shortest_path")
   double radio_range_m = 0;   // a `range` radio's range, read from the name; 0: none to draw
@@ -56,7 +59,8 @@ struct ReplayRun {
 
 // Reads `messages_csv` and keeps the rows of the selected run (protocol sim). Throws
 // std::runtime_error, one line naming the file, when it is missing, malformed, has no sim
-// messages, or none of the selection (listing what it has).
+// messages, or none of the selection (listing what it has); and naming the line and column, for
+// a row of the selected run whose robot is outside the team or whose hops no network can give.
 ReplayRun ReadReplayRun(const std::filesystem::path& messages_csv, const Selection& selection);
 
 }  // namespace dvpr::replay

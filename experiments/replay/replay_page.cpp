@@ -149,7 +149,9 @@ std::string NetworkName(const ReplayRun& run) {
   std::string model = run.network_model;
   if (model == "point_to_point") model = "point-to-point";
   if (model == "shared_medium") model = "shared medium";
-  std::string name = model + ", " + Rate(run.bandwidth_bps) + ", " + FormatDouble(run.latency_ms) + " ms";
+  std::string name = model;  // ideal has no rate and no latency, wifi no latency (empty in messages.csv)
+  if (!std::isnan(run.bandwidth_bps)) name += ", " + Rate(run.bandwidth_bps);
+  if (!std::isnan(run.latency_ms)) name += ", " + FormatDouble(run.latency_ms) + " ms";
   if (!run.loss.empty() && run.loss != "none") name += ", loss: " + run.loss;
   // A radio's propagation and routing end its name ("radio 10 Mbit/s 2 ms range 200m link_state").
   if (run.network_model == "radio") {

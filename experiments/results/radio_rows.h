@@ -23,7 +23,7 @@ struct RadioRow {
   std::int64_t max_hops = 0;
   std::int64_t relay_transmissions = 0;   // all robots' transmissions of others' messages
   std::int64_t relay_bytes = 0;           // and their frame bytes
-  std::int64_t held_copies = 0;           // copies a robot held for want of a route (store-and-forward)
+  std::int64_t held_copies = 0;           // copies held for want of a route (store-and-forward), each once
   std::int64_t routing_transmissions = 0; // all robots' routing beacons (link_state), sent and forwarded
   std::int64_t routing_bytes = 0;         // and their frame bytes
   std::array<std::int64_t, kRadioDropReasons.size()> dropped{};  // copies lost, by kRadioDropReasons

@@ -13,7 +13,7 @@ NetworkVariant MakeVariant(int index, const NetworkConfig& n, LinkModelKind mode
   NetworkVariant v;
   v.index = index;
   v.params = NetworkModelParams{.model = model, .bandwidth = rate, .latency = latency, .queue_packets = queue,
-                                .wire = WireParams{.mtu = mtu}, .loss = n.loss, .links = n.links, .radio = radio,
+                                .wire = WireParams{.mtu = mtu, .trailer = Bytes(wire::kTeamTrailer)}, .loss = n.loss, .links = n.links, .radio = radio,
                                 .wifi = n.wifi, .wifi_radio = n.wifi_radio, .routing = routing.kind, .link_state = routing.link_state,
                                 .disconnected = n.disconnected};
   v.label.variant = index;

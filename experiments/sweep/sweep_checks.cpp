@@ -226,8 +226,7 @@ void CheckSweepInputs(const SharedInputs& inputs, const std::string& origin, boo
   if (inputs.config == nullptr) throw std::invalid_argument("CheckSweepInputs: the shared inputs have no config");
   // First: the other checks list the network variants, which a hostile config makes too many.
   if (!allow_large) {
-    CheckSweepSize(EstimateSweepSize(*inputs.config, inputs.deployment.size(), inputs.deployment.dim()),
-                   SweepMachine::ThisOne(threads), origin);
+    CheckSweepSize(EstimateSweepSize(*inputs.config, inputs.deployment), SweepMachine::ThisOne(threads), origin);
   }
   CheckBowProtocols(*inputs.config, origin);
   CheckNetworks(*inputs.config, origin);

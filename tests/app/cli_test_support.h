@@ -37,6 +37,13 @@ class CliTest : public ::testing::Test {
     std::ofstream(Config()) << yaml;
     return Dvpr("run '" + Config().string() + "' --quiet --out '" + Out().string() + "' " + extra);
   }
+  // A team secret for `dvpr agent` (docs/security.md): 64 hexadecimal digits, mode 0600.
+  path Secret() {
+    const path p = dir_ / "team.secret";
+    std::ofstream(p) << std::string(64, 'a') << "\n";
+    std::filesystem::permissions(p, std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
+    return p;
+  }
   // Runs dvpr with `args` split into words as a shell would split them, but only at spaces and
   // with '...' quoting (nothing is expanded, nothing else is special): no shell runs.
   Result Dvpr(const std::string& args) {

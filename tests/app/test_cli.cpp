@@ -132,7 +132,8 @@ TEST_F(CliTest, AgentRefusesAStrategyItCannotRunInsteadOfRunningAnother) {
   const std::string config = std::string(DVPR_SOURCE_DIR) + "/experiments/configs/paper_kitti00.yaml";
   const Result r = Dvpr("agent --config '" + config +
                         "' --robot 0 --robots 2 --strategy recluster_c4_p50 --set dataset.frames=300"
-                        " --set training.synthetic.samples=2000 --out '" + (dir_ / "agent.log").string() + "'");
+                        " --set training.synthetic.samples=2000 --out '" + (dir_ / "agent.log").string() + "'" +
+                        " --team-secret '" + Secret().string() + "'");
   EXPECT_NE(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("--strategy: 'recluster_c4_p50' re-clusters during the run"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "agent.log"));
@@ -141,7 +142,7 @@ TEST_F(CliTest, AgentRefusesAStrategyItCannotRunInsteadOfRunningAnother) {
 TEST_F(CliTest, AgentRefusesAMalformedStrategyName) {
   const std::string config = std::string(DVPR_SOURCE_DIR) + "/experiments/configs/paper_kitti00.yaml";
   const Result r = Dvpr("agent --config '" + config + "' --robot 0 --robots 2 --strategy lpt_c04 --out '" +
-                        (dir_ / "agent.log").string() + "'");
+                        (dir_ / "agent.log").string() + "' --team-secret '" + Secret().string() + "'");
   EXPECT_NE(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("--strategy: 'lpt_c04' is not a strategy: C must be written c4"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "agent.log"));

@@ -1,7 +1,11 @@
 // The edges of the config: every numeric key's range (one value inside and one outside each
-// bound), quantities too large to parse, duplicate keys, a second YAML document, a directory.
+// bound), quantities too large to parse or that round to 0, duplicate keys, a second YAML
+// document, a directory, a file key naming something that is not a regular file.
 // Every expected line is worked out by hand from docs/config.md.
+#include <sys/stat.h>
+
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -142,7 +146,65 @@ TEST(ConfigLimits, AFolderGivenAsAFileIsNamedAsOne) {
   const fs::path dir = fs::path(DVPR_TEST_TMP) / "config_limits_poses_dir";
   fs::create_directories(dir);
   EXPECT_EQ(ErrorOfSet("dataset.poses=" + dir.string()),
-            "test.yaml: dataset.poses: '" + dir.string() + "' is a directory, expected a file");
+            "test.yaml: dataset.poses: '" + dir.string() + "' is a folder, not a regular file");
+}
+
+// Issue 53: a FIFO, a device and a loop of symbolic links given as a file were "file not found";
+// each is named as what it is under its key, found by stat (the FIFO is never opened: no hang).
+// A symbolic link to a regular file is that file.
+TEST(ConfigLimits, AFifoADeviceOrALoopOfLinksGivenAsAFileIsNamed) {
+  const fs::path dir = fs::path(DVPR_TEST_TMP) / "config_limits_not_regular";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  ASSERT_EQ(mkfifo((dir / "fifo").c_str(), 0600), 0);
+  fs::create_symlink(dir / "loop_b", dir / "loop_a");
+  fs::create_symlink(dir / "loop_a", dir / "loop_b");
+  const std::string poses = (dir / "poses.txt").string();
+  std::ofstream(poses) << "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 1 0 1 0 0 0 0 1 0\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {(dir / "fifo").string(), "is a FIFO, not a regular file"},
+      {"/dev/zero", "is a device, not a regular file"},
+      {(dir / "loop_a").string(), "is a loop of symbolic links"}};
+  for (const auto& [path, problem] : cases) {
+    EXPECT_EQ(ErrorOf("dataset: {trajectories: [{poses: " + path + ", format: tum}]}\n"),
+              "test.yaml: dataset.trajectories[0].poses: '" + path + "' " + problem);
+    EXPECT_EQ(ErrorOf("dataset: {trajectories: [{poses: " + poses + ", format: kitti, times: " + path + "}]}\n"),
+              "test.yaml: dataset.trajectories[0].times: '" + path + "' " + problem);
+    EXPECT_EQ(ErrorOfSet("dataset.poses=" + path), "test.yaml: dataset.poses: '" + path + "' " + problem);
+  }
+  // A centroid file of the pattern, for the team of 2 in run 0.
+  ASSERT_EQ(mkfifo((dir / "c_n2_r0.npy").c_str(), 0600), 0);
+  EXPECT_EQ(ErrorOf("robots: [2]\nruns: 1\ntraining: {centroids: '" + (dir / "c_n{robots}_r{run}.npy").string() + "'}\n"),
+            "test.yaml: training.centroids: '" + (dir / "c_n2_r0.npy").string() +
+                "' is a FIFO, not a regular file (robots 2, run 0)");
+  fs::create_symlink(poses, dir / "link.txt");
+  EXPECT_EQ(ErrorOfSet("dataset.poses=" + (dir / "link.txt").string()), "(no error)");
+}
+
+// Issue 53: a length or duration that is not 0 but rounds to 0 at the parser's resolution (1 mm,
+// 1 ns) was "must be in (0m, ...], got 0.4mm", a range that contains it; it says what happened.
+TEST(ConfigLimits, AQuantityThatRoundsTo0SaysSoAndNamesTheResolution) {
+  EXPECT_EQ(ErrorOf("network: {model: radio, radio: {range: 0.4mm}}\n"),
+            "test.yaml: network.radio.range: 0.4mm rounds to 0 at the resolution of lengths (1mm), below the smallest "
+            "allowed value 1mm");
+  EXPECT_EQ(ErrorOf("network: {model: radio, radio: {range: [100m, 0.0004m]}}\n"),
+            "test.yaml: network.radio.range[1]: 0.0004m rounds to 0 at the resolution of lengths (1mm), below the "
+            "smallest allowed value 1mm");
+  EXPECT_EQ(ErrorOf("network: {model: radio, disconnected: {kind: store_and_forward, hold_time: 0.4ns}}\n"),
+            "test.yaml: network.disconnected.hold_time: 0.4ns rounds to 0 at the resolution of durations (1ns), below "
+            "the smallest allowed value 1ns");
+  EXPECT_EQ(ErrorOf("network: {model: radio, radio: {propagation: log_distance, log_distance: {shadowing_window: "
+                    "0.0000000001s}}}\n"),
+            "test.yaml: network.radio.log_distance.shadowing_window: 0.0000000001s rounds to 0 at the resolution of "
+            "durations (1ns), below the smallest allowed value 1ms");
+  // Half a unit rounds up to one, which is allowed; 0 as written is still out of the range.
+  EXPECT_EQ(ErrorOf("network: {model: radio, radio: {range: 0.5mm}}\n"), "(no error)");
+  EXPECT_EQ(ErrorOf("network: {model: radio, radio: {range: 0m}}\n"),
+            "test.yaml: network.radio.range: must be in (0m, 1000000km], got 0m");
+  EXPECT_EQ(ErrorOf("network: {model: radio, disconnected: {kind: store_and_forward, hold_time: 0ns}}\n"),
+            "test.yaml: network.disconnected.hold_time: must be in [1ns, 100000h], got 0ns");
+  // Where 0 is allowed, a value that rounds to it is 0 (network.latency is in [0ns, 24h]).
+  EXPECT_EQ(ErrorOf("network: {latency: 0.4ns}\n"), "(no error)");
 }
 
 // A key without a value is an error, not its default (runs: would have run 10 runs).

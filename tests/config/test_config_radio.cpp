@@ -1,6 +1,8 @@
 // network.model radio and its network.radio section (docs/config.md): read (a `range` list is
 // one entry per range; tests/sweep expands them into network variants), written back only for
 // a radio config, and every bad value one error naming its key.
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -8,6 +10,7 @@
 
 #include "experiments/config/config.h"
 #include "tests/config/config_test_support.h"
+#include "tests/test_support.h"
 
 namespace dvpr {
 namespace {
@@ -180,6 +183,28 @@ TEST(ConfigRadioTest, BadDisconnectedValuesNameTheirKey) {
               "test.yaml: network.disconnected.ttl: unknown key");
   starts_with(ErrorOf("network: {model: radio, disconnected: [drop]}\n"),
               "test.yaml: network.disconnected: expected drop, or a map");
+}
+
+// Issue 53: with direct routing every copy goes straight to its destination (or is lost out of
+// range), so store-and-forward has nothing to hold - it would have dropped silently - except
+// what a sender sends outside its talk window. Refused without a network.schedule, naming both
+// keys; a routing list that relays, or talk windows, give it something to hold.
+TEST(ConfigRadioTest, StoreAndForwardWithDirectRoutingNeedsTalkWindows) {
+  const std::string refused =
+      "test.yaml: network.disconnected: store_and_forward holds nothing with network.routing: direct (every copy goes "
+      "straight to its destination, or is lost out of range): use shortest_path or link_state routing, or a "
+      "network.schedule, or drop";
+  EXPECT_EQ(ErrorOf("network: {model: radio, disconnected: store_and_forward}\n"), refused);  // direct: the default
+  EXPECT_EQ(ErrorOf("network: {model: radio, routing: direct, disconnected: {kind: store_and_forward, hold_time: 5s}}\n"),
+            refused);
+  EXPECT_EQ(ErrorOf("network: {model: radio, routing: [direct, link_state], disconnected: store_and_forward}\n"),
+            "(no error)");
+  const std::filesystem::path dir = testing_support::FreshTestDir("config_radio");
+  std::ofstream(dir / "windows.csv") << "robot,start_s,end_s\n1,1,2\n";
+  const ExperimentConfig c = Parse("network: {model: radio, disconnected: store_and_forward, schedule: " +
+                                   (dir / "windows.csv").string() + "}\n");
+  EXPECT_EQ(c.network.disconnected.kind, DisconnectedKind::kStoreAndForward);
+  EXPECT_EQ(c.network.windows.size(), 1u);
 }
 
 }  // namespace

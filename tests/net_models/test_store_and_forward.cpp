@@ -41,16 +41,33 @@ class ArrivingFourth final : public MobilityModel {
   SimTime arrives_;
 };
 
+// Robots 0..2 fixed on the line; robot 3 at 450 m in [0.3 s, 0.4 s) and from 0.6 s on, at
+// 1000 m otherwise: the route to it appears, goes while a copy is on its way, and comes back.
+class ComingAndGoingFourth final : public MobilityModel {
+ private:
+  int DoNodes() const override { return 4; }
+  Position DoPositionOf(NodeId node, SimTime at) const override {
+    if (node.value < 3) return Position{150.0 * node.value, 0, 0};
+    const bool near = (SimTime::Millis(300) <= at && at < SimTime::Millis(400)) || SimTime::Millis(600) <= at;
+    return Position{near ? 450.0 : 1000.0, 0, 0};
+  }
+  std::string_view DoName() const override { return "coming_and_going"; }
+};
+
 struct Team {
-  Team(SimTime arrives, DisconnectedParams disconnected) : net(sim, 4, Stack(arrives, disconnected)) {
+  Team(SimTime arrives, DisconnectedParams disconnected)
+      : Team(std::make_unique<ArrivingFourth>(arrives), SimTime::Millis(2), disconnected) {}
+  // latency: each hop's processing delay.
+  Team(std::unique_ptr<MobilityModel> mobility, SimTime latency, DisconnectedParams disconnected)
+      : net(sim, 4, Stack(std::move(mobility), latency, disconnected)) {
     channel = net.InternChannel("ALL");
     type = net.InternType("dvpr.test_t");
   }
-  static NetworkStack Stack(SimTime arrives, DisconnectedParams disconnected) {
+  static NetworkStack Stack(std::unique_ptr<MobilityModel> mobility, SimTime latency, DisconnectedParams disconnected) {
     NetworkStack s;
-    s.mobility = std::make_unique<ArrivingFourth>(arrives);
+    s.mobility = std::move(mobility);
     s.propagation = std::make_unique<RangePropagation>(*s.mobility, 200.0);
-    s.access = std::make_unique<RadioLink>(RadioLinkParams{DataRate::Mbps(1), SimTime::Millis(2), 100}, 4);
+    s.access = std::make_unique<RadioLink>(RadioLinkParams{DataRate::Mbps(1), latency, 100}, 4);
     s.routing = std::make_unique<ShortestPathRouting>(*s.propagation, 4);
     s.disconnected = disconnected;
     return s;
@@ -91,6 +108,25 @@ TEST(StoreAndForward, HeldUntilTheFirstRetryAfterTheRouteAppears) {
   EXPECT_EQ(t.net.Routes().dropped, (std::array<std::uint64_t, kDropReasons>{}));
 }
 
+TEST(StoreAndForward, ACopyHeldAtTwoRobotsThroughSeveralRetriesCountsOnce) {
+  // 60 ms of processing per hop: one hop takes 4 376 000 + 60 000 000 + 500 = 64 376 500 ns, so
+  // a copy sent down the chain at a retry reaches robot 2 in the next 100 ms window. Robot 0
+  // holds its message from 0 s; the retries at 0.1 and 0.2 s find no route, the one at 0.3 s
+  // does (robot 3 is near in that window). The copy reaches robot 1 at 364 376 500 ns and
+  // robot 2 at 428 753 000 ns, in the window of 0.4 s, when robot 3 is far again: robot 2 holds
+  // it; its retry at 0.5 s finds no route, the one at 0.6 s sends it, delivered at
+  // 600 000 000 + 64 376 500 = 664 376 500 ns after 3 transmissions. One copy, held by two
+  // robots through three retries that kept it: held_copies 1 (it counted 2, once per robot).
+  Team t(std::make_unique<ComingAndGoingFourth>(), SimTime::Millis(60), StoreAndForward());
+  t.ToThree();
+  t.sim.Run();
+  EXPECT_EQ(t.log.lines, (std::vector<std::string>{"0>3 delivered at 664376500ns"}));
+  EXPECT_EQ(t.log.delivered_hops, (std::vector<int>{3}));
+  EXPECT_EQ(t.net.Routes().held, 1u);
+  EXPECT_EQ(t.net.Sender(NodeId(2)).relay_transmissions, 1u);  // robot 2 sent it on once, at 0.6 s
+  EXPECT_EQ(t.net.Routes().dropped, (std::array<std::uint64_t, kDropReasons>{}));
+}
+
 TEST(StoreAndForward, ARetryAtTheArrivalInstantSendsAtOnce) {
   // The graph of the window starting at 0.3 s already places robot 3 at 450 m.
   Team t(SimTime::Millis(300), StoreAndForward());
@@ -118,6 +154,23 @@ TEST(StoreAndForward, ACopyHeldHoldTimeExpiresAtThatRetry) {
   EXPECT_EQ(t.net.Counters(NodeId(0), NodeId(3)).dropped, 1u);
   EXPECT_EQ(t.log.senders, (std::vector<int>{0}));  // the send's report (0 bytes); the retries sent nothing
   EXPECT_EQ(t.net.Sender(NodeId(0)).medium_bytes, 0);  // nothing went on the air
+}
+
+TEST(StoreAndForward, NothingIsHeldOrRetriedPastTheHoldHorizon) {
+  // Robot 3 never comes; hold_time 100000 h, the horizon (the mission's end) at 0.25 s. The
+  // retries at 0.1 and 0.2 s keep the copy; the one at 0.3 s, past the horizon, finds no way and
+  // drops it as expired: the run ends there (it retried every 100 ms for 100000 h before). A
+  // message sent after the horizon is not held at all: no_route at once, as with drop.
+  Team t(SimTime::Max(), StoreAndForward(Bytes(10'000'000), SimTime::Seconds(360000000.0)));
+  t.net.SetHoldHorizon(SimTime::Millis(250));
+  t.ToThree();
+  t.sim.ScheduleAt(SimTime::Millis(320), [&] { t.ToThree(); });
+  t.sim.Run();
+  EXPECT_EQ(t.log.lines, (std::vector<std::string>{"0>3 at 300000000ns: expired", "0>3 at 320000000ns: no_route"}));
+  EXPECT_EQ(t.sim.Now(), SimTime::Millis(320));  // the last event: nothing scheduled after it
+  EXPECT_EQ(t.Dropped(DropReason::kExpired), 1u);
+  EXPECT_EQ(t.Dropped(DropReason::kNoRoute), 1u);
+  EXPECT_EQ(t.net.Routes().held, 1u);
 }
 
 TEST(StoreAndForward, TheBufferHoldsWhatFitsTheRestIsDroppedBufferFull) {

@@ -1,6 +1,9 @@
 // Reading messages.csv for a replay: which run is selected, what each row becomes, the errors.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
 #include "experiments/replay/replay_messages.h"
 #include "tests/replay/replay_test_support.h"
 
@@ -103,6 +106,95 @@ TEST_F(ReplayMessagesTest, ASharedMediumBroadcastCountsOnce) {
   std::vector<std::int64_t> counted;
   for (const Message& m : run.strategies.at(0).messages) counted.push_back(m.counted_bytes);
   EXPECT_EQ(counted, (std::vector<std::int64_t>{589, 0, 990, 589, 0, 589}));  // the last: another sender
+}
+
+// Issue 53: where one transmission reaches every robot (shared_medium, csma, wifi, a radio that
+// does not relay) runs.csv's wire_bytes counts a broadcast once, and so does the page. Robot 0
+// broadcasts a 589-byte query to robots 1, 2, 3 and, at the same instant, sends a 990-byte
+// verification request to robot 2; robot 2 replies with 95 bytes: three transmissions,
+// 589 + 990 + 95 = 1674 bytes (per copy, as point-to-point links carry them: 3 x 589 + 990 + 95
+// = 2852).
+TEST_F(ReplayMessagesTest, ABroadcastOnAMediumEveryoneHearsCountsOnceAsRunsCsvWireBytes) {
+  const std::string header =
+      "protocol,strategy,robots,run,sent_ns,delivered_ns,src,dst,channel,wire_bytes,dropped,network_variant,"
+      "network_model,bandwidth_bps,latency_ms,loss,network_name\n";
+  const auto total = [&](const std::string& model, const std::string& latency, const std::string& name) {
+    const std::string net = "," + model + ",1e+07," + latency + ",none," + name + "\n";
+    const auto f = Write(model + ".csv", header +
+        "sim,broadcast,4,0,0,10,0,1,DVPR_QUERY_ALL,589,0,0" + net +
+        "sim,broadcast,4,0,0,10,0,2,DVPR_QUERY_ALL,589,0,0" + net +
+        "sim,broadcast,4,0,0,,0,3,DVPR_QUERY_ALL,589,1,0" + net +
+        "sim,broadcast,4,0,0,20,0,2,DVPR_VREQ_2,990,0,0" + net +
+        "sim,broadcast,4,0,30,40,2,0,DVPR_MATCH_0,95,0,0" + net);
+    const ReplayRun run = ReadReplayRun(f, {});
+    std::int64_t sum = 0;
+    for (const Message& m : run.strategies.at(0).messages) sum += m.counted_bytes;
+    return sum;
+  };
+  EXPECT_EQ(total("shared_medium", "2", "shared medium 10 Mbit/s 2 ms"), 1674);
+  EXPECT_EQ(total("csma", "2", "csma 10 Mbit/s 2 ms"), 1674);
+  EXPECT_EQ(total("wifi", "", "wifi 10 Mbit/s"), 1674);
+  EXPECT_EQ(total("radio", "2", "radio 10 Mbit/s 2 ms range 200m"), 1674);  // direct: no relays
+  EXPECT_EQ(total("point_to_point", "2", "point-to-point 10 Mbit/s 2 ms"), 2852);
+}
+
+// Issue 53: wifi has no latency (its air delay is the propagation's) and ideal neither a rate:
+// their fields are empty, read as not applicable, not refused.
+TEST_F(ReplayMessagesTest, AWifiOrIdealRunHasNoLatencyToRead) {
+  const auto wifi = Write("wifi.csv", std::string(kHeader) +
+      "sim,broadcast,3,0,0,10,0,1,DVPR_QUERY_ALL,x,query_t,536,589,0,0,wifi,6e+06,,none,q\n");
+  const ReplayRun w = ReadReplayRun(wifi, {});
+  EXPECT_EQ(w.network_model, "wifi");
+  EXPECT_EQ(w.bandwidth_bps, 6e6);
+  EXPECT_TRUE(std::isnan(w.latency_ms));
+  const auto ideal = Write("ideal.csv", std::string(kHeader) +
+      "sim,broadcast,3,0,0,0,0,1,DVPR_QUERY_ALL,x,query_t,536,589,0,0,ideal,,,none,q\n");
+  const ReplayRun i = ReadReplayRun(ideal, {});
+  EXPECT_TRUE(std::isnan(i.bandwidth_bps));
+  EXPECT_TRUE(std::isnan(i.latency_ms));
+  const auto bad = Write("bad.csv", std::string(kHeader) +
+      "sim,broadcast,3,0,0,10,0,1,DVPR_QUERY_ALL,x,query_t,536,589,0,0,wifi,6e+06,soon,none,q\n");
+  EXPECT_EQ(ErrorOf([&] { ReadReplayRun(bad, {}); }), bad.string() + ": line 2: latency_ms: expected a number, got 'soon'");
+}
+
+// Issue 53: hops that no network gives are refused, naming file, line and column. Without relays
+// a copy makes one transmission (0 when lost before it); a delivered copy made at least one; a
+// relaying radio drops a copy at its 64th relay (hop_limit). More than robots - 1 hops is not
+// refused: relays may hand a copy back while the graph changes (docs/network_model.md).
+TEST_F(ReplayMessagesTest, HopsNoNetworkGivesAreRefused) {
+  const std::string header =
+      "protocol,strategy,robots,run,sent_ns,delivered_ns,src,dst,channel,wire_bytes,dropped,network_variant,"
+      "network_model,bandwidth_bps,latency_ms,loss,network_name,hops\n";
+  // network_variant to hops of a radio with relays; a row puts its dropped field before it.
+  const std::string relaying = ",0,radio,1e+07,2,none,radio 10 Mbit/s 2 ms range 200m shortest_path,";
+  const auto error = [&](const std::string& name, const std::string& rows) {
+    const auto f = Write(name, header + rows);
+    const std::string e = ErrorOf([&] { ReadReplayRun(f, {}); });
+    return e.rfind(f.string() + ": ", 0) == 0 ? e.substr(f.string().size() + 2) : e;
+  };
+  EXPECT_EQ(error("p2p.csv",
+                  "sim,broadcast,3,0,0,10,0,1,DVPR_QUERY_ALL,589,0,0,point_to_point,1e+07,2,none,p2p,1\n"
+                  "sim,broadcast,3,0,0,10,0,2,DVPR_QUERY_ALL,589,0,0,point_to_point,1e+07,2,none,p2p,2\n"),
+            "line 3: hops: expected at most 1 (one transmission: network point_to_point has no relays), got 2");
+  EXPECT_EQ(error("direct.csv",
+                  "sim,broadcast,3,0,0,10,0,1,DVPR_QUERY_ALL,589,0,0,radio,1e+07,2,none,radio 10 Mbit/s 2 ms range 200m,2\n"),
+            "line 2: hops: expected at most 1 (one transmission: network radio has no relays), got 2");
+  EXPECT_EQ(error("pair.csv", "sim,broadcast,2,0,0,10,0,1,DVPR_QUERY_ALL,589,0" + relaying + "2\n"),
+            "line 2: hops: expected at most 1 (one transmission: a team of 2 has no robot to relay), got 2");
+  EXPECT_EQ(error("limit.csv", "sim,broadcast,3,0,0,,0,1,DVPR_QUERY_ALL,589,1" + relaying + "65\n"),
+            "line 2: hops: expected at most 64 (a relay drops a copy after 64 transmissions, hop_limit), got 65");
+  EXPECT_EQ(error("zero.csv", "sim,broadcast,3,0,0,10,0,1,DVPR_QUERY_ALL,589,0" + relaying + "0\n"),
+            "line 2: hops: expected at least 1 for a delivered copy, got 0");
+  // What a relaying team of 3 can give: 64 hops (dropped hop_limit), 3 (handed back once), 0 (lost
+  // before its first transmission).
+  const auto fine = Write("fine.csv", header +
+      "sim,broadcast,3,0,0,,0,1,DVPR_QUERY_ALL,589,1" + relaying + "64\n"
+      "sim,broadcast,3,0,0,10,0,2,DVPR_QUERY_ALL,589,0" + relaying + "3\n"
+      "sim,broadcast,3,0,5,,0,1,DVPR_QUERY_ALL,589,1" + relaying + "0\n");
+  const ReplayRun run = ReadReplayRun(fine, {});
+  std::vector<int> hops;
+  for (const Message& m : run.strategies.at(0).messages) hops.push_back(m.hops);
+  EXPECT_EQ(hops, (std::vector<int>{64, 3, 0}));
 }
 
 // A radio sweep's messages.csv ends with hops; its network_name carries the range, which the page

@@ -1,4 +1,5 @@
 // The page's data, worked out by hand for a tiny run, and the page being self-contained.
+#include <limits>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -101,6 +102,13 @@ TEST(ReplayPageTest, NetworkNames) {
   run.bandwidth_bps = 2500;
   run.loss = "none";
   EXPECT_EQ(NetworkName(run), "ideal, 2.5 kbit/s, 0.5 ms");
+  // Not applicable (empty in messages.csv, NaN here): ideal has neither, wifi no latency.
+  run.bandwidth_bps = std::numeric_limits<double>::quiet_NaN();
+  run.latency_ms = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(NetworkName(run), "ideal");
+  run.network_model = "wifi";
+  run.bandwidth_bps = 6e6;
+  EXPECT_EQ(NetworkName(run), "wifi, 6 Mbit/s");
 }
 
 // Opened without a network: nothing fetched (no URL, no src=, no import), the data inside.

@@ -71,6 +71,22 @@ TEST_F(ReplayTracksTest, WritesOnePageOrNothing) {
   }
 }
 
+// Issue 53: a wifi result folder was refused (its latency_ms is empty: wifi has none); it is
+// replayed, named without a latency.
+TEST_F(ReplayTracksTest, AWifiFolderIsReplayed) {
+  WriteInputs();
+  Write("messages.csv", std::string(kHeader) +
+      "sim,decentralized,2,0,0,2000,0,1,DVPR_QUERY_1,x,query_t,536,587,0,0,wifi,6e+06,,none,q\n"
+      "sim,broadcast,2,0,0,2000,1,0,DVPR_QUERY_ALL,x,query_t,536,589,0,0,wifi,6e+06,,none,q\n");
+  ReplayOptions o;
+  o.dir = dir_;
+  std::ostringstream out;
+  const std::filesystem::path page = WriteReplay(o, out);
+  EXPECT_TRUE(std::filesystem::is_regular_file(page));
+  EXPECT_EQ(out.str().rfind("replay of tiny: 2 robots, run 0, network 0 (wifi, 6 Mbit/s), decentralized vs broadcast, "
+                            "2 messages: " + page.string(), 0), 0u) << out.str();
+}
+
 TEST_F(ReplayTracksTest, FoldersThatCannotBeReplayed) {
   ReplayOptions o;
   o.dir = dir_ / "absent";

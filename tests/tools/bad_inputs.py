@@ -41,6 +41,7 @@ import json
 import os
 import re
 import shutil
+import stat
 import signal
 import subprocess
 import sys
@@ -89,6 +90,10 @@ def snapshot(root):
         for name in filenames:
             p = Path(dirpath) / name
             try:
+                # Only regular files are read: a case's FIFO would block the read for ever.
+                if not stat.S_ISREG(os.stat(p).st_mode):
+                    snap[str(rel / name)] = "special"
+                    continue
                 snap[str(rel / name)] = hashlib.sha256(p.read_bytes()).hexdigest()
             except OSError:
                 snap[str(rel / name)] = "?"

@@ -90,12 +90,13 @@ void ReadQuery(Fields& f, AgentLog& log) {
 
 void WriteAgentLog(const std::filesystem::path& path, const AgentLog& l) {
   std::ostringstream o;
-  o << "# dvpr agent log, format 3 (experiments/protocols/lcm/agent_log.h)\n";
+  o << "# dvpr agent log, format 4 (experiments/protocols/lcm/agent_log.h)\n";
   o << "agent," << l.robot << ',' << l.robots << ',' << l.run << ',' << l.strategy << ',' << FormatDouble(l.speedup)
     << ',' << l.start_utime << ',' << l.end_ns << ',' << l.end_reason << ',' << l.published << ','
     << l.published_bytes << ',' << l.publish_failures << ',' << l.received << ',' << l.malformed << ','
     << l.foreign << ',' << l.medium_wire_bytes << ',' << l.datagrams << ',' << l.malformed_datagrams << ','
-    << l.duplicates << ',' << l.incomplete_messages << ',' << l.kernel_dropped << ',' << l.out_of_range << '\n';
+    << l.duplicates << ',' << l.incomplete_messages << ',' << l.kernel_dropped << ',' << l.out_of_range << ','
+    << l.unauthenticated << ',' << l.held_dropped << ',' << l.held_bytes_peak << '\n';
   const RobotLoad& d = l.load;
   o << "load," << d.searches << ',' << d.remote_queries << ',' << d.comparisons << ',' << d.stored << ','
     << d.verifications << ',' << d.busy.ns() << ',' << d.max_queue << '\n';
@@ -127,7 +128,7 @@ AgentLog ReadAgentLog(const std::filesystem::path& path) {
     std::vector<std::string> cells = SplitCsv(line);
     const std::string kind = cells.at(0);
     if (kind == "agent") {
-      Fields f(std::move(cells), 22, where);
+      Fields f(std::move(cells), 25, where);
       l.robot = f.Next<int>();
       l.robots = f.Next<int>();
       l.run = f.Next<int>();
@@ -149,6 +150,9 @@ AgentLog ReadAgentLog(const std::filesystem::path& path) {
       l.incomplete_messages = f.Next<std::uint64_t>();
       l.kernel_dropped = f.Next<std::uint64_t>();
       l.out_of_range = f.Next<std::uint64_t>();
+      l.unauthenticated = f.Next<std::uint64_t>();
+      l.held_dropped = f.Next<std::uint64_t>();
+      l.held_bytes_peak = f.Next<std::uint64_t>();
       have_agent = true;
     } else if (!have_agent) {
       throw std::runtime_error(where + ": the first record must be 'agent'");

@@ -6,7 +6,8 @@
 //
 //   agent,robot,robots,run,strategy,speedup,start_utime,end_ns,end_reason,
 //         published,published_bytes,publish_failures,received,malformed,foreign,medium_wire_bytes,
-//         datagrams,malformed_datagrams,duplicates,incomplete_messages,kernel_dropped,out_of_range
+//         datagrams,malformed_datagrams,duplicates,incomplete_messages,kernel_dropped,out_of_range,
+//         unauthenticated,held_dropped,held_bytes_peak
 //   load,searches,remote_queries,comparisons,stored,verifications,busy_ns,max_queue
 //   sent,dst,messages,payload_bytes,wire_bytes        one line per destination robot
 //   recv,src,messages                                 one line per source robot
@@ -23,7 +24,8 @@
 //
 // What the network brought (LcmTransport, agents/udpm/): datagrams read from the group, of
 // which malformed (not LCM, cut, fragments that do not fit their message: dropped) and
-// duplicates (a sender's message or fragment already taken: dropped); partial messages
+// duplicates (a fragment already held, or an authenticated sender's message already taken:
+// dropped); partial messages
 // dropped unfinished; datagrams the kernel dropped because the receive buffer was full. Of the
 // messages on the agent's channels, malformed did not decode and foreign came from outside the
 // team (another team's heartbeats, robots or frames out of range, a sender that is not the
@@ -68,6 +70,10 @@ struct AgentLog {
   std::uint64_t kernel_dropped = 0;       // lost to a full receive buffer (SO_RXQ_OVFL)
   std::uint64_t out_of_range = 0;         // a radio config: teammates' messages (heartbeats too) from
                                           // robots out of range at agent time (emulated_range.h): dropped
+  std::uint64_t unauthenticated = 0;      // messages on its channels whose tag did not verify (not sent
+                                          // with the team's secret, or changed): dropped unread
+  std::uint64_t held_dropped = 0;         // teammates' messages past --hold-bytes while it waited: dropped
+  std::uint64_t held_bytes_peak = 0;      // the most bytes it held at once while it waited
   RobotLoad load;
   std::vector<AgentLinkCount> sent;            // per destination robot
   std::vector<std::int64_t> received_from;     // per source robot (own echoes excluded)

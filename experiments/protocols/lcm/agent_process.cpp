@@ -13,6 +13,8 @@
 #include <stdexcept>
 
 #include "agents/algorithms/ids.h"
+#include "agents/auth/message_auth.h"
+#include "agents/auth/team_secret.h"
 #include "agents/bow_robot_agent.h"
 #include "agents/messages/channels.h"
 #include "agents/lcm/lcm_transport.h"
@@ -45,7 +47,22 @@ void AgentProcessOptions::Validate() const {
   CheckSpeedup(speedup);
   CheckWallSeconds("--grace", grace_s, 0, false);
   CheckWallSeconds("--barrier-timeout", barrier_timeout_s, 0, true);
+  if (team_secret.empty()) {
+    fail("--team-secret is required: a file with the team's secret, 64 hexadecimal digits readable by its owner "
+         "only (dvpr launch makes one for each launch; docs/security.md)");
+  }
+  CheckHoldBytes(hold_bytes);
 }
+
+void CheckHoldBytes(std::int64_t bytes) {
+  if (bytes < kMinHoldBytes || bytes > kMaxHoldBytes) {
+    throw std::invalid_argument("--hold-bytes must be a number of bytes in [" + std::to_string(kMinHoldBytes) + ", " +
+                                std::to_string(kMaxHoldBytes) + "], got " + std::to_string(bytes));
+  }
+}
+
+static_assert(wire::kTeamTrailer == static_cast<std::int64_t>(auth::kTrailerBytes),
+              "the wire model's team trailer is the authentication trailer");
 
 namespace {
 
@@ -129,6 +146,8 @@ AgentProcessOptions ParseAgentArgs(const std::vector<std::string>& args) {
     else if (f == "--strategy") o.strategy = in.Text();
     else if (f == "--lcm") o.lcm_url = in.Text();
     else if (f == "--team-nonce") o.team_nonce = ParseTeamNonce(in.Text());
+    else if (f == "--team-secret") o.team_secret = in.Text();
+    else if (f == "--hold-bytes") o.hold_bytes = in.Int64();
     else if (f == "--speedup") o.speedup = in.Double();
     else if (f == "--out") o.out = in.Text();
     else if (f == "--grace") o.grace_s = in.Double();
@@ -297,9 +316,16 @@ struct TrafficCounters {
   // now: the agent time it arrives at (the emulated radio's question).
   bool OnReceive(const std::string& channel, std::span<const std::uint8_t> bytes, std::uint64_t sender,
                  TeamSync& sync, SimTime now) {
+    // The robot whose secret-holding process sent it (every message here has a verified tag);
+    // -1 for a transport that does not authenticate.
+    const int authenticated = auth::RobotOfSender(sender);
     if (channel == channels::kStatus) {
       const auto s = Decode<agent_status_t>(bytes);
       if (!s) return true;  // one that does not decode: the handler counts it
+      if (authenticated >= 0 && s->robot != authenticated) {  // a teammate speaking for another robot
+        ++foreign;
+        return false;
+      }
       // A teammate's heartbeat out of range is not heard either (failover then notices).
       if (s->robot >= 0 && s->robot < static_cast<int>(received_from.size()) && sync.FromMember(RobotId(s->robot), sender) &&
           OutOfRange(s->robot, now)) {
@@ -309,7 +335,7 @@ struct TrafficCounters {
     }
     const auto src = SourceOf(channel, bytes, static_cast<int>(received_from.size()), frames);
     if (!src) return true;  // let the handler's decoder count it as malformed
-    if (*src < 0 || !sync.FromMember(RobotId(*src), sender)) {
+    if (*src < 0 || (authenticated >= 0 && *src != authenticated) || !sync.FromMember(RobotId(*src), sender)) {
       ++foreign;
       return false;
     }
@@ -416,7 +442,11 @@ AgentLog MakeLog(const AgentProcessOptions& o, const Team& t, const TeamAgent& a
   const udpm::Counts& datagrams = transport.ReceiveCounts();
   l.datagrams = datagrams.datagrams;
   l.malformed_datagrams = datagrams.malformed;
-  l.duplicates = datagrams.duplicates;
+  const LcmTransport::AuthCounts& tags = transport.auth_counts();
+  l.duplicates = datagrams.duplicates + tags.replayed;
+  l.unauthenticated = tags.unauthenticated;
+  l.held_dropped = tags.held_dropped;
+  l.held_bytes_peak = tags.held_bytes_peak;
   l.incomplete_messages = datagrams.incomplete;
   l.kernel_dropped = transport.KernelDropped();
   l.foreign = sync.foreign() + traffic.foreign;
@@ -481,18 +511,21 @@ void CheckLogFolder(const std::filesystem::path& log) {
 }
 
 // What reassembling may hold: the team's largest message is a verification request (its
-// payload is verification.request_bytes) or a query, far below LCM's 2^28 bytes.
+// payload is verification.request_bytes) or a query, far below LCM's 2^28 bytes. A message may
+// be no larger (with its trailer), and unfinished messages hold at most twice that and 16 MiB:
+// all that a flood of fragments from anyone on the group can make an agent keep
+// (docs/security.md, "Memory").
 udpm::Limits ReceiveLimits(const ExperimentConfig& c) {
   constexpr std::int64_t kHeaders = 1 << 20;  // a query's descriptor (32767 floats) and any header
   const std::int64_t largest = c.agent.verification.request_bytes.value() + kHeaders;
-  if (largest > std::int64_t{udpm::kMaxMessageBytes}) {
+  if (largest + wire::kTeamTrailer > std::int64_t{udpm::kMaxMessageBytes}) {
     throw std::invalid_argument("verification.request_bytes: " +
                                 std::to_string(c.agent.verification.request_bytes.value()) +
                                 " bytes do not fit one LCM message (at most 2^28 = 268435456 bytes with headers)");
   }
   udpm::Limits limits;
-  limits.max_message_bytes = std::max(limits.max_message_bytes, static_cast<std::uint32_t>(largest));
-  limits.max_partial_bytes = std::max(limits.max_partial_bytes, 2 * std::size_t{limits.max_message_bytes} + (16u << 20));
+  limits.max_message_bytes = static_cast<std::uint32_t>(largest + wire::kTeamTrailer);
+  limits.max_partial_bytes = 2 * std::size_t{limits.max_message_bytes} + (16u << 20);
   return limits;
 }
 
@@ -508,8 +541,10 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
                                             std::to_string(o.run) + "_robot" + std::to_string(o.robot) + ".log")
                     : o.out;
   CheckLogFolder(path);
+  const auth::Secret secret = auth::ReadSecretFile(o.team_secret);
   // LCM next: an agent that cannot talk fails at once, before minutes of loading and k-means.
   LcmTransport transport(o.lcm_url, o.speedup, ReceiveLimits(config));
+  transport.Authenticate(auth::MessageAuth(secret, o.robot));
   const Team t = LoadTeam(o, std::move(config));
   const Dataset& data = t.inputs.deployment;
   const SequenceSplit split = TeamSplit(data, t.robots);
@@ -518,6 +553,7 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
                           std::vector<std::int64_t>(static_cast<std::size_t>(t.robots), 0), 0,
                           static_cast<int>(data.size()), 0};
   traffic.wire.mtu = t.config.network.mtu.front();
+  traffic.wire.trailer = Bytes(wire::kTeamTrailer);
   transport.SetPublishObserver([&](const std::string& c, std::span<const std::uint8_t> b) { traffic.OnPublish(c, b.size()); });
   std::optional<EmulatedRange> radio;
   const auto& models = t.config.network.model;
@@ -543,7 +579,7 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   };
 
   // What teammates that leave the barrier first send us is kept until agent.Start() subscribes.
-  transport.HoldUntilSubscribed(agent.Inbox());
+  transport.HoldUntilSubscribed(agent.Inbox(), static_cast<std::size_t>(o.hold_bytes));
   // Start barrier: announce READY until every robot of the team is heard.
   const auto barrier_end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.barrier_timeout_s));
   std::optional<std::int64_t> start;
@@ -583,7 +619,8 @@ int RunAgentProcess(const AgentProcessOptions& o, std::ostream& out) {
   const auto complete = std::count_if(log.queries.begin(), log.queries.end(), [](const QueryRecord& q) { return q.Complete(); });
   out << "robot " << o.robot << ": " << log.queries.size() << " queries, " << complete << " with every reply, "
       << log.malformed_datagrams << " malformed datagrams, " << log.malformed << " malformed messages, "
-      << log.foreign << " foreign, " << log.out_of_range << " out of range, " << log.duplicates << " duplicates, "
+      << log.foreign << " foreign, " << log.unauthenticated << " unauthenticated, " << log.out_of_range
+      << " out of range, " << log.duplicates << " duplicates, " << log.held_dropped << " dropped past --hold-bytes, "
       << log.kernel_dropped
       << " dropped by a full receive buffer, end: " << end_reason << ", log " << path.string() << "\n";
   return 0;

@@ -28,6 +28,12 @@ inline constexpr const char* kDefaultLcmUrl = "udpm://239.255.76.67:7667?ttl=0";
 // clock (the agents never finished).
 inline constexpr double kMaxSpeedup = 1e4;
 inline constexpr double kMaxWallSeconds = 1e5;
+// --hold-bytes of `dvpr agent` and `dvpr launch`: its default and bounds.
+inline constexpr std::int64_t kDefaultHoldBytes = std::int64_t{16} << 20;
+inline constexpr std::int64_t kMinHoldBytes = std::int64_t{64} << 10;
+inline constexpr std::int64_t kMaxHoldBytes = std::int64_t{1} << 30;
+// Throws std::invalid_argument naming --hold-bytes unless it is within those bounds.
+void CheckHoldBytes(std::int64_t bytes);
 
 // Throws std::invalid_argument naming the flag unless 0 < speedup <= kMaxSpeedup.
 void CheckSpeedup(double speedup);
@@ -54,6 +60,14 @@ struct AgentProcessOptions {
   // config on the same URL. `dvpr launch` draws one per launch; 0 (the default) lets agents
   // started by hand form a team by their config alone.
   std::uint64_t team_nonce = 0;
+  // The team's secret (agents/auth/team_secret.h, docs/security.md): a file of 64 hexadecimal
+  // digits that only its owner may read. Required: every message the agent sends carries a tag
+  // made with it, and it takes only messages whose tag verifies. `dvpr launch` makes a fresh one
+  // per launch.
+  std::filesystem::path team_secret;
+  // What the agent keeps for its channels while it waits for its team (LcmTransport::
+  // HoldUntilSubscribed): bytes of authenticated messages, in [64 KiB, 1 GiB].
+  std::int64_t hold_bytes = kDefaultHoldBytes;
   double speedup = 1.0;
   std::filesystem::path out;       // default: agent_<strategy>_n<robots>_r<run>_robot<robot>.log
                                    // (its folder must exist: checked before the team starts)

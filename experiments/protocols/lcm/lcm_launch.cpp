@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "agents/auth/team_secret.h"
 #include "agents/lcm/lcm_transport.h"
 #include "experiments/protocols/lcm/agent_process.h"
 #include "experiments/protocols/inputs.h"
@@ -38,6 +39,7 @@ void LaunchOptions::Validate() const {
   CheckSpeedup(speedup);
   CheckWallSeconds("--grace", grace_s, 0, false);
   CheckWallSeconds("--timeout", timeout_s, 0, false);
+  CheckHoldBytes(hold_bytes);
 }
 
 LaunchOptions ParseLaunchArgs(const std::vector<std::string>& args) {
@@ -54,6 +56,7 @@ LaunchOptions ParseLaunchArgs(const std::vector<std::string>& args) {
     else if (f == "--speedup") o.speedup = in.Double();
     else if (f == "--grace") o.grace_s = in.Double();
     else if (f == "--timeout") o.timeout_s = in.Double();
+    else if (f == "--hold-bytes") o.hold_bytes = in.Int64();
     else in.Unknown();
   }
   o.Validate();
@@ -137,8 +140,8 @@ std::uint64_t DrawTeamNonce() {
   return nonce;
 }
 
-std::vector<std::string> AgentArgv(const LaunchOptions& o, std::uint64_t nonce, const std::string& strategy, int robot,
-                                   const std::filesystem::path& log) {
+std::vector<std::string> AgentArgv(const LaunchOptions& o, std::uint64_t nonce, const std::filesystem::path& secret,
+                                   const std::string& strategy, int robot, const std::filesystem::path& log) {
   std::vector<std::string> a{o.binary.string(), "agent", "--config", o.config.string()};
   for (const auto& s : o.overrides) {
     a.push_back("--set");
@@ -156,6 +159,8 @@ std::vector<std::string> AgentArgv(const LaunchOptions& o, std::uint64_t nonce, 
   add("--strategy", strategy);
   add("--lcm", o.lcm_url.empty() ? kDefaultLcmUrl : o.lcm_url);
   add("--team-nonce", TeamNonceText(nonce));
+  add("--team-secret", secret.string());  // the file's name, never the secret itself
+  add("--hold-bytes", std::to_string(o.hold_bytes));
   add("--speedup", speedup.str());
   add("--grace", grace.str());
   add("--out", log.string());
@@ -257,13 +262,14 @@ std::filesystem::path AgentFile(const std::filesystem::path& dir, const std::str
 
 // Starts one agent per robot for `strategy` and waits for them (killing the ones still running
 // at the timeout).
-Team RunTeam(const LaunchOptions& o, std::uint64_t nonce, const ExperimentConfig& config, const std::string& strategy,
-             const std::filesystem::path& dir, std::ostream& out) {
+Team RunTeam(const LaunchOptions& o, std::uint64_t nonce, const std::filesystem::path& secret,
+             const ExperimentConfig& config, const std::string& strategy, const std::filesystem::path& dir,
+             std::ostream& out) {
   Team team{strategy, {}};
   for (int r = 0; r < o.robots; ++r) {
     const auto log = AgentFile(dir, strategy, r, ".log");
     std::filesystem::remove(log);  // a stale log must not pass for this run's
-    team.children.push_back(Child{r, Spawn(AgentArgv(o, nonce, strategy, r, log), AgentFile(dir, strategy, r, ".out"))});
+    team.children.push_back(Child{r, Spawn(AgentArgv(o, nonce, secret, strategy, r, log), AgentFile(dir, strategy, r, ".out"))});
   }
   out << "launch: " << strategy << ": " << o.robots << " agents started\n" << std::flush;
   // The frames' wall time, plus the agents' grace, plus start-up and barrier.
@@ -318,7 +324,9 @@ TeamLogs CollectTeam(const ExperimentConfig& config, const Team& team, int robot
                << ',' << (l ? std::to_string(l->queries.size()) : "") << ',' << (l ? std::to_string(incomplete) : "")
                << ',' << count(&AgentLog::malformed_datagrams) << ',' << count(&AgentLog::malformed) << ','
                << count(&AgentLog::foreign) << ',' << count(&AgentLog::duplicates) << ','
-               << count(&AgentLog::kernel_dropped) << ',' << count(&AgentLog::out_of_range) << '\n';
+               << count(&AgentLog::kernel_dropped) << ',' << count(&AgentLog::out_of_range) << ','
+               << count(&AgentLog::unauthenticated) << ',' << count(&AgentLog::held_dropped) << ','
+               << count(&AgentLog::held_bytes_peak) << '\n';
     if (!ok && !dropped) {
       const std::string why = FirstErrorLine(AgentFile(dir, team.strategy, c.robot, ".out"));
       out << "launch: " << team.strategy << " robot " << c.robot << ": " << Describe(c)
@@ -379,13 +387,18 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
   std::vector<StrategySpec> strategies = config.sweep.strategies;
   std::stable_partition(strategies.begin(), strategies.end(), [](const StrategySpec& s) { return IsReference(s); });
   const std::uint64_t nonce = DrawTeamNonce();
+  // A fresh secret for this launch's teams, in a file only this user can read, in a folder of its
+  // own outside the results; removed when the teams are done (docs/security.md).
+  const auth::SecretFolder secret_folder(std::filesystem::temp_directory_path());
+  const std::filesystem::path secret = secret_folder.path() / "team.secret";
+  auth::WriteSecretFile(secret, auth::DrawSecret());
   std::vector<Team> teams;
-  for (const StrategySpec& spec : strategies) teams.push_back(RunTeam(o, nonce, config, spec.name, dir, out));
+  for (const StrategySpec& spec : strategies) teams.push_back(RunTeam(o, nonce, secret, config, spec.name, dir, out));
 
   RunOutput all;
   std::ostringstream agents_csv;
   agents_csv << "strategy,robot,exit,log,queries,incomplete,malformed_datagrams,malformed_messages,foreign,"
-                "duplicates,kernel_dropped,out_of_range\n";
+                "duplicates,kernel_dropped,out_of_range,unauthenticated,held_dropped,held_bytes_peak\n";
   double reference_auc = kNotApplicable, bow_reference_auc = kNotApplicable;
   bool clean = true;
   for (const Team& team : teams) {

@@ -13,6 +13,7 @@
 // logged receiving; a robot that left no log (its process died) received
 // nothing, so everything sent to it counts as dropped, and its own queries are
 // missing from queries.csv and from `queries` (agents.csv lists it).
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <ostream>
@@ -36,6 +37,7 @@ struct LaunchOptions {
   double speedup = 1.0;
   double grace_s = 2.0;
   double timeout_s = 0;            // 0: the frames' wall time + grace + 120 s
+  std::int64_t hold_bytes = std::int64_t{16} << 20;  // each agent's --hold-bytes
   std::filesystem::path binary = "/proc/self/exe";
   void Validate() const;
 };

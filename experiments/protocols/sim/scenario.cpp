@@ -94,6 +94,16 @@ void Scenario::Run() {
   for (auto& daemon : daemons_) daemon->Start();
   for (auto& agent : agents_) agent->Start();
   for (const auto& w : params_.talk_windows) network_.SetTalkWindows(NodeId(w.robot.value), w.windows);
+  // Store-and-forward retries end with the mission: after the last frame the robots stand still
+  // and the beacons stop; only a talk window's opening or closing can still change a way.
+  SimTime horizon = split_.LastCapture(data_.fps);
+  for (const auto& w : params_.talk_windows) {
+    for (const TalkWindow& window : w.windows) {
+      horizon = std::max(horizon, window.from);
+      if (window.until != SimTime::Max()) horizon = std::max(horizon, window.until);
+    }
+  }
+  network_.SetHoldHorizon(horizon);
   for (const auto& d : params_.dropouts) {
     network_.SetOffline(NodeId(d.robot.value), d.at);
     TeamAgent* agent = agents_[static_cast<std::size_t>(d.robot.value)].get();

@@ -20,6 +20,7 @@
 
 #include <gtest/gtest.h>
 
+#include "agents/auth/team_secret.h"
 #include "agents/lcm/lcm_transport.h"
 #include "tests/test_support.h"
 
@@ -98,7 +99,17 @@ inline pid_t Spawn(const std::vector<std::string>& argv, const fs::path& log) {
   return pid;
 }
 
+// The secret of a team a test starts itself (dvpr launch makes its own): one file per folder,
+// readable by its owner only, made once and shared by every agent whose log goes there.
+inline fs::path TeamSecret(fs::path dir) {
+  while (!dir.empty() && dir != dir.parent_path() && !fs::is_directory(dir)) dir = dir.parent_path();  // a test of a missing folder
+  const fs::path path = dir / "team.secret";
+  if (!fs::exists(path)) auth::WriteSecretFile(path, auth::DrawSecret());
+  return path;
+}
+
 // grace_s: wall seconds a robot waits after the team's last frame (dvpr agent --grace).
+// The team's secret is TeamSecret(the log's folder).
 inline std::vector<std::string> AgentArgv(int robot, int robots, const std::string& strategy, int port,
                                           double speedup, const fs::path& log, double grace_s = 2.0) {
   std::vector<std::string> a{Dvpr(), "agent", "--config", ConfigPath()};
@@ -110,7 +121,8 @@ inline std::vector<std::string> AgentArgv(int robot, int robots, const std::stri
                                std::to_string(robots), std::string("--strategy"), strategy, std::string("--lcm"),
                                Url(port), std::string("--speedup"), std::to_string(speedup),
                                std::string("--out"), log.string(), std::string("--grace"),
-                               std::to_string(grace_s)}) {
+                               std::to_string(grace_s), std::string("--team-secret"),
+                               TeamSecret(log.parent_path()).string()}) {
     a.push_back(s);
   }
   return a;

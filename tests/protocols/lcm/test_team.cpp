@@ -17,11 +17,13 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <span>
 #include <sstream>
 
 #include "agents/algorithms/bow_vector.h"
 #include "agents/algorithms/bow_words.h"
 #include "agents/algorithms/centroid_table.h"
+#include "agents/auth/message_auth.h"
 #include "agents/routing/failure_detector.h"
 #include "agents/messages/team_sync.h"
 #include "experiments/protocols/lcm/agent_log.h"
@@ -576,13 +578,22 @@ TEST_F(LcmTeamTest, GarbageOnEveryChannelIsCountedAndIgnored) {
       {}, {0x00}, {0xde, 0xad, 0xbe, 0xef, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17},
       truncated, lying, Encode(wrong_type), full, Encode(foreign_status)};
 
+  // Each payload goes out twice: as it is (no tag: counted unauthenticated, never decoded) and
+  // sealed with the team's secret by an insider speaking as robot 99 (a holder of the secret that
+  // is no robot of the team): those reach the decoders, which count them malformed or foreign.
+  auth::MessageAuth insider(auth::ReadSecretFile(TeamSecret(dir_)), 99);
   std::vector<int> status(kRobots, -2);
   int rounds = 0;
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(240);
   auto running = [&] { return std::count(status.begin(), status.end(), -2) > 0; };
   while (running() && std::chrono::steady_clock::now() < give_up) {
     for (const auto& c : channels) {
-      for (const auto& p : payloads) noise.PublishRaw(c, p);
+      for (const auto& p : payloads) {
+        noise.PublishRaw(c, p);
+        std::vector<std::uint8_t> sealed = p;
+        insider.Seal(c, sealed);
+        noise.PublishRaw(c, sealed);
+      }
     }
     ++rounds;
     noise.RunUntilWall(std::chrono::steady_clock::now() + std::chrono::milliseconds(30));
@@ -613,6 +624,7 @@ TEST_F(LcmTeamTest, GarbageOnEveryChannelIsCountedAndIgnored) {
     EXPECT_EQ(log.queries.size(), 100u);
     EXPECT_GT(log.malformed, 0u) << "robot " << r;
     EXPECT_GT(log.foreign, 0u) << "robot " << r;
+    EXPECT_GT(log.unauthenticated, 0u) << "robot " << r;
     std::cout << "robot " << r << ": " << log.malformed << " malformed, " << log.foreign << " foreign, " << incomplete
               << " incomplete, over " << rounds << " rounds of noise (" << kernel_dropped << " dropped by full buffers)\n";
   }
@@ -674,7 +686,7 @@ void ExpectTheTeamsOwnResults(const fs::path& out, const std::vector<std::int64_
 // teams take neither each other's heartbeats nor each other's messages (each robot's sender is
 // learned from its own team's heartbeats). Each stores exactly what its own table routes to each
 // robot (merged, robots stored both teams' frames: issue 31 saw 376 instead of 248), and every
-// agent counts the other team as foreign. The teams must run at once for that: at speedup 1 each
+// agent counts the other team as unauthenticated (another secret). The teams must run at once for that: at speedup 1 each
 // runs 15 s of frames after its start barrier, far longer than one launch's agents may start
 // after the other's on a loaded machine (at speedup 5 a run lasts 3 s, which loading the inputs
 // under a load average of 8 can exceed).
@@ -696,9 +708,32 @@ TEST_F(LcmTeamTest, TwoLaunchesOfOneConfigOnOneUrlAreTwoTeams) {
     SCOPED_TRACE(name);
     ExpectTheTeamsOwnResults(dir_ / name, stored, 150);
     for (const Row& r : ReadCsv(dir_ / name / "agents.csv")) {
-      EXPECT_GT(std::stoll(r.at("foreign")), 0) << "robot " << r.at("robot") << " never heard the other team";
+      // The other team's messages carry another launch's secret: their tags do not verify.
+      EXPECT_GT(std::stoll(r.at("unauthenticated")), 0) << "robot " << r.at("robot") << " never heard the other team";
     }
   }
+}
+
+// Sends `datagram` to the group on `port` through the raw socket `raw`, as if `from` had sent it
+// (the raw socket writes the IP and UDP headers, source address and port included). True when sent.
+bool SendAs(int raw, const sockaddr_in& from, int port, std::span<const std::uint8_t> datagram) {
+  std::vector<std::uint8_t> packet(sizeof(iphdr) + sizeof(udphdr) + datagram.size());
+  auto* ip = reinterpret_cast<iphdr*>(packet.data());
+  ip->version = 4;
+  ip->ihl = 5;
+  ip->ttl = 1;
+  ip->protocol = IPPROTO_UDP;
+  ip->saddr = from.sin_addr.s_addr;
+  inet_pton(AF_INET, "239.255.76.67", &ip->daddr);
+  auto* udp = reinterpret_cast<udphdr*>(packet.data() + sizeof(iphdr));
+  udp->source = from.sin_port;
+  udp->dest = htons(static_cast<std::uint16_t>(port));
+  udp->len = htons(static_cast<std::uint16_t>(sizeof(udphdr) + datagram.size()));
+  std::copy(datagram.begin(), datagram.end(), packet.begin() + sizeof(iphdr) + sizeof(udphdr));
+  sockaddr_in to{};
+  to.sin_family = AF_INET;
+  to.sin_addr.s_addr = ip->daddr;
+  return sendto(raw, packet.data(), packet.size(), 0, reinterpret_cast<const sockaddr*>(&to), sizeof to) > 0;
 }
 
 // Sends every datagram of the group once more, from its own sender (a raw socket writes the IP
@@ -747,23 +782,7 @@ class DuplicatingRelay {
       key += std::to_string(n) + ":";
       key.append(reinterpret_cast<const char*>(buffer.data()), static_cast<std::size_t>(std::min<ssize_t>(n, 20)));
       if (!seen.insert(key).second) continue;  // our own copy coming back
-      std::vector<std::uint8_t> packet(sizeof(iphdr) + sizeof(udphdr) + static_cast<std::size_t>(n));
-      auto* ip = reinterpret_cast<iphdr*>(packet.data());
-      ip->version = 4;
-      ip->ihl = 5;
-      ip->ttl = 1;
-      ip->protocol = IPPROTO_UDP;
-      ip->saddr = from.sin_addr.s_addr;
-      inet_pton(AF_INET, "239.255.76.67", &ip->daddr);
-      auto* udp = reinterpret_cast<udphdr*>(packet.data() + sizeof(iphdr));
-      udp->source = from.sin_port;
-      udp->dest = htons(static_cast<std::uint16_t>(port_));
-      udp->len = htons(static_cast<std::uint16_t>(sizeof(udphdr) + static_cast<std::size_t>(n)));
-      std::copy(buffer.begin(), buffer.begin() + n, packet.begin() + sizeof(iphdr) + sizeof(udphdr));
-      sockaddr_in to{};
-      to.sin_family = AF_INET;
-      to.sin_addr.s_addr = ip->daddr;
-      if (sendto(raw_, packet.data(), packet.size(), 0, reinterpret_cast<sockaddr*>(&to), sizeof to) > 0) ++copies_;
+      if (SendAs(raw_, from, port_, std::span<const std::uint8_t>(buffer.data(), static_cast<std::size_t>(n)))) ++copies_;
     }
   }
 
@@ -899,6 +918,218 @@ TEST_F(LcmTeamTest, TheWrappingFragmentAndAHundredThousandHostileDatagramsAreCou
     }
     std::cout << "robot " << r << ": " << log.malformed_datagrams << " malformed datagrams, " << log.kernel_dropped
               << " dropped by a full buffer, " << log.datagrams << " datagrams\n";
+  }
+}
+
+
+// The peak resident memory of `pid` (VmHWM of /proc/PID/status), in bytes; -1 when unreadable.
+std::int64_t PeakMemory(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) return std::stoll(line.substr(6)) * 1024;  // "VmHWM:  1234 kB"
+  }
+  return -1;
+}
+
+// A forger on the team's group (issue 53), who knows everything anyone listening learns - the
+// heartbeats with their team key, every sender's address, port and sequence numbers - but not the
+// team's secret. For each heartbeat of robot 0 it hears it sends that heartbeat relabelled as
+// robot 1's (team key included, robot 0's trailer kept), and from robot 0's own address and port
+// (a raw socket) 64 datagrams numbered as robot 0's next messages; it runs from before robot 1
+// starts to the end of the run.
+class Forger {
+ public:
+  explicit Forger(int port) : port_(port) {
+    // Close-on-exec: the agents the test starts must not inherit the forger's sockets (its
+    // listening one would be a second socket of theirs on the group's port).
+    listen_ = socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+    raw_ = socket(AF_INET, SOCK_RAW | SOCK_CLOEXEC, IPPROTO_RAW);
+    own_ = socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+    const int on = 1;
+    setsockopt(listen_, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);
+    ip_mreq m{};
+    inet_pton(AF_INET, "239.255.76.67", &m.imr_multiaddr);
+    setsockopt(listen_, IPPROTO_IP, IP_ADD_MEMBERSHIP, &m, sizeof m);
+    group_.sin_family = AF_INET;
+    group_.sin_addr = m.imr_multiaddr;
+    group_.sin_port = htons(static_cast<std::uint16_t>(port));
+    ok_ = listen_ >= 0 && raw_ >= 0 && own_ >= 0 &&
+          bind(listen_, reinterpret_cast<const sockaddr*>(&group_), sizeof group_) == 0;
+    if (ok_) thread_ = std::thread([this] { Loop(); });
+  }
+  ~Forger() {
+    stop_ = true;
+    if (thread_.joinable()) thread_.join();
+    close(listen_);
+    close(raw_);
+    close(own_);
+  }
+  bool ok() const { return ok_; }
+  std::uint64_t relabelled() const { return relabelled_; }
+  std::uint64_t spoofed() const { return spoofed_; }
+  // While paused it only listens (the test's flood then waits for quiet queues).
+  void Pause(bool paused) { paused_ = paused; }
+  // Sends `d` from the forger's own socket.
+  void Send(const std::vector<std::uint8_t>& d) const {
+    sendto(own_, d.data(), d.size(), 0, reinterpret_cast<const sockaddr*>(&group_), sizeof group_);
+  }
+
+ private:
+  void Spoof(const sockaddr_in& from, const std::vector<std::uint8_t>& d) {
+    if (SendAs(raw_, from, port_, d)) ++spoofed_;
+  }
+
+  void Loop() {
+    std::vector<std::uint8_t> buffer(65536);
+    const std::string status = "DVPR_STATUS";
+    while (!stop_) {
+      pollfd p{listen_, POLLIN, 0};
+      timespec wait{0, 20000000};
+      if (ppoll(&p, 1, &wait, nullptr) <= 0) continue;
+      sockaddr_in from{};
+      socklen_t length = sizeof from;
+      const ssize_t n = recvfrom(listen_, buffer.data(), buffer.size(), 0, reinterpret_cast<sockaddr*>(&from), &length);
+      if (paused_) continue;
+      // A heartbeat: "LC02", seqno, "DVPR_STATUS" NUL, agent_status_t, then the 34-byte trailer.
+      const std::size_t header = 8 + status.size() + 1;
+      if (n < static_cast<ssize_t>(header + 34) || std::memcmp(buffer.data(), "LC02", 4) != 0 ||
+          std::memcmp(buffer.data() + 8, status.c_str(), status.size() + 1) != 0) {
+        continue;
+      }
+      const std::size_t payload = static_cast<std::size_t>(n) - header - 34;
+      std::optional<agent_status_t> s = Decode<agent_status_t>(std::span<const std::uint8_t>(buffer.data() + header, payload));
+      if (!s || s->robot != 0) continue;
+      const std::uint32_t seqno = (std::uint32_t{buffer[4]} << 24) | (std::uint32_t{buffer[5]} << 16) |
+                                  (std::uint32_t{buffer[6]} << 8) | buffer[7];
+      // Robot 0's heartbeat, relabelled as robot 1's, with robot 0's trailer.
+      s->robot = 1;
+      std::vector<std::uint8_t> forged = Encode(*s);
+      forged.insert(forged.end(), buffer.begin() + static_cast<std::ptrdiff_t>(header + payload), buffer.begin() + n);
+      Send(udpm_test::Small(seqno, status, forged));
+      ++relabelled_;
+      // Robot 0's next 64 sequence numbers, from its own address and port.
+      for (std::uint32_t k = 1; k <= 64; ++k) Spoof(from, udpm_test::Small(seqno + k, status, {0xde, 0xad}));
+    }
+  }
+
+  int port_;
+  int listen_ = -1, raw_ = -1, own_ = -1;
+  sockaddr_in group_{};
+  bool ok_ = false;
+  std::atomic<bool> stop_{false}, paused_{false};
+  std::atomic<std::uint64_t> relabelled_{0}, spoofed_{0};
+  std::thread thread_;
+};
+
+// One forger on the group (class Forger) and 240 MB sent to the two agents that wait for their
+// third: the team completes as without the forger - every robot's 100 queries answered, each
+// robot storing exactly what its table routes to it (the forged heartbeat once took robot 1's
+// identity and robot 0 completed 22 of 150 queries; the spoofed datagrams made robot 1 store 218
+// frames of 248) - counts what it dropped as unauthenticated, and stays within its documented
+// bound on memory (docs/security.md: nothing unauthenticated is held; at most --hold-bytes are,
+// and unfinished messages hold at most 2 x the largest message + 16 MiB; the 240 MB once grew
+// an agent by 238 MiB). The flood goes out 60 kB at a time, each once the agents' kernel queues
+// are empty (an event, not a time).
+TEST_F(LcmTeamTest, AForgerOnTheGroupChangesNothingAndIsCounted) {
+  constexpr int kRobots = 3, kPort = 7709;
+  Forger forger(kPort);
+  if (!forger.ok()) GTEST_SKIP() << "no raw socket for the forger";
+  std::vector<pid_t> pids(kRobots, -1);
+  const auto argv = [&](int r) {
+    std::vector<std::string> a = AgentArgv(r, kRobots, "decentralized", kPort, 5.0, dir_ / ("r" + std::to_string(r) + ".log"), 60.0);
+    a.insert(a.end(), {"--barrier-timeout", "1000", "--set", "strategies=[decentralized]"});
+    return a;
+  };
+  for (int r : {0, 2}) pids[static_cast<std::size_t>(r)] = Spawn(argv(r), dir_ / ("r" + std::to_string(r) + ".out"));
+  // A failed assertion leaves no agent behind (they would wait 1000 s for their team).
+  struct KillLeftovers {
+    std::vector<pid_t>& pids;
+    ~KillLeftovers() {
+      for (const pid_t pid : pids) {
+        if (pid > 0 && waitpid(pid, nullptr, WNOHANG) == 0) {
+          kill(pid, SIGKILL);
+          waitpid(pid, nullptr, 0);
+        }
+      }
+    }
+  } leftovers{pids};
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(240);
+  const auto drained = [&] {
+    for (const int r : {0, 2}) {
+      const std::vector<SocketQueue> q = UdpQueuesOf(pids[static_cast<std::size_t>(r)], kPort);
+      if (q.size() != 1 || q[0].queued != 0) return false;
+    }
+    return true;
+  };
+  const auto wait_until = [&](const std::function<bool()>& done) {
+    while (!done() && std::chrono::steady_clock::now() < give_up) {
+      timespec ts{0, 1000000};
+      ppoll(nullptr, 0, &ts, nullptr);
+    }
+    return std::chrono::steady_clock::now() < give_up;
+  };
+  // Robot 0 announces itself (it has loaded its inputs) and the forger answers it; then the
+  // forger pauses until the flood is over, and both waiting agents read everything so far.
+  ASSERT_TRUE(wait_until([&] { return forger.relabelled() > 0; })) << "see " << dir_;
+  forger.Pause(true);
+  ASSERT_TRUE(wait_until(drained)) << "see " << dir_;
+  std::vector<std::int64_t> before;
+  for (const int r : {0, 2}) before.push_back(PeakMemory(pids[static_cast<std::size_t>(r)]));
+  // 240 MB on the channels the waiting agents hold for later: 4000 datagrams of 60 000 bytes.
+  const std::vector<std::uint8_t> filler(60000 - 32, 0x5a);
+  for (int sent = 0; sent < 4000;) {
+    for (int k = 0; k < 20; ++k, ++sent) {
+      forger.Send(udpm_test::Small(static_cast<std::uint32_t>(sent), sent % 2 == 0 ? "DVPR_QUERY_0" : "DVPR_QUERY_2", filler));
+    }
+    ASSERT_TRUE(wait_until(drained)) << "after " << sent << " datagrams; see " << dir_;
+  }
+  for (std::size_t i = 0; i < 2; ++i) {
+    const pid_t pid = pids[i == 0 ? 0 : 2];
+    const std::int64_t grew = PeakMemory(pid) - before[i];
+    // --hold-bytes (16 MiB) and the unfinished messages' bound (2 x (1000 + 1 MiB + 34) + 16 MiB).
+    const std::int64_t bound = (16 << 20) + 2 * (1000 + (1 << 20) + 34) + (16 << 20);
+    EXPECT_LT(grew, bound) << "robot " << (i == 0 ? 0 : 2) << " grew by " << grew << " bytes";
+    std::cout << "robot " << (i == 0 ? 0 : 2) << ": peak memory grew by " << grew / 1024 << " KiB with 240 MB sent\n";
+  }
+  forger.Pause(false);
+  pids[1] = Spawn(argv(1), dir_ / "r1.out");
+  std::vector<AgentLog> logs;
+  for (int r = 0; r < kRobots; ++r) {
+    const int status = WaitFor(pids[static_cast<std::size_t>(r)], std::chrono::seconds(300));
+    pids[static_cast<std::size_t>(r)] = -1;  // reaped
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "robot " << r << "; see " << dir_;
+    logs.push_back(ReadAgentLog(dir_ / ("r" + std::to_string(r) + ".log")));
+  }
+  EXPECT_GT(forger.spoofed(), 64u);
+  std::vector<ConfigOverride> overrides;
+  for (const auto& s : SmallConfigSets()) overrides.push_back(ParseOverride(s));
+  const std::vector<std::int64_t> stored = StoredByRouting(LoadConfig(ConfigPath(), overrides), kRobots);
+  for (int r = 0; r < kRobots; ++r) {
+    const AgentLog& log = logs[static_cast<std::size_t>(r)];
+    EXPECT_EQ(log.queries.size(), 100u) << "robot " << r;
+    const auto complete = std::count_if(log.queries.begin(), log.queries.end(), [](const QueryRecord& q) { return q.Complete(); });
+    if (log.kernel_dropped == 0) {
+      // Nothing lost: exactly the clean team's results.
+      EXPECT_EQ(complete, 100) << "robot " << r;
+      EXPECT_EQ(log.load.stored, stored[static_cast<std::size_t>(r)]) << "robot " << r;
+    } else {
+      EXPECT_LE(log.load.stored, stored[static_cast<std::size_t>(r)]) << "robot " << r;
+    }
+    if (log.kernel_dropped == 0) {
+      EXPECT_EQ(log.end_reason, "all_done") << "robot " << r;
+    }
+    EXPECT_GT(log.unauthenticated, 0u) << "robot " << r;
+    EXPECT_EQ(log.held_dropped, 0u) << "robot " << r;
+    EXPECT_LE(log.held_bytes_peak, std::uint64_t{16} << 20) << "robot " << r;
+    std::cout << "robot " << r << ": " << complete << " of 100 queries complete, stored " << log.load.stored << " (table: "
+              << stored[static_cast<std::size_t>(r)] << "), " << log.unauthenticated << " unauthenticated, "
+              << log.foreign << " foreign, " << log.kernel_dropped << " dropped by a full buffer\n";
+  }
+  // The waiting agents counted at least the flood they read (or the kernel dropped and counted it).
+  for (const int r : {0, 2}) {
+    const AgentLog& log = logs[static_cast<std::size_t>(r)];
+    EXPECT_GE(log.unauthenticated + log.kernel_dropped, 2000u) << "robot " << r;
   }
 }
 

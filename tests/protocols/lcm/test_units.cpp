@@ -6,6 +6,7 @@
 
 #include "agents/messages/team_sync.h"
 #include "experiments/protocols/lcm/agent_log.h"
+#include "agents/auth/message_auth.h"
 #include "lcm_test_support.h"
 
 namespace dvpr {
@@ -82,6 +83,10 @@ TEST(AgentLog, RoundTripsExactly) {
   l.end_reason = "all_done";
   l.published = 5;
   l.malformed = 3;
+  l.out_of_range = 8;
+  l.unauthenticated = 11;
+  l.held_dropped = 12;
+  l.held_bytes_peak = 13;
   l.load.busy = SimTime::Nanos(77);
   l.sent = {{1, 2, 3}, {0, 0, 0}};
   l.received_from = {4, 0};
@@ -101,6 +106,10 @@ TEST(AgentLog, RoundTripsExactly) {
   const AgentLog r = ReadAgentLog(path);
   EXPECT_EQ(r.speedup, 2.5);
   EXPECT_EQ(r.start_utime, l.start_utime);
+  EXPECT_EQ(r.out_of_range, 8u);
+  EXPECT_EQ(r.unauthenticated, 11u);
+  EXPECT_EQ(r.held_dropped, 12u);
+  EXPECT_EQ(r.held_bytes_peak, 13u);
   EXPECT_EQ(r.sent[0].wire_bytes, 3);
   EXPECT_EQ(r.received_from[0], 4);
   ASSERT_EQ(r.queries.size(), 2u);
@@ -216,6 +225,78 @@ TEST_F(LcmTransportTest, HeldChannelKeepsWhatArrivesBeforeTheSubscriber) {
   t.Run(t.Now() + SimTime::Millis(50));
   EXPECT_EQ(frames, (std::vector<std::int32_t>{3, 4}));
   EXPECT_EQ(t.Received(), 2u);
+}
+
+
+// A team's transports (one secret) take each other's messages once, knowing the sender's robot;
+// a message without a tag, one sealed with another secret, one changed in transit and a replay
+// of a genuine one are counted and never handled. The test waits until all six have been seen.
+TEST_F(LcmTransportTest, AuthenticatedTransportsTakeOnlyTheirTeamsMessagesOnce) {
+  const auth::Secret secret = auth::DrawSecret();
+  LcmTransport receiver(Url(7714), 1.0);
+  receiver.Authenticate(auth::MessageAuth(secret, 0));
+  LcmTransport teammate(Url(7714), 1.0);
+  teammate.Authenticate(auth::MessageAuth(secret, 1));
+  LcmTransport outsider(Url(7714), 1.0);
+  outsider.Authenticate(auth::MessageAuth(auth::DrawSecret(), 1));
+  std::vector<std::pair<int, int>> got;  // query_frame, robot of the authenticated sender
+  Subscription sub = receiver.Subscribe<match_t>("DVPR_MATCH_0", [&](const match_t& m) {
+    got.emplace_back(m.query_frame, auth::RobotOfSender(receiver.CurrentSender()));
+  });
+  match_t genuine{};
+  genuine.query_frame = 1;
+  std::vector<std::uint8_t> sealed = Encode(genuine);
+  auth::MessageAuth robot1(secret, 1);
+  robot1.Seal("DVPR_MATCH_0", sealed);
+  teammate.PublishRaw("DVPR_MATCH_0", sealed);  // genuine: robot 1's tag
+  teammate.PublishRaw("DVPR_MATCH_0", sealed);  // its replay
+  std::vector<std::uint8_t> changed = sealed;
+  changed[12] ^= 0x01;
+  teammate.PublishRaw("DVPR_MATCH_0", changed);  // changed in transit
+  match_t untagged{};
+  untagged.query_frame = 2;
+  teammate.PublishRaw("DVPR_MATCH_0", Encode(untagged));  // no tag at all
+  match_t foreign{};
+  foreign.query_frame = 3;
+  outsider.Publish("DVPR_MATCH_0", foreign);  // another team's secret
+  match_t last{};
+  last.query_frame = 4;
+  teammate.Publish("DVPR_MATCH_0", last);  // sealed by the teammate's transport
+  const auto seen = [&] {
+    const auto& c = receiver.auth_counts();
+    return got.size() + c.unauthenticated + c.replayed;
+  };
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (seen() < 6 && std::chrono::steady_clock::now() < give_up) receiver.Run(receiver.Now() + SimTime::Millis(20));
+  EXPECT_EQ(got, (std::vector<std::pair<int, int>>{{1, 1}, {4, 1}}));
+  EXPECT_EQ(receiver.auth_counts().unauthenticated, 3u);
+  EXPECT_EQ(receiver.auth_counts().replayed, 1u);
+  EXPECT_EQ(receiver.ReceiveCounts().duplicates, 0u);  // repeats are told after the tag
+  // What the teammate published carries the 34-byte trailer; its observer saw the message alone.
+  EXPECT_EQ(teammate.PublishedBytes(), 3 * sealed.size() + Encode(untagged).size() + Encode(last).size() + 34);
+}
+
+// Held channels keep at most their bound (a message's bytes and 64 bytes of bookkeeping each);
+// what arrives past it is counted and dropped, and what was kept is handled once a handler
+// subscribes. The test waits for the count of dropped messages, then for the kept ones.
+TEST_F(LcmTransportTest, HeldChannelsKeepAtMostTheirBoundAndCountTheRest) {
+  match_t m{};
+  const std::size_t charge = Encode(m).size() + 64;
+  LcmTransport t(Url(7715), 1.0);
+  t.HoldUntilSubscribed({"DVPR_MATCH_0"}, 3 * charge);
+  LcmTransport other(Url(7715), 1.0);
+  for (std::int32_t f = 0; f < 5; ++f) {
+    m.query_frame = f;
+    other.Publish("DVPR_MATCH_0", m);
+  }
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (t.auth_counts().held_dropped < 2 && std::chrono::steady_clock::now() < give_up) t.Run(t.Now() + SimTime::Millis(20));
+  EXPECT_EQ(t.auth_counts().held_dropped, 2u);
+  EXPECT_EQ(t.auth_counts().held_bytes_peak, 3 * charge);
+  std::vector<std::int32_t> frames;
+  Subscription sub = t.Subscribe<match_t>("DVPR_MATCH_0", [&](const match_t& x) { frames.push_back(x.query_frame); });
+  while (frames.size() < 3 && std::chrono::steady_clock::now() < give_up) t.Run(t.Now() + SimTime::Millis(20));
+  EXPECT_EQ(frames, (std::vector<std::int32_t>{0, 1, 2}));
 }
 
 }  // namespace

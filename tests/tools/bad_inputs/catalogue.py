@@ -7,6 +7,7 @@ Cases whose right behaviour is debatable say what they expect and why (`why`).
 """
 
 import dataclasses
+import os
 import random
 import re
 import struct
@@ -324,7 +325,7 @@ def files_cases():
              files=lambda d: (d / "poses.txt").unlink()),
         Case("c26", "descriptor file missing", ("dataset.descriptors",), base=f,
              files=lambda d: (d / "desc.npy").unlink()),
-        Case("c27", "descriptor path is a directory", ("dataset.descriptors", "director"),
+        Case("c27", "descriptor path is a directory", ("dataset.descriptors", "folder"),
              base=f, why="`file not found` misleads: it is there, as a folder (as b04)",
              files=lambda d: ((d / "desc.npy").unlink(), (d / "desc.npy").mkdir())),
         Case("c28", "descriptor file with an unknown extension", ("desc.txt",), base=f,
@@ -642,6 +643,45 @@ def hostile_cases():
              ("--allow-large",), sets=S("dataset.frames=4541", "robots=[100]", "runs=100000",
                                        "strategies=[decentralized, broadcast, multi_probe_2, sample_c4]"),
              why="under 10^6 runs, but 8e5 x 0.93 s by the time model (docs/config.md 'Sweep size')"),
+    ] + secret_cases()
+
+
+HEX_SECRET = "00112233445566778899aabbccddeeff" * 2
+
+
+def agent_with_secret(secret):
+    return ["agent", "--config", "{config}", "--robot", "0", "--robots", "2", "--team-secret", secret]
+
+
+def private(name, content, mode=0o600):
+    """files: a secret file `name` in the case's inputs with `mode`."""
+    def make(in_dir):
+        write(in_dir / name, content)
+        os.chmod(in_dir / name, mode)
+    return make
+
+
+def secret_cases():
+    """Issue 53: the team's secret file of `dvpr agent` (docs/security.md): each file an agent
+    must not trust is one line naming --team-secret, the file and what is wrong; nothing starts."""
+    return [
+        Case("i15", "dvpr agent without --team-secret", ("--team-secret", "required"), exit=2,
+             argv=["agent", "--config", "{config}", "--robot", "0", "--robots", "2"]),
+        Case("i16", "--team-secret a FIFO nobody writes to", ("--team-secret", "FIFO, not a regular file"),
+             argv=agent_with_secret("{in}/fifo"), files=lambda d: os.mkfifo(d / "fifo"),
+             why="opened without blocking, refused by its type: no hang"),
+        Case("i17", "--team-secret /dev/zero", ("--team-secret", "/dev/zero", "device, not a regular file"),
+             argv=agent_with_secret("/dev/zero")),
+        Case("i18", "--team-secret a loop of symbolic links", ("--team-secret", "symbolic link"),
+             argv=agent_with_secret("{in}/loop_a"),
+             files=lambda d: (os.symlink(d / "loop_b", d / "loop_a"), os.symlink(d / "loop_a", d / "loop_b"))),
+        Case("i19", "--team-secret readable by everyone (mode 0644)", ("--team-secret", "mode 0644"),
+             argv=agent_with_secret("{in}/team.secret"), files=private("team.secret", HEX_SECRET + "\n", 0o644)),
+        Case("i20", "--team-secret with a byte-order mark before its digits", ("--team-secret", "hexadecimal"),
+             argv=agent_with_secret("{in}/team.secret"),
+             files=private("team.secret", "\ufeff" + HEX_SECRET[3:] + "\n")),
+        Case("i21", "dvpr launch --hold-bytes 0", ("--hold-bytes",), exit=2,
+             argv=["launch", "--config", "{config}", "--robots", "2", "--out", "out", "--hold-bytes", "0"]),
     ]
 
 

@@ -41,6 +41,8 @@ public class DecodeDvprLog {
     return v;
   }
 
+  static final int kTrailer = 34;  // robot, instance, counter and a 16-byte tag (docs/security.md)
+
   public static void main(String[] args) throws Exception {
     Map<Long, Class<?>> types = TypesOf(args[0]);
     boolean live = args.length > 2 && args[2].equals("--live");
@@ -56,6 +58,12 @@ public class DecodeDvprLog {
       }
       if (ev.channel.equals("LCM_SELF_TEST")) continue;  // LCM's own, sent when a udpm instance opens
       String where = "event " + ev.eventNumber + " on " + ev.channel;
+      if (live) {
+        // A launched team's message ends in its 34-byte authentication trailer
+        // (agents/auth/message_auth.h): the LCM message is what precedes it.
+        if (ev.data.length < 8 + kTrailer) Fail(where + ": shorter than a message and its trailer");
+        ev.data = java.util.Arrays.copyOf(ev.data, ev.data.length - kTrailer);
+      }
       Class<?> type = ev.data.length >= 8 ? types.get(Fingerprint(ev.data)) : null;
       if (type == null) Fail(where + ": no dvpr type has its fingerprint");
       Object msg = type.getConstructor(byte[].class).newInstance((Object) ev.data);

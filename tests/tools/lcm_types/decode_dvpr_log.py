@@ -9,7 +9,9 @@ i64; channel length, i32; data length, i32), the channel name, then the data.
 Each event must carry the fingerprint of exactly one dvpr type, decode, and encode back to the
 same bytes (LCM's own LCM_SELF_TEST messages, which lcm-logger records, are skipped). A
 verification request's payload must be the bytes derived from its query frame's descriptor
-(agents/messages/verification_payload.h), computed here independently. With --live, every message's utime must lie within a second of the instant the
+(agents/messages/verification_payload.h), computed here independently. With --live (a launched
+team's recording) each event's 34-byte authentication trailer is removed first (docs/security.md),
+and every message's utime must lie within a second of the instant the
 logger received it (the event's timestamp, wall clock), and a query's capture_utime must not be
 after its utime.
 
@@ -86,6 +88,9 @@ def check_payload(msg, descriptors, where):
     return 1
 
 
+TRAILER = 34  # robot, instance, counter and a 16-byte tag (docs/security.md)
+
+
 def main(argv):
     if len(argv) not in (3, 4) or (len(argv) == 4 and argv[3] != "--live"):
         sys.exit(__doc__)
@@ -99,6 +104,12 @@ def main(argv):
         if channel == "LCM_SELF_TEST":
             continue  # LCM's own, sent when a udpm instance opens
         where = "event %d on %s" % (number, channel)
+        if live:
+            # A launched team's message ends in its 34-byte authentication trailer
+            # (agents/auth/message_auth.h): the LCM message is what precedes it.
+            if len(data) < 8 + TRAILER:
+                sys.exit("python: %s: shorter than a message and its trailer" % where)
+            data = data[:-TRAILER]
         t = types.get(data[:8])
         if t is None:
             sys.exit("python: %s: no dvpr type has its fingerprint" % where)
