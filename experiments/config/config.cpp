@@ -19,6 +19,11 @@
 
 namespace dvpr {
 
+namespace {
+// The longest `name`: a folder's name on Linux (NAME_MAX).
+constexpr std::size_t kMaxNameBytes = 255;
+}  // namespace
+
 using config_detail::Field;
 using config_detail::Origin;
 
@@ -399,6 +404,12 @@ ExperimentConfig ReadExperiment(const Field& root, const std::string& default_na
         c.name == ".." || !IsPrintableUtf8(c.name)) {
       f.Fail("expected a non-empty name without slashes, control characters or invalid UTF-8, "
              "not . or .. (it names the output folder)");
+    }
+    // A folder's name has at most 255 bytes (NAME_MAX): a longer name failed when the output
+    // folder was made, in an error line that quoted all of it and named neither `name` nor --out.
+    if (c.name.size() > kMaxNameBytes) {
+      f.Fail("expected at most " + std::to_string(kMaxNameBytes) + " bytes (it names the output folder), got " +
+             std::to_string(c.name.size()));
     }
   }
   if (auto f = root.Child("seed"); f.present()) {

@@ -1,6 +1,7 @@
 #include "experiments/data/bow_file.h"
 
 #include <algorithm>
+#include <cctype>
 #include <bit>
 #include <cstdint>
 #include <iterator>
@@ -178,7 +179,10 @@ BowData LoadBowText(const fs::path& path) {
 }  // namespace
 
 BowData LoadBowFile(const fs::path& path) {
-  const bool binary = path.extension() == ".bin";
+  // .bin in any case: BOW.BIN is the binary triples too (it was read as text).
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const bool binary = ext == ".bin";
   BowData data = binary ? LoadBowTriples(path) : LoadBowText(path);
   // Without a single word every BoW query finds nothing: a run would report a recall of 0 as if
   // it had measured one.

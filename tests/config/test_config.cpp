@@ -31,6 +31,14 @@ class ConfigTest : public ::testing::Test {
   }
 };
 
+// A name names the output folder: at most 255 bytes (NAME_MAX), refused in one short line naming
+// the key (120 000 characters gave a 120 kB line naming neither name nor --out).
+TEST_F(ConfigTest, ANameLongerThanAFolderNameIsOneShortLineNamingTheKey) {
+  EXPECT_EQ(Parse("name: " + std::string(255, 'n') + "\n").name.size(), 255u);
+  const std::string e = ErrorOf("name: " + std::string(120000, 'n') + "\n");
+  EXPECT_EQ(e, "test.yaml: name: expected at most 255 bytes (it names the output folder), got 120000");
+}
+
 TEST_F(ConfigTest, DefaultsFromAnEmptyMap) {
   const ExperimentConfig c = Parse("name: x\n");
   EXPECT_EQ(c.sweep.robots.size(), 19u);

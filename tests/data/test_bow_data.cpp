@@ -212,6 +212,16 @@ TEST_F(BowTriplesTest, ReadsLittleEndianTriples) {
   EXPECT_EQ(d.vocabulary, 4);
 }
 
+// A binary file whose name ends in .BIN (any case) is read as triples too: it was read as text.
+TEST_F(BowTriplesTest, AnUppercaseExtensionIsBinaryToo) {
+  const fs::path lower = Bin(std::string("\x01\x00\x00\x00\x03\x00\x00\x00\x00\x00\x00\x3f", 12));
+  const fs::path upper = lower.parent_path() / "BOW.BIN";
+  fs::copy_file(lower, upper, fs::copy_options::overwrite_existing);
+  const BowData d = LoadBowFile(upper);
+  ASSERT_EQ(d.frames.size(), 2u);
+  EXPECT_EQ(d.frames[1], (BowVector{{3, 1.0f}}));
+}
+
 // The text test's three frames as triples in a scrambled order give the same vectors:
 // {1: 0.75, 3: 0.25}, {}, {2: 1}.
 TEST_F(BowTriplesTest, SameVectorsAsTheTextFormatInAnyOrder) {

@@ -682,6 +682,16 @@ def secret_cases():
              files=private("team.secret", "\ufeff" + HEX_SECRET[3:] + "\n")),
         Case("i21", "dvpr launch --hold-bytes 0", ("--hold-bytes",), exit=2,
              argv=["launch", "--config", "{config}", "--robots", "2", "--out", "out", "--hold-bytes", "0"]),
+        Case("i22", "a `name` of 120 000 characters", ("name", "at most 255 bytes"),
+             edit=lambda t: t.replace("name: base", "name: " + "n" * 120000),
+             why="it names the output folder: one short line naming the key, not 120 kB"),
+        Case("i23", "network.radio.range 0.4mm (rounds to 0 at 1 mm)", ("network.radio.range", "rounds to 0"),
+             sets=S("network.model=radio", "network.radio={range: 0.4mm}")),
+        Case("i24", "a FIFO as a robot's trajectory (dataset.trajectories[0].poses)",
+             ("dataset.trajectories[0].poses", "FIFO, not a regular file"),
+             argv=["run", "{config}", "--quiet", "--out", "out", "--set", "robots=[2]", "--set", "dataset.frames=all",
+                   "--set", "dataset.trajectories=[{poses: '{in}/fifo', format: tum}, {poses: '{in}/fifo', format: tum}]"],
+             files=lambda d: os.mkfifo(d / "fifo"), why="named by its type, never opened: no hang"),
     ]
 
 
