@@ -736,24 +736,37 @@ bool SendAs(int raw, const sockaddr_in& from, int port, std::span<const std::uin
   return sendto(raw, packet.data(), packet.size(), 0, reinterpret_cast<const sockaddr*>(&to), sizeof to) > 0;
 }
 
+// A socket (close-on-exec: agents started later do not inherit it) that hears the group on
+// `port`; its address goes to *group. -1 when it cannot be made.
+int ListenOnGroup(int port, sockaddr_in* group) {
+  const int fd = socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) return -1;
+  const int on = 1;
+  setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);
+  ip_mreq m{};
+  inet_pton(AF_INET, "239.255.76.67", &m.imr_multiaddr);
+  setsockopt(fd, IPPROTO_IP, IP_ADD_MEMBERSHIP, &m, sizeof m);
+  *group = sockaddr_in{};
+  group->sin_family = AF_INET;
+  group->sin_addr = m.imr_multiaddr;
+  group->sin_port = htons(static_cast<std::uint16_t>(port));
+  if (bind(fd, reinterpret_cast<const sockaddr*>(group), sizeof *group) != 0) {
+    close(fd);
+    return -1;
+  }
+  return fd;
+}
+
 // Sends every datagram of the group once more, from its own sender (a raw socket writes the IP
 // and UDP headers, so the copy has the original's source address and port): a network that
 // duplicates every packet.
 class DuplicatingRelay {
  public:
   explicit DuplicatingRelay(int port) : port_(port) {
-    listen_ = socket(AF_INET, SOCK_DGRAM, 0);
-    raw_ = socket(AF_INET, SOCK_RAW, IPPROTO_RAW);
-    const int on = 1;
-    setsockopt(listen_, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);
-    ip_mreq m{};
-    inet_pton(AF_INET, "239.255.76.67", &m.imr_multiaddr);
-    setsockopt(listen_, IPPROTO_IP, IP_ADD_MEMBERSHIP, &m, sizeof m);
-    sockaddr_in at{};
-    at.sin_family = AF_INET;
-    at.sin_addr = m.imr_multiaddr;
-    at.sin_port = htons(static_cast<std::uint16_t>(port));
-    ok_ = listen_ >= 0 && raw_ >= 0 && bind(listen_, reinterpret_cast<sockaddr*>(&at), sizeof at) == 0;
+    sockaddr_in group{};
+    listen_ = ListenOnGroup(port, &group);
+    raw_ = socket(AF_INET, SOCK_RAW | SOCK_CLOEXEC, IPPROTO_RAW);
+    ok_ = listen_ >= 0 && raw_ >= 0;
     if (ok_) thread_ = std::thread([this] { Loop(); });
   }
   ~DuplicatingRelay() {
@@ -943,19 +956,10 @@ class Forger {
   explicit Forger(int port) : port_(port) {
     // Close-on-exec: the agents the test starts must not inherit the forger's sockets (its
     // listening one would be a second socket of theirs on the group's port).
-    listen_ = socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+    listen_ = ListenOnGroup(port, &group_);
     raw_ = socket(AF_INET, SOCK_RAW | SOCK_CLOEXEC, IPPROTO_RAW);
     own_ = socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
-    const int on = 1;
-    setsockopt(listen_, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);
-    ip_mreq m{};
-    inet_pton(AF_INET, "239.255.76.67", &m.imr_multiaddr);
-    setsockopt(listen_, IPPROTO_IP, IP_ADD_MEMBERSHIP, &m, sizeof m);
-    group_.sin_family = AF_INET;
-    group_.sin_addr = m.imr_multiaddr;
-    group_.sin_port = htons(static_cast<std::uint16_t>(port));
-    ok_ = listen_ >= 0 && raw_ >= 0 && own_ >= 0 &&
-          bind(listen_, reinterpret_cast<const sockaddr*>(&group_), sizeof group_) == 0;
+    ok_ = listen_ >= 0 && raw_ >= 0 && own_ >= 0;
     if (ok_) thread_ = std::thread([this] { Loop(); });
   }
   ~Forger() {
