@@ -1,6 +1,7 @@
 #include "experiments/app/experiment.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -18,6 +19,7 @@
 #include "experiments/results/result_writers.h"
 #include "experiments/results/spread.h"
 #include "experiments/sweep/run_distributor.h"
+#include "experiments/sweep/run_progress.h"
 #include "experiments/sweep/run_sweep.h"
 #include "experiments/sweep/sweep_checks.h"
 #include "experiments/sweep/sweep_size.h"
@@ -129,13 +131,35 @@ void CheckSizeBeforeLoading(const ExperimentConfig& config, const std::string& o
                  SweepMachine::ThisOne(options.threads), origin);
 }
 
+// The synthetic BoW world's frames on stderr when making them would take more than 10 s (about two
+// hours for KITTI 00 at its largest parameters; decided after the first frame, whose time gives
+// the first line's estimate, so small worlds and the tests stay quiet).
+FrameProgress BowProgress(const ExecutorOptions& options) {
+  if (!options.progress) return {};
+  struct State {
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    std::optional<RunProgress> shown;
+    bool decided = false;
+  };
+  auto state = std::make_shared<State>();
+  return [state](std::size_t done, std::size_t total) {
+    if (!state->decided) {
+      state->decided = true;
+      const double first = std::chrono::duration<double>(std::chrono::steady_clock::now() - state->start).count();
+      if (first * static_cast<double>(total) <= 10.0) return;
+      state->shown.emplace(total, true, "dataset.synthetic_bow frames", state->start);
+    }
+    if (state->shown) state->shown->Done(done);
+  };
+}
+
 // A process of a distributed sweep that does not write the results (run_distributor.h): the
 // same inputs and checks, its runs write into the distributor's run folder, its outputs go to
 // the process that writes.
 void RunShare(const ExperimentConfig& config, const std::string& origin, const ProtocolRegistry& protocols,
               const ExecutorOptions& options) {
   CheckSizeBeforeLoading(config, origin, options);
-  SharedInputs inputs = LoadSharedInputs(config, origin);
+  SharedInputs inputs = LoadSharedInputs(config, origin, BowProgress(options));
   CheckSweepInputs(inputs, origin, options.allow_large, options.threads);
   inputs.out_dir = options.distributor->run_folder();
   RunSweep(inputs, protocols, options, [](const RunSpec&, RunOutput&&) {
@@ -156,41 +180,51 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
   }
   CheckOutputFolder(out_dir);  // before the inputs load: a refused --out fails at once
   CheckSizeBeforeLoading(config, origin, options);
-  SharedInputs inputs = LoadSharedInputs(config, origin);
+  SharedInputs inputs = LoadSharedInputs(config, origin, BowProgress(options));
   CheckSweepInputs(inputs, origin, options.allow_large, options.threads);  // what would fail a run fails here, before anything is written
   // Everything is written into folder.dir() and moved to out_dir only when all succeeded.
   ResultFolder folder(out_dir);
-  const std::filesystem::path dir = folder.dir();
-  inputs.out_dir = dir;
-  WriteFileAt(folder.output(), "config.yaml", EmitConfig(config));
-  // failover.csv only with failover on: a config with a dropout alone (tests/golden) writes what it
-  // always wrote.
-  const bool bow = std::any_of(config.sweep.strategies.begin(), config.sweep.strategies.end(),
-                               [](const StrategySpec& s) { return s.bag_of_words(); });
-  const bool radio = std::count(config.network.model.begin(), config.network.model.end(), LinkModelKind::kRadio) > 0;
-  // closure_pairs.csv when a team runs (its robots exchange messages: inter-robot loop closures).
-  const bool teams = AnyProtocol(config.sweep.protocols, &ProtocolTraits::sends_messages);
-  // medium.csv and the MAC columns when a variant contends (csma, wifi); only sim runs fill them.
-  const bool mac = std::any_of(config.network.model.begin(), config.network.model.end(), Contends);
-  RowFiles files(folder.output(), config.outputs, !config.dropout.empty() && config.failover.enabled, bow, radio,
-                 mac, teams);
   std::vector<RunResult> rows;
-  std::vector<PrCurve> curves;
-  std::vector<RunConnectivity> connectivity;  // one per simulated run that tracked it, in spec order
-  RunSweep(inputs, protocols, options, [&](const RunSpec&, RunOutput&& out) {
-    files.Write(out);
-    rows.insert(rows.end(), out.runs.begin(), out.runs.end());
-    for (auto& c : out.curves) curves.push_back(std::move(c));
-    SummarizeConnectivityRuns(out.connectivity, connectivity);
-  });
-  files.Commit();
-  WriteFileAt(folder.output(), "summary.json", SummaryJson(rows, connectivity));
-  if (config.outputs.figures) {
-    WriteFigureData(dir, FigureData{&inputs.deployment.descriptors, &inputs.training, &curves,
-                                    config.evaluation.suppression_frames});
-    DrawFigures(dir, std::cerr);
+  // An error names what it could not write where the user looks for it (the temporary folder
+  // goes as the error unwinds).
+  try {
+    const std::filesystem::path dir = folder.dir();
+    inputs.out_dir = dir;
+    WriteFileAt(folder.output(), "config.yaml", EmitConfig(config));
+    // failover.csv only with failover on: a config with a dropout alone (tests/golden) writes what it
+    // always wrote.
+    const bool bow = std::any_of(config.sweep.strategies.begin(), config.sweep.strategies.end(),
+                                 [](const StrategySpec& s) { return s.bag_of_words(); });
+    const bool radio = std::count(config.network.model.begin(), config.network.model.end(), LinkModelKind::kRadio) > 0;
+    // closure_pairs.csv when a team runs (its robots exchange messages: inter-robot loop closures).
+    const bool teams = AnyProtocol(config.sweep.protocols, &ProtocolTraits::sends_messages);
+    // medium.csv and the MAC columns when a variant contends (csma, wifi); only sim runs fill them.
+    const bool mac = std::any_of(config.network.model.begin(), config.network.model.end(), Contends);
+    RowFiles files(folder.output(), config.outputs, !config.dropout.empty() && config.failover.enabled, bow, radio,
+                   mac, teams);
+    std::vector<PrCurve> curves;
+    std::vector<RunConnectivity> connectivity;  // one per simulated run that tracked it, in spec order
+    RunSweep(inputs, protocols, options, [&](const RunSpec&, RunOutput&& out) {
+      files.Write(out);
+      rows.insert(rows.end(), out.runs.begin(), out.runs.end());
+      for (auto& c : out.curves) curves.push_back(std::move(c));
+      SummarizeConnectivityRuns(out.connectivity, connectivity);
+    });
+    files.Commit();
+    WriteFileAt(folder.output(), "summary.json", SummaryJson(rows, connectivity));
+    if (config.outputs.figures) {
+      WriteFigureData(dir, FigureData{&inputs.deployment.descriptors, &inputs.training, &curves,
+                                      config.evaluation.suppression_frames});
+      DrawFigures(dir, std::cerr, FigureLog::kGone);  // a failed run removes its folder, logs and all
+    }
+    folder.Commit();
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(folder.Explain(e.what()));
+  } catch (const ConfigError& e) {
+    throw ConfigError(folder.Explain(e.what()));
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(folder.Explain(e.what()));
   }
-  folder.Commit();
   PrintSummaryTable(rows, summary);
   return rows;
 }

@@ -504,7 +504,7 @@ ConfigOverride ParseOverride(const std::string& arg) {
 
 ExperimentConfig ParseConfig(const std::string& yaml_text, const std::filesystem::path& base_dir,
                              const std::vector<ConfigOverride>& overrides,
-                             const std::string& origin) {
+                             const std::string& origin, ConfigFiles files) {
   config_detail::CheckYamlStructure(yaml_text, origin);
   YAML::Node root;
   try {
@@ -513,13 +513,13 @@ ExperimentConfig ParseConfig(const std::string& yaml_text, const std::filesystem
     throw ConfigError(origin + ": not valid YAML: " + e.what());
   }
   for (const auto& o : overrides) ApplyOverride(root, o, origin);
-  const Origin where{origin, base_dir};
+  const Origin where{origin, base_dir, files};
   const std::string stem = std::filesystem::path(origin).stem().string();
   return ReadExperiment(Field(where, root, ""), stem.empty() || stem[0] == '<' ? "experiment" : stem);
 }
 
 ExperimentConfig LoadConfig(const std::filesystem::path& file,
-                            const std::vector<ConfigOverride>& overrides) {
+                            const std::vector<ConfigOverride>& overrides, ConfigFiles files) {
   std::error_code ec;
   if (std::filesystem::is_directory(file, ec)) {
     throw ConfigError(file.string() + ": is a directory, expected a YAML config file");
@@ -529,7 +529,7 @@ ExperimentConfig LoadConfig(const std::filesystem::path& file,
   std::ostringstream text;
   text << in.rdbuf();
   const auto base = std::filesystem::absolute(file).parent_path();
-  return ParseConfig(text.str(), base, overrides, file.string());
+  return ParseConfig(text.str(), base, overrides, file.string(), files);
 }
 
 std::string_view ToString(DatasetSource s) { return kDatasetSources[static_cast<std::size_t>(s)]; }

@@ -195,13 +195,20 @@ struct ConfigOverride {
 // Parses "key.path=value"; throws ConfigError on a malformed argument.
 ConfigOverride ParseOverride(const std::string& arg);
 
+// Whether the files a config names must be there when it is read: kNamesOnly resolves them (to the
+// first place they are found, else against the config's folder) without a word, for a reader that
+// needs only some of them and checks those itself (`dvpr replay` reads the poses, never the
+// descriptors or the BoW file of a result folder).
+enum class ConfigFiles { kMustExist, kNamesOnly };
+
 // Reads, overrides, validates. Throws ConfigError (bad content) naming the file and key path.
 ExperimentConfig LoadConfig(const std::filesystem::path& file,
-                            const std::vector<ConfigOverride>& overrides = {});
+                            const std::vector<ConfigOverride>& overrides = {},
+                            ConfigFiles files = ConfigFiles::kMustExist);
 // Same from YAML text; relative paths resolve against `base_dir`, then cwd, then the source tree.
 ExperimentConfig ParseConfig(const std::string& yaml_text, const std::filesystem::path& base_dir,
                              const std::vector<ConfigOverride>& overrides = {},
-                             const std::string& origin = "<config>");
+                             const std::string& origin = "<config>", ConfigFiles files = ConfigFiles::kMustExist);
 
 // The fully resolved config as YAML: every key, absolute paths, canonical units. Parsing the
 // result gives an equal ExperimentConfig.

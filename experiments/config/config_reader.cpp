@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "experiments/config/config_reader.h"
 
 #include <charconv>
@@ -214,6 +215,12 @@ std::filesystem::path Field::ExistingFile() const {
     tried.push_back(p);
   } else {
     for (const auto& dir : SearchDirs(*origin_)) tried.push_back(dir / p);
+  }
+  if (origin_->files == ConfigFiles::kNamesOnly) {
+    const auto found = std::find_if(tried.begin(), tried.end(), [](const std::filesystem::path& candidate) {
+      return text_file::NotARegularFile(candidate).empty();
+    });
+    return std::filesystem::absolute(found == tried.end() ? tried.front() : *found).lexically_normal();
   }
   for (const auto& candidate : tried) {
     const std::string why = text_file::NotARegularFile(candidate);

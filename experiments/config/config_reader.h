@@ -18,6 +18,7 @@ namespace dvpr::config_detail {
 struct Origin {
   std::string name;                // the file (or "<config>")
   std::filesystem::path base_dir;  // its folder
+  ConfigFiles files = ConfigFiles::kMustExist;
 };
 
 // A node and its dotted key path ("network.loss.p", "dropout[1].at").

@@ -177,7 +177,8 @@ void SyntheticBowParams::Validate() const {
 
 std::vector<std::vector<std::int32_t>> SyntheticBowWords(const Trajectory& trajectory,
                                                          const SyntheticParams& appearance,
-                                                         const SyntheticBowParams& params, std::uint64_t seed) {
+                                                         const SyntheticBowParams& params, std::uint64_t seed,
+                                                         const FrameProgress& progress) {
   params.Validate();
   appearance.Validate();
   LandmarkField field(params, appearance, seed);
@@ -212,6 +213,7 @@ std::vector<std::vector<std::int32_t>> SyntheticBowWords(const Trajectory& traje
       const Seen& l = seen[static_cast<std::size_t>(std::min<std::ptrdiff_t>(at, std::ssize(seen) - 1))];
       words.push_back(field.WordSeenFrom(*l.landmark, std::atan2(-l.dz, -l.dx)));
     }
+    if (progress) progress(static_cast<std::size_t>(i) + 1, out.size());
   }
   return out;
 }
@@ -229,8 +231,8 @@ BowData TfIdfFromWords(const std::vector<std::vector<std::int32_t>>& words, int 
 }
 
 BowData SyntheticBow(const Trajectory& trajectory, const SyntheticParams& appearance,
-                     const SyntheticBowParams& params, std::uint64_t seed) {
-  return TfIdfFromWords(SyntheticBowWords(trajectory, appearance, params, seed), params.vocabulary);
+                     const SyntheticBowParams& params, std::uint64_t seed, const FrameProgress& progress) {
+  return TfIdfFromWords(SyntheticBowWords(trajectory, appearance, params, seed, progress), params.vocabulary);
 }
 
 }  // namespace dvpr

@@ -25,7 +25,9 @@
 //    sector it quantises to another word. Two views whose viewing directions differ by at least
 //    view_sector_deg never share its word, so with view_sector_deg <= 180 - field_of_view_deg a
 //    revisit from the opposite heading shares no landmark word.
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "agents/algorithms/bow_vector.h"
@@ -49,17 +51,22 @@ struct SyntheticBowParams {
   bool operator==(const SyntheticBowParams&) const = default;
 };
 
+// Called after each frame with (frames done, frames in all): the world at its largest parameters
+// takes about 1.7 s a frame (hours for KITTI 00), so `dvpr run` shows its progress.
+using FrameProgress = std::function<void(std::size_t done, std::size_t total)>;
+
 // The words of every frame's features along `trajectory` (frame index = time), one vector of
 // `features` words per frame. `appearance` gives noise, appearance_change and its time scale.
 std::vector<std::vector<std::int32_t>> SyntheticBowWords(const Trajectory& trajectory,
                                                          const SyntheticParams& appearance,
-                                                         const SyntheticBowParams& params, std::uint64_t seed);
+                                                         const SyntheticBowParams& params, std::uint64_t seed,
+                                                         const FrameProgress& progress = {});
 
 // Every frame's tf-idf vector (bow_vector.h), idf over these frames themselves (docs/bow.md).
 BowData TfIdfFromWords(const std::vector<std::vector<std::int32_t>>& words, int vocabulary);
 
 // SyntheticBowWords then TfIdfFromWords.
 BowData SyntheticBow(const Trajectory& trajectory, const SyntheticParams& appearance,
-                     const SyntheticBowParams& params, std::uint64_t seed);
+                     const SyntheticBowParams& params, std::uint64_t seed, const FrameProgress& progress = {});
 
 }  // namespace dvpr

@@ -108,12 +108,12 @@ std::string RelativeAucScript(const fs::path& data_dir, const fs::path& png) {
 
 // Writes the script and draws it (gnuplot_run.h); throws when the figure was not drawn.
 void Draw(const fs::path& gnuplot, const fs::path& data_dir, const fs::path& png, const std::string& name,
-          const std::function<std::string(const fs::path&, const fs::path&)>& script) {
+          const std::function<std::string(const fs::path&, const fs::path&)>& script, FigureLog log) {
   const fs::path gp = data_dir / (name + ".gp");
   WriteFileAtomic(gp, script(data_dir, png));
   // Run inside the data folder: the scripts name their files relative to it, so they do not
   // depend on where the results folder is (and can be rerun after moving it).
-  DrawWithGnuplot(gnuplot, data_dir, gp, png, data_dir / (name + ".log"));
+  DrawWithGnuplot(gnuplot, data_dir, gp, png, data_dir / (name + ".log"), log);
 }
 
 // Strategy figures compare strategies beyond the paper's two; with only those they repeat
@@ -156,7 +156,7 @@ void AddTrafficFigures(const fs::path& out_dir, const fs::path& data, const std:
 
 }  // namespace
 
-std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::ostream& log) {
+std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::ostream& log, FigureLog logs) {
   const fs::path fig = out_dir / "figures";
   const fs::path data = fig / "data";
   fs::create_directories(data);
@@ -187,15 +187,18 @@ std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::ostream& log) {
   const auto draw = [&](const std::string& name, const auto& script) {
     const fs::path png = fig / (name + ".png");
     try {
-      Draw(*gnuplot, data, png, name, script);
+      Draw(*gnuplot, data, png, name, script, logs);
       drawn.push_back(png);
     } catch (const std::runtime_error& e) {
       if (failures++ == 0) failed = e.what();
     }
   };
+  // The notes of skipped figures follow the drawing, and only when every figure was drawn: before
+  // an error they would bury it.
+  std::string skipped;
   for (const Figure& f : figures) {
     if (!f.available) {
-      log << "dvpr: figure " << f.name << ".png skipped (" << f.missing << ")\n";
+      skipped += "dvpr: figure " + f.name + ".png skipped (" + f.missing + ")\n";
       continue;
     }
     draw(f.name, f.script);
@@ -213,6 +216,7 @@ std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::ostream& log) {
   if (failures > 0) {
     throw std::runtime_error(failed + (failures > 1 ? " (and " + std::to_string(failures - 1) + " more figures)" : ""));
   }
+  log << skipped;
   return drawn;
 }
 

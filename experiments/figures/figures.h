@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "agents/algorithms/descriptors.h"
+#include "experiments/figures/gnuplot_run.h"
 #include "experiments/results/results.h"
 
 namespace dvpr {
@@ -109,8 +110,10 @@ inline constexpr int kSeedGlobalQueryBytes = 512;
 // strategy other than decentralized and broadcast. Figures without their data, or every figure
 // when gnuplot is not installed, are reported on `log` and skipped. A figure gnuplot fails to
 // draw (gnuplot_run.h) is an error: the others are still drawn, then std::runtime_error names
-// the first that failed and its log; its earlier PNG stays as it was. Returns the PNGs written.
+// the first that failed (and its log when `logs` keeps it); its earlier PNG stays as it was, and
+// the notes of skipped figures are not written (they would bury the error). Returns the PNGs
+// written.
 std::vector<std::filesystem::path> DrawFigures(const std::filesystem::path& out_dir,
-                                               std::ostream& log);
+                                               std::ostream& log, FigureLog logs = FigureLog::kKept);
 
 }  // namespace dvpr

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -10,7 +11,8 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
+#include <cstdint>
+#include <sstream>
 #include <stdexcept>
 
 #include "experiments/figures/gnuplot_text.h"
@@ -42,6 +44,10 @@ struct SpawnSetup {
 
 std::string Errno(int e) { return std::strerror(e); }
 
+// Less than this free beside a PNG gnuplot could not finish: the disk was full (the largest
+// figure, confusion_matrix.png, is about 320 kB).
+constexpr std::uint64_t kRoomForAFigure = 1 << 20;
+
 // A whole PNG: the 8-byte signature first, the 12-byte IEND chunk last (a full disk or a killed
 // gnuplot leaves a file cut short or empty).
 bool WholePng(int fd) {
@@ -56,9 +62,12 @@ bool WholePng(int fd) {
 }
 
 // gnuplot's first lines that say something, as one line (its errors quote the script line
-// and point at it with a caret on the next).
-std::string FirstWords(const fs::path& log) {
-  std::ifstream in(log);
+// and point at it with a caret on the next), read from the open log.
+std::string FirstWords(int fd) {
+  std::string text(4096, '\0');
+  const ssize_t n = ::pread(fd, text.data(), text.size(), 0);
+  text.resize(n > 0 ? static_cast<std::size_t>(n) : 0);
+  std::istringstream in(text);
   std::string words;
   for (std::string line; std::getline(in, line) && words.size() < 200;) {
     if (line.find_first_not_of(" \t^") == std::string::npos) continue;
@@ -66,6 +75,22 @@ std::string FirstWords(const fs::path& log) {
   }
   if (words.size() > 200) words = words.substr(0, 200) + "...";
   return OneLineText(words);
+}
+
+std::int64_t FileBytes(int fd) {
+  struct stat st {};
+  return ::fstat(fd, &st) == 0 ? static_cast<std::int64_t>(st.st_size) : 0;
+}
+
+// "the file system holding DIR is full (N bytes free; ...)" when less than a PNG's worth is left
+// where `fd` was written, else "" (a cut-short PNG on a file system with room has another cause).
+std::string FullFileSystem(int fd, const fs::path& dir) {
+  struct statvfs v {};
+  if (::fstatvfs(fd, &v) != 0) return "";
+  const auto free_bytes = static_cast<std::uint64_t>(v.f_bavail) * v.f_frsize;
+  if (free_bytes >= kRoomForAFigure) return "";
+  return "the file system holding " + dir.string() + " is full (" + std::to_string(free_bytes) +
+         " bytes free; gnuplot could write " + std::to_string(FileBytes(fd)) + " bytes of the PNG)";
 }
 
 }  // namespace
@@ -117,7 +142,7 @@ std::string RunProgram(const fs::path& program, const std::vector<std::string>& 
 }
 
 void DrawWithGnuplot(const fs::path& gnuplot, const fs::path& data_dir, const fs::path& gp, const fs::path& png,
-                     const fs::path& log) {
+                     const fs::path& log, FigureLog kept) {
   // Both files go through the one writer (safe_output.h): private temporaries created O_EXCL and
   // O_NOFOLLOW relative to their open folders, renamed into place, so a link planted at a final
   // or a temporary name is never followed. The log reaches its name only when the figure failed.
@@ -128,19 +153,32 @@ void DrawWithGnuplot(const fs::path& gnuplot, const fs::path& data_dir, const fs
   // yields to dvpr_output; the value is a fixed string, single-quoted.
   const std::string failure = RunProgram(gnuplot, {"gnuplot", "-e", "dvpr_output='/dev/stdout'", gp.filename().string()},
                                          data_dir, out.fd(), err.fd());
-  const std::string what = !failure.empty() ? "gnuplot failed (" + failure + ")"
-                           : !WholePng(out.fd()) ? "gnuplot wrote no whole PNG (a full disk?)"
-                                                 : "";
-  if (!what.empty()) {
-    err.Commit();  // the PNG's temporary goes with `out`: a half-drawn PNG never replaces the earlier one
-    const std::string words = FirstWords(log);
-    throw std::runtime_error("figure " + png.filename().string() + ": " + what +
-                             (words.empty() ? "" : ": " + words) + "; its log: " + log.string());
+  if (failure.empty() && WholePng(out.fd())) {
+    if (::fsync(out.fd()) != 0) throw std::runtime_error(png.string() + ": cannot write it: " + Errno(errno));
+    out.Commit();
+    std::error_code ec;
+    fs::remove(log, ec);  // an earlier failure's log (a link there is removed, not followed)
+    return;
   }
-  if (::fsync(out.fd()) != 0) throw std::runtime_error(png.string() + ": cannot write it: " + Errno(errno));
-  out.Commit();
-  std::error_code ec;
-  fs::remove(log, ec);  // an earlier failure's log (a link there is removed, not followed)
+  std::string what;
+  if (const std::string full = FullFileSystem(out.fd(), png.parent_path()); failure.empty() && !full.empty()) {
+    what = full;  // gnuplot's warnings are those of a good draw: not the cause
+  } else {
+    const std::string words = FirstWords(err.fd());
+    what = (failure.empty() ? "gnuplot exited 0 but wrote no whole PNG (" + std::to_string(FileBytes(out.fd())) + " bytes)"
+                            : "gnuplot failed (" + failure + ")") +
+           (words.empty() ? "" : ": " + words);
+  }
+  // The PNG's temporary goes with `out`: a half-drawn PNG never replaces the earlier one.
+  bool logged = false;
+  if (kept == FigureLog::kKept) {
+    try {
+      err.Commit();
+      logged = true;
+    } catch (const std::runtime_error&) {  // the disk that refused the PNG may refuse its log too
+    }
+  }
+  throw std::runtime_error("figure " + png.filename().string() + ": " + what + (logged ? "; its log: " + log.string() : ""));
 }
 
 }  // namespace dvpr

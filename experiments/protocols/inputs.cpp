@@ -104,14 +104,14 @@ DescriptorMatrix LoadTraining(const ExperimentConfig& c, const Dataset& deployme
 
 // The BoW vectors, only when a bow_ strategy runs (the default experiment's outputs and time do
 // not change): the user's file, cut to dataset.frames like the poses, or the synthetic model.
-BowData LoadBow(const ExperimentConfig& c, const std::string& origin, const Dataset& ds) {
+BowData LoadBow(const ExperimentConfig& c, const std::string& origin, const Dataset& ds, const FrameProgress& progress) {
   const bool wanted = std::any_of(c.sweep.strategies.begin(), c.sweep.strategies.end(),
                                   [](const StrategySpec& s) { return s.bag_of_words(); });
   if (!wanted) return {};
   const DatasetConfig& d = c.dataset;
   if (!d.bow) {
     return WithKey(origin, "dataset.synthetic_bow", [&] {
-      return SyntheticBow(ds.trajectory, d.synthetic, d.synthetic_bow.value_or(SyntheticBowParams{}), c.seed);
+      return SyntheticBow(ds.trajectory, d.synthetic, d.synthetic_bow.value_or(SyntheticBowParams{}), c.seed, progress);
     });
   }
   BowData bow = WithKey(origin, "dataset.bow", [&] { return LoadBowFile(*d.bow); });
@@ -126,11 +126,12 @@ BowData LoadBow(const ExperimentConfig& c, const std::string& origin, const Data
 
 }  // namespace
 
-SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string& origin) {
+SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string& origin,
+                              const FrameProgress& bow_progress) {
   SharedInputs in;
   in.config = &config;
   in.deployment = LoadDeployment(config, origin);
-  in.bow = LoadBow(config, origin, in.deployment);
+  in.bow = LoadBow(config, origin, in.deployment, bow_progress);
   const int largest = *std::max_element(config.sweep.robots.begin(), config.sweep.robots.end());
   if (in.deployment.size() < largest) {
     throw ConfigError(origin + ": robots: " + std::to_string(largest) + " robots but only " +

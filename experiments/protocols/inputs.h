@@ -3,12 +3,15 @@
 // from a validated config, once. Errors that need the data (dim larger than the descriptors,
 // frame counts of poses and descriptors differing, NaN values) are ConfigErrors naming the key.
 #include "experiments/config/config.h"
+#include "experiments/data/synthetic_bow.h"
 #include "experiments/protocols/run.h"
 
 namespace dvpr {
 
-// `origin` names the config file in error messages.
-SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string& origin);
+// `origin` names the config file in error messages. `bow_progress` hears of each frame the
+// synthetic BoW world makes (only when a bow_ strategy runs without dataset.bow).
+SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string& origin,
+                              const FrameProgress& bow_progress = {});
 
 // Throws a ConfigError naming dataset.dim when the deployment's descriptors are longer than a
 // message can carry. LoadSharedInputs checks it for a config with a protocol that sends messages

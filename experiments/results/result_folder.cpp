@@ -137,6 +137,8 @@ fs::path TemporaryFolderFor(const fs::path& target, long pid, const std::string&
 
 ResultFolder::ResultFolder(const fs::path& target) : shown_(target), target_(Normalised(target)) {
   CheckReplaceable(shown_, target_);
+  std::error_code exists_ec;
+  existed_ = fs::exists(target_, exists_ec);
   for (fs::path p = target_.parent_path(); !p.empty() && !fs::exists(p); p = p.parent_path()) {
     created_parents_.push_back(p);  // deepest first
     if (p == p.parent_path()) break;
@@ -205,6 +207,21 @@ void ResultFolder::Commit() {
                              std::strerror(error) + "); an earlier folder there is left as it was");
   }
   committed_ = true;
+}
+
+std::string ResultFolder::Explain(std::string_view error) const {
+  const std::string tmp = tmp_.string();
+  std::string shown = shown_.string();
+  while (shown.size() > 1 && shown.back() == '/') shown.pop_back();
+  std::string out;
+  for (std::size_t at = 0;;) {
+    const std::size_t hit = tmp.empty() ? std::string_view::npos : error.find(tmp, at);
+    out.append(error.substr(at, hit == std::string_view::npos ? std::string_view::npos : hit - at));
+    if (hit == std::string_view::npos) break;
+    out += shown;
+    at = hit + tmp.size();
+  }
+  return out + "; nothing was written to " + shown + (existed_ ? " (its earlier results are as they were)" : "");
 }
 
 }  // namespace dvpr

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "experiments/results/safe_output.h"
@@ -45,6 +46,10 @@ class ResultFolder {
   // failure (the earlier folder then stays as it was).
   void Commit();
 
+  // An error of the run before Commit(), for the user: the paths inside dir() (gone when the
+  // folder unwinds) as their places in the target, and what became of the target.
+  std::string Explain(std::string_view error) const;
+
  private:
   std::filesystem::path shown_;   // the target as the user spelled it, for messages
   std::filesystem::path target_;  // absolute
@@ -54,6 +59,7 @@ class ResultFolder {
   std::optional<OutputDir> output_;
   std::vector<std::filesystem::path> created_parents_;  // removed again if never committed
   bool committed_ = false;
+  bool existed_ = false;  // an earlier result folder was there
 };
 
 // The temporary folder a process `pid` writes for `target`, with `random` (RandomSuffix) as its

@@ -1,5 +1,6 @@
 // `dvpr replay` as a user runs it: a page from a real run, and its errors (one line, exit 1 for an
 // input, 2 for usage, no page written).
+#include <filesystem>
 #include <fstream>
 
 #include <gtest/gtest.h>
@@ -54,6 +55,30 @@ TEST_F(ReplayCliTest, InputErrorsAreOneLineAndWriteNothing) {
                    ": no messages of run=4 (it has robots 3; runs 0; network variants 0)\n");
   EXPECT_EQ(SnapshotFolder(Out()), recorded);  // no page, no temporary left behind
   EXPECT_NE(before, recorded);
+}
+
+// A result folder whose descriptor file moved since the run: the replay reads only the folder and
+// the poses, so it replays (it used to refuse the folder: "dataset.descriptors: file not found").
+TEST_F(ReplayCliTest, AFolderWhoseDescriptorFileMovedStillReplays) {
+  {
+    std::ofstream d(dir_ / "d.csv");
+    for (int f = 0; f < 60; ++f) {
+      for (int k = 0; k < 16; ++k) d << (k ? "," : "") << ((f * 31 + k * 7) % 17) / 17.0;
+      d << "\n";
+    }
+    std::ofstream poses(dir_ / "p.txt");
+    for (int f = 0; f < 60; ++f) poses << "1 0 0 " << f << " 0 1 0 0 0 0 1 " << (f % 7) << "\n";
+  }
+  ASSERT_EQ(RunConfig("name: tiny\nseed: 2\ndataset: {source: files, poses: p.txt, descriptors: d.csv, dim: 16}\n"
+                      "training: {synthetic: {samples: 300}}\nrobots: [3]\nruns: 1\nprotocols: [sim]\n"
+                      "evaluation: {suppression_frames: 10}\noutputs: {figures: false, messages: true}\n")
+                .status,
+            0);
+  std::filesystem::rename(dir_ / "d.csv", dir_ / "moved.csv");
+  const Result r = Dvpr("replay '" + Out().string() + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_TRUE(std::filesystem::exists(Out() / "replay_n3_run0_net0.html"));
 }
 
 TEST_F(ReplayCliTest, UsageErrorsExitTwo) {

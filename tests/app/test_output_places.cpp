@@ -11,7 +11,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
 #include <map>
+#include <optional>
+#include <utility>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -105,6 +108,78 @@ TEST_F(OutputPlaceTest, ABindMountedEmptyFolderAsOutIsRefusedBeforeTheSweep) {
                              "it, e.g. --out " + (volume / "results").string() + "\n");
   EXPECT_EQ(Names(source), std::vector<std::string>{});
   EXPECT_EQ(Names(dir_), (std::vector<std::string>{"bad.yaml", "source", "stderr.txt", "volume"}));
+}
+
+// `dvpr run --out FULL/r` in a private mount namespace where FULL is a tmpfs of `bytes` (a
+// child makes the mount, then execs dvpr with `path` as PATH): exit status and stderr, or
+// nullopt where no mount namespace can be made (not root). The mount goes with the child.
+std::optional<std::pair<int, std::string>> RunOnATinyDisk(const fs::path& dir, const fs::path& config,
+                                                           std::size_t bytes, const std::string& path) {
+  const fs::path full = dir / "full";
+  fs::create_directories(full);
+  const std::string err_file = (dir / "stderr.txt").string();
+  const std::string size = "size=" + std::to_string(bytes);
+  std::string exe = std::string(DVPR_BINARY_DIR) + "/dvpr", run = "run", cfg = config.string(), quiet = "--quiet",
+              out = "--out", where = (full / "r").string(), env_path = "PATH=" + path;
+  char* argv[] = {exe.data(), run.data(), cfg.data(), quiet.data(), out.data(), where.data(), nullptr};
+  char* envp[] = {env_path.data(), nullptr};
+  const pid_t child = ::fork();
+  if (child < 0) return std::nullopt;
+  if (child == 0) {
+    if (::unshare(CLONE_NEWNS) != 0 || ::mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0 ||
+        ::mount("tmpfs", full.c_str(), "tmpfs", 0, size.c_str()) != 0) {
+      _exit(77);
+    }
+    const int fd = ::open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0 || ::dup2(fd, 2) < 0) _exit(78);
+    ::execve(argv[0], argv, envp);
+    _exit(79);
+  }
+  int status = 0;
+  if (::waitpid(child, &status, 0) != child || !WIFEXITED(status) || WEXITSTATUS(status) == 77) return std::nullopt;
+  return std::make_pair(WEXITSTATUS(status), Slurp(err_file));
+}
+
+// A full disk while the rows are written: the error names the file where the user asked for it
+// (not inside the temporary folder, which is gone by then) and says nothing was written.
+TEST_F(OutputPlaceTest, AFullDiskNamesTheFileInTheTargetNotTheGoneTemporaryFolder) {
+  std::ofstream(Config()) << Yaml();
+  const auto r = RunOnATinyDisk(dir_, Config(), 16 * 1024, "/usr/bin:/bin");
+  if (!r) GTEST_SKIP() << "no private mount namespace here";
+  const std::string target = (dir_ / "full" / "r").string();
+  EXPECT_EQ(r->first, 1) << r->second;
+  EXPECT_EQ(r->second.rfind("dvpr: error: " + target + "/", 0), 0u) << r->second;
+  EXPECT_NE(r->second.find(": write failed (No space left on device); nothing was written to " + target + "\n"),
+            std::string::npos) << r->second;
+  EXPECT_EQ(r->second.find(".dvpr-run"), std::string::npos) << r->second;
+  EXPECT_EQ(std::count(r->second.begin(), r->second.end(), '\n'), 1) << r->second;
+}
+
+// A figure that fails because the disk is full says so, with the bytes free: no guess, no quote of
+// gnuplot's warnings (a good draw prints them too), no log (the run's folder is removed with it),
+// no "skipped" notes before it. The stand-in gnuplot prints a warning, writes the PNG's signature,
+// then fills the disk from inside the run's folder, and exits 0.
+TEST_F(OutputPlaceTest, AFigureOnAFullDiskSaysTheDiskIsFull) {
+  const fs::path bin = dir_ / "bin";
+  fs::create_directories(bin);
+  Write(bin / "gnuplot", "#!/bin/sh\necho 'warning: a harmless warning' >&2\nprintf '\\211PNG\\r\\n\\032\\n'\n"
+                         "cat /dev/zero > filler 2>/dev/null\nexit 0\n");
+  fs::permissions(bin / "gnuplot", fs::perms::owner_all);
+  std::string yaml = Yaml();
+  std::ofstream(Config()) << yaml.replace(yaml.find("figures: false"), 14, "figures: true");
+  const auto r = RunOnATinyDisk(dir_, Config(), 8 << 20, bin.string() + ":/usr/bin:/bin");
+  if (!r) GTEST_SKIP() << "no private mount namespace here";
+  const std::string target = (dir_ / "full" / "r").string();
+  EXPECT_EQ(r->first, 1) << r->second;
+  EXPECT_EQ(r->second.rfind("dvpr: error: figure confusion_matrix.png: the file system holding " + target +
+                                "/figures is full (0 bytes free; gnuplot could write 8 bytes of the PNG) (and ",
+                            0),
+            0u)
+      << r->second;
+  EXPECT_NE(r->second.find(" more figures); nothing was written to " + target + "\n"), std::string::npos) << r->second;
+  EXPECT_EQ(r->second.find("warning"), std::string::npos) << r->second;
+  EXPECT_EQ(r->second.find("log"), std::string::npos) << r->second;
+  EXPECT_EQ(std::count(r->second.begin(), r->second.end(), '\n'), 1) << r->second;  // no "skipped" notes
 }
 
 TEST_F(OutputPlaceTest, AnOutOf250CharactersWorks) {

@@ -82,9 +82,10 @@ TEST_F(GnuplotRun, AKilledGnuplotIsAFailure) {
 
 TEST_F(GnuplotRun, APngCutShortOrEmptyIsAFailureEvenWithStatusZero) {
   // The signature alone (as a full disk leaves it), then nothing at all.
-  for (const std::string& body : {std::string("printf '\\211PNG\\r\\n\\032\\n'"), std::string("true")}) {
-    EXPECT_EQ(Draw(Program("short", body)),
-              "figure f.png: gnuplot wrote no whole PNG (a full disk?); its log: " + (data() / "f.log").string());
+  // On a disk with room that is not the disk's doing: the bytes written, gnuplot's words, its log.
+  for (const auto& [body, bytes] : {std::pair<std::string, int>{"printf '\\211PNG\\r\\n\\032\\n'", 8}, {"true", 0}}) {
+    EXPECT_EQ(Draw(Program("short", body)), "figure f.png: gnuplot exited 0 but wrote no whole PNG (" +
+                                                std::to_string(bytes) + " bytes); its log: " + (data() / "f.log").string());
     EXPECT_EQ(Slurp(png()), "earlier");
     EXPECT_EQ(Names(dir_ / "figures"), (std::vector<std::string>{"data", "f.png"}));
   }

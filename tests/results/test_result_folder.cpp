@@ -108,6 +108,28 @@ TEST_F(ResultFolderTest, AnErrorBeforeCommitLeavesTheEarlierFolderByteIdentical)
   EXPECT_EQ(Names(root_), Strings{"out"});
 }
 
+// An error of the run names its files where the user looks for them: the temporary folder's
+// path (every occurrence) becomes the target's as the user spelled it, and the line says what
+// became of the target (an earlier result folder stays as it was).
+TEST_F(ResultFolderTest, AnErrorIsExplainedWithTheTargetsPathsNotTheTemporaryOnes) {
+  const fs::path fresh = root_ / "fresh";
+  {
+    ResultFolder folder(fresh);
+    const std::string tmp = folder.dir().string();
+    EXPECT_EQ(folder.Explain(tmp + "/runs.csv: write failed (No space left on device)"),
+              fresh.string() + "/runs.csv: write failed (No space left on device); nothing was written to " +
+                  fresh.string());
+  }
+  const fs::path out = EarlierResult();
+  ResultFolder folder(out.string() + "/");
+  const std::string tmp = folder.dir().string();
+  EXPECT_EQ(folder.Explain("figure a.png: " + tmp + "/figures/a.gp and " + tmp + "/figures/b.gp"),
+            "figure a.png: " + out.string() + "/figures/a.gp and " + out.string() +
+                "/figures/b.gp; nothing was written to " + out.string() + " (its earlier results are as they were)");
+  EXPECT_EQ(folder.Explain("no path here"),
+            "no path here; nothing was written to " + out.string() + " (its earlier results are as they were)");
+}
+
 TEST_F(ResultFolderTest, RefusesWhatDvprDidNotWrite) {
   const fs::path mine = root_ / "mine";
   fs::create_directories(mine);
