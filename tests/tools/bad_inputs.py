@@ -275,9 +275,12 @@ def message_problems(r, text):
     if len(r.lines) != 1:
         problems.append("%d stderr lines" % len(r.lines))
     missing = [w if isinstance(w, str) else "|".join(w) for w in c.expect if not contains(text, w)]
-    if missing and c.prior and c.prior != "file" and len(r.lines) == 1 and \
+    # Refusing to replace an earlier folder is a documented choice of `dvpr run` (issue 12); other
+    # commands on an earlier folder (replay, plot) must say what their case expects.
+    reruns = c.argv is None or c.argv[0] == "run"
+    if missing and reruns and c.prior and c.prior != "file" and len(r.lines) == 1 and \
             NAMES_OUT.search(r.lines[0]):
-        missing = []  # refusing to replace an earlier folder is a documented choice (issue 12)
+        missing = []
     if missing:
         problems.append("does not name " + ", ".join(missing))
     if any((ord(ch) < 32 and ch != "\t") or ch in "\x7f\ufffd" for line in r.lines
