@@ -60,10 +60,12 @@ struct Drive {
   double frames = 0;
 };
 
-// A team of the sweep: its robots, frames and mission (when it takes its last frame).
+// A team of the sweep: its robots, frames, the most one robot takes, and mission (when it takes
+// its last frame).
 struct Team {
   int robots = 0;
   double frames = 0;
+  double own_frames = 0;
   double mission_ns = 0;
   std::vector<Drive> drives;
 };
@@ -76,16 +78,16 @@ double FrameNs(double k, double fps) { return static_cast<double>(std::llround(k
 Team SplitTeam(int n, double frames, double fps) {
   const double longest = std::ceil(frames / n);
   const double mission = FrameNs(longest - 1, fps);
-  return {n, frames, mission, {Drive{0, mission, frames}}};
+  return {n, frames, longest, mission, {Drive{0, mission, frames}}};
 }
 
 // A scenario's team before its poses are loaded, each robot driving `frames` of the sequence
 // (staggered, reverse), or a stretch of `length` from time 0 (random_routes: its start is drawn
 // in [0, (frames - length) / fps], so the mission ends by the sequence's last frame time).
 Team ScenarioTeam(const ScenarioSpec& s, int n, double frames, double fps) {
-  Team team{n, 0, 0, {}};
   const bool routes = s.kind == ScenarioKind::kRandomRoutes;
   const double each = routes ? std::min<double>(s.length, frames) : frames;
+  Team team{n, 0, each, 0, {}};
   const double drive = FrameNs(each - 1, fps);
   for (int r = 0; r < n; ++r) {
     const double start = routes ? 0.0 : std::round(r * s.offset_s * 1e9);
@@ -99,10 +101,11 @@ Team ScenarioTeam(const ScenarioSpec& s, int n, double frames, double fps) {
 
 // A loaded plan's team: each robot's captures as they are.
 Team PlannedTeam(const SequenceSplit& plan, double fps) {
-  Team team{plan.robots(), static_cast<double>(plan.frames()),
+  Team team{plan.robots(), static_cast<double>(plan.frames()), 0,
             static_cast<double>(plan.LastCapture(fps).ns()), {}};
   for (int r = 0; r < plan.robots(); ++r) {
     const FrameStream s = plan.StreamOf(r, nullptr, fps);
+    team.own_frames = std::max(team.own_frames, static_cast<double>(s.count));
     if (s.count == 0) continue;
     team.drives.push_back(Drive{static_cast<double>(s.TimeOf(0).ns()), static_cast<double>(s.TimeOf(s.count - 1).ns()),
                                 static_cast<double>(s.count)});
@@ -128,8 +131,8 @@ struct RunShape {
   bool paper = false;
   double dim = 0;
   double strategies = 0;
-  bool broadcast_like = false;  // a strategy that sends each query to every robot
-  double probes = 1;            // else the most robots a query goes to
+  bool bow = false;             // a bow_ strategy: its queries go to each robot as messages of their own
+  double probes = 1;            // the most robots a descriptor query goes to as messages of their own
   double replicas = 1;          // the most robots that keep a frame
   bool connectivity = false;    // outputs.connectivity on a radio
   std::vector<LinkStateParams> link_state;  // the radio's link_state entries
@@ -143,7 +146,7 @@ RunShape ShapeOf(const ExperimentConfig& c, double dim) {
   shape.dim = dim;
   shape.strategies = static_cast<double>(c.sweep.strategies.size());
   for (const StrategySpec& s : c.sweep.strategies) {
-    shape.broadcast_like = shape.broadcast_like || s.broadcast() || s.bag_of_words();
+    shape.bow = shape.bow || s.bag_of_words();
     if (s.routing == StrategySpec::Routing::kProbe) shape.probes = std::max<double>(shape.probes, s.probe.probes);
     if (s.routing == StrategySpec::Routing::kReplicate) {
       shape.probes = std::max<double>(shape.probes, s.replicate.max_replicas);
@@ -152,40 +155,44 @@ RunShape ShapeOf(const ExperimentConfig& c, double dim) {
   }
   const bool radio = Lists(c.network, LinkModelKind::kRadio);
   shape.connectivity = shape.sim && radio && c.outputs.connectivity;
-  for (const RoutingEntry& e : c.network.routing) {
-    if (shape.sim && radio && e.kind == RoutingKind::kLinkState) shape.link_state.push_back(e.link_state);
+  for (const NextHopEntry& e : c.network.routing) {
+    if (shape.sim && radio && e.kind == NextHopKind::kLinkState) shape.link_state.push_back(e.link_state);
   }
   return shape;
 }
 
-// The verification requests a robot has in flight at once on the slowest variant: its own, and
-// those it sends while one is on its way (its latency, and its bytes at the rate), at most what
-// its queues hold (a request whose packets its queue cannot take is dropped as it is sent) and
-// those past them, propagating.
-double RequestsInFlight(const NetworkConfig& n, int robots, double request_bytes, double fps) {
-  double in_flight = 1;
+// The verification requests a robot may have in flight at once (sweep_size.h): what its queues
+// hold and what has left them but not arrived, on the variant where that is most. One on ideal
+// links; none when every variant drops the request as it is sent.
+double RequestsInFlight(const NetworkConfig& n, int robots, double request_bytes) {
+  double in_flight = 0;
   for (const LinkModelKind model : n.model) {
-    if (model == LinkModelKind::kIdeal) continue;
-    const bool wifi = model == LinkModelKind::kWifi;
-    double bps = static_cast<double>(wifi ? n.wifi.rate.bps() : n.bandwidth.front().bps());
-    double latency_ns = 0;
-    for (const DataRate r : n.bandwidth) bps = wifi ? bps : std::min(bps, static_cast<double>(r.bps()));
-    for (const SimTime l : n.latency) latency_ns = wifi ? 0.0 : std::max(latency_ns, static_cast<double>(l.ns()));
-    for (const LinkOverrideParams& o : n.links) {
-      if (o.bandwidth && !wifi) bps = std::min(bps, static_cast<double>(o.bandwidth->bps()));
-      if (o.latency && !wifi) latency_ns = std::max(latency_ns, static_cast<double>(o.latency->ns()));
+    if (model == LinkModelKind::kIdeal) {
+      in_flight = std::max(in_flight, 1.0);
+      continue;
     }
-    const double mtu = static_cast<double>(std::min_element(n.mtu.begin(), n.mtu.end())->value());
+    const bool wifi = model == LinkModelKind::kWifi;
+    double bps = wifi ? static_cast<double>(n.wifi.rate.bps()) : 0.0;
+    double latency_ns = 0;
+    if (!wifi) {
+      for (const DataRate r : n.bandwidth) bps = std::max(bps, static_cast<double>(r.bps()));
+      for (const SimTime l : n.latency) latency_ns = std::max(latency_ns, static_cast<double>(l.ns()));
+      for (const LinkOverrideParams& o : n.links) {
+        if (o.bandwidth) bps = std::max(bps, static_cast<double>(o.bandwidth->bps()));
+        if (o.latency) latency_ns = std::max(latency_ns, static_cast<double>(o.latency->ns()));
+      }
+    }
+    const double mtu = static_cast<double>(std::max_element(n.mtu.begin(), n.mtu.end())->value());
     const double queue = *std::max_element(n.queue_packets.begin(), n.queue_packets.end());
     // IP packets of 8-byte multiples of data behind a 20-byte header; LCM's and UDP's headers and
     // the channel about 64 bytes; 22 bytes of IP and link framing a packet.
     const double packets = std::ceil((request_bytes + 64) / (std::floor((mtu - 20) / 8) * 8));
     if (packets - 1 > queue || bps <= 0) continue;
-    const double transit_s = latency_ns * 1e-9 + (request_bytes + 64 + 22 * packets) * 8 / bps;
+    const double wire_s = (request_bytes + 64 + 22 * packets) * 8 / bps;
+    const double per_queue = 1 + std::floor(queue / packets) + std::floor(latency_ns * 1e-9 / wire_s) + 1;
     // A queue per destination on point-to-point links, one per robot on the other models.
     const double queues = model == LinkModelKind::kPointToPoint ? robots - 1 : 1;
-    const double held = queues * std::floor((queue + 1) / packets) + std::ceil(latency_ns * 1e-9 * fps);
-    in_flight = std::max(in_flight, 1 + std::min(std::ceil(transit_s * fps), held));
+    in_flight = std::max(in_flight, queues * per_queue);
   }
   return in_flight;
 }
@@ -209,34 +216,56 @@ void AddHeartbeats(const RunShape& shape, const Team& t, RunEstimate& e) {
   e.seconds[Index(SizeTerm::kHeartbeats)] = e.heartbeats * t.robots * kSecondsPerMessage;
 }
 
+// When the network stops holding copies for the team (Scenario::Run): the end of its mission, or
+// the last edge of a talk window of one of its robots after it.
+double HoldHorizonNs(const NetworkConfig& n, const Team& t) {
+  double horizon = t.mission_ns;
+  for (const ScheduledWindow& w : n.windows) {
+    if (w.robot >= t.robots) continue;
+    horizon = std::max(horizon, static_cast<double>(w.window.from.ns()));
+    if (w.window.until != SimTime::Max()) horizon = std::max(horizon, static_cast<double>(w.window.until.ns()));
+  }
+  return horizon;
+}
+
 // Store-and-forward: each query copy (and heartbeat copy) may be held from when it is sent until
-// hold_time or the end of the mission, asked again every retry period; each holder retries every
-// period of the mission.
+// hold_time or the hold horizon, asked again every retry period and twice more; each holder
+// retries every period until the horizon and once past it.
 void AddRetries(const RunShape& shape, const Team& t, RunEstimate& e) {
   const DisconnectedParams& d = shape.config->network.disconnected;
   if (!shape.sim || d.kind != DisconnectedKind::kStoreAndForward) return;
   const double n = t.robots;
-  const double fan_out = shape.broadcast_like ? n - 1 : std::min(n - 1, shape.probes);
+  // Every row of the sim protocol runs a team whose queries may each go to every other robot: its
+  // strategy (broadcast, a bow_ one) or the broadcast the descriptor strategies' relative AUC is
+  // against, run beside them. Broadcast's copies of a query are one message, the others' each
+  // their own.
+  const double fan_out = n - 1;
+  const double messages = t.frames * (shape.bow ? n - 1 : std::min(n - 1, shape.probes));
   const double hold = static_cast<double>(d.hold_time.ns()), retry = static_cast<double>(d.retry.ns());
+  const double horizon = HoldHorizonNs(shape.config->network, t);
   double held_ns = 0;
-  for (const Drive& drive : t.drives) held_ns += fan_out * HeldNs(drive, t.mission_ns, hold);
+  for (const Drive& drive : t.drives) held_ns += fan_out * HeldNs(drive, horizon, hold);
   const double heartbeat_copies = e.heartbeats * (n - 1);
-  held_ns += HeldNs(Drive{0, t.mission_ns, heartbeat_copies}, t.mission_ns, hold);
+  held_ns += HeldNs(Drive{0, t.mission_ns, heartbeat_copies}, horizon, hold);
   e.held_copies = t.frames * fan_out + heartbeat_copies;
-  e.retries = held_ns / retry + n * (std::floor(t.mission_ns / retry) + 1);
+  e.retries = held_ns / retry + 2 * e.held_copies + n * (std::floor(horizon / retry) + 1);
   e.seconds[Index(SizeTerm::kRetries)] = e.retries * kSecondsPerMessage;
-  const double wire = t.frames * fan_out * (4 * shape.dim + 100) + heartbeat_copies * 125;
-  e.bytes[Index(SizeTerm::kHeld)] = std::min(wire, n * static_cast<double>(d.hold_bytes.value()));
+  // Each copy costs its entry, each message its bytes (a broadcast's copies share its payload).
+  const double query_wire = 4 * shape.dim + 100, heartbeat_wire = 125;
+  const double held = e.held_copies * kBytesPerHeldCopy + messages * query_wire + e.heartbeats * heartbeat_wire;
+  const double buffers = n * static_cast<double>(d.hold_bytes.value());
+  e.bytes[Index(SizeTerm::kHeld)] =
+      std::min(held, buffers * (1 + kBytesPerHeldCopy / std::min(query_wire, heartbeat_wire)));
 }
 
 void AddRequests(const RunShape& shape, const Team& t, RunEstimate& e) {
   if (!shape.sim) return;
   const ExperimentConfig& c = *shape.config;
   const double request = static_cast<double>(c.agent.verification.request_bytes.value());
-  e.request_bytes = t.frames * request;
+  e.requests = t.frames;
+  e.request_bytes = e.requests * request;
   e.seconds[Index(SizeTerm::kRequests)] = e.request_bytes * kSecondsPerRequestByte;
-  const double own_frames = std::ceil(t.frames / t.robots);
-  e.requests_in_flight = std::min(RequestsInFlight(c.network, t.robots, request, c.dataset.fps), own_frames);
+  e.requests_in_flight = std::min(RequestsInFlight(c.network, t.robots, request), t.own_frames);
   e.bytes[Index(SizeTerm::kRequests)] = t.robots * (1 + e.requests_in_flight) * request + request;
 }
 
@@ -262,8 +291,8 @@ RunEstimate EstimateRun(const RunShape& shape, const Team& t) {
   if (shape.sim) {
     e.messages = 2 * f * t.robots;
     e.seconds[Index(SizeTerm::kMessages)] = e.messages * kSecondsPerMessage;
-    const double copies = std::min<double>(shape.replicas, t.robots);
-    e.bytes[Index(SizeTerm::kStores)] = f * copies * 2 * (6 * shape.dim + 12);
+    e.stored = f * std::min<double>(shape.replicas, t.robots);
+    e.bytes[Index(SizeTerm::kStores)] = e.stored * 2 * (6 * shape.dim + 12);
   }
   if (shape.sim || shape.paper) e.bytes[Index(SizeTerm::kStores)] += f * kBytesPerFrameRecord;
   AddBeacons(shape, t, e);
@@ -272,6 +301,19 @@ RunEstimate EstimateRun(const RunShape& shape, const Team& t) {
   AddRequests(shape, t, e);
   AddConnectivity(shape, t, e);
   return e;
+}
+
+// Whether the sweep makes dataset.synthetic_bow's vectors: a bow_ strategy runs on no BoW file.
+bool MakesSyntheticBow(const ExperimentConfig& c) {
+  const auto& s = c.sweep.strategies;
+  return !c.dataset.bow && std::any_of(s.begin(), s.end(), [](const StrategySpec& x) { return x.bag_of_words(); });
+}
+
+// synthetic_bow's words and vectors of `frames` frames at their largest: all of them at once
+// while TfIdfFromWords makes the vectors from the words (sweep_size.h).
+double SyntheticBowBytes(const SyntheticBowParams& p, double frames) {
+  const double features = p.features, vocabulary = p.vocabulary;
+  return frames * (4 * features + 16 * std::min(features, vocabulary) + 72) + 16 * vocabulary;
 }
 
 // The inputs made once: the deployment's descriptors, the training set's, the paper protocol's
@@ -312,13 +354,13 @@ SweepSize Estimate(const ExperimentConfig& c, const std::vector<Team>& teams, do
     size.seconds_per_run = size.slowest.Seconds();
     frames = std::max(frames, t.frames);
   }
-  size.input_bytes = InputBytes(shape, frames);
   if (c.dataset.Planned()) size.plan_key = c.dataset.trajectories.empty() ? "dataset.scenario" : "dataset.trajectories";
-  const bool bow = std::any_of(s.strategies.begin(), s.strategies.end(), [](const StrategySpec& x) { return x.bag_of_words(); });
-  if (bow && !c.dataset.bow) {
+  if (MakesSyntheticBow(c)) {
     const SyntheticBowParams p = c.dataset.synthetic_bow.value_or(SyntheticBowParams{});
     size.input_seconds = frames * (2 * p.range_m) * (2 * p.range_m) * p.landmark_density * kSecondsPerLandmark;
+    size.bow_bytes = SyntheticBowBytes(p, frames);
   }
+  size.input_bytes = InputBytes(shape, frames) + size.bow_bytes;
   return size;
 }
 
@@ -374,20 +416,30 @@ Explained TimeTerm(SizeTerm term, const RunEstimate& e, const std::string& plan_
 Explained MemoryTerm(std::optional<SizeTerm> term, const SweepSize& size, const std::string& plan_key) {
   const RunEstimate& e = size.largest;
   const std::string per_run = term ? GiB(e.bytes[Index(*term)]) + " a run of " : "";
+  if (!term && size.bow_bytes > size.input_bytes / 2) {
+    return {"dataset.synthetic_bow",
+            GiB(size.input_bytes) + " of inputs made once (" + GiB(size.bow_bytes) +
+                " of it dataset.synthetic_bow's words and vectors, frames x (4 features + 16 min(features, " +
+                "vocabulary) + 72) + 16 vocabulary bytes)",
+            "lower dataset.synthetic_bow's features or dataset.frames"};
+  }
   if (!term) {
     return {"dataset, training", GiB(size.input_bytes) + " of inputs made once (the deployment's and the training " +
-                                     "set's descriptors, the paper protocol's neighbour lists)",
+                                     "set's descriptors, the paper protocol's neighbour lists" +
+                                     (size.bow_bytes > 0 ? ", dataset.synthetic_bow's words and vectors" : "") + ")",
             "lower dataset.frames or dataset.dim"};
   }
   switch (*term) {
     case SizeTerm::kRequests:
       return {"verification.request_bytes",
               per_run + "verification payloads (" + std::to_string(e.robots) + " robots x (1 kept + " +
-                  Figure(e.requests_in_flight) + " in flight) x request_bytes, and one being decoded)",
+                  Figure(e.requests_in_flight) + " in flight) x request_bytes, and one being sent or decoded)",
               "lower verification.request_bytes"};
     case SizeTerm::kHeld:
-      return {"network.disconnected", per_run + "store-and-forward copies held (" + Figure(e.held_copies) +
-                                          " copies, at most robots x hold_bytes)",
+      return {"network.disconnected",
+              per_run + "store-and-forward copies held (" + Figure(e.held_copies) + " copies, " +
+                  Figure(kBytesPerHeldCopy) + " bytes each and their messages' bytes, at most what robots x " +
+                  "hold_bytes take)",
               "lower network.disconnected's hold_bytes"};
     case SizeTerm::kConnectivity:
       return {"outputs.connectivity" + (plan_key.empty() ? "" : ", " + plan_key),

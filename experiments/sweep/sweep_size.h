@@ -30,11 +30,16 @@
 //  - failover heartbeats (failover.enabled): robots x (floor(mission / heartbeat_period) + 1),
 //    each sent and heard by robots - 1, kSecondsPerMessage each;
 //  - store-and-forward retries (network.disconnected): every copy a robot may hold - its queries'
-//    (frames x the strategies' largest fan-out: robots - 1 for broadcast) and with failover its
-//    heartbeats' - asked again every retry period (DisconnectedParams::kRetry, 100 ms) for
-//    min(hold_time, mission - when it was sent), plus each holder's retry event every period of
-//    the mission: kSecondsPerMessage each (past the mission no robot moves, so no retry finds a
-//    new route; the network does not stop its retries there yet, docs/config.md);
+//    (frames x (robots - 1): a broadcast's, which every row runs, as the reference of the
+//    descriptor strategies' relative AUC if not as its strategy) and with failover its
+//    heartbeats' - asked again every retry period (DisconnectedParams::kRetry, 100 ms) while it is
+//    held, min(hold_time, horizon - when it was sent) (its frames spread evenly over its drive),
+//    and twice more (the retry that finds it expired or past the horizon and drops it, and one
+//    for a copy sent between two retries), plus each holder's retry event every period until the
+//    horizon and one past it: kSecondsPerMessage each. The horizon is the end of the mission, or
+//    the last edge of a talk window (network.schedule) after it: past it no robot moves and no
+//    window opens, so the network holds nothing longer (Network::SetHoldHorizon, set by
+//    Scenario::Run) and drops what has no way yet at its first retry after it;
 //  - verification requests: frames x request_bytes made, encoded and decoded (one request per
 //    query at most), kSecondsPerRequestByte each;
 //  - outputs.connectivity (radio): floor(mission x fps) + 1 steps, each kSecondsPerConnectivityStep
@@ -50,18 +55,36 @@
 //    kBytesPerFrameRecord a frame of records;
 //  - with paper, kBytesPerFrameRecord a frame (routes and matches; the neighbour lists are an
 //    input);
-//  - verification payloads in flight: robots x (1 + in flight) x request_bytes + one being
-//    decoded: each robot keeps its request to refill it; in flight 1 + the requests a robot sends
-//    while one is on its way, min(ceil(transit x fps), what its queues hold + ceil(latency x fps)),
-//    at most its frames. transit: the slowest variant's latency and the request's bytes at its
-//    rate (0 on ideal); a queue of q packets holds floor((q + 1) / the request's packets) (none:
-//    the request is dropped as it is sent), one queue a destination on point_to_point;
-//  - store-and-forward: the held copies' wire bytes (4 dim + 100 a query, 125 a heartbeat), at
-//    most robots x hold_bytes;
+//  - verification payloads in flight: robots x (1 + in flight) x request_bytes + one being sent
+//    or decoded: each robot keeps its request to refill it. In flight, at most its frames and what
+//    its queues can hold on the variant that holds most (the largest queue and MTU, the fastest
+//    rate, the longest latency): per queue of q packets the request on the wire, the whole ones
+//    waiting, floor(q / the request's packets) (FifoTransmitter: the packet on the wire is not in
+//    the queue), and those past it, propagating, floor(latency / its time on the wire) + 1; a
+//    queue a destination on point_to_point, one a robot on the other models; one on ideal; none
+//    where a request of more than q + 1 packets is dropped, and freed, as it is sent (20 robots'
+//    60 MB requests over 400 frames: 1.17 GiB, 2.29 GiB with one in flight each as before; the
+//    run's peak grew by 0.82 GiB under AddressSanitizer, 12 of the robots having sent one). Not
+//    the requests a robot sends while one is on its way, ceil(transit x fps): a robot sends them
+//    as its queries' replies come in, which a loaded link delays and bunches (4 robots' 200 kB
+//    requests over 10 Mbit/s queues of 1000 packets: 13 of one robot in flight at once, where
+//    that made 3);
+//  - store-and-forward: kBytesPerHeldCopy a held copy and its message's wire bytes once (4 dim +
+//    100 a query, 125 a heartbeat: a broadcast's copies share one payload, multi_probe_,
+//    replicate_ and bow_ queries are a message a copy), at most robots x hold_bytes of wire bytes
+//    (the buffers) and kBytesPerHeldCopy for each copy they can take. 100 robots holding every
+//    broadcast query of 4541 frames of dim 16384: 0.34 GiB by this, and the run's peak grew by
+//    0.37 GiB under AddressSanitizer (whose shadow and redzones add about an eighth); counting
+//    every copy's wire bytes, as before, made it 27.5 GiB;
 //  - outputs.connectivity: steps x (strategies + 1) x (kBytesPerConnectivityRow + 8 robots).
 // Inputs, made once: the deployment's descriptors (frames x dim x 4), the training set's
-// (synthetic: samples; deployment: frames; files: not counted), and with paper the neighbour
-// lists (frames x 64 x 8).
+// (synthetic: samples; deployment: frames; files: not counted), with paper the neighbour lists
+// (frames x 64 x 8), and with a bow_ strategy on dataset.synthetic_bow its words and vectors at
+// their largest, while TfIdfFromWords makes them: each frame's `features` int32 words, its term
+// frequencies and its tf-idf vector (8 bytes a word it has: at most min(features, vocabulary)),
+// 24 bytes a vector, and the idf's two tables of vocabulary entries, frames x (4 features + 16
+// min(features, vocabulary) + 72) + 16 vocabulary bytes (not the landmarks the world draws
+// around the trajectory; a BoW file is read, not counted).
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -86,6 +109,9 @@ inline constexpr double kSecondsPerConnectivityPair = 2e-7;
 inline constexpr double kBytesPerFrameRecord = 256;
 // A connectivity.csv row (288 bytes, twice for its vector's growth) or a step's snapshot.
 inline constexpr double kBytesPerConnectivityRow = 600;
+// A held copy (Network's HeldCopy, 40 bytes), twice for its vector's growth and twice while a
+// retry refills the vector it takes the copies from.
+inline constexpr double kBytesPerHeldCopy = 160;
 
 // The terms of a run's estimate, each named in a refusal by the config keys that set it.
 enum class SizeTerm { kSearch, kMessages, kBeacons, kHeartbeats, kRetries, kRequests, kConnectivity, kStores, kHeld };
@@ -98,11 +124,13 @@ struct RunEstimate {
   double mission_s = 0;  // when it takes its last frame
   double multiply_adds = 0;       // search
   double messages = 0;            // query and reply copies
+  double stored = 0;              // descriptors the robots' stores keep (frames x copies)
   double beacons = 0;             // link_state HELLO and TC transmissions
   double heartbeats = 0;          // failover heartbeats sent
   double held_copies = 0;         // store-and-forward: copies a robot may hold
   double retries = 0;             // held copies asked again, and the holders' retry events
-  double request_bytes = 0;       // verification payload bytes made
+  double requests = 0;            // verification requests made (one a query at most)
+  double request_bytes = 0;       // and their payload bytes
   double requests_in_flight = 0;  // a robot's at once
   double connectivity_steps = 0;  // outputs.connectivity rows of one strategy
   std::array<double, kSizeTerms> seconds{};  // by SizeTerm
@@ -122,6 +150,7 @@ struct SweepSize {
   // them (0 otherwise: a BoW file is read, not made), and the inputs' memory.
   double input_seconds = 0;
   double input_bytes = 0;
+  double bow_bytes = 0;  // of input_bytes: synthetic_bow's words and vectors while they are made
   RunEstimate largest;  // the run of bytes_per_run
   RunEstimate slowest;  // the run of seconds_per_run
   // The key of a planned team, whose plan sets the mission: "dataset.scenario",

@@ -218,12 +218,13 @@ TEST_F(CliBowFileTest, ABinaryFileWithAFrameTooFewNamesTheKeyAndTheCounts) {
                 Error("dataset.bow: " + bow.string() + " has 39 frames, the dataset 40"));
 }
 
-// synthetic_bow at its documented maxima, 60000 frames: (2 x 1000 m)^2 x 10 landmarks examined a
-// frame, 1.7 s each, 102000 s (28.3 h) before the first run, on any number of cores. Refused
+// synthetic_bow at its documented maxima of landmarks, 60000 frames: (2 x 1000 m)^2 x 10 landmarks
+// examined a frame, 1.7 s each (100 features a frame: at 100000 its 112 GiB of words and vectors
+// would be refused first, by memory), 102000 s (28.3 h) before the first run, on any number of cores. Refused
 // before the inputs are made (dataset.frames bounds them): one line, nothing written, at once.
 TEST_F(CliChecksTest, ASweepOfMoreThanADayIsRefusedBeforeTheInputsAreMade) {
   dataset_ = "{source: synthetic, poses: '" + Poses().string() + "', dim: 32, frames: 60000, synthetic_bow: "
-             "{features: 100000, vocabulary: 10000000, landmark_density: 10, range_m: 1000, field_of_view_deg: 360}}";
+             "{features: 100, vocabulary: 10000000, landmark_density: 10, range_m: 1000, field_of_view_deg: 360}}";
   const Result r = RunConfig(Yaml("strategies: [bow_decentralized]\n"));
   ExpectConfigError(r, Config().string() + ": robots, runs, strategies, network, dataset: the sweep would take about "
                                            "28.3 h on ");

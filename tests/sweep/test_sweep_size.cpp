@@ -2,8 +2,10 @@
 // against a count of its events worked by hand from the rules of the code that makes them (the
 // link-state daemon's and the failover's timers, the network's store-and-forward retries, the
 // connectivity steps), and the refusals of the configs that used to run for hours or be killed
-// for memory without a word, each naming the key responsible.
+// for memory without a word, each naming the key responsible. test_sweep_size_measured.cpp checks
+// the terms against what small runs count.
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -11,6 +13,7 @@
 
 #include "experiments/config/config.h"
 #include "experiments/sweep/sweep_size.h"
+#include "tests/test_support.h"
 
 namespace dvpr {
 namespace {
@@ -36,10 +39,11 @@ constexpr double kGiB = 1024.0 * 1024 * 1024;
 // latencies, ideal adding 1 more) = 6 x 2 x 8 = 96 runs. A run of 5 robots on 1000 frames of
 // dim 16: stores 1000 x 2 x (6 x 16 + 12) = 216000 bytes (each frame kept by one robot), records
 // 1000 x 256 = 256000, and the verification payloads: a 25000-byte request is 17 packets of at
-// most 1480 data bytes, (25064 + 17 x 22) x 8 bits at 1 Mbit/s = 0.2035 s after 3 ms, during
-// which its robot sends 3 more (10 fps; its 4 queues of 100 packets hold 5 each): 4 in flight and
-// the one it keeps, 5 x 5 x 25000, and one being decoded = 650000. Inputs: (1000 + 20000
-// training) x 16 x 4 bytes and the paper's neighbour lists, 1000 x 64 x 8.
+// most 1480 data bytes, (25064 + 17 x 22) x 8 bits at 2 Mbit/s (the fastest) = 0.1018 s on the
+// wire, longer than the 3 ms it then propagates; each of its robot's 4 queues of 100 packets holds
+// the one on the wire, floor(100 / 17) = 5 waiting and 1 propagating: 28 in flight and the one it
+// keeps, 5 x 29 x 25000, and one being decoded = 3650000. Inputs: (1000 + 20000 training) x 16 x 4
+// bytes and the paper's neighbour lists, 1000 x 64 x 8.
 TEST(SweepSizeTest, RunsAndBytesPerRunWorkedByHand) {
   const ExperimentConfig c = Config(
       "robots: [2, 5]\nruns: 3\nprotocols: [paper, sim]\nstrategies: [decentralized, broadcast]\n"
@@ -47,18 +51,20 @@ TEST(SweepSizeTest, RunsAndBytesPerRunWorkedByHand) {
   const SweepSize size = EstimateSweepSize(c, 1000, 16);
   EXPECT_EQ(size.runs, 96.0);
   EXPECT_EQ(size.largest.robots, 5);
-  EXPECT_EQ(size.largest.requests_in_flight, 4.0);
+  EXPECT_EQ(size.largest.requests_in_flight, 28.0);
+  EXPECT_EQ(size.largest.stored, 1000.0);
   EXPECT_EQ(Bytes(size.largest, SizeTerm::kStores), 216000.0 + 256000.0);
-  EXPECT_EQ(Bytes(size.largest, SizeTerm::kRequests), 650000.0);
-  EXPECT_EQ(size.bytes_per_run, 1122000.0);
+  EXPECT_EQ(Bytes(size.largest, SizeTerm::kRequests), 3650000.0);
+  EXPECT_EQ(size.bytes_per_run, 4122000.0);
   EXPECT_EQ(size.input_bytes, 21000.0 * 64 + 512000.0);
-  // On 10 Mbit/s with 2 ms (the defaults) a request is on its way 22.4 ms: 2 in flight.
+  // On 10 Mbit/s with 2 ms (the defaults) a request is 20.4 ms on the wire: the same 7 a queue.
   const SweepSize sim = EstimateSweepSize(Config("robots: [2, 5]\nruns: 3\nprotocols: [sim]\n"), 1000, 16);
-  EXPECT_EQ(sim.bytes_per_run, 216000.0 + 256000.0 + 5 * 3 * 25000.0 + 25000.0);
+  EXPECT_EQ(sim.bytes_per_run, 216000.0 + 256000.0 + 5 * 29 * 25000.0 + 25000.0);
   EXPECT_EQ(sim.input_bytes, 21000.0 * 64);
   // replicate_1_r4 keeps a frame at up to 4 robots.
   const SweepSize replicated =
       EstimateSweepSize(Config("robots: [5]\nruns: 1\nprotocols: [sim]\nstrategies: [replicate_1_r4]\n"), 1000, 16);
+  EXPECT_EQ(replicated.largest.stored, 4000.0);
   EXPECT_EQ(Bytes(replicated.largest, SizeTerm::kStores), 4 * 216000.0 + 256000.0);
 }
 
@@ -87,16 +93,17 @@ TEST(SweepSizeTest, TheRadiosRoutingsMultiplyItsVariants) {
 }
 
 // 8 robots x 2^20 frames of dim 128, sim: the stores are 2^20 x 2 x (6 x 128 + 12) = 1 635 778 560
-// bytes and the records 2^20 x 256 = 268 435 456 (1.77 GiB), the payloads 8 x 3 x 25000 + 25000;
-// the inputs (2^20 + 20000) x 128 x 4 = 547 110 912 (0.51 GiB): 2.28 GiB in all, more than 2 GiB.
+// bytes and the records 2^20 x 256 = 268 435 456 (1.77 GiB), the payloads 8 x 50 x 25000 + 25000
+// (7 queues of 7 requests in flight a robot, as above); the inputs (2^20 + 20000) x 128 x 4 =
+// 547 110 912 (0.51 GiB): 2.29 GiB in all, more than 2 GiB.
 TEST(SweepSizeTest, ARunLargerThanTheMachinesMemoryIsRefusedWithTheEstimate) {
   const SweepSize size =
       EstimateSweepSize(Config("robots: [8]\nruns: 1\nstrategies: [decentralized]\nprotocols: [sim]\n"), 1 << 20, 128);
   EXPECT_EQ(size.runs, 1.0);
-  EXPECT_EQ(size.bytes_per_run, 1635778560.0 + 268435456.0 + 625000.0);
+  EXPECT_EQ(size.bytes_per_run, 1635778560.0 + 268435456.0 + 10025000.0);
   EXPECT_EQ(size.input_bytes, 547110912.0);
   EXPECT_EQ(SizeError(size, {.memory_bytes = 2 * kGiB}),
-            "c.yaml: robots, dataset: a run may need up to 2.28 GiB (1.77 GiB a run of descriptor stores (frames x "
+            "c.yaml: robots, dataset: a run may need up to 2.29 GiB (1.77 GiB a run of descriptor stores (frames x "
             "copies x 2 x (6 dim + 12) bytes) and records (256 bytes a frame), and 0.51 GiB of inputs made once), "
             "more than this machine's 2 GiB of memory; lower dataset.frames, dataset.dim or robots, or pass "
             "--allow-large to run it anyway");
@@ -192,11 +199,38 @@ TEST(SweepSizeTest, SyntheticBowAtItsMaximaIsCountedBeforeTheRuns) {
             "up to 2.88 s each, and 1.02e+05 s to make dataset.synthetic_bow's vectors), more than 24 h; narrow it, "
             "or pass --allow-large to run it anyway");
   EXPECT_EQ(SizeError(EstimateSweepSize(Config(maxima), 4541, 16), {.cores = 2}), "");  // 2.14 h
+  // Its words and vectors: 60000 x (4 x 100000 + 16 x 100000 + 72) + 16 x 10^7 bytes, 112 GiB.
+  EXPECT_EQ(size.bow_bytes, 120164320000.0);
+  EXPECT_EQ(SizeError(size, {.memory_bytes = 16 * kGiB, .cores = 2}),
+            "c.yaml: dataset.synthetic_bow: a run may need up to 112 GiB (112 GiB of inputs made once (112 GiB of it "
+            "dataset.synthetic_bow's words and vectors, frames x (4 features + 16 min(features, vocabulary) + 72) + 16 "
+            "vocabulary bytes)), more than this machine's 16 GiB of memory; lower dataset.synthetic_bow's features or "
+            "dataset.frames, or pass --allow-large to run it anyway");
   const SweepSize defaults = EstimateSweepSize(
       Config("robots: [2]\nruns: 1\nprotocols: [paper]\nstrategies: [bow_decentralized]\n"), 4541, 16);
   EXPECT_NEAR(defaults.input_seconds, 0.247, 1e-3);
   // Descriptor strategies make no BoW vectors.
   EXPECT_EQ(EstimateSweepSize(Config("robots: [2]\n"), 60000, 16).input_seconds, 0.0);
+}
+
+// synthetic_bow's words and vectors are inputs while they are made (SyntheticBowWords, then
+// TfIdfFromWords): on 1000 frames at the defaults, each frame's 500 int32 words (2000 bytes), its
+// term frequencies and its tf-idf vector, at most 500 words of 8 bytes each (8000), 24 bytes for
+// each of the three vectors, and the idf's two tables of the 100000 words, 8 bytes each:
+// 1000 x 10072 + 1600000 = 11 672 000 bytes, beside the descriptors ((1000 + 20000) x 16 x 4) and
+// the paper protocol's neighbour lists (1000 x 64 x 8). A vocabulary of 300 words bounds a
+// frame's vectors at 300 words: 1000 x (4000 + 4800 + 72) + 4800. Descriptor strategies make none.
+TEST(SweepSizeTest, SyntheticBowWordsAndVectorsAreInputsWorkedByHand) {
+  const std::string run = "robots: [2]\nruns: 1\nprotocols: [paper]\nstrategies: [bow_decentralized]\n";
+  const SweepSize defaults = EstimateSweepSize(Config(run + "dataset: {dim: 16}\n"), 1000, 16);
+  EXPECT_EQ(defaults.bow_bytes, 11672000.0);
+  EXPECT_EQ(defaults.input_bytes, 11672000.0 + 21000.0 * 64 + 512000.0);
+  const SweepSize small = EstimateSweepSize(
+      Config(run + "dataset: {dim: 16, synthetic_bow: {features: 1000, vocabulary: 300}}\n"), 1000, 16);
+  EXPECT_EQ(small.bow_bytes, 8876800.0);
+  const SweepSize descriptors = EstimateSweepSize(Config("robots: [2]\nruns: 1\nprotocols: [paper]\n"), 1000, 16);
+  EXPECT_EQ(descriptors.bow_bytes, 0.0);
+  EXPECT_EQ(descriptors.input_bytes, 21000.0 * 64 + 512000.0);
 }
 
 // The default sweep (robots 2..20, paper and sim): the largest team's run is 4541^2 / 2 x 128 x
@@ -258,11 +292,13 @@ TEST(SweepSizeTest, FailoverHeartbeatsCountedByHand) {
 
 // Store-and-forward on radios that never meet, 2 robots x 21 frames (the last at 2.0 s): each
 // robot's broadcast query of frame k (at k / 10 s) is held and asked again at every multiple of
-// 100 ms after it until the end of the mission, 20 - k times: 210 a robot, 420 for the team; and
-// each robot has a retry event at 0.1, ..., 2.0 s and one past the end, 42. With hold_time 500 ms
-// a copy is asked 5 times (dropped at the fifth) or until the end: 16 x 5 + 4 + 3 + 2 + 1 = 90 a
-// robot, 180 copy retries, which the model (frames spread evenly over the mission: 42 x (0.5 -
-// 0.5^2 / (2 x 2)) / 0.1) makes 183.75.
+// 100 ms after it until the end of the mission, 20 - k times, and once past it, where it is
+// dropped (Network::SetHoldHorizon): 21 - k times, 231 a robot, 462 for the team (the model:
+// 420 while held, and two more a copy, 84); each robot has a retry event at 0.1, ..., 2.0 s and
+// one past the end, 42. With hold_time 500 ms a copy is asked 5 times (dropped at the fifth) or
+// until the end: 17 x 5 + 4 + 3 + 2 + 1 = 95 a robot, 190 copy retries, which the model (frames
+// spread evenly over the mission: 42 x (0.5 - 0.5^2 / (2 x 2)) / 0.1 = 183.75, and two a copy)
+// makes 267.75.
 TEST(SweepSizeTest, StoreAndForwardRetriesCountedByHand) {
   const std::string team = "robots: [2]\nruns: 1\nprotocols: [sim]\nstrategies: [broadcast]\n";
   const auto network = [&](const std::string& hold) {
@@ -272,19 +308,42 @@ TEST(SweepSizeTest, StoreAndForwardRetriesCountedByHand) {
   const SweepSize size = EstimateSweepSize(network("60s"), 42, 8);
   EXPECT_DOUBLE_EQ(size.slowest.mission_s, 2.0);
   EXPECT_EQ(size.slowest.held_copies, 42.0);
-  EXPECT_DOUBLE_EQ(size.slowest.retries, 420.0 + 42.0);
-  EXPECT_DOUBLE_EQ(Seconds(size.slowest, SizeTerm::kRetries), 462 * 1e-6);
-  // Each held query: 4 x 8 + 100 bytes, far below hold_bytes.
-  EXPECT_EQ(Bytes(size.slowest, SizeTerm::kHeld), 42.0 * 132);
+  EXPECT_DOUBLE_EQ(size.slowest.retries, 420.0 + 84.0 + 42.0);
+  EXPECT_DOUBLE_EQ(Seconds(size.slowest, SizeTerm::kRetries), 546 * 1e-6);
+  // Each held copy 160 bytes, and its query (each its own message here) 4 x 8 + 100 bytes, far
+  // below hold_bytes.
+  EXPECT_EQ(Bytes(size.slowest, SizeTerm::kHeld), 42.0 * (160 + 132));
   // The retries end with the mission, however long a copy may be held.
-  EXPECT_DOUBLE_EQ(EstimateSweepSize(network("100000h"), 42, 8).slowest.retries, 462.0);
-  EXPECT_DOUBLE_EQ(EstimateSweepSize(network("500ms"), 42, 8).slowest.retries, 183.75 + 42.0);
-  // 3 robots x 21 frames: a broadcast query is 2 copies, a decentralized one 1.
+  EXPECT_DOUBLE_EQ(EstimateSweepSize(network("100000h"), 42, 8).slowest.retries, 546.0);
+  EXPECT_DOUBLE_EQ(EstimateSweepSize(network("500ms"), 42, 8).slowest.retries, 183.75 + 84.0 + 42.0);
+  // 3 robots x 21 frames: a broadcast query is 2 copies, and so is a decentralized row's (the
+  // broadcast its relative AUC is against runs beside it), of one message; multi_probe_2's 2
+  // copies are 2 messages, each held with its bytes.
   const std::string three = "robots: [3]\nruns: 1\nprotocols: [sim]\nnetwork: {model: radio, routing: shortest_path, "
                             "disconnected: store_and_forward}\n";
-  EXPECT_DOUBLE_EQ(EstimateSweepSize(Config(three + "strategies: [broadcast]\n"), 63, 8).slowest.retries, 1260.0 + 63.0);
-  EXPECT_DOUBLE_EQ(EstimateSweepSize(Config(three + "strategies: [decentralized]\n"), 63, 8).slowest.retries,
-                   630.0 + 63.0);
+  EXPECT_DOUBLE_EQ(EstimateSweepSize(Config(three + "strategies: [broadcast]\n"), 63, 8).slowest.retries,
+                   1260.0 + 252.0 + 63.0);
+  const SweepSize decentralized = EstimateSweepSize(Config(three + "strategies: [decentralized]\n"), 63, 8);
+  EXPECT_DOUBLE_EQ(decentralized.slowest.retries, 1260.0 + 252.0 + 63.0);
+  EXPECT_EQ(Bytes(decentralized.slowest, SizeTerm::kHeld), 126.0 * 160 + 63.0 * 132);
+  const SweepSize probes = EstimateSweepSize(Config(three + "strategies: [multi_probe_2]\n"), 63, 8);
+  EXPECT_EQ(Bytes(probes.slowest, SizeTerm::kHeld), 126.0 * 160 + 126.0 * 132);
+}
+
+// A talk window that closes after the mission keeps the network holding until it does (a robot
+// may still get a way then): robot 1 talks only in [5 s, 6 s), so the team of 2 x 21 frames
+// (mission 2.0 s) holds its copies until 6 s: 42 copies sent evenly over [0, 2 s], held 5 s on
+// average, 2100 retries while held and two more a copy, 84, and each robot's retry events at
+// 0.1, ..., 6.0 s and one past it, 122.
+TEST(SweepSizeTest, ATalkWindowAfterTheMissionExtendsTheRetries) {
+  const std::filesystem::path dir = testing_support::FreshTestDir("sweep_size");
+  std::ofstream(dir / "schedule.csv") << "robot,start_s,end_s\n1,5,6\n";
+  const SweepSize size = EstimateSweepSize(
+      Config("robots: [2]\nruns: 1\nprotocols: [sim]\nstrategies: [broadcast]\nnetwork: {model: radio, routing: "
+             "shortest_path, disconnected: store_and_forward, schedule: '" + (dir / "schedule.csv").string() + "'}\n"),
+      42, 8);
+  EXPECT_DOUBLE_EQ(size.slowest.mission_s, 2.0);
+  EXPECT_DOUBLE_EQ(size.slowest.retries, 2100.0 + 84.0 + 122.0);
 }
 
 // The mission comes from the team plan: 3 robots each driving 100 frames (9.9 s), staggered by
@@ -347,36 +406,40 @@ TEST(SweepSizeTest, AConnectivityRowForEveryFramePeriodOf100000HoursIsRefusedNam
             "--allow-large to run it anyway");
 }
 
-// Verification requests of 1 000 000 bytes, 2 robots x 50 frames: 1e8 bytes made, encoded and
-// decoded, 0.05 s. In flight: on ideal links one a robot; on 10 Mbit/s links with queues of 100
-// packets none can go (a request is 676 packets: it is dropped as it is sent), so one; with
-// queues of 1000 it goes, 0.81 s on the wire, but a queue holds 1001 / 676 = 1 and 2 ms of
-// latency 1 more: 3. Each robot keeps its own request too, and one is being decoded.
+// Verification requests of 1 000 000 bytes, 2 robots x 50 frames: 100 requests, 1e8 bytes made,
+// encoded and decoded, 0.05 s. In flight: on ideal links one a robot; on 10 Mbit/s links with
+// queues of 100 packets none can go (a request is 676 packets: it is dropped, and freed, as it is
+// sent); with queues of 1000 it goes, 0.81 s on the wire: a robot's one queue holds the request on
+// the wire and floor(1000 / 676) = 1 waiting, and one more has left it and propagates its 2 ms:
+// 3. Each robot keeps its own request too, and one is being sent or decoded.
 TEST(SweepSizeTest, VerificationRequestsCountedByHand) {
   const std::string team = "robots: [2]\nruns: 1\nprotocols: [sim]\nstrategies: [broadcast]\n"
                            "verification: {request_bytes: 1000000}\n";
   const SweepSize ideal = EstimateSweepSize(Config(team + "network: {model: ideal}\n"), 100, 8);
+  EXPECT_EQ(ideal.largest.requests, 100.0);
   EXPECT_EQ(ideal.largest.request_bytes, 1e8);
   EXPECT_DOUBLE_EQ(Seconds(ideal.largest, SizeTerm::kRequests), 0.05);
   EXPECT_EQ(ideal.largest.requests_in_flight, 1.0);
   EXPECT_EQ(Bytes(ideal.largest, SizeTerm::kRequests), 2 * 2 * 1e6 + 1e6);
   const SweepSize dropped = EstimateSweepSize(Config(team + "network: {queue_packets: 100}\n"), 100, 8);
-  EXPECT_EQ(dropped.largest.requests_in_flight, 1.0);
+  EXPECT_EQ(dropped.largest.requests_in_flight, 0.0);
+  EXPECT_EQ(Bytes(dropped.largest, SizeTerm::kRequests), 2 * 1e6 + 1e6);
   const SweepSize queued = EstimateSweepSize(Config(team + "network: {queue_packets: 1000}\n"), 100, 8);
   EXPECT_EQ(queued.largest.requests_in_flight, 3.0);
   EXPECT_EQ(Bytes(queued.largest, SizeTerm::kRequests), 2 * 4 * 1e6 + 1e6);
 }
 
 // request_bytes 1 GiB, the documented maximum, on the default sweep (once killed at 2 GB after
-// 6 s): the team of 20 keeps 20 requests and sends one each, 41 GiB a run.
+// 6 s): the team of 20 keeps 20 requests, and one at a time is made and dropped as it is sent (it
+// is 725 506 packets, for queues of 100), 21 GiB a run.
 TEST(SweepSizeTest, GibibyteRequestsAreRefusedNamingTheRequestSize) {
   const SweepSize size = EstimateSweepSize(Config("verification: {request_bytes: 1GiB}\n"), 4541, 128);
-  EXPECT_EQ(Bytes(size.largest, SizeTerm::kRequests), 41 * kGiB);
+  EXPECT_EQ(Bytes(size.largest, SizeTerm::kRequests), 21 * kGiB);
   EXPECT_EQ(SizeError(size, {.memory_bytes = 16 * kGiB, .cores = 2}),
-            "c.yaml: verification.request_bytes: 2 runs at once (one a thread) may need up to 82 GiB, each up to 41 "
-            "GiB (41 GiB a run of verification payloads (20 robots x (1 kept + 1 in flight) x request_bytes, and one "
-            "being decoded), and 0.0139 GiB of inputs made once), more than this machine's 16 GiB of memory; lower "
-            "verification.request_bytes, run fewer at once (--threads), or pass --allow-large to run it anyway");
+            "c.yaml: verification.request_bytes: 2 runs at once (one a thread) may need up to 42 GiB, each up to 21 "
+            "GiB (21 GiB a run of verification payloads (20 robots x (1 kept + 0 in flight) x request_bytes, and one "
+            "being sent or decoded), and 0.0139 GiB of inputs made once), more than this machine's 16 GiB of memory; "
+            "lower verification.request_bytes, run fewer at once (--threads), or pass --allow-large to run it anyway");
 }
 
 }  // namespace

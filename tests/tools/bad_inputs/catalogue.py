@@ -831,7 +831,7 @@ def issue53_cases():
         Case("i28", "verification.request_bytes: 1GiB (the documented maximum) on the default sweep",
              ("verification.request_bytes", "--allow-large"),
              sets=S("verification.request_bytes=1GiB", *default_sweep),
-             why="41 GiB a run of 20 robots, 2400 s of requests a run: refused on any machine by memory "
+             why="21 GiB a run of 20 robots, 2400 s of requests a run: refused on any machine by memory "
                  "or time; on base.yaml's 3 robots it is accepted (6 GiB a run, 161 s) and runs that long"),
         Case("i29", "store_and_forward with routing: direct", ("network.disconnected", "network.routing"),
              sets=S(*radio, "network.routing=direct", "network.disconnected={kind: store_and_forward, hold_time: 10s}"),
