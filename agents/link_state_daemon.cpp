@@ -6,7 +6,7 @@
 
 namespace dvpr {
 
-LinkStateDaemon::LinkStateDaemon(Transport& transport, NodeId node, LinkStateRouting& routing, SimTime until)
+LinkStateDaemon::LinkStateDaemon(Transport& transport, NodeId node, LinkStateNextHop& routing, SimTime until)
     : transport_(transport), node_(node), routing_(routing), until_(until) {}
 
 void LinkStateDaemon::Start() {

@@ -29,7 +29,7 @@ class LinkStateDaemon {
   };
 
   // `routing` must outlive the daemon; the transport is robot `node`'s.
-  LinkStateDaemon(Transport& transport, NodeId node, LinkStateRouting& routing, SimTime until);
+  LinkStateDaemon(Transport& transport, NodeId node, LinkStateNextHop& routing, SimTime until);
   LinkStateDaemon(const LinkStateDaemon&) = delete;
   LinkStateDaemon& operator=(const LinkStateDaemon&) = delete;
 
@@ -44,7 +44,7 @@ class LinkStateDaemon {
 
   Transport& transport_;
   NodeId node_;
-  LinkStateRouting& routing_;
+  LinkStateNextHop& routing_;
   SimTime until_;
   PublishChannel hello_channel_{};
   PublishChannel topology_channel_{};

@@ -101,7 +101,7 @@ BENCHMARK_CAPTURE(BM_Kitti00_100Robots, decentralized, "decentralized")->Unit(be
 // The 100-robot broadcast on radios of 200 m with shortest-path relays: the cost of positions,
 // propagation, routing and relays against the point-to-point run above (issue: within 3x). The
 // link_state capture runs each robot's routing daemon and routes on what its beacons taught it.
-void BM_Kitti00_100Robots_Radio200m(benchmark::State& state, RoutingKind kind) {
+void BM_Kitti00_100Robots_Radio200m(benchmark::State& state, NextHopKind kind) {
   static const Dataset data = Kitti00();
   const int robots = 100;
   const BroadcastRouting routing(robots);
@@ -114,8 +114,8 @@ void BM_Kitti00_100Robots_Radio200m(benchmark::State& state, RoutingKind kind) {
   }
   Report(state, log);
 }
-BENCHMARK_CAPTURE(BM_Kitti00_100Robots_Radio200m, shortest_path, RoutingKind::kShortestPath)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Kitti00_100Robots_Radio200m, link_state, RoutingKind::kLinkState)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Kitti00_100Robots_Radio200m, shortest_path, NextHopKind::kShortestPath)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Kitti00_100Robots_Radio200m, link_state, NextHopKind::kLinkState)->Unit(benchmark::kMillisecond);
 
 // All of KITTI 00 for a team on one contending medium, both strategies (network and matching):
 // the trace the ns-3 peers replay (bench/peers/README.md). Args: robots; wifi rate in Mbit/s

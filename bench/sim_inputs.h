@@ -77,7 +77,7 @@ inline SimRunParams Radio(int robots, double range_m) {
   SimRunParams p = PointToPoint(robots);
   p.scenario.network.model = LinkModelKind::kRadio;
   p.scenario.network.radio.range_m = range_m;
-  p.scenario.network.routing = RoutingKind::kShortestPath;
+  p.scenario.network.routing = NextHopKind::kShortestPath;
   return p;
 }
 

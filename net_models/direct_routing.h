@@ -6,7 +6,7 @@
 
 namespace dvpr {
 
-class DirectRouting final : public NextHopRouting {
+class DirectNextHop final : public NextHopRouting {
  private:
   // Every hop arrives preset to its destination: nothing to change.
   void DoNextHops(NodeId, std::span<const NodeId>, SimTime, std::span<NodeId>) override {}

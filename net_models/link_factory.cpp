@@ -124,7 +124,7 @@ void NetworkModelParams::Validate(int nodes) const {
   }
   if (model == LinkModelKind::kWifi) ValidateNested("wifi.", [&] { ToWifi(*this).Validate(); });
   ValidateNested("disconnected.", [&] { disconnected.Validate(); });
-  if (routing == RoutingKind::kLinkState) ValidateNested("routing.", [&] { link_state.Validate(); });
+  if (next_hop == NextHopKind::kLinkState) ValidateNested("routing.", [&] { link_state.Validate(); });
 }
 
 std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int nodes, std::uint64_t run_seed,

@@ -58,7 +58,7 @@ struct NetworkModelParams {
   RadioParams radio;  // model radio (and wifi over the radio): who hears whom (the stack's propagation)
   WifiParams wifi;    // model wifi: its rates (queue_packets is the one above)
   bool wifi_radio = false;  // model wifi: who senses and hears whom is `radio`'s, else every robot
-  RoutingKind routing = RoutingKind::kDirect;  // which way a copy goes (the stack's routing)
+  NextHopKind next_hop = NextHopKind::kDirect;  // which way a copy goes (the stack's next hop)
   LinkStateParams link_state;  // routing link_state: its beacon periods
   DisconnectedParams disconnected;  // a copy without a route: dropped, or held (store-and-forward)
 

@@ -7,8 +7,8 @@
 
 namespace dvpr {
 
-LinkStateRouting::LinkStateRouting(int nodes, LinkStateParams params) : params_(params) {
-  if (nodes <= 0) throw std::invalid_argument("LinkStateRouting: need at least one node, got " + std::to_string(nodes));
+LinkStateNextHop::LinkStateNextHop(int nodes, LinkStateParams params) : params_(params) {
+  if (nodes <= 0) throw std::invalid_argument("LinkStateNextHop: need at least one node, got " + std::to_string(nodes));
   params_.Validate();
   tables_.resize(static_cast<std::size_t>(nodes));
   for (Table& t : tables_) {
@@ -17,30 +17,30 @@ LinkStateRouting::LinkStateRouting(int nodes, LinkStateParams params) : params_(
   }
 }
 
-void LinkStateRouting::CheckNode(NodeId node) const {
+void LinkStateNextHop::CheckNode(NodeId node) const {
   if (node.value < 0 || node.value >= nodes()) {
-    throw std::out_of_range("LinkStateRouting: node " + std::to_string(node.value) + " outside [0, " +
+    throw std::out_of_range("LinkStateNextHop: node " + std::to_string(node.value) + " outside [0, " +
                             std::to_string(nodes()) + ")");
   }
 }
 
-LinkStateRouting::Table& LinkStateRouting::TableOf(NodeId node) {
+LinkStateNextHop::Table& LinkStateNextHop::TableOf(NodeId node) {
   CheckNode(node);
   return tables_[static_cast<std::size_t>(node.value)];
 }
 
-const LinkStateRouting::Table& LinkStateRouting::TableOf(NodeId node) const {
+const LinkStateNextHop::Table& LinkStateNextHop::TableOf(NodeId node) const {
   CheckNode(node);
   return tables_[static_cast<std::size_t>(node.value)];
 }
 
 // v's last HELLO is fresh and listed `at`: each hears the other.
-bool LinkStateRouting::Symmetric(const Table& t, NodeId at, NodeId v, SimTime now) const {
+bool LinkStateNextHop::Symmetric(const Table& t, NodeId at, NodeId v, SimTime now) const {
   const Heard& h = t.hello[static_cast<std::size_t>(v.value)];
   return Fresh(h, params_.NeighborHold(), now) && std::binary_search(h.links.begin(), h.links.end(), at);
 }
 
-std::vector<NodeId> LinkStateRouting::HelloLinks(NodeId at, SimTime now) const {
+std::vector<NodeId> LinkStateNextHop::HelloLinks(NodeId at, SimTime now) const {
   const Table& t = TableOf(at);
   std::vector<NodeId> links;
   for (int v = 0; v < nodes(); ++v) {
@@ -49,7 +49,7 @@ std::vector<NodeId> LinkStateRouting::HelloLinks(NodeId at, SimTime now) const {
   return links;
 }
 
-std::vector<NodeId> LinkStateRouting::TopologyLinks(NodeId at, SimTime now) const {
+std::vector<NodeId> LinkStateNextHop::TopologyLinks(NodeId at, SimTime now) const {
   const Table& t = TableOf(at);
   std::vector<NodeId> links;
   for (int v = 0; v < nodes(); ++v) {
@@ -58,7 +58,7 @@ std::vector<NodeId> LinkStateRouting::TopologyLinks(NodeId at, SimTime now) cons
   return links;
 }
 
-std::uint32_t LinkStateRouting::NextSequence(NodeId at) { return ++TableOf(at).own_sequence; }
+std::uint32_t LinkStateNextHop::NextSequence(NodeId at) { return ++TableOf(at).own_sequence; }
 
 namespace {
 
@@ -75,7 +75,7 @@ std::vector<NodeId> CleanLinks(std::span<const NodeId> links, int nodes, NodeId 
 
 }  // namespace
 
-void LinkStateRouting::OnHello(NodeId at, NodeId from, std::span<const NodeId> links, SimTime now) {
+void LinkStateNextHop::OnHello(NodeId at, NodeId from, std::span<const NodeId> links, SimTime now) {
   Table& t = TableOf(at);
   CheckNode(from);
   Heard& h = t.hello[static_cast<std::size_t>(from.value)];
@@ -87,7 +87,7 @@ void LinkStateRouting::OnHello(NodeId at, NodeId from, std::span<const NodeId> l
   h.links = std::move(clean);
 }
 
-bool LinkStateRouting::OnTopology(NodeId at, NodeId origin, std::uint32_t seq, std::span<const NodeId> links,
+bool LinkStateNextHop::OnTopology(NodeId at, NodeId origin, std::uint32_t seq, std::span<const NodeId> links,
                                   SimTime now) {
   Table& t = TableOf(at);
   CheckNode(origin);
@@ -107,7 +107,7 @@ bool LinkStateRouting::OnTopology(NodeId at, NodeId origin, std::uint32_t seq, s
 
 // Breadth-first from `at` over what it knows, neighbours in ascending id. The table stays valid
 // until the first fresh entry it used expires (or new knowledge arrives: dirty).
-void LinkStateRouting::Route(NodeId at, Table& t, SimTime now) {
+void LinkStateNextHop::Route(NodeId at, Table& t, SimTime now) {
   if (!t.dirty && now < t.valid_until) return;
   const auto n = static_cast<std::size_t>(nodes());
   t.first_hop.assign(n, kNoRoute);
@@ -151,7 +151,7 @@ void LinkStateRouting::Route(NodeId at, Table& t, SimTime now) {
   t.dirty = false;
 }
 
-void LinkStateRouting::DoNextHops(NodeId at, std::span<const NodeId> dsts, SimTime now, std::span<NodeId> hops) {
+void LinkStateNextHop::DoNextHops(NodeId at, std::span<const NodeId> dsts, SimTime now, std::span<NodeId> hops) {
   Table& t = TableOf(at);
   Route(at, t, now);
   for (std::size_t i = 0; i < dsts.size(); ++i) hops[i] = t.first_hop[static_cast<std::size_t>(dsts[i].value)];

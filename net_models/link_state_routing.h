@@ -32,7 +32,7 @@
 
 namespace dvpr {
 
-class LinkStateRouting final : public NextHopRouting {
+class LinkStateNextHop final : public NextHopRouting {
  public:
   // What the tables took in, for the run's outputs.
   struct Counters {
@@ -43,7 +43,7 @@ class LinkStateRouting final : public NextHopRouting {
   };
 
   // Throws std::invalid_argument for no node or invalid params.
-  LinkStateRouting(int nodes, LinkStateParams params);
+  LinkStateNextHop(int nodes, LinkStateParams params);
 
   const LinkStateParams& params() const { return params_; }
   int nodes() const { return static_cast<int>(tables_.size()); }

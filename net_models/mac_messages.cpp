@@ -6,14 +6,7 @@
 namespace dvpr {
 
 std::uint32_t MacMessages::Open(std::uint64_t ticket, std::span<const NodeId> dsts, std::size_t frames) {
-  std::uint32_t id;
-  if (!free_.empty()) {
-    id = free_.back();
-    free_.pop_back();
-  } else {
-    id = static_cast<std::uint32_t>(entries_.size());
-    entries_.emplace_back();
-  }
+  const std::uint32_t id = entries_.Acquire();
   Entry& e = entries_[id];
   e.ticket = ticket;
   e.frames_left = frames;
@@ -44,7 +37,7 @@ bool MacMessages::Settle(std::uint32_t id, LinkCompletions& completions) {
   std::vector<LinkDelivery> outcomes = std::move(e.outcomes);
   completions.Complete(e.ticket, outcomes);
   entries_[id].outcomes = std::move(outcomes);  // its capacity serves the next message
-  Free(id);
+  entries_.Release(id);
   return true;
 }
 
@@ -60,9 +53,7 @@ void MacMessages::HandOver(std::uint32_t id, std::span<LinkDelivery> out) {
     return;
   }
   std::copy(e.outcomes.begin(), e.outcomes.end(), out.begin());
-  Free(id);
+  entries_.Release(id);
 }
-
-void MacMessages::Free(std::uint32_t id) { free_.push_back(id); }
 
 }  // namespace dvpr

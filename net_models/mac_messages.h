@@ -11,6 +11,7 @@
 #include "net_models/link_model.h"
 #include "net_models/mac_counters.h"
 #include "net_models/node_id.h"
+#include "net_models/slot_pool.h"
 #include "net_models/units.h"
 #include "sim/sim_time.h"
 
@@ -60,7 +61,7 @@ class MacMessages {
   // One more frame settled. When it was the last, the message is reported to `completions` and
   // its id freed; returns whether it was.
   bool Settle(std::uint32_t id, LinkCompletions& completions);
-  std::size_t open() const { return entries_.size() - free_.size(); }
+  std::size_t open() const { return entries_.in_use(); }
 
  private:
   struct Entry {
@@ -69,12 +70,10 @@ class MacMessages {
     std::vector<NodeId> dsts;
     std::vector<LinkDelivery> outcomes;
   };
-  void Free(std::uint32_t id);
   // Inside Transmit: a frame the queue refused is settled at once, never reported from there.
   void Refused(std::uint32_t id, DropReason reason);
 
-  std::vector<Entry> entries_;
-  std::vector<std::uint32_t> free_;
+  SlotPool<Entry> entries_;  // by id: a freed id keeps its vectors' capacity for the next message
 };
 
 }  // namespace dvpr

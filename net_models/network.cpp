@@ -487,11 +487,11 @@ LinkModel::MediumUse Network::TransmitFrom(NodeId src, SimTime now, NodeCounters
 LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t, bool routed) {
   hops_.resize(dsts_.size());
   if (routed) {
-    stack_.routing->NextHops(t.src, dsts_, t.now, nodes_, hops_);
+    stack_.next_hop->NextHops(t.src, dsts_, t.now, nodes_, hops_);
   } else {
     std::copy(dsts_.begin(), dsts_.end(), hops_.begin());
   }
-  const DropReason unheard = routed ? stack_.routing->UnheardHop() : DropReason::kOutOfRange;
+  const DropReason unheard = routed ? stack_.next_hop->UnheardHop() : DropReason::kOutOfRange;
   receiver_of_.resize(dsts_.size());
   if (std::equal(hops_.begin(), hops_.end(), dsts_.begin())) {  // one hop each: the usual case
     for (std::size_t i = 0; i < dsts_.size(); ++i) receiver_of_[i] = static_cast<std::uint32_t>(i);
@@ -619,15 +619,8 @@ void Network::NotifySent(const Payload& p, NodeId dst, std::uint64_t copy, DropR
 }
 
 std::uint32_t Network::AllocatePayload(std::vector<std::uint8_t>&& bytes) {
-  std::uint32_t slot;
-  if (!free_payloads_.empty()) {
-    slot = free_payloads_.back();
-    free_payloads_.pop_back();
-  } else {
-    slot = static_cast<std::uint32_t>(payloads_.size());
-    payloads_.emplace_back();
-    pending_.emplace_back();
-  }
+  const std::uint32_t slot = payloads_.Acquire();
+  if (slot == pending_.size()) pending_.emplace_back();  // a new slot
   Payload& p = payloads_[slot];
   p.bytes = std::move(bytes);
   p.refs = 0;
@@ -639,7 +632,7 @@ void Network::ReleasePayload(std::uint32_t slot) {
   if (p.refs > 0 && --p.refs > 0) return;
   buffers_.Give(std::move(p.bytes));  // kept for the next message, or freed: a slot may stay idle for long
   p.bytes = std::vector<std::uint8_t>();
-  free_payloads_.push_back(slot);
+  payloads_.Release(slot);
 }
 
 void Network::Deliver(std::uint32_t slot, const PendingCopy& copy) {

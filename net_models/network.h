@@ -39,6 +39,7 @@
 #include "net_models/node_id.h"
 #include "net_models/pair_map.h"
 #include "net_models/payload_buffers.h"
+#include "net_models/slot_pool.h"
 #include "net_models/units.h"
 #include "net_models/wire_format.h"
 #include "sim/sim_time.h"
@@ -147,9 +148,9 @@ class Network final : private LinkCompletions {
   // Reach is not const (a model may keep state); asking it changes nothing the network counts
   // (connectivity.h asks it after a run).
   PropagationModel& propagation() { return *stack_.propagation; }
-  const NextHopRouting& routing() const { return *stack_.routing; }
+  const NextHopRouting& next_hop() const { return *stack_.next_hop; }
   // A routing model that learns (link_state) is fed by whoever runs the nodes' daemons.
-  NextHopRouting& routing() { return *stack_.routing; }
+  NextHopRouting& next_hop() { return *stack_.next_hop; }
   const WireParams& wire() const { return wire_; }
 
   // --- names --------------------------------------------------------------
@@ -323,9 +324,9 @@ class Network final : private LinkCompletions {
   };
   static_assert(sizeof(PendingCopy) <= 24);
 
-  std::vector<Payload> payloads_;
-  // By payload slot: its copies on their way, by arrival time, then destination order (the
-  // vectors keep their capacity when a slot is reused).
+  SlotPool<Payload> payloads_;
+  // By payload slot (grown with payloads_): its copies on their way, by arrival time, then
+  // destination order (the vectors keep their capacity when a slot is reused).
   std::vector<std::vector<PendingCopy>> pending_;
   // Copies whose medium access decides later, by the ticket of their transmission (a contending
   // MAC: csma_link.h, wifi_link.h): the slot, and for each copy the index of its receiver among
@@ -355,7 +356,6 @@ class Network final : private LinkCompletions {
   std::vector<std::int64_t> held_bytes_;
   std::vector<char> retry_scheduled_;
   SimTime hold_horizon_ = SimTime::Max();
-  std::vector<std::uint32_t> free_payloads_;
   PayloadBuffers buffers_;
 
   PairMap<LinkCounters> pairs_;  // only the pairs that carried a message (1000 robots: 10^6 pairs)

@@ -22,7 +22,7 @@ void NetworkStack::CompleteDefaults(int nodes) {
                                 " nodes, the network has " + std::to_string(nodes));
   }
   if (!propagation) propagation = std::make_unique<FullMeshPropagation>();
-  if (!routing) routing = std::make_unique<DirectRouting>();
+  if (!next_hop) next_hop = std::make_unique<DirectNextHop>();
 }
 
 namespace {
@@ -57,15 +57,15 @@ NetworkStack MakeNetworkStack(const NetworkModelParams& params, int nodes, std::
   stack.access = MakeLinkModel(params, nodes, run_seed, stack.propagation.get());
   stack.disconnected = params.disconnected;
   stack.CompleteDefaults(nodes);
-  switch (params.routing) {
-    case RoutingKind::kDirect: break;
-    case RoutingKind::kShortestPath:
-      stack.routing = std::make_unique<ShortestPathRouting>(*stack.propagation, nodes);
+  switch (params.next_hop) {
+    case NextHopKind::kDirect: break;
+    case NextHopKind::kShortestPath:
+      stack.next_hop = std::make_unique<ShortestPathNextHop>(*stack.propagation, nodes);
       break;
-    case RoutingKind::kLinkState:
+    case NextHopKind::kLinkState:
       // Its tables fill only from the beacons the robots' routing daemons send
       // (agents/link_state_daemon.h): whoever runs the robots starts them.
-      stack.routing = std::make_unique<LinkStateRouting>(nodes, params.link_state);
+      stack.next_hop = std::make_unique<LinkStateNextHop>(nodes, params.link_state);
       break;
   }
   return stack;

@@ -26,7 +26,7 @@ struct NetworkStack {
   std::unique_ptr<MobilityModel> mobility;        // null: FixedMobility::AtOrigin
   std::unique_ptr<PropagationModel> propagation;  // null: FullMeshPropagation
   std::unique_ptr<LinkModel> access;              // the medium access; required
-  std::unique_ptr<NextHopRouting> routing;        // null: DirectRouting
+  std::unique_ptr<NextHopRouting> next_hop;       // null: DirectNextHop
   // What becomes of a copy the routing finds no way for: dropped, or held (store-and-forward).
   DisconnectedParams disconnected;
 
@@ -38,7 +38,7 @@ struct NetworkStack {
 // The configured stack for `nodes` nodes: the link model of `params` (MakeLinkModel, seeded by
 // run_seed) as the medium access over `mobility` (null: fixed at the origin); the full mesh,
 // or for model radio the propagation of params.radio (range or log_distance) over `mobility`,
-// which a radio requires (std::invalid_argument without it); the routing of params.routing
+// which a radio requires (std::invalid_argument without it); the next hop of params.next_hop
 // (direct, or shortest_path over that propagation). Where the next models plug in: a medium
 // access or routing kind in NetworkModelParams, made here.
 NetworkStack MakeNetworkStack(const NetworkModelParams& params, int nodes, std::uint64_t run_seed,

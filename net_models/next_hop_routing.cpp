@@ -6,19 +6,19 @@
 
 namespace dvpr {
 
-RoutingKind ParseRoutingKind(std::string_view name) {
-  if (name == "direct") return RoutingKind::kDirect;
-  if (name == "shortest_path") return RoutingKind::kShortestPath;
-  if (name == "link_state") return RoutingKind::kLinkState;
+NextHopKind ParseNextHopKind(std::string_view name) {
+  if (name == "direct") return NextHopKind::kDirect;
+  if (name == "shortest_path") return NextHopKind::kShortestPath;
+  if (name == "link_state") return NextHopKind::kLinkState;
   throw std::invalid_argument("unknown value '" + std::string(name) +
                               "' (expected one of: direct, shortest_path, link_state)");
 }
 
-std::string_view ToString(RoutingKind kind) {
+std::string_view ToString(NextHopKind kind) {
   switch (kind) {
-    case RoutingKind::kDirect: return "direct";
-    case RoutingKind::kShortestPath: return "shortest_path";
-    case RoutingKind::kLinkState: return "link_state";
+    case NextHopKind::kDirect: return "direct";
+    case NextHopKind::kShortestPath: return "shortest_path";
+    case NextHopKind::kLinkState: return "link_state";
   }
   return "unknown";
 }

@@ -23,9 +23,9 @@ namespace dvpr {
 // "direct" (direct_routing.h) | "shortest_path" (shortest_path_routing.h) | "link_state"
 // (link_state_routing.h). Parse throws std::invalid_argument "unknown value '<name>' (expected
 // one of: direct, shortest_path, link_state)".
-enum class RoutingKind { kDirect, kShortestPath, kLinkState };
-RoutingKind ParseRoutingKind(std::string_view name);
-std::string_view ToString(RoutingKind kind);
+enum class NextHopKind { kDirect, kShortestPath, kLinkState };
+NextHopKind ParseNextHopKind(std::string_view name);
+std::string_view ToString(NextHopKind kind);
 
 // The answer for a destination that cannot be reached now: the copy is dropped
 // (DropReason::kNoRoute). Store-and-forward is a model that answers a hop instead.

@@ -6,14 +6,14 @@
 
 namespace dvpr {
 
-ShortestPathRouting::ShortestPathRouting(PropagationModel& propagation, int nodes, SimTime refresh)
+ShortestPathNextHop::ShortestPathNextHop(PropagationModel& propagation, int nodes, SimTime refresh)
     : propagation_(propagation), nodes_(nodes), refresh_(refresh) {
-  if (nodes <= 0) throw std::invalid_argument("ShortestPathRouting: need at least one node, got " + std::to_string(nodes));
-  if (refresh <= SimTime::Zero()) throw std::invalid_argument("ShortestPathRouting: the refresh period must be positive");
+  if (nodes <= 0) throw std::invalid_argument("ShortestPathNextHop: need at least one node, got " + std::to_string(nodes));
+  if (refresh <= SimTime::Zero()) throw std::invalid_argument("ShortestPathNextHop: the refresh period must be positive");
   first_hop_.resize(static_cast<std::size_t>(nodes));
 }
 
-void ShortestPathRouting::Refresh(SimTime now) {
+void ShortestPathNextHop::Refresh(SimTime now) {
   const std::int64_t window = now.ns() / refresh_.ns();
   if (window == window_) return;
   window_ = window;
@@ -23,7 +23,7 @@ void ShortestPathRouting::Refresh(SimTime now) {
 
 // Breadth-first from `at`, neighbours in ascending id: each node's first hop is that of the node
 // it was reached from (or itself when `at` hears it directly), so ties go to the lowest ids.
-const std::vector<NodeId>& ShortestPathRouting::FirstHops(NodeId at) {
+const std::vector<NodeId>& ShortestPathNextHop::FirstHops(NodeId at) {
   std::vector<NodeId>& first = first_hop_[static_cast<std::size_t>(at.value)];
   if (!first.empty()) return first;
   first.assign(static_cast<std::size_t>(nodes_), kNoRoute);
@@ -45,7 +45,7 @@ const std::vector<NodeId>& ShortestPathRouting::FirstHops(NodeId at) {
   return first;
 }
 
-void ShortestPathRouting::DoNextHops(NodeId at, std::span<const NodeId> dsts, SimTime now, std::span<NodeId> hops) {
+void ShortestPathNextHop::DoNextHops(NodeId at, std::span<const NodeId> dsts, SimTime now, std::span<NodeId> hops) {
   Refresh(now);
   const std::vector<NodeId>& first = FirstHops(at);
   for (std::size_t i = 0; i < dsts.size(); ++i) hops[i] = first[static_cast<std::size_t>(dsts[i].value)];

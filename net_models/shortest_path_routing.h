@@ -18,12 +18,12 @@
 
 namespace dvpr {
 
-class ShortestPathRouting final : public NextHopRouting {
+class ShortestPathNextHop final : public NextHopRouting {
  public:
   static constexpr SimTime kDefaultRefresh = SimTime::Millis(100);
 
   // Throws std::invalid_argument for no node or a refresh that is not positive.
-  ShortestPathRouting(PropagationModel& propagation, int nodes, SimTime refresh = kDefaultRefresh);
+  ShortestPathNextHop(PropagationModel& propagation, int nodes, SimTime refresh = kDefaultRefresh);
 
  private:
   void DoNextHops(NodeId at, std::span<const NodeId> dsts, SimTime now, std::span<NodeId> hops) override;

@@ -189,14 +189,7 @@ void WifiLink::Corrupt(std::uint32_t air, std::size_t station, char how) {
 // already hears another, or transmits, loses both.
 void WifiLink::StartAir(std::size_t src, Bytes bytes, DataRate rate, const Air& what) {
   const SimTime now = sim_->Now();
-  std::uint32_t id;
-  if (!free_air_.empty()) {
-    id = free_air_.back();
-    free_air_.pop_back();
-  } else {
-    id = static_cast<std::uint32_t>(air_.size());
-    air_.emplace_back();
-  }
+  const std::uint32_t id = air_.Acquire();
   // Half duplex: what the sender was receiving is lost to it.
   for (const std::uint32_t other : stations_[src].hearing) Corrupt(other, src, kUnheard);
   others_.clear();
@@ -231,7 +224,7 @@ void WifiLink::EndAir(std::uint32_t id) {
   const SimTime now = sim_->Now();
   if (--on_air_ == 0) medium_busy_ += now - on_air_since_;
   const Air a = std::move(air_[id]);  // moved out: what follows may put new transmissions on the air
-  free_air_.push_back(id);
+  air_.Release(id);
   stations_[a.src].tx_on = false;
   bool acked = false;
   bool ack_lost = false;

@@ -33,6 +33,7 @@
 #include "net_models/mac_counters.h"
 #include "net_models/mac_messages.h"
 #include "net_models/propagation_model.h"
+#include "net_models/slot_pool.h"
 #include "sim/random.h"
 #include "sim/simulator.h"
 
@@ -164,8 +165,7 @@ class WifiLink final : public LinkModel {
   std::vector<std::uint64_t> corrupted_;
   MacMessages messages_;
   SlotDraw draw_;
-  std::vector<Air> air_;
-  std::vector<std::uint32_t> free_air_;
+  SlotPool<Air> air_;  // by id: the transmissions on the air (Station::hearing)
   int on_air_ = 0;
   SimTime on_air_since_;
   SimTime medium_busy_;

@@ -106,10 +106,10 @@ struct SweepConfig {
 };
 
 // One entry of network.routing: the kind, and link_state's beacon periods.
-struct RoutingEntry {
-  RoutingKind kind = RoutingKind::kDirect;
+struct NextHopEntry {
+  NextHopKind kind = NextHopKind::kDirect;
   LinkStateParams link_state;
-  bool operator==(const RoutingEntry&) const = default;
+  bool operator==(const NextHopEntry&) const = default;
 };
 
 // The `network:` section. model, bandwidth, latency, queue_packets and mtu may each be a list;
@@ -132,7 +132,7 @@ struct NetworkConfig {
   bool wifi_radio = false;
   // network.routing: model radio runs one variant per entry (a list sweeps routings); the other
   // models reach every robot in one hop and route direct (a routing for them is refused).
-  std::vector<RoutingEntry> routing{RoutingEntry{}};
+  std::vector<NextHopEntry> routing{NextHopEntry{}};
   DisconnectedParams disconnected;             // network.disconnected, for every variant (radio only)
   // network.schedule (talk_schedule.h): the file, and its windows by robot; every variant, every
   // model. A window of a robot outside a team applies to the teams that have that robot.

@@ -214,10 +214,10 @@ void EmitNetwork(YAML::Emitter& out, const NetworkConfig& n) {
         << ToString(n.wifi.rate) << YAML::Key << "basic_rate" << YAML::Value << ToString(n.wifi.basic_rate)
         << YAML::Key << "propagation" << YAML::Value << (n.wifi_radio ? "radio" : "full_mesh") << YAML::EndMap;
   }
-  if (n.routing != std::vector<RoutingEntry>{RoutingEntry{}}) {
+  if (n.routing != std::vector<NextHopEntry>{NextHopEntry{}}) {
     out << YAML::Key << "routing" << YAML::Value << YAML::Flow << YAML::BeginSeq;
-    for (const RoutingEntry& e : n.routing) {
-      if (e.kind == RoutingKind::kLinkState && e.link_state != LinkStateParams{}) {
+    for (const NextHopEntry& e : n.routing) {
+      if (e.kind == NextHopKind::kLinkState && e.link_state != LinkStateParams{}) {
         out << YAML::BeginMap << YAML::Key << "kind" << YAML::Value << Name(ToString(e.kind))
             << YAML::Key << "hello" << YAML::Value << FormatDuration(e.link_state.hello)
             << YAML::Key << "topology" << YAML::Value << FormatDuration(e.link_state.topology) << YAML::EndMap;

@@ -198,16 +198,16 @@ DisconnectedParams ReadDisconnected(const Field& f) {
 
 // One entry of network.routing: direct | shortest_path | link_state |
 // {kind: link_state, hello, topology}.
-RoutingEntry ReadRoutingEntry(const Field& f) {
-  RoutingEntry e;
+NextHopEntry ReadNextHopEntry(const Field& f) {
+  NextHopEntry e;
   e.kind = ReadKindOrMap(
-      f, ParseRoutingKind, {"kind", "hello", "topology"},
+      f, ParseNextHopKind, {"kind", "hello", "topology"},
       "expected direct, shortest_path, link_state or a map such as {kind: link_state, hello: 2s, topology: 5s}",
       "link_state");
   if (f.node().IsScalar()) return e;
   const Field hello = f.Child("hello");
   const Field topology = f.Child("topology");
-  if (e.kind != RoutingKind::kLinkState) {
+  if (e.kind != NextHopKind::kLinkState) {
     const std::string why = "applies to link_state; " + std::string(ToString(e.kind)) + " sends no beacons";
     if (hello.present()) hello.Fail(why);
     if (topology.present()) topology.Fail(why);
@@ -219,15 +219,15 @@ RoutingEntry ReadRoutingEntry(const Field& f) {
 }
 
 // network.routing: one entry or a list of them (one radio variant each), none twice.
-std::vector<RoutingEntry> ReadRouting(const Field& f) {
-  std::vector<RoutingEntry> out;
+std::vector<NextHopEntry> ReadNextHop(const Field& f) {
+  std::vector<NextHopEntry> out;
   if (f.node().IsSequence()) {
     for (const Field& e : f.Items()) {
-      out.push_back(ReadRoutingEntry(e));
+      out.push_back(ReadNextHopEntry(e));
       if (std::find(out.begin(), out.end() - 1, out.back()) != out.end() - 1) e.Fail("is listed twice");
     }
   } else {
-    out.push_back(ReadRoutingEntry(f));
+    out.push_back(ReadNextHopEntry(f));
   }
   return out;
 }
@@ -309,9 +309,9 @@ NetworkConfig ReadNetwork(const Field& f, const SweepConfig& sweep) {
     n.radio = ReadRadio(radio);
   }
   if (const Field c = f.Child("routing"); c.present()) {
-    n.routing = ReadRouting(c);
+    n.routing = ReadNextHop(c);
     const bool routed = std::any_of(n.routing.begin(), n.routing.end(),
-                                    [](const RoutingEntry& e) { return e.kind != RoutingKind::kDirect; });
+                                    [](const NextHopEntry& e) { return e.kind != NextHopKind::kDirect; });
     if (routed && std::find(n.model.begin(), n.model.end(), LinkModelKind::kRadio) == n.model.end()) {
       c.Fail("applies to model radio, which network.model does not list (the other models reach every robot in one hop)");
     }
@@ -334,7 +334,7 @@ NetworkConfig ReadNetwork(const Field& f, const SweepConfig& sweep) {
   // destination (one hop, lost out of range if unheard), so it would hold only what a sender
   // sends outside its talk window (network.schedule). Without windows it would silently drop.
   const bool relays = std::any_of(n.routing.begin(), n.routing.end(),
-                                  [](const RoutingEntry& e) { return e.kind != RoutingKind::kDirect; });
+                                  [](const NextHopEntry& e) { return e.kind != NextHopKind::kDirect; });
   if (n.disconnected.kind == DisconnectedKind::kStoreAndForward && !relays && n.windows.empty()) {
     f.Child("disconnected").Fail("store_and_forward holds nothing with network.routing: direct (every copy goes "
                                  "straight to its destination, or is lost out of range): use shortest_path or "

@@ -9,12 +9,12 @@ namespace {
 
 NetworkVariant MakeVariant(int index, const NetworkConfig& n, LinkModelKind model, DataRate rate,
                            SimTime latency, int queue, Bytes mtu, const RadioParams& radio,
-                           const RoutingEntry& routing) {
+                           const NextHopEntry& routing) {
   NetworkVariant v;
   v.index = index;
   v.params = NetworkModelParams{.model = model, .bandwidth = rate, .latency = latency, .queue_packets = queue,
                                 .wire = WireParams{.mtu = mtu, .trailer = Bytes(wire::kTeamTrailer)}, .loss = n.loss, .links = n.links, .radio = radio,
-                                .wifi = n.wifi, .wifi_radio = n.wifi_radio, .routing = routing.kind, .link_state = routing.link_state,
+                                .wifi = n.wifi, .wifi_radio = n.wifi_radio, .next_hop = routing.kind, .link_state = routing.link_state,
                                 .disconnected = n.disconnected};
   v.label.variant = index;
   v.label.model = ToString(model);
@@ -40,7 +40,7 @@ NetworkVariant MakeVariant(int index, const NetworkConfig& n, LinkModelKind mode
                                                                  : std::string(ToString(radio.propagation));
     v.name += " " + v.label.radio;
   }
-  if (routing.kind != RoutingKind::kDirect) {
+  if (routing.kind != NextHopKind::kDirect) {
     v.label.routing = ToString(routing.kind);
     v.name += " " + v.label.routing;
   }
@@ -56,7 +56,7 @@ std::vector<NetworkVariant> ExpandNetworks(const NetworkConfig& n) {
     if (model == LinkModelKind::kIdeal) {
       out.push_back(MakeVariant(static_cast<int>(out.size()), n, model, n.bandwidth.front(),
                                 n.latency.front(), n.queue_packets.front(), n.mtu.front(), RadioParams{},
-                                RoutingEntry{}));
+                                NextHopEntry{}));
       continue;
     }
     // Only the radio sweeps its radio and routing entries; every other model has the default
@@ -64,13 +64,13 @@ std::vector<NetworkVariant> ExpandNetworks(const NetworkConfig& n) {
     const bool radio_model = model == LinkModelKind::kRadio;
     const bool radios_swept = radio_model || (model == LinkModelKind::kWifi && n.wifi_radio);
     const std::vector<RadioParams> radios = radios_swept ? n.radio : std::vector<RadioParams>{RadioParams{}};
-    const std::vector<RoutingEntry> routings = radio_model ? n.routing : std::vector<RoutingEntry>{RoutingEntry{}};
+    const std::vector<NextHopEntry> routings = radio_model ? n.routing : std::vector<NextHopEntry>{NextHopEntry{}};
     // wifi has its own rate: the bandwidth and latency lists do not multiply it.
     const bool wifi = model == LinkModelKind::kWifi;
     const std::vector<DataRate> rates = wifi ? std::vector<DataRate>{n.bandwidth.front()} : n.bandwidth;
     const std::vector<SimTime> latencies = wifi ? std::vector<SimTime>{n.latency.front()} : n.latency;
     for (const RadioParams& radio : radios) {
-      for (const RoutingEntry& routing : routings) {
+      for (const NextHopEntry& routing : routings) {
         for (DataRate rate : rates) {
           for (SimTime latency : latencies) {
             for (int queue : n.queue_packets) {

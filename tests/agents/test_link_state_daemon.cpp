@@ -69,9 +69,9 @@ struct Team {
     s.mobility = std::move(mobility);
     s.propagation = std::make_unique<RangePropagation>(*s.mobility, 200.0);
     s.access = std::make_unique<RadioLink>(RadioLinkParams{DataRate::Mbps(1), SimTime::Millis(2), 100}, 4);
-    auto routing_model = std::make_unique<LinkStateRouting>(4, LinkStateParams{});
+    auto routing_model = std::make_unique<LinkStateNextHop>(4, LinkStateParams{});
     routing = routing_model.get();
-    s.routing = std::move(routing_model);
+    s.next_hop = std::move(routing_model);
     return s;
   }
   // Robot 0's 505-byte message for robot 3 alone, at `at`.
@@ -82,7 +82,7 @@ struct Team {
     });
   }
   Simulator sim;
-  LinkStateRouting* routing = nullptr;
+  LinkStateNextHop* routing = nullptr;
   Network net;
   Watch watch;
   ObserverSubscription subscription = net.Subscribe(watch);
@@ -114,7 +114,7 @@ TEST(LinkStateDaemon, BeaconsCostTheHandWorkedBytesPerSecond) {
   EXPECT_EQ(team, 3552);
   // Over the whole run (beacons at 0, 2, ..., 20 s and TCs at 0, 5, ..., 20 s): 11 HELLO rounds
   // of 6 receptions; 5 TC rounds, each origin's TC news to 3 robots and heard again 3 times.
-  EXPECT_EQ(t.routing->counters(), (LinkStateRouting::Counters{.hellos = 66, .topologies = 60, .duplicates = 60}));
+  EXPECT_EQ(t.routing->counters(), (LinkStateNextHop::Counters{.hellos = 66, .topologies = 60, .duplicates = 60}));
   for (const auto& d : t.daemons) {
     EXPECT_EQ(d->counters().hellos, 11u);
     EXPECT_EQ(d->counters().topologies, 5u);

@@ -109,13 +109,13 @@ TEST(ConfigRadioTest, RadioMayBeAListOfMaps) {
 // network.routing (docs/network_model.md, "Routing"): a name, link_state's map, or a list of them
 // (one radio variant each); only with a radio; every bad value one error naming its key.
 TEST(ConfigRadioTest, RoutingIsOneEntryOrAListAndLinkStateTakesItsPeriods) {
-  EXPECT_EQ(Parse("network: {model: radio}\n").network.routing, std::vector<RoutingEntry>{RoutingEntry{}});
+  EXPECT_EQ(Parse("network: {model: radio}\n").network.routing, std::vector<NextHopEntry>{NextHopEntry{}});
   const ExperimentConfig c = Parse(
       "network: {model: [point_to_point, radio], routing: [shortest_path, link_state,\n"
       "          {kind: link_state, hello: 1s, topology: 3s}]}\n");
   ASSERT_EQ(c.network.routing.size(), 3u);
-  EXPECT_EQ(c.network.routing[0].kind, RoutingKind::kShortestPath);
-  EXPECT_EQ(c.network.routing[1].kind, RoutingKind::kLinkState);
+  EXPECT_EQ(c.network.routing[0].kind, NextHopKind::kShortestPath);
+  EXPECT_EQ(c.network.routing[1].kind, NextHopKind::kLinkState);
   EXPECT_EQ(c.network.routing[1].link_state.hello, SimTime::Seconds(2));     // OLSR's defaults
   EXPECT_EQ(c.network.routing[1].link_state.topology, SimTime::Seconds(5));
   EXPECT_EQ(c.network.routing[2].link_state.hello, SimTime::Seconds(1));

@@ -84,7 +84,7 @@ NetworkStack Stack(std::unique_ptr<MobilityModel> mobility, std::unique_ptr<Next
   NetworkStack s;
   s.mobility = std::move(mobility);
   s.access = OneMbps(3);
-  s.routing = std::move(routing);
+  s.next_hop = std::move(routing);
   return s;
 }
 
@@ -95,7 +95,7 @@ TEST(NetworkStack, TheDefaultsAreFixedAtTheOriginTheFullMeshAndDirectRouting) {
   EXPECT_EQ(net.mobility().nodes(), 3);
   EXPECT_EQ(net.mobility().PositionOf(NodeId(2), SimTime::Seconds(5)), (Position{0, 0, 0}));
   EXPECT_EQ(net.propagation().Name(), "full_mesh");
-  EXPECT_EQ(net.routing().Name(), "direct");
+  EXPECT_EQ(net.next_hop().Name(), "direct");
   EXPECT_EQ(net.link().Name(), "point_to_point");
 }
 
@@ -105,7 +105,7 @@ TEST(NetworkStack, MakeNetworkStackGivesTheConfiguredLinkAsTheMediumAccess) {
   NetworkStack stack = MakeNetworkStack(params, 4, 1, std::make_unique<FixedMobility>(FixedMobility::AtOrigin(4)));
   EXPECT_EQ(stack.access->Name(), "shared_medium");
   EXPECT_EQ(stack.propagation->Name(), "full_mesh");
-  EXPECT_EQ(stack.routing->Name(), "direct");
+  EXPECT_EQ(stack.next_hop->Name(), "direct");
   EXPECT_EQ(stack.mobility->nodes(), 4);
 }
 
@@ -124,7 +124,7 @@ TEST(NetworkStack, AMobilityModelForAnotherTeamSizeIsRefused) {
 }
 
 TEST(NetworkStack, FullMeshAndDirectRoutingDeliverAsTheLinkAlone) {
-  StackRun run(Stack(nullptr, std::make_unique<DirectRouting>()));
+  StackRun run(Stack(nullptr, std::make_unique<DirectNextHop>()));
   run.Broadcast();
   EXPECT_EQ(run.drops.lines, (std::vector<std::string>{"0>1 delivered at 9376000ns", "0>2 delivered at 9376000ns"}));
   EXPECT_EQ(run.net.Sender(NodeId(0)).transmissions, 2u);

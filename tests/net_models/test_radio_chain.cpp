@@ -41,9 +41,9 @@ struct Chain {
     s.propagation = std::make_unique<RangePropagation>(*s.mobility, 200.0);
     s.access = std::make_unique<RadioLink>(RadioLinkParams{DataRate::Mbps(1), SimTime::Millis(2), 100}, 4);
     if (routing == Routing::kShortestPath) {
-      s.routing = std::make_unique<ShortestPathRouting>(*s.propagation, 4);
+      s.next_hop = std::make_unique<ShortestPathNextHop>(*s.propagation, 4);
     } else {
-      s.routing = std::make_unique<DirectRouting>();
+      s.next_hop = std::make_unique<DirectNextHop>();
     }
     return s;
   }
@@ -124,7 +124,7 @@ class PingPong final : public NextHopRouting {
 
 TEST(RadioChain, ALoopingCopyIsDroppedAtTheHopLimit) {
   NetworkStack s = Chain::Stack(Routing::kDirect);
-  s.routing = std::make_unique<PingPong>();
+  s.next_hop = std::make_unique<PingPong>();
   Simulator sim;
   Network net(sim, 4, std::move(s));
   Log log;

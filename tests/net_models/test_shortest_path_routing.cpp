@@ -1,4 +1,4 @@
-// ShortestPathRouting (net_models/shortest_path_routing.h) on hand-made teams whose graph is
+// ShortestPathNextHop (net_models/shortest_path_routing.h) on hand-made teams whose graph is
 // drawn in each test: first hops of shortest paths, ties to the lowest id, no route, and the
 // graph taken once per refresh window.
 #include <gtest/gtest.h>
@@ -44,11 +44,11 @@ FixedMobility AtX(const std::vector<double>& xs) {
   return FixedMobility(p);
 }
 
-TEST(ShortestPathRouting, AChainIsRelayedHopByHop) {
+TEST(ShortestPathNextHop, AChainIsRelayedHopByHop) {
   // 0 - 1 - 2 - 3, 40 m apart: each hears only its neighbours.
   const FixedMobility m = AtX({0, 40, 80, 120});
   FiftyMetres air(m);
-  ShortestPathRouting r(air, 4);
+  ShortestPathNextHop r(air, 4);
   EXPECT_EQ(r.Name(), "shortest_path");
   EXPECT_EQ(Hops(r, 0, {NodeId(1), NodeId(2), NodeId(3)}, SimTime::Zero(), 4),
             (std::vector<NodeId>{NodeId(1), NodeId(1), NodeId(1)}));
@@ -56,21 +56,21 @@ TEST(ShortestPathRouting, AChainIsRelayedHopByHop) {
   EXPECT_EQ(Hops(r, 3, {NodeId(0)}, SimTime::Zero(), 4), (std::vector<NodeId>{NodeId(2)}));
 }
 
-TEST(ShortestPathRouting, TiesGoToTheLowestIdAndTheUnreachableHaveNoRoute) {
+TEST(ShortestPathNextHop, TiesGoToTheLowestIdAndTheUnreachableHaveNoRoute) {
   // 0 at 0; 1 and 2 both at 30 (both hear 0 and 3); 3 at 60; 4 far away.
   const FixedMobility m = AtX({0, 30, 30, 60, 1000});
   FiftyMetres air(m);
-  ShortestPathRouting r(air, 5);
+  ShortestPathNextHop r(air, 5);
   EXPECT_EQ(Hops(r, 0, {NodeId(3), NodeId(4)}, SimTime::Zero(), 5), (std::vector<NodeId>{NodeId(1), kNoRoute}));
   EXPECT_EQ(Hops(r, 4, {NodeId(0)}, SimTime::Zero(), 5), (std::vector<NodeId>{kNoRoute}));
 }
 
-TEST(ShortestPathRouting, TheGraphIsTakenOncePerRefreshWindow) {
+TEST(ShortestPathNextHop, TheGraphIsTakenOncePerRefreshWindow) {
   // Node 1 stands at 40 m until 1 s, then drives off to 1040 m at 2 s.
   const TrackMobility m({{{SimTime::Zero(), {0, 0, 0}}},
                          {{SimTime::Seconds(1), {40, 0, 0}}, {SimTime::Seconds(2), {1040, 0, 0}}}});
   FiftyMetres air(m);
-  ShortestPathRouting r(air, 2, SimTime::Millis(500));
+  ShortestPathNextHop r(air, 2, SimTime::Millis(500));
   EXPECT_EQ(Hops(r, 0, {NodeId(1)}, SimTime::Millis(100), 2), (std::vector<NodeId>{NodeId(1)}));
   EXPECT_EQ(air.questions, 2);  // one per sender, at the window's start
   EXPECT_EQ(Hops(r, 1, {NodeId(0)}, SimTime::Millis(499), 2), (std::vector<NodeId>{NodeId(0)}));
@@ -82,11 +82,11 @@ TEST(ShortestPathRouting, TheGraphIsTakenOncePerRefreshWindow) {
   EXPECT_EQ(air.questions, 6);
 }
 
-TEST(ShortestPathRouting, RefusesNoNodeAndARefreshThatIsNotPositive) {
+TEST(ShortestPathNextHop, RefusesNoNodeAndARefreshThatIsNotPositive) {
   const FixedMobility m = AtX({0});
   FiftyMetres air(m);
-  EXPECT_THROW(ShortestPathRouting(air, 0), std::invalid_argument);
-  EXPECT_THROW(ShortestPathRouting(air, 1, SimTime::Zero()), std::invalid_argument);
+  EXPECT_THROW(ShortestPathNextHop(air, 0), std::invalid_argument);
+  EXPECT_THROW(ShortestPathNextHop(air, 1, SimTime::Zero()), std::invalid_argument);
 }
 
 }  // namespace

@@ -68,7 +68,7 @@ struct Team {
     s.mobility = std::move(mobility);
     s.propagation = std::make_unique<RangePropagation>(*s.mobility, 200.0);
     s.access = std::make_unique<RadioLink>(RadioLinkParams{DataRate::Mbps(1), latency, 100}, 4);
-    s.routing = std::make_unique<ShortestPathRouting>(*s.propagation, 4);
+    s.next_hop = std::make_unique<ShortestPathNextHop>(*s.propagation, 4);
     s.disconnected = disconnected;
     return s;
   }

@@ -33,7 +33,7 @@ struct Pair {
     s.mobility = std::make_unique<FixedMobility>(std::vector<Position>{{0, 0, 0}, {150, 0, 0}});
     s.propagation = std::make_unique<RangePropagation>(*s.mobility, 200.0);
     s.access = std::make_unique<RadioLink>(RadioLinkParams{DataRate::Mbps(1), SimTime::Millis(2), 100}, 2);
-    s.routing = std::make_unique<ShortestPathRouting>(*s.propagation, 2);
+    s.next_hop = std::make_unique<ShortestPathNextHop>(*s.propagation, 2);
     s.disconnected = disconnected;
     return s;
   }

@@ -23,7 +23,7 @@ void EmulatedRange::CheckConfig(const ExperimentConfig& config, const std::strin
   };
   if (n.model.size() > 1) fail("model", "a launched team runs on one network: give radio alone");
   if (n.radio.size() > 1) fail("radio.range", "a launched team has one radio: give one range");
-  if (n.routing != std::vector<RoutingEntry>{RoutingEntry{}}) {
+  if (n.routing != std::vector<NextHopEntry>{NextHopEntry{}}) {
     fail("routing", "real agents emulate the radio's range only, without relays: use direct");
   }
   if (n.disconnected.kind != DisconnectedKind::kDrop) {

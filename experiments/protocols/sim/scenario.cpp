@@ -77,9 +77,9 @@ Scenario::Scenario(const Dataset& data, const ScenarioParams& params, const Agen
                            split_.WindowStreams()};
     agents_.push_back(make_agent(setup, *transport));
   }
-  if (params_.network.routing == RoutingKind::kLinkState) {
-    auto* routing = dynamic_cast<LinkStateRouting*>(&network_.routing());
-    if (routing == nullptr) throw std::logic_error("Scenario: routing link_state without a LinkStateRouting");
+  if (params_.network.next_hop == NextHopKind::kLinkState) {
+    auto* routing = dynamic_cast<LinkStateNextHop*>(&network_.next_hop());
+    if (routing == nullptr) throw std::logic_error("Scenario: routing link_state without a LinkStateNextHop");
     network_.SetLinkLocal(network_.InternChannel(channels::kHello));
     network_.SetLinkLocal(network_.InternChannel(channels::kTopology));
     const SimTime last_frame = split_.LastCapture(data_.fps);

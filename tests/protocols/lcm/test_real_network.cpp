@@ -37,10 +37,10 @@ TEST(RealNetworkTest, WhatARealTeamCannotEmulateIsRefusedNamingTheKey) {
   c.network.radio[1].range_m = 300;
   EXPECT_EQ(ErrorOf(c), "my.yaml: network.radio.range: a launched team has one radio: give one range");
   c.network.radio.resize(1);
-  c.network.routing = {RoutingEntry{.kind = RoutingKind::kShortestPath, .link_state = {}}};
+  c.network.routing = {NextHopEntry{.kind = NextHopKind::kShortestPath, .link_state = {}}};
   EXPECT_EQ(ErrorOf(c),
             "my.yaml: network.routing: real agents emulate the radio's range only, without relays: use direct");
-  c.network.routing = {RoutingEntry{}};
+  c.network.routing = {NextHopEntry{}};
   c.network.disconnected.kind = DisconnectedKind::kStoreAndForward;
   EXPECT_EQ(ErrorOf(c),
             "my.yaml: network.disconnected: real agents emulate the radio's range only, without store-and-forward: "

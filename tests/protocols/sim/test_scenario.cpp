@@ -98,7 +98,7 @@ TEST_F(ScenarioTest, EachRobotGetsItsSubSequenceAndTheTeam) {
   EXPECT_EQ(s.network().nodes(), 2);
   EXPECT_EQ(s.network().link().Name(), "ideal");
   EXPECT_EQ(s.network().propagation().Name(), "full_mesh");
-  EXPECT_EQ(s.network().routing().Name(), "direct");
+  EXPECT_EQ(s.network().next_hop().Name(), "direct");
 }
 
 TEST_F(ScenarioTest, CaptureTimesAreEachRobotsFrameClock) {
