@@ -6,7 +6,7 @@
 # travel) runs on this machine, compiled once instead of twice.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
+bash scripts/setup.sh demo
 cmake -S . -B build/demo -DCMAKE_BUILD_TYPE=Release -DDVPR_ARCH=host -DDVPR_BUILD_TESTS=OFF \
   -DDVPR_BUILD_BENCH=OFF >/dev/null
 cmake --build build/demo -j "$(nproc)" --target dvpr
