@@ -76,7 +76,7 @@ inline SimRunParams PointToPoint(int robots) {
 inline SimRunParams Radio(int robots, double range_m) {
   SimRunParams p = PointToPoint(robots);
   p.scenario.network.model = LinkModelKind::kRadio;
-  p.scenario.network.radio.range_m = range_m;
+  p.scenario.network.propagation = PropagationParams{.kind = PropagationKind::kRange, .range_m = range_m};
   p.scenario.network.routing = NextHopKind::kShortestPath;
   return p;
 }

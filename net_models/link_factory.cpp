@@ -73,6 +73,11 @@ void ValidateLink(const LinkOverrideParams& o, std::size_t i, LinkModelKind mode
 
 bool Contends(LinkModelKind kind) { return kind == LinkModelKind::kCsma || kind == LinkModelKind::kWifi; }
 
+PropagationParams PropagationOf(const NetworkModelParams& params) {
+  if (params.propagation) return *params.propagation;
+  return params.model == LinkModelKind::kRadio ? PropagationParams::Radio() : PropagationParams{};
+}
+
 WireParams WireOf(const NetworkModelParams& params) {
   switch (params.model) {
     case LinkModelKind::kCsma: return LinkWire(params.wire, LinkFraming::kEthernetDix);
@@ -119,9 +124,12 @@ void NetworkModelParams::Validate(int nodes) const {
                                std::string(ToString(model)));
     }
   }
-  if (model == LinkModelKind::kRadio || (model == LinkModelKind::kWifi && wifi_radio)) {
-    ValidateNested("radio.", [&] { radio.Validate(); });
+  const PropagationParams propagation_used = PropagationOf(*this);
+  if (propagation_used.NeedsPositions() && model != LinkModelKind::kRadio && model != LinkModelKind::kWifi) {
+    InvalidParam("propagation", std::string(ToString(propagation_used.kind)) +
+                                    " applies to models radio and wifi, not model " + std::string(ToString(model)));
   }
+  ValidateNested("radio.", [&] { propagation_used.Validate(); });
   if (model == LinkModelKind::kWifi) ValidateNested("wifi.", [&] { ToWifi(*this).Validate(); });
   ValidateNested("disconnected.", [&] { disconnected.Validate(); });
   if (next_hop == NextHopKind::kLinkState) ValidateNested("routing.", [&] { link_state.Validate(); });

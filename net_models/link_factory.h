@@ -12,7 +12,7 @@
 #include "net_models/link_state_params.h"
 #include "net_models/loss_params.h"
 #include "net_models/next_hop_routing.h"
-#include "net_models/radio_params.h"
+#include "net_models/propagation_params.h"
 #include "net_models/wifi_link.h"
 #include "net_models/wire_format.h"
 
@@ -55,9 +55,10 @@ struct NetworkModelParams {
   WireParams wire;  // mtu, link framing
   LossParams loss;  // for every pair unless overridden
   std::vector<LinkOverrideParams> links;
-  RadioParams radio;  // model radio (and wifi over the radio): who hears whom (the stack's propagation)
+  // Who hears whom (the stack's propagation; radio and wifi): unset, the medium's own
+  // (PropagationOf).
+  std::optional<PropagationParams> propagation;
   WifiParams wifi;    // model wifi: its rates (queue_packets is the one above)
-  bool wifi_radio = false;  // model wifi: who senses and hears whom is `radio`'s, else every robot
   NextHopKind next_hop = NextHopKind::kDirect;  // which way a copy goes (the stack's next hop)
   LinkStateParams link_state;  // routing link_state: its beacon periods
   DisconnectedParams disconnected;  // a copy without a route: dropped, or held (store-and-forward)
@@ -67,8 +68,8 @@ struct NetworkModelParams {
   // "loss.p", "links[0].latency"): a bandwidth, latency or queue outside its
   // range above, an MTU outside WireParams', a probability outside [0, 1], an override naming a
   // node outside [0, nodes) or its own link, a bandwidth/latency override
-  // on a model other than point_to_point, or (model radio) radio parameters out of range
-  // ("radio.range"), a wifi without a rate or with one outside 802.11a's ("wifi.rate"), or a
+  // on a model other than point_to_point, a propagation over positions on a model other than
+  // radio and wifi ("propagation") or with parameters out of range ("radio.range"), a wifi without a rate or with one outside 802.11a's ("wifi.rate"), or a
   // loss model on a contending model ("loss").
   void Validate(int nodes) const;
   bool operator==(const NetworkModelParams&) const = default;
@@ -76,6 +77,10 @@ struct NetworkModelParams {
 
 // A contending medium access: it runs events of its own and settles copies later (link_model.h).
 bool Contends(LinkModelKind kind);
+
+// Who hears whom on a network of these parameters, the one place that decides it: the given
+// propagation, else the medium's own (a radio's: range 200 m; every other medium's: the full mesh).
+PropagationParams PropagationOf(const NetworkModelParams& params);
 
 // The wire format of a network of these parameters: params.wire with its model's framing (PPP;
 // DIX Ethernet for csma; 802.11 for wifi).

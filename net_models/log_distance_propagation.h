@@ -1,7 +1,7 @@
 #pragma once
 // "log_distance" (ns-3's LogDistancePropagationLossModel): the path loss at ground-plane
 // distance d is L0 + 10 n log10(d / d0) (L0 below d0), and a robot hears a transmission iff
-// tx_power - loss - shadowing is at least the sensitivity (radio_params.h). Shadowing, when its
+// tx_power - loss - shadowing is at least the sensitivity (propagation_params.h). Shadowing, when its
 // standard deviation is positive, is a normal draw in dB fixed per unordered pair of robots and
 // window of virtual time, taken from (seed, pair, window) alone: both directions and every
 // question in a window get the same value, whatever the order of the questions. The air adds
@@ -11,7 +11,7 @@
 
 #include "net_models/mobility_model.h"
 #include "net_models/propagation_model.h"
-#include "net_models/radio_params.h"
+#include "net_models/propagation_params.h"
 
 namespace dvpr {
 

@@ -27,15 +27,15 @@ void NetworkStack::CompleteDefaults(int nodes) {
 
 namespace {
 
-// The radio's propagation over the robots' positions (radio_params.h).
-std::unique_ptr<PropagationModel> MakeRadioPropagation(const RadioParams& radio, const MobilityModel& mobility,
-                                                       std::uint64_t run_seed) {
-  switch (radio.propagation) {
-    case PropagationKind::kRange: return std::make_unique<RangePropagation>(mobility, radio.range_m);
-    case PropagationKind::kLogDistance:
-      return std::make_unique<LogDistancePropagation>(mobility, radio.log_distance, run_seed);
+// The propagation model of `p` over the robots' positions (propagation_params.h).
+std::unique_ptr<PropagationModel> MakePropagation(const PropagationParams& p, const MobilityModel& mobility,
+                                                  std::uint64_t run_seed) {
+  switch (p.kind) {
+    case PropagationKind::kFullMesh: return std::make_unique<FullMeshPropagation>();
+    case PropagationKind::kRange: return std::make_unique<RangePropagation>(mobility, p.range_m);
+    case PropagationKind::kLogDistance: return std::make_unique<LogDistancePropagation>(mobility, p.log_distance, run_seed);
   }
-  throw std::logic_error("MakeRadioPropagation: unknown propagation kind");
+  throw std::logic_error("MakePropagation: unknown propagation kind");
 }
 
 }  // namespace
@@ -43,8 +43,8 @@ std::unique_ptr<PropagationModel> MakeRadioPropagation(const RadioParams& radio,
 NetworkStack MakeNetworkStack(const NetworkModelParams& params, int nodes, std::uint64_t run_seed,
                               std::unique_ptr<MobilityModel> mobility) {
   params.Validate(nodes);  // before any model is built from them
-  const bool radio = params.model == LinkModelKind::kRadio || (params.model == LinkModelKind::kWifi && params.wifi_radio);
-  if (radio && !mobility) {
+  const PropagationParams propagation = PropagationOf(params);
+  if (propagation.NeedsPositions() && !mobility) {
     throw std::invalid_argument("model: " + std::string(ToString(params.model)) +
                                 " over the radio needs the robots' positions over time (a trajectory)");
   }
@@ -52,8 +52,7 @@ NetworkStack MakeNetworkStack(const NetworkModelParams& params, int nodes, std::
   stack.mobility = std::move(mobility);
   if (!stack.mobility) stack.mobility = std::make_unique<FixedMobility>(FixedMobility::AtOrigin(nodes));
   // wifi senses through the propagation: it comes first.
-  if (radio) stack.propagation = MakeRadioPropagation(params.radio, *stack.mobility, run_seed);
-  if (!stack.propagation) stack.propagation = std::make_unique<FullMeshPropagation>();
+  stack.propagation = MakePropagation(propagation, *stack.mobility, run_seed);
   stack.access = MakeLinkModel(params, nodes, run_seed, stack.propagation.get());
   stack.disconnected = params.disconnected;
   stack.CompleteDefaults(nodes);

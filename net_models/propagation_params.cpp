@@ -1,4 +1,4 @@
-#include "net_models/radio_params.h"
+#include "net_models/propagation_params.h"
 
 #include <array>
 #include <cmath>
@@ -11,7 +11,8 @@
 namespace dvpr {
 namespace {
 
-constexpr std::array<std::pair<PropagationKind, std::string_view>, 2> kNames{{
+constexpr std::array<std::pair<PropagationKind, std::string_view>, 3> kNames{{
+    {PropagationKind::kFullMesh, "full_mesh"},
     {PropagationKind::kRange, "range"},
     {PropagationKind::kLogDistance, "log_distance"},
 }};
@@ -26,9 +27,10 @@ void CheckNumber(std::string_view field, double v, double lo, double hi, bool lo
 
 }  // namespace
 
-PropagationKind ParsePropagationKind(std::string_view name) {
+PropagationKind ParsePropagationKind(std::string_view name, bool with_full_mesh) {
   std::string expected;
   for (const auto& [kind, spelling] : kNames) {
+    if (kind == PropagationKind::kFullMesh && !with_full_mesh) continue;
     if (spelling == name) return kind;
     expected += (expected.empty() ? "" : ", ") + std::string(spelling);
   }
@@ -50,7 +52,7 @@ double LogDistanceParams::MeanRangeM() const {
 
 void LogDistanceParams::Validate() const {
   CheckNumber("exponent", exponent, 1.0, 10.0);
-  CheckNumber("reference_distance", reference_distance_m, 0.0, RadioParams::kMaxRangeM, /*low_open=*/true);
+  CheckNumber("reference_distance", reference_distance_m, 0.0, PropagationParams::kMaxRangeM, /*low_open=*/true);
   CheckNumber("reference_loss_db", reference_loss_db, 0.0, 300.0);
   CheckNumber("tx_power_dbm", tx_power_dbm, -200.0, 100.0);
   CheckNumber("sensitivity_dbm", sensitivity_dbm, -200.0, 100.0);
@@ -58,7 +60,7 @@ void LogDistanceParams::Validate() const {
   CheckNumber("shadowing_window", shadowing_window_s, 0.0, 86400.0, /*low_open=*/true);
 }
 
-void RadioParams::Validate() const {
+void PropagationParams::Validate() const {
   CheckNumber("range", range_m, 0.0, kMaxRangeM, /*low_open=*/true);
   ValidateNested("log_distance.", [&] { log_distance.Validate(); });
 }

@@ -1,7 +1,10 @@
 #pragma once
-// The radio's parameters (config: network.model radio, network.radio; docs/network_model.md):
-// which propagation model decides who hears whom, and its numbers. Distances are metres on the
-// ground plane of the trajectory's frame (KITTI's x and z: y points down).
+// Who hears whom (docs/network_model.md, "Propagation"): the full mesh (everyone hears everyone,
+// no positions), or a propagation over the robots' positions (range, log_distance) with its
+// numbers. A medium that has a propagation (radio, and wifi over the radio's; config:
+// network.radio, network.wifi.propagation) is given one; the others are on the full mesh.
+// Distances are metres on the ground plane of the trajectory's frame (KITTI's x and z: y points
+// down).
 //
 // The log-distance defaults are ns-3's LogDistancePropagationLossModel (exponent 3, 46.6777 dB
 // at 1 m: free space at 5.15 GHz) with ns-3's default transmit power for Wi-Fi (16.0206 dBm,
@@ -11,11 +14,12 @@
 
 namespace dvpr {
 
-enum class PropagationKind { kRange, kLogDistance };
+enum class PropagationKind { kFullMesh, kRange, kLogDistance };
 
-// "range" | "log_distance"; Parse throws std::invalid_argument "unknown value '<name>'
-// (expected one of: range, log_distance)".
-PropagationKind ParsePropagationKind(std::string_view name);
+// "range" | "log_distance" (and "full_mesh" when `with_full_mesh`: a radio's propagation is over
+// positions); throws std::invalid_argument "unknown value '<name>' (expected one of: range,
+// log_distance)".
+PropagationKind ParsePropagationKind(std::string_view name, bool with_full_mesh = false);
 std::string_view ToString(PropagationKind kind);
 
 struct LogDistanceParams {
@@ -37,17 +41,21 @@ struct LogDistanceParams {
   bool operator==(const LogDistanceParams&) const = default;
 };
 
-struct RadioParams {
+struct PropagationParams {
   static constexpr double kMaxRangeM = 1e9;  // the pose loader's range: farther says nothing more
 
-  PropagationKind propagation = PropagationKind::kRange;
+  PropagationKind kind = PropagationKind::kFullMesh;
   double range_m = 200.0;  // range: heard iff the ground-plane distance is at most this
-  LogDistanceParams log_distance;
+  LogDistanceParams log_distance = {};
 
+  // A radio's propagation when none is given: range 200 m.
+  static PropagationParams Radio() { return PropagationParams{.kind = PropagationKind::kRange}; }
+  // Who hears whom depends on where the robots are: a trajectory is needed.
+  bool NeedsPositions() const { return kind != PropagationKind::kFullMesh; }
   // Throws std::invalid_argument "<field>: ..." ("range: must be in (0, 1e9] metres, got -3",
   // "log_distance.exponent: ...").
   void Validate() const;
-  bool operator==(const RadioParams&) const = default;
+  bool operator==(const PropagationParams&) const = default;
 };
 
 }  // namespace dvpr

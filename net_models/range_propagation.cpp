@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "net_models/ground_distance.h"
-#include "net_models/radio_params.h"
+#include "net_models/propagation_params.h"
 #include "net_models/units.h"
 
 namespace dvpr {
@@ -12,7 +12,7 @@ SimTime AirDelay(double metres) { return SimTime::Nanos(std::llround(metres / kS
 
 RangePropagation::RangePropagation(const MobilityModel& mobility, double range_m)
     : mobility_(mobility), range_m_(range_m) {
-  RadioParams params;
+  PropagationParams params;
   params.range_m = range_m;
   params.Validate();
   name_ = "range(" + FormatMeters(range_m) + ")";

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "experiments/config/network_variants.h"
 #include "experiments/figures/figures.h"
 #include "experiments/protocols/inputs.h"
 #include "experiments/results/protocol_traits.h"
@@ -215,7 +216,7 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
     if (config.outputs.figures) {
       WriteFigureData(dir, FigureData{&inputs.deployment.descriptors, &inputs.training, &curves,
                                       config.evaluation.suppression_frames});
-      DrawFigures(dir, std::cerr, FigureLog::kGone);  // a failed run removes its folder, logs and all
+      DrawFigures(dir, VariantLabels(config.network), std::cerr, FigureLog::kGone);  // a failed run removes its folder, logs and all
     }
     folder.Commit();
   } catch (const std::invalid_argument& e) {

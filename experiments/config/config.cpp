@@ -24,6 +24,15 @@ namespace {
 constexpr std::size_t kMaxNameBytes = 255;
 }  // namespace
 
+const std::vector<PropagationParams>& PropagationsOf(const NetworkConfig& network, LinkModelKind model) {
+  static const std::vector<PropagationParams> kFullMesh{PropagationParams{}};
+  switch (model) {
+    case LinkModelKind::kRadio: return network.radio;
+    case LinkModelKind::kWifi: return network.wifi_propagation;
+    default: return kFullMesh;
+  }
+}
+
 using config_detail::Field;
 using config_detail::Origin;
 

@@ -115,6 +115,12 @@ struct NextHopEntry {
 // The `network:` section. model, bandwidth, latency, queue_packets and mtu may each be a list;
 // the sweep runs their cross product (ExpandNetworks in sweep.h), each variant a
 // NetworkModelParams with this loss and these links.
+struct NetworkConfig;
+
+// The propagations a variant of `model` is run over, one variant each: the radio's, wifi's, or
+// the full mesh (every other medium). The one place that decides which media have a propagation.
+const std::vector<PropagationParams>& PropagationsOf(const NetworkConfig& network, LinkModelKind model);
+
 struct NetworkConfig {
   std::vector<LinkModelKind> model{NetworkModelParams{}.model};
   std::vector<DataRate> bandwidth{NetworkModelParams{}.bandwidth};
@@ -123,13 +129,16 @@ struct NetworkConfig {
   std::vector<Bytes> mtu{NetworkModelParams{}.wire.mtu};
   LossParams loss;
   std::vector<LinkOverrideParams> links;  // src != dst, each in a team of the sweep at run time
-  // model radio: one variant per entry (network.radio, a `range` list gives one entry per range);
-  // a radio section without model radio is refused when the config is read.
-  std::vector<RadioParams> radio{RadioParams{}};
-  // model wifi: network.wifi's rate (required) and basic_rate; wifi_radio: its `propagation` is
-  // radio (network.radio's entries, one variant each), else every robot hears every other.
+  // Who hears whom on the media that have a propagation (PropagationsOf below), one variant per
+  // entry. model radio: network.radio's entries (a `range` list gives one entry per range; a
+  // radio section without model radio or wifi over it is refused when the config is read).
+  // model wifi: network.wifi.propagation full_mesh (the default: one entry, every robot hears
+  // every other) or radio (the radio's entries). Every config reads and writes back in these keys:
+  // wifi's entries are the full mesh or the radio's.
+  std::vector<PropagationParams> radio{PropagationParams::Radio()};
+  std::vector<PropagationParams> wifi_propagation{PropagationParams{}};
+  // model wifi: network.wifi's rate (required) and basic_rate.
   WifiParams wifi;
-  bool wifi_radio = false;
   // network.routing: model radio runs one variant per entry (a list sweeps routings); the other
   // models reach every robot in one hop and route direct (a routing for them is refused).
   std::vector<NextHopEntry> routing{NextHopEntry{}};

@@ -139,13 +139,13 @@ void EmitSweep(YAML::Emitter& out, const SweepConfig& s) {
 
 // The entries differ only in range (ReadRadio), so one map with the list of ranges reads back.
 // One radio map: a range radio with its ranges (all of `radio`), or one log_distance radio.
-void EmitRadioMap(YAML::Emitter& out, const std::vector<RadioParams>& radio) {
-  const RadioParams& r = radio.front();
+void EmitRadioMap(YAML::Emitter& out, const std::vector<PropagationParams>& radio) {
+  const PropagationParams& r = radio.front();
   out << YAML::BeginMap;
-  out << YAML::Key << "propagation" << YAML::Value << Name(ToString(r.propagation));
-  if (r.propagation == PropagationKind::kRange) {
+  out << YAML::Key << "propagation" << YAML::Value << Name(ToString(r.kind));
+  if (r.kind == PropagationKind::kRange) {
     out << YAML::Key << "range" << YAML::Value;
-    EmitList(out, radio, [](const RadioParams& x) { return FormatMeters(x.range_m); });
+    EmitList(out, radio, [](const PropagationParams& x) { return FormatMeters(x.range_m); });
   } else {
     const LogDistanceParams& l = r.log_distance;
     out << YAML::Key << "log_distance" << YAML::Value << YAML::Flow << YAML::BeginMap
@@ -163,16 +163,16 @@ void EmitRadioMap(YAML::Emitter& out, const std::vector<RadioParams>& radio) {
 
 // network.radio: one map when every entry is a range radio (or there is one entry), else a list
 // of maps, one per entry, which reads back to the same entries in the same order.
-void EmitRadio(YAML::Emitter& out, const std::vector<RadioParams>& radio) {
+void EmitRadio(YAML::Emitter& out, const std::vector<PropagationParams>& radio) {
   out << YAML::Key << "radio" << YAML::Value;
   const bool all_ranges = std::all_of(radio.begin(), radio.end(),
-                                      [](const RadioParams& r) { return r.propagation == PropagationKind::kRange; });
+                                      [](const PropagationParams& r) { return r.kind == PropagationKind::kRange; });
   if (all_ranges || radio.size() == 1) {
     EmitRadioMap(out, radio);
     return;
   }
   out << YAML::BeginSeq;
-  for (const RadioParams& r : radio) EmitRadioMap(out, {r});
+  for (const PropagationParams& r : radio) EmitRadioMap(out, {r});
   out << YAML::EndSeq;
 }
 
@@ -205,14 +205,16 @@ void EmitNetwork(YAML::Emitter& out, const NetworkConfig& n) {
   out << YAML::EndSeq;
   // Only a radio config has the section (and only a routed one the routing), so every other
   // config's emitted form stays as it was.
+  // wifi's propagation is the full mesh or the radio's (NetworkConfig): "radio" when over positions.
   const bool wifi = std::find(n.model.begin(), n.model.end(), LinkModelKind::kWifi) != n.model.end();
-  if (std::find(n.model.begin(), n.model.end(), LinkModelKind::kRadio) != n.model.end() || (wifi && n.wifi_radio)) {
+  const bool wifi_over_radio = wifi && PropagationsOf(n, LinkModelKind::kWifi).front().NeedsPositions();
+  if (std::find(n.model.begin(), n.model.end(), LinkModelKind::kRadio) != n.model.end() || wifi_over_radio) {
     EmitRadio(out, n.radio);
   }
   if (wifi) {
     out << YAML::Key << "wifi" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "rate" << YAML::Value
         << ToString(n.wifi.rate) << YAML::Key << "basic_rate" << YAML::Value << ToString(n.wifi.basic_rate)
-        << YAML::Key << "propagation" << YAML::Value << (n.wifi_radio ? "radio" : "full_mesh") << YAML::EndMap;
+        << YAML::Key << "propagation" << YAML::Value << (wifi_over_radio ? "radio" : "full_mesh") << YAML::EndMap;
   }
   if (n.routing != std::vector<NextHopEntry>{NextHopEntry{}}) {
     out << YAML::Key << "routing" << YAML::Value << YAML::Flow << YAML::BeginSeq;

@@ -95,7 +95,7 @@ double ReadRange(const Field& f) {
   if (metres == 0 && NonZeroNumber(text)) {
     f.Fail(text + " rounds to 0 at the resolution of lengths (1mm), below the smallest allowed value 1mm");
   }
-  if (!(metres > 0) || metres > RadioParams::kMaxRangeM) f.Fail("must be in (0m, 1000000km], got " + text);
+  if (!(metres > 0) || metres > PropagationParams::kMaxRangeM) f.Fail("must be in (0m, 1000000km], got " + text);
   return metres;
 }
 
@@ -118,42 +118,44 @@ LogDistanceParams ReadLogDistance(const Field& f) {
 }
 
 // One radio map: {propagation, range, log_distance}; `range` may be a list (one variant each).
-std::vector<RadioParams> ReadRadioMap(const Field& f) {
+std::vector<PropagationParams> ReadRadioMap(const Field& f) {
   if (!f.node().IsMap()) f.Fail("expected a map such as {propagation: range, range: 200m}");
   f.ExpectMap({"propagation", "range", "log_distance"});
-  RadioParams base;
-  if (auto c = f.Child("propagation"); c.present()) base.propagation = c.Named(ParsePropagationKind);
+  PropagationParams base = PropagationParams::Radio();
+  if (auto c = f.Child("propagation"); c.present()) {
+    base.kind = c.Named([](std::string_view name) { return ParsePropagationKind(name); });
+  }
   const Field range = f.Child("range");
   const Field log_distance = f.Child("log_distance");
-  if (base.propagation == PropagationKind::kLogDistance && range.present()) {
+  if (base.kind == PropagationKind::kLogDistance && range.present()) {
     range.Fail("applies to propagation range; log_distance's reach follows from its own keys");
   }
-  if (base.propagation == PropagationKind::kRange && log_distance.present()) {
+  if (base.kind == PropagationKind::kRange && log_distance.present()) {
     log_distance.Fail("applies to propagation log_distance, not range");
   }
   base.log_distance = ReadLogDistance(log_distance);
-  std::vector<RadioParams> out;
-  if (base.propagation == PropagationKind::kRange && range.present()) {
+  std::vector<PropagationParams> out;
+  if (base.kind == PropagationKind::kRange && range.present()) {
     for (const double metres : ReadList<double>(range, ReadRange)) {
-      RadioParams r = base;
+      PropagationParams r = base;
       r.range_m = metres;
       out.push_back(r);
     }
   } else {
     out.push_back(base);
   }
-  for (const RadioParams& r : out) f.Validate(r);
+  for (const PropagationParams& r : out) f.Validate(r);
   return out;
 }
 
 // network.radio: one radio map, or a list of them (a range sweep beside a log_distance radio):
 // one variant per entry, none twice.
-std::vector<RadioParams> ReadRadio(const Field& f) {
-  if (!f.present()) return {RadioParams{}};
+std::vector<PropagationParams> ReadRadio(const Field& f) {
+  if (!f.present()) return {PropagationParams::Radio()};
   if (!f.node().IsSequence()) return ReadRadioMap(f);
-  std::vector<RadioParams> out;
+  std::vector<PropagationParams> out;
   for (const Field& item : f.Items()) {
-    for (const RadioParams& r : ReadRadioMap(item)) {
+    for (const PropagationParams& r : ReadRadioMap(item)) {
       if (std::find(out.begin(), out.end(), r) != out.end()) item.Fail("repeats a radio listed before");
       out.push_back(r);
     }
@@ -236,14 +238,15 @@ bool Lists(const NetworkConfig& n, LinkModelKind kind) {
   return std::find(n.model.begin(), n.model.end(), kind) != n.model.end();
 }
 
-// network.wifi: {rate, basic_rate, propagation: full_mesh | radio}; rate required.
-void ReadWifi(const Field& f, NetworkConfig& n) {
+// network.wifi: {rate, basic_rate, propagation: full_mesh | radio}; rate required. True when its
+// propagation is the radio's (network.radio's entries, read after it).
+bool ReadWifi(const Field& f, NetworkConfig& n) {
   const char* rates = "one of 6, 9, 12, 18, 24, 36, 48, 54 Mbit/s";
   if (!f.present()) {
     if (Lists(n, LinkModelKind::kWifi)) {
       f.Fail(std::string("model wifi needs this section with its data rate: {rate: 54Mbps}, ") + rates);
     }
-    return;
+    return false;
   }
   if (!Lists(n, LinkModelKind::kWifi)) f.Fail("applies to model wifi, which network.model does not list");
   if (!f.node().IsMap()) f.Fail("expected a map such as {rate: 54Mbps}");
@@ -254,14 +257,16 @@ void ReadWifi(const Field& f, NetworkConfig& n) {
   if (auto c = f.Child("basic_rate"); c.present()) {
     n.wifi.basic_rate = c.Rate(NetworkModelParams::kMinBandwidth, NetworkModelParams::kMaxBandwidth);
   }
+  bool over_radio = false;
   if (auto c = f.Child("propagation"); c.present()) {
-    n.wifi_radio = c.Named([](std::string_view name) {
+    over_radio = c.Named([](std::string_view name) {
       if (name == "full_mesh") return false;
       if (name == "radio") return true;
       throw std::invalid_argument("unknown value '" + std::string(name) + "' (expected one of: full_mesh, radio)");
     });
   }
   f.Validate(n.wifi);
+  return over_radio;
 }
 
 }  // namespace
@@ -299,15 +304,16 @@ NetworkConfig ReadNetwork(const Field& f, const SweepConfig& sweep) {
     }
   }
   n.links = ReadLinks(f.Child("links"));
-  ReadWifi(f.Child("wifi"), n);
+  const bool wifi_over_radio = ReadWifi(f.Child("wifi"), n);
   if (const Field radio = f.Child("radio"); radio.present()) {
-    if (!Lists(n, LinkModelKind::kRadio) && !(Lists(n, LinkModelKind::kWifi) && n.wifi_radio)) {
+    if (!Lists(n, LinkModelKind::kRadio) && !(Lists(n, LinkModelKind::kWifi) && wifi_over_radio)) {
       radio.Fail(Lists(n, LinkModelKind::kWifi)
                      ? "applies to model radio, or wifi with propagation radio (network.wifi.propagation)"
                      : "applies to model radio, which network.model does not list");
     }
     n.radio = ReadRadio(radio);
   }
+  if (wifi_over_radio) n.wifi_propagation = n.radio;
   if (const Field c = f.Child("routing"); c.present()) {
     n.routing = ReadNextHop(c);
     const bool routed = std::any_of(n.routing.begin(), n.routing.end(),

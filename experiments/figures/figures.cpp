@@ -156,11 +156,13 @@ void AddTrafficFigures(const fs::path& out_dir, const fs::path& data, const std:
 
 }  // namespace
 
-std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::ostream& log, FigureLog logs) {
+std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::span<const NetworkLabel> networks, std::ostream& log,
+                                  FigureLog logs) {
+  std::vector<RunResult> rows = ReadRunsCsv(out_dir / "runs.csv");
+  LabelNetworks(rows, networks, out_dir / "runs.csv");
   const fs::path fig = out_dir / "figures";
   const fs::path data = fig / "data";
   fs::create_directories(data);
-  const std::vector<RunResult> rows = ReadRunsCsv(out_dir / "runs.csv");
   const bool have3 = WriteRelativeAucData(data, rows);
   const bool strategies = ComparesStrategies(rows);
   const bool have7 = strategies && WriteStrategyTradeoffData(data, rows);

@@ -22,6 +22,7 @@
 //                            folder has connectivity.csv, or radio variants of two or more ranges
 #include <filesystem>
 #include <ostream>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -105,7 +106,8 @@ std::string BowComparisonScript(const std::filesystem::path& data_dir, const std
 inline constexpr int kSeedBowQueryBytes = 16000;
 inline constexpr int kSeedGlobalQueryBytes = 512;
 
-// Reads out_dir/runs.csv (and per_robot.csv, links.csv), writes the data of figures 3, 5-12, then
+// Reads out_dir/runs.csv (and per_robot.csv, links.csv), whose network rows take their labels
+// from `networks` (the run's variants, VariantLabels of its config; LabelNetworks), writes the data of figures 3, 5-12, then
 // draws every figure whose data exists; the strategy figures (10, 11) only when runs.csv has a
 // strategy other than decentralized and broadcast. Figures without their data, or every figure
 // when gnuplot is not installed, are reported on `log` and skipped. A figure gnuplot fails to
@@ -114,6 +116,7 @@ inline constexpr int kSeedGlobalQueryBytes = 512;
 // the notes of skipped figures are not written (they would bury the error). Returns the PNGs
 // written.
 std::vector<std::filesystem::path> DrawFigures(const std::filesystem::path& out_dir,
-                                               std::ostream& log, FigureLog logs = FigureLog::kKept);
+                                               std::span<const NetworkLabel> networks, std::ostream& log,
+                                               FigureLog logs = FigureLog::kKept);
 
 }  // namespace dvpr

@@ -2,7 +2,6 @@
 #include "experiments/figures/figures_radio.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <map>
 #include <set>
@@ -39,23 +38,9 @@ struct Step {
 std::string RadioLabelOf(const std::vector<RunResult>& rows, int variant) {
   for (const RunResult& r : rows) {
     if (r.key.network.variant != variant || r.key.network.model.empty()) continue;
-    return r.key.network.radio.empty() ? NetworkName(r.key.network) : r.key.network.radio;
+    return r.key.network.propagation.empty() ? NetworkName(r.key.network) : r.key.network.propagation;
   }
   return "network variant " + std::to_string(variant);
-}
-
-std::optional<double> RadioRangeMetres(const std::string& radio) {
-  constexpr std::string_view kPrefix = "range ";
-  if (radio.size() <= kPrefix.size() || radio.compare(0, kPrefix.size(), kPrefix) != 0) return std::nullopt;
-  const char* begin = radio.data() + kPrefix.size();
-  const char* end = radio.data() + radio.size();
-  long long value = 0;
-  const auto [rest, ec] = std::from_chars(begin, end, value);
-  if (ec != std::errc() || rest == begin || value <= 0) return std::nullopt;
-  const std::string_view unit(rest, static_cast<std::size_t>(end - rest));
-  if (unit == "m") return static_cast<double>(value);
-  if (unit == "mm") return static_cast<double>(value) / 1000.0;
-  return std::nullopt;
 }
 
 std::optional<FigureScript> WriteConnectivityFigure(const fs::path& dir, const CsvTable& t, const std::vector<RunResult>& rows,
@@ -170,14 +155,14 @@ std::optional<FigureScript> WriteRadioRangeFigure(const fs::path& dir, const std
   for (const RunResult& r : rows) {
     if (!RowTraits(r.key.protocol).simulated_network || r.key.network.model != "radio") continue;
     if (r.key.strategy != "decentralized" && r.key.strategy != "broadcast") continue;
-    if (routing && r.key.network.routing != *routing) continue;
-    const std::optional<double> range = RadioRangeMetres(r.key.network.radio);
-    if (!range) continue;
-    ranges.insert(*range);
-    Cell& c = cells[{r.key.strategy, r.key.robots, *range}];
+    if (routing && r.key.network.next_hop != *routing) continue;
+    const double range = r.key.network.range_m;
+    if (std::isnan(range)) continue;  // log_distance: no one range
+    ranges.insert(range);
+    Cell& c = cells[{r.key.strategy, r.key.robots, range}];
     c.bytes.Add(r.bytes_per_query);
     c.latency.Add(r.mean_latency_ms);
-    variant_of[{r.key.strategy, r.key.robots, *range}] = r.key.network.variant;
+    variant_of[{r.key.strategy, r.key.robots, range}] = r.key.network.variant;
   }
   if (ranges.size() < 2) {
     why = "needs radio variants of two or more ranges";
@@ -265,8 +250,8 @@ std::vector<std::pair<std::string, FigureScript>> RadioFigures(const fs::path& o
   std::vector<std::string> routings;
   for (const RunResult& r : rows) {
     if (r.key.network.model == "radio" &&
-        std::find(routings.begin(), routings.end(), r.key.network.routing) == routings.end()) {
-      routings.push_back(r.key.network.routing);
+        std::find(routings.begin(), routings.end(), r.key.network.next_hop) == routings.end()) {
+      routings.push_back(r.key.network.next_hop);
     }
   }
   const CsvTable queries = ReadCsvTable(out_dir / "queries.csv");

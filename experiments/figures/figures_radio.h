@@ -29,10 +29,6 @@ namespace dvpr {
 // "log_distance"), else its network name, else "network variant <v>".
 std::string RadioLabelOf(const std::vector<RunResult>& rows, int variant);
 
-// The range in metres of a radio label ("range 200m", "range 1500mm": NetworkLabel::radio as
-// the sweep writes it); nullopt for anything else (log_distance, "").
-std::optional<double> RadioRangeMetres(const std::string& radio);
-
 // connectivity.png's data (conn_<n>.dat: per variant a block "time_s pairs_in_range
 // share_of_pairs_percent components") from the first run and first strategy of `connectivity`
 // (every strategy of a run has the same rows); `rows` name the variants. nullopt (and `why`)

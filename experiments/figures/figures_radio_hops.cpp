@@ -40,8 +40,8 @@ std::vector<double> ByHops(const CsvTable& t, std::size_t row, std::size_t colum
 // The panel's name: the radio and its routing ("range 200m shortest_path").
 std::string PanelName(const std::vector<RunResult>& rows, int variant) {
   for (const RunResult& r : rows) {
-    if (r.key.network.variant == variant && !r.key.network.routing.empty()) {
-      return RadioLabelOf(rows, variant) + " " + r.key.network.routing;
+    if (r.key.network.variant == variant && !r.key.network.next_hop.empty()) {
+      return RadioLabelOf(rows, variant) + " " + r.key.network.next_hop;
     }
   }
   return RadioLabelOf(rows, variant);

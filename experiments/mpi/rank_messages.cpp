@@ -14,7 +14,8 @@ namespace {
 // and the reader cannot disagree and a field added to a row needs one line here. (A field left
 // out would not travel, and the writing rank's folder would differ from a single process's;
 // tests/mpi compares whole folders.)
-template <typename F> void Fields(NetworkLabel& n, F&& f) { f(n.variant, n.model, n.bandwidth_bps, n.latency_ms, n.loss, n.radio, n.routing); }
+template <typename F> void Fields(NetworkLabel& n, F&& f) { f(n.variant, n.model, n.bandwidth_bps, n.latency_ms, n.loss, n.queue_packets, n.mtu_bytes, n.propagation, n.range_m,
+    n.next_hop); }
 template <typename F> void Fields(RunKey& k, F&& f) { f(k.protocol, k.strategy, k.robots, k.run, k.network); }
 template <typename F> void Fields(CopyBytes& c, F&& f) { f(c.payload, c.wire, c.delivered_payload, c.delivered_wire); }
 template <typename F> void Fields(RunRoleBytes& r, F&& f) { f(r.copies, r.medium); }

@@ -15,6 +15,7 @@
 
 #include "agents/algorithms/descriptors.h"
 #include "experiments/config/config.h"
+#include "experiments/config/network_variants.h"
 #include "experiments/data/bow_data.h"
 #include "experiments/data/dataset.h"
 #include "experiments/results/bow_rows.h"
@@ -27,14 +28,6 @@
 #include "net_models/link_factory.h"
 
 namespace dvpr {
-
-// One network of the sweep, with its label for result files.
-struct NetworkVariant {
-  int index = 0;
-  NetworkModelParams params;  // what the link factory builds for the run
-  NetworkLabel label;
-  std::string name;  // "point_to_point 10Mbps 2ms" (human-readable, for tables and legends)
-};
 
 struct RunSpec {
   std::size_t index = 0;               // position in the sweep

@@ -8,6 +8,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "experiments/config/config.h"
+#include "experiments/config/network_variants.h"
 #include "experiments/config/option_reader.h"
 #include "experiments/replay/replay_page.h"
 #include "experiments/replay/replay_tracks.h"
@@ -85,8 +87,10 @@ ReplayOptions ParseReplayArgs(const std::vector<std::string>& args) {
 
 std::filesystem::path WriteReplay(const ReplayOptions& options, std::ostream& out) {
   CheckFolder(options.dir);
-  const ReplayRun run = ReadReplayRun(options.dir / "messages.csv", options.selection);
-  const Tracks tracks = LoadTracks(options.dir / "config.yaml", run.robots);
+  const std::filesystem::path config_yaml = options.dir / "config.yaml";
+  const ExperimentConfig config = LoadFolderConfig(config_yaml);
+  const ReplayRun run = ReadReplayRun(options.dir / "messages.csv", options.selection, VariantLabels(config.network));
+  const Tracks tracks = TracksOf(config, config_yaml, run.robots);
   const std::filesystem::path file =
       !options.out.empty() ? options.out
                            : options.dir / ("replay_n" + std::to_string(run.robots) + "_run" + std::to_string(run.run) +
@@ -103,7 +107,7 @@ std::filesystem::path WriteReplay(const ReplayOptions& options, std::ostream& ou
   // The names come from the folder (config.yaml, messages.csv) and the path from the user: shown
   // on one line, control characters and bytes that are not UTF-8 as visible escapes.
   out << "replay of " << OneLineText(tracks.name) << ": " << run.robots << " robots, run " << run.run
-      << ", network " << run.network_variant << " (" << OneLineText(NetworkName(run)) << "), "
+      << ", network " << run.network_variant << " (" << OneLineText(NetworkName(run.network, NameStyle::kPage)) << "), "
       << OneLineText(Strategies(run)) << ", " << messages << " messages: " << OneLineText(file.string()) << " ("
       << (page.size() + 512) / 1024 << " KiB)\n";
   return file;

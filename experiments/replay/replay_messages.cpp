@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
@@ -18,14 +19,14 @@ namespace dvpr::replay {
 namespace {
 
 // The columns the replay reads; others are skipped. Those from kHops on may be missing: hops is
-// written only by a sweep with a radio, and older folders lack network_name.
+// written only by a sweep with a radio.
 enum Column { kProtocol, kStrategy, kRobots, kRun, kSent, kDelivered, kSrc, kDst, kChannel, kWireBytes,
               kDropped, kVariant, kModel, kBandwidth, kLatency, kLoss, kRequiredColumns,
-              kHops = kRequiredColumns, kNetworkName, kColumns };
+              kHops = kRequiredColumns, kColumns };
 constexpr std::array<const char*, kColumns> kNames = {
     "protocol", "strategy", "robots",  "run",           "sent_ns",       "delivered_ns",
     "src",      "dst",      "channel", "wire_bytes",    "dropped",       "network_variant",
-    "network_model", "bandwidth_bps", "latency_ms", "loss", "hops", "network_name"};
+    "network_model", "bandwidth_bps", "latency_ms", "loss", "hops"};
 constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
 // Network::kMaxHops: a relay drops a copy that has made this many transmissions (hop_limit).
 constexpr int kMaxHops = 64;
@@ -87,11 +88,11 @@ class Row {
     return id;
   }
 
- private:
   [[noreturn]] void Fail(Column c, const std::string& expected, const std::string& got) const {
     throw std::runtime_error(file_.string() + ": line " + std::to_string(line_) + ": " + kNames[c] +
                              ": expected " + expected + ", got " + got);
   }
+ private:
   const std::filesystem::path& file_;
   long line_;
   std::vector<std::string_view> fields_;
@@ -124,21 +125,16 @@ struct NetworkTraits {
   bool one_transmission = false;
 };
 
-bool EndsWith(std::string_view s, std::string_view end) {
-  return s.size() >= end.size() && s.substr(s.size() - end.size()) == end;
-}
-
-// Only a radio with shortest_path or link_state routing relays (its network_name ends with the
-// routing; an older folder without network_name may have relayed). Relays may hand a copy back
-// while the graph changes, so a copy can make more than robots - 1 transmissions, never more than
-// kMaxHops; in a team of 2 there is no robot but the destination to relay.
-NetworkTraits TraitsOf(const ReplayRun& run, bool has_name) {
+// Only a radio with shortest_path or link_state as its next hop relays. Relays may hand a copy
+// back while the graph changes, so a copy can make more than robots - 1 transmissions, never more
+// than kMaxHops; in a team of 2 there is no robot but the destination to relay.
+NetworkTraits TraitsOf(const ReplayRun& run) {
   NetworkTraits t;
-  const bool radio = run.network_model == "radio";
-  const bool relays = radio && (!has_name || EndsWith(run.network_name, " shortest_path") ||
-                                EndsWith(run.network_name, " link_state"));
+  const std::string& model = run.network.model;
+  const bool radio = model == "radio";
+  const bool relays = radio && !run.network.next_hop.empty();
   if (!relays) {
-    t.why = "(one transmission: network " + run.network_model + " has no relays)";
+    t.why = "(one transmission: network " + model + " has no relays)";
   } else if (run.robots <= 2) {
     t.why = "(one transmission: a team of " + std::to_string(run.robots) + " has no robot to relay)";
   } else {
@@ -147,8 +143,7 @@ NetworkTraits TraitsOf(const ReplayRun& run, bool has_name) {
   }
   // A sender's transmission reaches every receiver on the shared media and on a radio that does
   // not relay; with relays each relay adds transmissions that messages.csv does not list.
-  t.one_transmission = run.network_model == "shared_medium" || run.network_model == "csma" ||
-                       run.network_model == "wifi" || (radio && !relays);
+  t.one_transmission = model == "shared_medium" || model == "csma" || model == "wifi" || (radio && !relays);
   return t;
 }
 
@@ -167,21 +162,26 @@ Message MessageOf(const Row& row, int robots, const NetworkTraits& network) {
   return m;
 }
 
-// The radio's range in metres from a network's name ("radio 10 Mbit/s 2 ms range 200m
-// shortest_path": 200; "range 1.5km": 1500), 0 for a network without one (the full mesh, or a
-// log_distance radio, whose reach varies with its shadowing).
-double RadioRangeMetres(std::string_view name) {
-  constexpr std::string_view kRange = "range ";
-  std::size_t at = name.rfind(kRange);
-  if (at == std::string_view::npos || (at > 0 && name[at - 1] != ' ')) return 0.0;
-  std::string_view token = name.substr(at + kRange.size());
-  token = token.substr(0, token.find(' '));
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-  if (ec != std::errc()) return 0.0;
-  const std::string_view unit(end, static_cast<std::size_t>(token.data() + token.size() - end));
-  const double scale = unit == "km" ? 1000.0 : unit == "m" ? 1.0 : unit == "cm" ? 0.01 : unit == "mm" ? 0.001 : 0.0;
-  return value > 0.0 ? value * scale : 0.0;
+// The label of the selected run's variant, `variant` of `networks`, which must be the network
+// that messages.csv's row names (else the config.yaml is not this folder's).
+NetworkLabel LabelOf(const Row& row, int variant, std::span<const NetworkLabel> networks) {
+  if (variant < 0 || static_cast<std::size_t>(variant) >= networks.size()) {
+    row.Fail(kVariant, "a network variant of the folder's config.yaml (it has " + std::to_string(networks.size()) + ")",
+             std::to_string(variant));
+  }
+  const NetworkLabel& label = networks[static_cast<std::size_t>(variant)];
+  NetworkLabel named;
+  named.model = row.Text(kModel);
+  named.bandwidth_bps = row.NumberOrNotApplicable(kBandwidth);
+  named.latency_ms = row.NumberOrNotApplicable(kLatency);
+  named.loss = row.Text(kLoss);
+  const auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+  if (named.model != label.model || !same(named.bandwidth_bps, label.bandwidth_bps) ||
+      !same(named.latency_ms, label.latency_ms) || named.loss != label.loss) {
+    row.Fail(kModel, "network variant " + std::to_string(variant) + " of the folder's config.yaml ('" +
+                         NetworkName(label) + "')", "'" + NetworkName(named) + "'");
+  }
+  return label;
 }
 
 using RunId = std::tuple<int, int, int>;  // robots, run, network variant
@@ -204,17 +204,12 @@ bool Selected(const Selection& s, const RunId& id) {
          (!s.network || *s.network == std::get<2>(id));
 }
 
-void Take(Scan& scan, const Row& row, const RunId& id) {
+void Take(Scan& scan, const Row& row, const RunId& id, std::span<const NetworkLabel> networks) {
   if (!scan.chosen) {
     scan.chosen = id;
     std::tie(scan.run.robots, scan.run.run, scan.run.network_variant) = id;
-    scan.run.network_model = row.Text(kModel);
-    scan.run.bandwidth_bps = row.NumberOrNotApplicable(kBandwidth);
-    scan.run.latency_ms = row.NumberOrNotApplicable(kLatency);
-    scan.run.loss = row.Text(kLoss);
-    if (row.Has(kNetworkName)) scan.run.network_name = row.Text(kNetworkName);
-    scan.run.radio_range_m = RadioRangeMetres(scan.run.network_name);
-    scan.network = TraitsOf(scan.run, row.Has(kNetworkName));
+    scan.run.network = LabelOf(row, scan.run.network_variant, networks);
+    scan.network = TraitsOf(scan.run);
   }
   if (id != *scan.chosen) return;
   const std::string strategy(row.Text(kStrategy));
@@ -233,7 +228,7 @@ void Take(Scan& scan, const Row& row, const RunId& id) {
   it->second.push_back(m);
 }
 
-Scan ScanFile(const std::filesystem::path& file, const Selection& selection) {
+Scan ScanFile(const std::filesystem::path& file, const Selection& selection, std::span<const NetworkLabel> networks) {
   std::ifstream in(file);
   if (!in) throw std::runtime_error(file.string() + ": cannot open it");
   std::string line;
@@ -263,7 +258,7 @@ Scan ScanFile(const std::filesystem::path& file, const Selection& selection) {
     scan.robots.insert(std::get<0>(id));
     scan.runs.insert(std::get<1>(id));
     scan.variants.insert(std::get<2>(id));
-    if (Selected(selection, id)) Take(scan, row, id);
+    if (Selected(selection, id)) Take(scan, row, id, networks);
   }
   return scan;
 }
@@ -295,8 +290,9 @@ std::vector<std::string> ChosenStrategies(const Scan& scan, const Selection& s, 
 
 }  // namespace
 
-ReplayRun ReadReplayRun(const std::filesystem::path& file, const Selection& selection) {
-  Scan scan = ScanFile(file, selection);
+ReplayRun ReadReplayRun(const std::filesystem::path& file, const Selection& selection,
+                        std::span<const NetworkLabel> networks) {
+  Scan scan = ScanFile(file, selection, networks);
   if (scan.sim_rows == 0) {
     throw std::runtime_error(file.string() + ": no messages of protocol sim (a replay needs a simulated run "
                              "with outputs.messages: true)");

@@ -5,10 +5,12 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "experiments/replay/message_role.h"
+#include "experiments/results/results.h"
 
 namespace dvpr::replay {
 
@@ -48,19 +50,19 @@ struct ReplayRun {
   int robots = 0;
   int run = 0;
   int network_variant = 0;
-  std::string network_model;  // point_to_point | shared_medium | ideal | radio | csma | wifi
-  double bandwidth_bps = 0;   // NaN: not applicable (ideal)
-  double latency_ms = 0;      // NaN: not applicable (ideal; wifi, whose air delay is the propagation's)
-  std::string loss;
-  std::string network_name;   // as messages.csv names it ("radio 10 Mbit/s 2 ms range 200m shortest_path")
-  double radio_range_m = 0;   // a `range` radio's range, read from the name; 0: none to draw
+  // The variant's label, from the folder's config (its range to draw, its next hop: whether
+  // copies were relayed); messages.csv's network columns are checked against it.
+  NetworkLabel network;
   std::vector<StrategyMessages> strategies;  // in the order of Selection::strategies
 };
 
-// Reads `messages_csv` and keeps the rows of the selected run (protocol sim). Throws
+// Reads `messages_csv` and keeps the rows of the selected run (protocol sim); `networks` are the
+// labels of the folder's network variants (VariantLabels of its config.yaml). Throws
 // std::runtime_error, one line naming the file, when it is missing, malformed, has no sim
 // messages, or none of the selection (listing what it has); and naming the line and column, for
-// a row of the selected run whose robot is outside the team or whose hops no network can give.
-ReplayRun ReadReplayRun(const std::filesystem::path& messages_csv, const Selection& selection);
+// a row of the selected run whose robot is outside the team, whose hops no network can give, or
+// whose network is not the config's variant.
+ReplayRun ReadReplayRun(const std::filesystem::path& messages_csv, const Selection& selection,
+                        std::span<const NetworkLabel> networks);
 
 }  // namespace dvpr::replay

@@ -91,13 +91,6 @@ std::string JsonString(std::string_view s) {
 
 std::int64_t Micros(std::int64_t ns) { return (ns + 500) / 1000; }
 
-std::string Rate(double bps) {
-  if (bps >= 1e9) return FormatDouble(bps / 1e9) + " Gbit/s";
-  if (bps >= 1e6) return FormatDouble(bps / 1e6) + " Mbit/s";
-  if (bps >= 1e3) return FormatDouble(bps / 1e3) + " kbit/s";
-  return FormatDouble(bps) + " bit/s";
-}
-
 void WriteTracks(std::ostream& o, const Tracks& tracks) {
   o << "\"first\":[";
   for (std::size_t r = 0; r < tracks.robots.size(); ++r) o << (r ? "," : "") << tracks.robots[r].first_frame;
@@ -145,32 +138,12 @@ void WriteMessages(std::ostream& o, const StrategyMessages& s, bool with_hops) {
 
 }  // namespace
 
-std::string NetworkName(const ReplayRun& run) {
-  std::string model = run.network_model;
-  if (model == "point_to_point") model = "point-to-point";
-  if (model == "shared_medium") model = "shared medium";
-  std::string name = model;  // ideal has no rate and no latency, wifi no latency (empty in messages.csv)
-  if (!std::isnan(run.bandwidth_bps)) name += ", " + Rate(run.bandwidth_bps);
-  if (!std::isnan(run.latency_ms)) name += ", " + FormatDouble(run.latency_ms) + " ms";
-  if (!run.loss.empty() && run.loss != "none") name += ", loss: " + run.loss;
-  // A radio's propagation and routing end its name ("radio 10 Mbit/s 2 ms range 200m link_state").
-  if (run.network_model == "radio") {
-    for (const char* what : {" range ", " log_distance"}) {
-      if (const std::size_t at = run.network_name.find(what); at != std::string::npos) {
-        name += ", " + run.network_name.substr(at + 1);
-        break;
-      }
-    }
-  }
-  return name;
-}
-
 std::string PageData(const ReplayRun& run, const Tracks& tracks) {
   std::ostringstream o;
   o << "{\"name\":" << JsonString(tracks.name) << ",\"robots\":" << run.robots << ",\"run\":" << run.run
-    << ",\"variant\":" << run.network_variant << ",\"network\":" << JsonString(NetworkName(run))
+    << ",\"variant\":" << run.network_variant << ",\"network\":" << JsonString(NetworkName(run.network, NameStyle::kPage))
     << ",\"fps\":" << FormatDouble(tracks.fps);
-  if (run.radio_range_m > 0) o << ",\"range_m\":" << FormatDouble(run.radio_range_m);
+  if (!std::isnan(run.network.range_m)) o << ",\"range_m\":" << FormatDouble(run.network.range_m);
   o << ",\"roles\":[";
   for (int r = 0; r < kMessageRoles; ++r) o << (r ? "," : "") << JsonString(RoleName(static_cast<MessageRole>(r)));
   o << "],";
@@ -178,7 +151,7 @@ std::string PageData(const ReplayRun& run, const Tracks& tracks) {
   o << ",\"strategies\":[";
   for (std::size_t s = 0; s < run.strategies.size(); ++s) {
     if (s) o << ',';
-    WriteMessages(o, run.strategies[s], run.network_model == "radio");
+    WriteMessages(o, run.strategies[s], run.network.model == "radio");
   }
   o << "]}";
   return o.str();

@@ -26,7 +26,4 @@ std::string ReplayPage(const ReplayRun& run, const Tracks& tracks);
 extern const char* const kPageTemplate;
 inline constexpr const char* kDataPlaceholder = "{{REPLAY_DATA}}";
 
-// "point-to-point, 10 Mbit/s, 2 ms" (and ", loss: bernoulli" when there is loss).
-std::string NetworkName(const ReplayRun& run);
-
 }  // namespace dvpr::replay

@@ -8,13 +8,20 @@
 
 namespace dvpr::replay {
 
-Tracks LoadTracks(const std::filesystem::path& config_yaml, int robots) {
+ExperimentConfig LoadFolderConfig(const std::filesystem::path& config_yaml) {
   if (!std::filesystem::is_regular_file(config_yaml)) {
     throw std::runtime_error(config_yaml.string() + ": not found (a replay needs the result folder's config.yaml)");
   }
-  // Only the poses are read here (below, with their own error): descriptor and BoW files the run
+  // Only the poses are read (TracksOf, with their own error): descriptor and BoW files the run
   // read may have moved since.
-  const ExperimentConfig config = LoadConfig(config_yaml, {}, ConfigFiles::kNamesOnly);
+  return LoadConfig(config_yaml, {}, ConfigFiles::kNamesOnly);
+}
+
+Tracks LoadTracks(const std::filesystem::path& config_yaml, int robots) {
+  return TracksOf(LoadFolderConfig(config_yaml), config_yaml, robots);
+}
+
+Tracks TracksOf(const ExperimentConfig& config, const std::filesystem::path& config_yaml, int robots) {
   if (config.dataset.Planned()) {
     throw std::runtime_error(config_yaml.string() + ": dataset: the replay draws the paper's split of one drive; "
                              "a team of its own trajectories (dataset.trajectories or a scenario other than split) "

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "experiments/config/config.h"
+
 namespace dvpr::replay {
 
 struct RobotTrack {
@@ -21,7 +23,15 @@ struct Tracks {
   std::vector<RobotTrack> robots;
 };
 
-// Throws std::runtime_error naming config.yaml (and the key) when it or its pose file cannot be read.
+// A result folder's config.yaml, its files resolved by name only (ConfigFiles::kNamesOnly).
+// Throws std::runtime_error naming it when it is missing, ConfigError when it does not read.
+ExperimentConfig LoadFolderConfig(const std::filesystem::path& config_yaml);
+
+// The tracks of a team of `robots` in `config` (read from `config_yaml`, which errors name).
+// Throws std::runtime_error naming config.yaml (and the key) when its pose file cannot be read.
+Tracks TracksOf(const ExperimentConfig& config, const std::filesystem::path& config_yaml, int robots);
+
+// LoadFolderConfig, then TracksOf.
 Tracks LoadTracks(const std::filesystem::path& config_yaml, int robots);
 
 }  // namespace dvpr::replay

@@ -309,22 +309,10 @@ RunResult ParseRunRow(const std::vector<std::string>& f, const std::string& wher
     r.key.network.bandwidth_bps = Parse<double>(f, 19, where);
     r.key.network.latency_ms = Parse<double>(f, 20, where);
     r.key.network.loss = f[21];
-    // The radio and the routing have no column of their own: the name ends with them.
-    const std::string base = NetworkName(r.key.network);
-    if (f[22].size() > base.size() + 1 && f[22].compare(0, base.size() + 1, base + " ") == 0) {
-      std::string rest = f[22].substr(base.size() + 1);
-      for (const std::string_view routed : {std::string_view("shortest_path"), std::string_view("link_state")}) {
-        if (rest.size() >= routed.size() && rest.compare(rest.size() - routed.size(), routed.size(), routed) == 0) {
-          r.key.network.routing = std::string(routed);
-          rest.resize(rest.size() - routed.size());
-          if (!rest.empty() && rest.back() == ' ') rest.pop_back();
-          break;
-        }
-      }
-      r.key.network.radio = rest;
-    }
+    // The propagation, next hop, swept queue and MTU have no column of their own:
+    // LabelNetworks gives them from the config's variants.
   }
-  // f[22] is the network's name, made from the fields above.
+  // f[22] is the network's name, made from the label.
   r.duration_s = Parse<double>(f, 23, where);
   if (!f[24].empty()) r.roles = ParseRunRoles(f, where);
   if (!f[kClosureFields].empty()) r.closures = ParseRunClosures(f, where);
@@ -355,6 +343,28 @@ std::vector<RunResult> ReadRunsCsv(const std::filesystem::path& path) {
     rows.push_back(ParseRunRow(fields, where));
   }
   return rows;
+}
+
+void LabelNetworks(std::vector<RunResult>& rows, std::span<const NetworkLabel> networks,
+                   const std::filesystem::path& runs_csv) {
+  const auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    NetworkLabel& row = rows[i].key.network;
+    if (row.model.empty()) continue;  // the paper protocol: no network
+    const std::string where = runs_csv.string() + ":" + std::to_string(i + 2);
+    if (row.variant < 0 || static_cast<std::size_t>(row.variant) >= networks.size()) {
+      throw std::runtime_error(where + ": network variant " + std::to_string(row.variant) + ", but the config has " +
+                               std::to_string(networks.size()) + " (is config.yaml the one of this run?)");
+    }
+    const NetworkLabel& label = networks[static_cast<std::size_t>(row.variant)];
+    if (row.model != label.model || !same(row.bandwidth_bps, label.bandwidth_bps) ||
+        !same(row.latency_ms, label.latency_ms) || row.loss != label.loss) {
+      throw std::runtime_error(where + ": network variant " + std::to_string(row.variant) + " is '" +
+                               NetworkName(row) + "' here but '" + NetworkName(label) +
+                               "' in the config (is config.yaml the one of this run?)");
+    }
+    row = label;
+  }
 }
 
 }  // namespace dvpr

@@ -82,25 +82,32 @@ const char* const kClosurePairsHeader =
     "protocol,strategy,robots,run,robot_a,robot_b,first_closure_ns," DVPR_NETWORK_COLUMNS;
 #undef DVPR_NETWORK_COLUMNS
 
-std::string NetworkName(const NetworkLabel& n) {
+std::string NetworkName(const NetworkLabel& n, NameStyle style) {
   if (n.model.empty()) return "";
-  std::string name = n.model == "point_to_point"  ? "point-to-point"
-                     : n.model == "shared_medium" ? "shared medium"
-                                                  : n.model;
+  std::vector<std::string> parts = {n.model == "point_to_point"  ? "point-to-point"
+                                    : n.model == "shared_medium" ? "shared medium"
+                                                                 : n.model};
   const double bps = n.bandwidth_bps;
   if (!std::isnan(bps)) {
     if (bps >= 1e9 && std::fmod(bps, 1e9) == 0) {
-      name += " " + FormatDouble(bps / 1e9) + " Gbit/s";
+      parts.push_back(FormatDouble(bps / 1e9) + " Gbit/s");
     } else if (bps >= 1e6) {
-      name += " " + FormatDouble(bps / 1e6) + " Mbit/s";
+      parts.push_back(FormatDouble(bps / 1e6) + " Mbit/s");
     } else {
-      name += " " + FormatDouble(bps / 1e3) + " kbit/s";
+      parts.push_back(FormatDouble(bps / 1e3) + " kbit/s");
     }
   }
-  if (!std::isnan(n.latency_ms)) name += " " + FormatDouble(n.latency_ms) + " ms";
-  if (!n.loss.empty() && n.loss != "none") name += " " + n.loss + " loss";
-  if (!n.radio.empty()) name += " " + n.radio;
-  if (!n.routing.empty()) name += " " + n.routing;
+  if (!std::isnan(n.latency_ms)) parts.push_back(FormatDouble(n.latency_ms) + " ms");
+  if (n.queue_packets > 0) parts.push_back("queue " + std::to_string(n.queue_packets) + " packets");
+  if (n.mtu_bytes > 0) parts.push_back("MTU " + std::to_string(n.mtu_bytes) + " B");
+  const bool page = style == NameStyle::kPage;
+  if (!n.loss.empty() && n.loss != "none") parts.push_back(page ? "loss: " + n.loss : n.loss + " loss");
+  // The page keeps a radio's propagation and next hop together ("range 200m link_state").
+  const std::string sep = page ? ", " : " ";
+  const std::string tail = n.propagation + (!n.propagation.empty() && !n.next_hop.empty() ? " " : "") + n.next_hop;
+  if (!tail.empty()) parts.push_back(tail);
+  std::string name = parts.front();
+  for (std::size_t i = 1; i < parts.size(); ++i) name += sep + parts[i];
   return name;
 }
 

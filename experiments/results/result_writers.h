@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,14 @@ double PlaceRecognitionBytesPerQuery(const RunResult& r);
 
 // Reads runs.csv back (dvpr plot). Throws naming the file and line on a malformed row.
 std::vector<RunResult> ReadRunsCsv(const std::filesystem::path& path);
+
+// Gives each network row of `rows` (read from `runs_csv`) its variant's whole label, from the
+// variants of the config that made them (VariantLabels, experiments/config/network_variants.h):
+// runs.csv's columns name the variant, its model, rate, latency and loss, the label adds what has
+// no column (propagation, range, next hop). Throws, naming the file and the row's line, when a
+// row's variant is not among `networks` or differs from it in a column (another config's folder).
+void LabelNetworks(std::vector<RunResult>& rows, std::span<const NetworkLabel> networks,
+                   const std::filesystem::path& runs_csv);
 
 // Number formatting shared with the figures' data files: the shortest decimal that reads back
 // to exactly `v` ("" for NaN, 0 for -0).

@@ -28,14 +28,24 @@ struct NetworkLabel {
   double bandwidth_bps = kNotApplicable;
   double latency_ms = kNotApplicable;
   std::string loss;           // none | bernoulli | gilbert_elliott
-  std::string radio;          // model radio: "range 200m" | "log_distance"; "" otherwise
-  std::string routing;        // "shortest_path"; "" for direct (the default)
+  int queue_packets = 0;      // named only where the sweep lists several queues or MTUs; 0 otherwise
+  int mtu_bytes = 0;
+  // The propagation of a medium that has one (a radio; wifi over a radio's range), as names show
+  // it ("range 200m" | "log_distance"), and the range as a number (NaN unless a range
+  // propagation). Both "" / NaN on the full mesh. Made once, where the variants are expanded
+  // (experiments/config/network_variants.h); read as fields, never parsed back from the name.
+  std::string propagation = {};
+  double range_m = kNotApplicable;
+  std::string next_hop = {};  // "shortest_path" | "link_state"; "" for direct (the default)
 };
 
-// "point-to-point 10 Mbit/s 2 ms" (+ " bernoulli loss", + " range 200m shortest_path" on a
-// radio): how the summary table, the CSVs' network_name column and the figures' legends name a network variant; "" without a network.
-// No commas, so a CSV field needs no quoting.
-std::string NetworkName(const NetworkLabel& network);
+// How a network variant is named. kColumn: "point-to-point 10 Mbit/s 2 ms" (+ " bernoulli loss",
+// + " range 200m shortest_path" on a radio), the summary table's, the CSVs' network_name column's,
+// the progress lines' and the figures' legends'; no commas, so a CSV field needs no quoting.
+// kPage: the same parts separated by ", " ("point-to-point, 10 Mbit/s, 2 ms, loss: bernoulli"),
+// the replay page's heading. "" without a network.
+enum class NameStyle { kColumn, kPage };
+std::string NetworkName(const NetworkLabel& network, NameStyle style = NameStyle::kColumn);
 
 // The byte columns by message role (MessageRole, lcmtypes/channels/message_role.h) of runs.csv
 // and links.csv follow the role order; every message has exactly one role, so the roles' bytes

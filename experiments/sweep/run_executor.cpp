@@ -30,7 +30,7 @@ std::vector<std::string> ProtocolRegistry::Names() const {
 
 std::string Describe(const RunSpec& spec) {
   std::string s = spec.protocol;
-  if (spec.network != nullptr) s += " " + spec.network->name;
+  if (spec.network != nullptr) s += " " + NetworkName(spec.network->label);
   return s + " n=" + std::to_string(spec.robots) + " run " + std::to_string(spec.run);
 }
 

@@ -16,15 +16,10 @@
 #include <vector>
 
 #include "experiments/config/config.h"
+#include "experiments/config/network_variants.h"
 #include "experiments/protocols/run.h"
 
 namespace dvpr {
-
-// The cross product of network.{model, bandwidth, latency, queue_packets, mtu}, in that nesting
-// order (model outermost). The ideal model ignores bandwidth, latency, queue and MTU, so it
-// yields one variant however many values those lists hold.
-std::vector<NetworkVariant> ExpandNetworks(const NetworkConfig& network);
-
 
 // Specs point into `networks`, which must outlive them.
 std::vector<RunSpec> ExpandSweep(const ExperimentConfig& config,

@@ -92,7 +92,7 @@ void CheckFailoverTimeout(const ExperimentConfig& c, const std::string& origin) 
       if (c.failover.timeout < need) {
         throw ConfigError(origin + ": failover.timeout: must be at least heartbeat_period + the worst delay of a " +
                           "heartbeat (" + FormatDuration(c.failover.heartbeat_period) + " + " + FormatDuration(delay) +
-                          " = " + FormatDuration(need) + " on network '" + v.name + "' with " + std::to_string(n) +
+                          " = " + FormatDuration(need) + " on network '" + NetworkName(v.label) + "' with " + std::to_string(n) +
                           " robots), got " + FormatDuration(c.failover.timeout) +
                           "; a shorter one declares robots lost with nobody gone");
       }

@@ -40,8 +40,7 @@ double NetworkVariants(const NetworkConfig& n) {
   double count = 0;
   for (const LinkModelKind model : n.model) {
     const bool wifi = model == LinkModelKind::kWifi;
-    const bool radios_swept = model == LinkModelKind::kRadio || (wifi && n.wifi_radio);
-    const double radios = radios_swept ? static_cast<double>(n.radio.size()) : 1.0;
+    const double radios = static_cast<double>(PropagationsOf(n, model).size());
     // Only the radio sweeps its routing entries (ExpandNetworks).
     const double routings = model == LinkModelKind::kRadio ? static_cast<double>(n.routing.size()) : 1.0;
     // wifi has its own rate: the bandwidth and latency lists do not multiply it (ExpandNetworks).

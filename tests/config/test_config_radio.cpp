@@ -34,7 +34,7 @@ TEST(ConfigRadioTest, LogDistanceKeysAreReadAndDefaultsAreNs3s) {
       "reference_distance: 2m, sensitivity_dbm: -90, shadowing_db: 4, shadowing_window: 500ms}}}\n");
   ASSERT_EQ(c.network.radio.size(), 1u);
   const LogDistanceParams& l = c.network.radio[0].log_distance;
-  EXPECT_EQ(c.network.radio[0].propagation, PropagationKind::kLogDistance);
+  EXPECT_EQ(c.network.radio[0].kind, PropagationKind::kLogDistance);
   EXPECT_EQ(l.exponent, 2.5);
   EXPECT_EQ(l.reference_distance_m, 2.0);
   EXPECT_EQ(l.reference_loss_db, 46.6777);  // not given: ns-3's default
@@ -95,7 +95,7 @@ TEST(ConfigRadioTest, RadioMayBeAListOfMaps) {
   ASSERT_EQ(c.network.radio.size(), 3u);
   EXPECT_EQ(c.network.radio[0].range_m, 100.0);
   EXPECT_EQ(c.network.radio[1].range_m, 200.0);
-  EXPECT_EQ(c.network.radio[2].propagation, PropagationKind::kLogDistance);
+  EXPECT_EQ(c.network.radio[2].kind, PropagationKind::kLogDistance);
   EXPECT_EQ(c.network.radio[2].log_distance.tx_power_dbm, 20.0);
   // 10^((20 - 46.6777 + 96) / 30) = 10^2.31074 = 204.52 m
   EXPECT_NEAR(c.network.radio[2].log_distance.MeanRangeM(), 204.52, 0.01);

@@ -18,11 +18,11 @@ TEST(ConfigWifiTest, WifiKeysAreReadWithNs3Defaults) {
   const ExperimentConfig c = Parse("network: {model: [csma, wifi], wifi: {rate: 54Mbps}}\n");
   EXPECT_EQ(c.network.wifi.rate, DataRate::Mbps(54));
   EXPECT_EQ(c.network.wifi.basic_rate, DataRate::Mbps(6));  // not given: 802.11a's lowest
-  EXPECT_FALSE(c.network.wifi_radio);
+  EXPECT_EQ(c.network.wifi_propagation, std::vector<PropagationParams>{PropagationParams{}});  // the full mesh
   const ExperimentConfig r =
       Parse("network: {model: wifi, wifi: {rate: 6Mbps, basic_rate: 12Mbps, propagation: radio}, radio: {range: 150m}}\n");
   EXPECT_EQ(r.network.wifi.basic_rate, DataRate::Mbps(12));
-  EXPECT_TRUE(r.network.wifi_radio);
+  EXPECT_EQ(r.network.wifi_propagation, r.network.radio);  // the radio's entries
   ASSERT_EQ(r.network.radio.size(), 1u);
   EXPECT_EQ(r.network.radio[0].range_m, 150.0);
 }

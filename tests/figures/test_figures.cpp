@@ -37,8 +37,7 @@ RunResult Sim(const std::string& strategy, int robots, int run, int variant, dou
   r.key = RunKey{.protocol = "sim", .strategy = strategy, .robots = robots, .run = run,
                  .network = NetworkLabel{.variant = variant,
                                          .model = variant == 0 ? "point_to_point" : "shared_medium",
-                                         .bandwidth_bps = 1e7, .latency_ms = 2, .loss = "none",
-                                         .radio = "", .routing = ""}};
+                                         .bandwidth_bps = 1e7, .latency_ms = 2, .loss = "none"}};
   r.relative_auc = 0.5;  // differs from every paper value: must not leak into the paper columns
   r.worst_balance_ratio = 7;
   r.bytes_per_query = bytes;
@@ -220,7 +219,7 @@ TEST_F(StrategyFigures, DrawFiguresSaysWhyTheSweepIsSkipped) {
   WriteRunsCsv(dir_ / "runs.csv", {Paper("decentralized", 10, 0, 0.8, 4.0),
                                    Paper("sample_c4", 10, 0, 0.9, 1.2)});
   std::ostringstream log;
-  const auto drawn = DrawFigures(dir_, log);
+  const auto drawn = DrawFigures(dir_, {}, log);  // the paper protocol: no network variants
   EXPECT_NE(log.str().find("strategy_sweep.png skipped (needs a relative AUC at two or more n)"),
             std::string::npos) << log.str();
   EXPECT_TRUE(fs::exists(dir_ / "figures" / "strategy_tradeoff.png")) << log.str();

@@ -1,6 +1,7 @@
 // The radio's figures (figures_radio.h): the numbers they plot, from hand-made connectivity.csv,
 // runs.csv and queries.csv rows; and that they are drawn only where the results have them.
 // Pixels are not tested.
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -10,6 +11,7 @@
 #include "experiments/figures/figures_radio.h"
 #include "experiments/figures/gnuplot_run.h"
 #include "experiments/results/result_writers.h"
+#include "tests/figures/figures_test_support.h"
 #include "tests/test_support.h"
 
 namespace dvpr {
@@ -18,9 +20,11 @@ namespace {
 using dvpr::testing_support::Slurp;
 namespace fs = std::filesystem;
 
-NetworkLabel Radio(int variant, const std::string& radio) {
+// A radio of range `range_m` (NaN: log_distance).
+NetworkLabel Radio(int variant, double range_m) {
   return NetworkLabel{.variant = variant, .model = "radio", .bandwidth_bps = 1e7, .latency_ms = 2, .loss = "none",
-                      .radio = radio, .routing = "shortest_path"};
+                      .propagation = std::isnan(range_m) ? "log_distance" : "range " + FormatDouble(range_m) + "m",
+                      .range_m = range_m, .next_hop = "shortest_path"};
 }
 
 RunResult RadioRun(const std::string& strategy, int robots, int run, const NetworkLabel& net, double bytes_per_query,
@@ -42,27 +46,17 @@ class RadioFiguresTest : public ::testing::Test {
   // Variant 0 point-to-point (no range), 1 radio of 100 m, 2 of 200 m, 3 log_distance.
   static std::vector<RunResult> Rows() {
     const NetworkLabel p2p{.variant = 0, .model = "point_to_point", .bandwidth_bps = 1e7, .latency_ms = 2,
-                           .loss = "none", .radio = "", .routing = ""};
+                           .loss = "none"};
     return {RadioRun("decentralized", 4, 0, p2p, 900, 1),
-            RadioRun("decentralized", 4, 0, Radio(1, "range 100m"), 1000, 30),
-            RadioRun("decentralized", 4, 1, Radio(1, "range 100m"), 2000, 50),
-            RadioRun("broadcast", 4, 0, Radio(1, "range 100m"), 3000, 70),
-            RadioRun("decentralized", 4, 0, Radio(2, "range 200m"), 800, 4),
-            RadioRun("broadcast", 4, 0, Radio(2, "range 200m"), 2500, 6),
-            RadioRun("decentralized", 4, 0, Radio(3, "log_distance"), 5, 5)};
+            RadioRun("decentralized", 4, 0, Radio(1, 100), 1000, 30),
+            RadioRun("decentralized", 4, 1, Radio(1, 100), 2000, 50),
+            RadioRun("broadcast", 4, 0, Radio(1, 100), 3000, 70),
+            RadioRun("decentralized", 4, 0, Radio(2, 200), 800, 4),
+            RadioRun("broadcast", 4, 0, Radio(2, 200), 2500, 6),
+            RadioRun("decentralized", 4, 0, Radio(3, kNotApplicable), 5, 5)};
   }
   fs::path dir_;
 };
-
-TEST(RadioRangeMetres, ReadsTheSweepsLabelsOnly) {
-  EXPECT_EQ(RadioRangeMetres("range 200m"), 200.0);
-  EXPECT_EQ(RadioRangeMetres("range 1500mm"), 1.5);
-  EXPECT_EQ(RadioRangeMetres("log_distance"), std::nullopt);
-  EXPECT_EQ(RadioRangeMetres("range 200"), std::nullopt);
-  EXPECT_EQ(RadioRangeMetres("range 0m"), std::nullopt);
-  EXPECT_EQ(RadioRangeMetres("range 2km"), std::nullopt);
-  EXPECT_EQ(RadioRangeMetres(""), std::nullopt);
-}
 
 TEST_F(RadioFiguresTest, ConnectivityShowsTheFirstRunOfTheFirstStrategyPerVariant) {
   CsvTable t;
@@ -130,9 +124,9 @@ TEST_F(RadioFiguresTest, RobotsInRangeShowsEachRobotOfTheLargestTeamPerRadio) {
             {"sim", "decentralized", "3", "2", "1", "0", "0", "3", "1", "0", "0", "0 0 0"},   // run 2: not shown
             {"sim", "broadcast", "3", "1", "1", "0", "0", "3", "1", "0", "0", "0 0 0"}};      // same run
   std::vector<RunResult> rows = Rows();
-  rows.push_back(RadioRun("decentralized", 3, 1, Radio(1, "range 100m"), 1, 1));
-  rows.push_back(RadioRun("decentralized", 3, 1, Radio(4, "range 100m"), 1, 1));
-  rows.back().key.network.routing = "link_state";
+  rows.push_back(RadioRun("decentralized", 3, 1, Radio(1, 100), 1, 1));
+  rows.push_back(RadioRun("decentralized", 3, 1, Radio(4, 100), 1, 1));
+  rows.back().key.network.next_hop = "link_state";
   std::string why;
   const auto f = WriteRobotsInRangeFigure(dir_, t, rows, why);
   ASSERT_TRUE(f.has_value()) << why;
@@ -199,7 +193,7 @@ TEST_F(RadioFiguresTest, DrawnOnlyWhereTheResultsHaveThem) {
   if (!FindProgram("gnuplot")) GTEST_SKIP() << "gnuplot is not installed";
   WriteRunsCsv(dir_ / "runs.csv", Rows());
   std::ostringstream log;
-  DrawFigures(dir_, log);
+  DrawFigures(dir_, dvpr::testing_support::NetworkLabelsOf(Rows()), log);
   EXPECT_TRUE(fs::exists(dir_ / "figures" / "radio_range.png")) << log.str();
   EXPECT_FALSE(fs::exists(dir_ / "figures" / "connectivity.png"));  // no connectivity.csv
   EXPECT_FALSE(fs::exists(dir_ / "figures" / "robots_in_range.png"));

@@ -15,6 +15,7 @@
 #include "experiments/figures/figures_traffic.h"
 #include "experiments/figures/gnuplot_run.h"
 #include "experiments/results/result_writers.h"
+#include "tests/figures/figures_test_support.h"
 #include "tests/test_support.h"
 
 namespace dvpr {
@@ -24,8 +25,7 @@ using dvpr::testing_support::Slurp;
 namespace fs = std::filesystem;
 
 NetworkLabel Net(int variant, const std::string& model, double bps) {
-  return NetworkLabel{.variant = variant, .model = model, .bandwidth_bps = bps, .latency_ms = 2, .loss = "none",
-                      .radio = "", .routing = ""};
+  return NetworkLabel{.variant = variant, .model = model, .bandwidth_bps = bps, .latency_ms = 2, .loss = "none"};
 }
 
 // A sim run with `query` and `reply` copy wire bytes, 1000 more of verification requests, 100
@@ -261,7 +261,7 @@ TEST_F(TrafficFigures, StrategyFiguresOnlyBeyondThePapersTwo) {
   if (!FindProgram("gnuplot")) GTEST_SKIP() << "gnuplot is not installed";
   WriteRunsCsv(dir_ / "runs.csv", Rows());
   std::ostringstream log;
-  DrawFigures(dir_, log);
+  DrawFigures(dir_, testing_support::NetworkLabelsOf(Rows()), log);
   EXPECT_NE(log.str().find("strategy_tradeoff.png skipped (only the paper's two strategies are configured)"),
             std::string::npos) << log.str();
   EXPECT_TRUE(fs::exists(dir_ / "figures" / "place_recognition_bytes.png")) << log.str();

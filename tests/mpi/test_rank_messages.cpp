@@ -23,7 +23,7 @@ RunKey Key() {
   k.strategy = "multi_probe_2";
   k.robots = 7;
   k.run = 3;
-  k.network = NetworkLabel{2, "shared_medium", 1e7, 2.5, "gilbert_elliott", "range 150m", "shortest_path"};
+  k.network = NetworkLabel{2, "shared_medium", 1e7, 2.5, "gilbert_elliott", 8, 9000, "range 150m", 150.25, "shortest_path"};
   return k;
 }
 

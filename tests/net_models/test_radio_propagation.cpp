@@ -9,7 +9,7 @@
 
 #include "net_models/fixed_mobility.h"
 #include "net_models/log_distance_propagation.h"
-#include "net_models/radio_params.h"
+#include "net_models/propagation_params.h"
 #include "net_models/range_propagation.h"
 
 namespace dvpr {
@@ -104,8 +104,14 @@ TEST(LogDistancePropagation, ShadowingIsFixedPerPairAndWindowAndNormal) {
   EXPECT_EQ(none.ShadowingDb(NodeId(3), NodeId(9), SimTime::Seconds(2.0)), 0.0);
 }
 
-TEST(RadioParams, NamesAndBadValuesNameTheirField) {
+TEST(PropagationParams, NamesAndBadValuesNameTheirField) {
   EXPECT_EQ(ParsePropagationKind("range"), PropagationKind::kRange);
+  // The full mesh only where asked for: a radio's propagation is over positions.
+  EXPECT_EQ(ParsePropagationKind("full_mesh", /*with_full_mesh=*/true), PropagationKind::kFullMesh);
+  EXPECT_THROW(ParsePropagationKind("full_mesh"), std::invalid_argument);
+  EXPECT_FALSE(PropagationParams{}.NeedsPositions());
+  EXPECT_TRUE(PropagationParams::Radio().NeedsPositions());
+  EXPECT_EQ(PropagationParams::Radio().range_m, 200.0);
   EXPECT_EQ(ParsePropagationKind("log_distance"), PropagationKind::kLogDistance);
   EXPECT_EQ(ToString(PropagationKind::kLogDistance), "log_distance");
   try {
@@ -114,7 +120,7 @@ TEST(RadioParams, NamesAndBadValuesNameTheirField) {
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "unknown value 'two_ray' (expected one of: range, log_distance)");
   }
-  const auto error_of = [](RadioParams r) {
+  const auto error_of = [](PropagationParams r) {
     try {
       r.Validate();
     } catch (const std::invalid_argument& e) {
@@ -122,17 +128,17 @@ TEST(RadioParams, NamesAndBadValuesNameTheirField) {
     }
     return std::string("(none)");
   };
-  RadioParams r;
+  PropagationParams r;
   EXPECT_EQ(error_of(r), "(none)");
   r.log_distance.exponent = 0.5;
   EXPECT_EQ(error_of(r), "log_distance.exponent: must be in [1, 10], got 0.5");
-  r = RadioParams{};
+  r = PropagationParams{};
   r.log_distance.shadowing_db = std::nan("");
   EXPECT_EQ(error_of(r).rfind("log_distance.shadowing_db: must be in [0, 30], got ", 0), 0u);
-  r = RadioParams{};
+  r = PropagationParams{};
   r.log_distance.reference_distance_m = 0;
   EXPECT_EQ(error_of(r), "log_distance.reference_distance: must be in (0, 1000000000], got 0");
-  r = RadioParams{};
+  r = PropagationParams{};
   r.range_m = -3;
   EXPECT_EQ(error_of(r), "range: must be in (0, 1000000000], got -3");
 }

@@ -1,5 +1,4 @@
 // The page's data, worked out by hand for a tiny run, and the page being self-contained.
-#include <limits>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -14,10 +13,7 @@ ReplayRun TinyRun() {
   run.robots = 2;
   run.run = 1;
   run.network_variant = 0;
-  run.network_model = "point_to_point";
-  run.bandwidth_bps = 1e7;
-  run.latency_ms = 2;
-  run.loss = "none";
+  run.network = NetworkLabel{.model = "point_to_point", .bandwidth_bps = 1e7, .latency_ms = 2, .loss = "none"};
   StrategyMessages d{"decentralized", {}};
   // sent 1000 ns = 1 us, delivered 2501000 ns = 2501 us: latency 2500 us
   d.messages.push_back({1000, 2501000, 0, 1, MessageRole::kQuery, QueueEffect::kRequest, 587, false});
@@ -52,9 +48,10 @@ TEST(ReplayPageTest, DataIsCompactAndWorkedOutByHand) {
 // and the network's name ends with the radio and its routing.
 TEST(ReplayPageTest, ARadioAddsItsRangeAndTheHops) {
   ReplayRun run = TinyRun();
-  run.network_model = "radio";
-  run.network_name = "radio 10 Mbit/s 2 ms range 150m shortest_path";
-  run.radio_range_m = 150;
+  run.network.model = "radio";
+  run.network.propagation = "range 150m";
+  run.network.range_m = 150;
+  run.network.next_hop = "shortest_path";
   run.strategies[0].messages[0].hops = 2;
   run.strategies[0].messages[1].hops = 0;  // dropped before its first transmission
   EXPECT_EQ(PageData(run, TinyTracks()),
@@ -88,27 +85,6 @@ TEST(ReplayPageTest, NamesAreAsciiJsonWhateverTheirBytes) {
             std::string::npos) << data;
   EXPECT_NE(data.find("{\"name\":\"it's `x` $(y); \\\"z\\\"\""), std::string::npos) << data;
   for (const char c : data) EXPECT_LT(static_cast<unsigned char>(c), 0x80);
-}
-
-TEST(ReplayPageTest, NetworkNames) {
-  ReplayRun run = TinyRun();
-  EXPECT_EQ(NetworkName(run), "point-to-point, 10 Mbit/s, 2 ms");
-  run.network_model = "shared_medium";
-  run.bandwidth_bps = 1e9;
-  run.latency_ms = 0.5;
-  run.loss = "bernoulli";
-  EXPECT_EQ(NetworkName(run), "shared medium, 1 Gbit/s, 0.5 ms, loss: bernoulli");
-  run.network_model = "ideal";
-  run.bandwidth_bps = 2500;
-  run.loss = "none";
-  EXPECT_EQ(NetworkName(run), "ideal, 2.5 kbit/s, 0.5 ms");
-  // Not applicable (empty in messages.csv, NaN here): ideal has neither, wifi no latency.
-  run.bandwidth_bps = std::numeric_limits<double>::quiet_NaN();
-  run.latency_ms = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(NetworkName(run), "ideal");
-  run.network_model = "wifi";
-  run.bandwidth_bps = 6e6;
-  EXPECT_EQ(NetworkName(run), "wifi, 6 Mbit/s");
 }
 
 // Opened without a network: nothing fetched (no URL, no src=, no import), the data inside.

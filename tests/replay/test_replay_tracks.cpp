@@ -13,14 +13,16 @@ namespace {
 
 class ReplayTracksTest : public ReplayFolderTest {
  protected:
-  // Five KITTI poses (identity rotation), frame f at x = f + 0.5, z = -2f; a config using four.
-  void WriteInputs() const {
+  // Five KITTI poses (identity rotation), frame f at x = f + 0.5, z = -2f; a config using four,
+  // on the default network (point-to-point 10 Mbit/s 2 ms) or `network`.
+  void WriteInputs(const std::string& network = "") const {
     std::string poses;
     for (int f = 0; f < 5; ++f) {
       poses += "1 0 0 " + std::to_string(f + 0.5) + " 0 1 0 0 0 0 1 " + std::to_string(-2 * f) + "\n";
     }
     Write("poses.txt", poses);
-    Write("config.yaml", "name: tiny\ndataset: {poses: " + (dir_ / "poses.txt").string() + ", fps: 5, frames: 4}\n");
+    Write("config.yaml", "name: tiny\ndataset: {poses: " + (dir_ / "poses.txt").string() + ", fps: 5, frames: 4}\n" +
+                             (network.empty() ? "" : "network: " + network + "\n"));
   }
 };
 
@@ -74,7 +76,7 @@ TEST_F(ReplayTracksTest, WritesOnePageOrNothing) {
 // Issue 53: a wifi result folder was refused (its latency_ms is empty: wifi has none); it is
 // replayed, named without a latency.
 TEST_F(ReplayTracksTest, AWifiFolderIsReplayed) {
-  WriteInputs();
+  WriteInputs("{model: wifi, wifi: {rate: 6Mbps}}");
   Write("messages.csv", std::string(kHeader) +
       "sim,decentralized,2,0,0,2000,0,1,DVPR_QUERY_1,x,query_t,536,587,0,0,wifi,6e+06,,none,q\n"
       "sim,broadcast,2,0,0,2000,1,0,DVPR_QUERY_ALL,x,query_t,536,589,0,0,wifi,6e+06,,none,q\n");

@@ -24,7 +24,7 @@ RunResult SimRow(int run, double rel) {
   RunResult r;
   r.key = RunKey{.protocol = "sim", .strategy = "decentralized", .robots = 4, .run = run,
                  .network = NetworkLabel{.variant = 1, .model = "point_to_point",
-                                         .bandwidth_bps = 1e6, .latency_ms = 5, .loss = "none", .radio = "", .routing = ""}};
+                                         .bandwidth_bps = 1e6, .latency_ms = 5, .loss = "none"}};
   r.seed = 99;
   r.auc = 0.5;
   r.auc_reference = 0.625;
@@ -191,45 +191,81 @@ TEST(ResultWriters, LinksCsvBytesByRole) {
 
 TEST(ResultWriters, NetworkNamesSayTheirParameters) {
   EXPECT_EQ(NetworkName(NetworkLabel{.variant = 3, .model = "shared_medium", .bandwidth_bps = 1e7,
-                                     .latency_ms = 2, .loss = "none", .radio = "", .routing = ""}),
+                                     .latency_ms = 2, .loss = "none"}),
             "shared medium 10 Mbit/s 2 ms");
   EXPECT_EQ(NetworkName(NetworkLabel{.variant = 0, .model = "point_to_point", .bandwidth_bps = 2.5e9,
-                                     .latency_ms = 0.5, .loss = "bernoulli", .radio = "", .routing = ""}),
+                                     .latency_ms = 0.5, .loss = "bernoulli"}),
             "point-to-point 2500 Mbit/s 0.5 ms bernoulli loss");
   EXPECT_EQ(NetworkName(NetworkLabel{.variant = 0, .model = "point_to_point", .bandwidth_bps = 64e3,
-                                     .latency_ms = 20, .loss = "none", .radio = "", .routing = ""}),
+                                     .latency_ms = 20, .loss = "none"}),
             "point-to-point 64 kbit/s 20 ms");
   EXPECT_EQ(NetworkName(NetworkLabel{}), "");
-  EXPECT_EQ(NetworkName(NetworkLabel{.variant = 2, .model = "radio", .bandwidth_bps = 1e7, .latency_ms = 2,
-                                     .loss = "none", .radio = "range 200m", .routing = "shortest_path"}),
-            "radio 10 Mbit/s 2 ms range 200m shortest_path");
+  const NetworkLabel radio{.variant = 2, .model = "radio", .bandwidth_bps = 1e7, .latency_ms = 2, .loss = "none",
+                           .propagation = "range 200m", .range_m = 200, .next_hop = "shortest_path"};
+  EXPECT_EQ(NetworkName(radio), "radio 10 Mbit/s 2 ms range 200m shortest_path");
+  // A swept queue or MTU is named (two variants never share a name).
+  EXPECT_EQ(NetworkName(NetworkLabel{.variant = 1, .model = "point_to_point", .bandwidth_bps = 1e7, .latency_ms = 2,
+                                     .loss = "none", .queue_packets = 8, .mtu_bytes = 1500}),
+            "point-to-point 10 Mbit/s 2 ms queue 8 packets MTU 1500 B");
+  // The replay page's heading: the same parts, separated by commas.
+  EXPECT_EQ(NetworkName(radio, NameStyle::kPage), "radio, 10 Mbit/s, 2 ms, range 200m shortest_path");
+  EXPECT_EQ(NetworkName(NetworkLabel{.model = "shared_medium", .bandwidth_bps = 1e9, .latency_ms = 0.5,
+                                     .loss = "bernoulli"}, NameStyle::kPage),
+            "shared medium, 1 Gbit/s, 0.5 ms, loss: bernoulli");
+  // Not applicable (NaN): ideal has neither rate nor latency, wifi no latency.
+  EXPECT_EQ(NetworkName(NetworkLabel{.model = "ideal", .loss = "none"}, NameStyle::kPage), "ideal");
+  EXPECT_EQ(NetworkName(NetworkLabel{.model = "wifi", .bandwidth_bps = 6e6, .loss = "none"}, NameStyle::kPage),
+            "wifi, 6 Mbit/s");
 }
 
-// A radio's range and routing have no column of their own: runs.csv's network_name carries them
-// and reads back into the label (dvpr plot redraws the legends from it).
-TEST(ResultWriters, RadioLabelsReadBackFromTheNetworkName) {
+// The propagation and the next hop have no column of their own: runs.csv's network_name shows
+// them, and a folder read back takes them, typed, from its config's variants (LabelNetworks),
+// never from the name. A row that disagrees with the config's variant is refused.
+TEST(ResultWriters, RowsReadBackTakeTheirLabelsFromTheConfigsVariants) {
   const fs::path dir = fs::path(DVPR_TEST_TMP) / "writers_radio";
   fs::remove_all(dir);
   CreateOutputDir(dir);
   RunResult a = SimRow(0, 0.8);
+  a.key.network.variant = 0;
   a.key.network.model = "radio";
-  a.key.network.radio = "range 200m";
-  a.key.network.routing = "shortest_path";
+  a.key.network.propagation = "range 200m";
+  a.key.network.range_m = 200;
+  a.key.network.next_hop = "shortest_path";
   RunResult b = SimRow(1, 0.6);
+  b.key.network.variant = 1;
   b.key.network.model = "radio";
-  b.key.network.radio = "log_distance";
-  RunResult c = SimRow(2, 0.7);
-  c.key.network.routing = "shortest_path";
-  WriteRunsCsv(dir / "runs.csv", {a, b, c});
-  const auto rows = ReadRunsCsv(dir / "runs.csv");
-  ASSERT_EQ(rows.size(), 3u);
-  EXPECT_EQ(rows[0].key.network.radio, "range 200m");
-  EXPECT_EQ(rows[0].key.network.routing, "shortest_path");
-  EXPECT_EQ(rows[1].key.network.radio, "log_distance");
-  EXPECT_EQ(rows[1].key.network.routing, "");
-  EXPECT_EQ(rows[2].key.network.radio, "");
-  EXPECT_EQ(rows[2].key.network.routing, "shortest_path");
-  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(CsvRow(rows[i]), CsvRow(std::vector<RunResult>{a, b, c}[i])) << i;
+  b.key.network.propagation = "log_distance";
+  WriteRunsCsv(dir / "runs.csv", {a, b});
+  std::vector<RunResult> rows = ReadRunsCsv(dir / "runs.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].key.network.propagation, "");  // not in a column
+  const std::vector<NetworkLabel> variants = {a.key.network, b.key.network};
+  LabelNetworks(rows, variants, dir / "runs.csv");
+  EXPECT_EQ(rows[0].key.network.range_m, 200.0);
+  EXPECT_EQ(rows[0].key.network.next_hop, "shortest_path");
+  EXPECT_EQ(rows[1].key.network.propagation, "log_distance");
+  EXPECT_TRUE(std::isnan(rows[1].key.network.range_m));
+  EXPECT_EQ(rows[1].key.network.next_hop, "");
+  for (std::size_t i = 0; i < 2; ++i) EXPECT_EQ(CsvRow(rows[i]), CsvRow(std::vector<RunResult>{a, b}[i])) << i;
+
+  std::vector<RunResult> again = ReadRunsCsv(dir / "runs.csv");
+  try {
+    LabelNetworks(again, std::vector<NetworkLabel>{a.key.network}, dir / "runs.csv");
+    ADD_FAILURE() << "a variant the config does not have was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), (dir / "runs.csv").string() +
+                                          ":3: network variant 1, but the config has 1 (is config.yaml the one of this run?)");
+  }
+  NetworkLabel other = b.key.network;
+  other.model = "wifi";
+  try {
+    LabelNetworks(again, std::vector<NetworkLabel>{a.key.network, other}, dir / "runs.csv");
+    ADD_FAILURE() << "a variant of another model was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), (dir / "runs.csv").string() +
+                                          ":3: network variant 1 is 'radio 1 Mbit/s 5 ms' here but 'wifi 1 Mbit/s 5 ms "
+                                          "log_distance' in the config (is config.yaml the one of this run?)");
+  }
 }
 
 // radio.csv: the run's key, its hops and relaying, then the drops in kRadioDropReasons' order
@@ -238,7 +274,7 @@ TEST(ResultWriters, RadioCsvRow) {
   RadioRow r;
   r.key = RunKey{.protocol = "sim", .strategy = "broadcast", .robots = 4, .run = 1,
                  .network = NetworkLabel{.variant = 1, .model = "radio", .bandwidth_bps = 1e7, .latency_ms = 2,
-                                         .loss = "none", .radio = "range 200m", .routing = "shortest_path"}};
+                                         .loss = "none", .propagation = "range 200m", .range_m = 200, .next_hop = "shortest_path"}};
   r.delivered_copies = 8;
   r.mean_hops = 1.5;  // 12 hops over 8 copies
   r.max_hops = 3;
@@ -289,7 +325,7 @@ TEST(ResultWriters, MediumCsvRow) {
   MediumRow m;
   m.key = RunKey{.protocol = "sim", .strategy = "decentralized", .robots = 10, .run = 0,
                  .network = NetworkLabel{.variant = 2, .model = "wifi", .bandwidth_bps = 5.4e7, .latency_ms = 2,
-                                         .loss = "none", .radio = "", .routing = ""}};
+                                         .loss = "none"}};
   m.delivered_copies = 900;
   m.attempts = 1000;
   m.backoffs = 1010;

@@ -44,19 +44,25 @@ TEST(Sweep, RadioRangesAreVariantsOfTheRadioOnly) {
       "radio: {propagation: range, range: [100m, 0.3km]}}\n");
   const auto v = ExpandNetworks(c.network);
   ASSERT_EQ(v.size(), 2u + 2u * 2u);  // point_to_point per bandwidth, the radio per range and bandwidth
-  EXPECT_EQ(v[0].name, "point_to_point 1Mbps 2ms");
-  EXPECT_EQ(v[2].name, "radio 1Mbps 2ms range 100m");
-  EXPECT_EQ(v[3].name, "radio 10Mbps 2ms range 100m");
-  EXPECT_EQ(v[5].name, "radio 10Mbps 2ms range 300m");
+  EXPECT_EQ(NetworkName(v[0].label), "point-to-point 1 Mbit/s 2 ms");
+  EXPECT_EQ(NetworkName(v[2].label), "radio 1 Mbit/s 2 ms range 100m");
+  EXPECT_EQ(v[2].label.range_m, 100.0);  // the number, beside the text
+  EXPECT_EQ(NetworkName(v[3].label), "radio 10 Mbit/s 2 ms range 100m");
+  EXPECT_EQ(NetworkName(v[5].label), "radio 10 Mbit/s 2 ms range 300m");
+  EXPECT_EQ(v[5].label.range_m, 300.0);
+  EXPECT_TRUE(std::isnan(v[0].label.range_m));
   EXPECT_EQ(v[5].params.model, LinkModelKind::kRadio);
-  EXPECT_EQ(v[5].params.radio.range_m, 300.0);
-  EXPECT_EQ(v[2].params.radio.range_m, 100.0);
+  EXPECT_EQ(PropagationOf(v[5].params).range_m, 300.0);
+  EXPECT_EQ(PropagationOf(v[2].params).range_m, 100.0);
+  EXPECT_FALSE(PropagationOf(v[0].params).NeedsPositions());  // point-to-point: the full mesh
   const ExperimentConfig ld =
       Config("network: {model: radio, radio: {propagation: log_distance, log_distance: {exponent: 2}}}\n");
   const auto w = ExpandNetworks(ld.network);
   ASSERT_EQ(w.size(), 1u);
-  EXPECT_EQ(w[0].name, "radio 10Mbps 2ms log_distance");
-  EXPECT_EQ(w[0].params.radio.log_distance.exponent, 2.0);
+  EXPECT_EQ(NetworkName(w[0].label), "radio 10 Mbit/s 2 ms log_distance");
+  EXPECT_TRUE(std::isnan(w[0].label.range_m));
+  EXPECT_EQ(PropagationOf(w[0].params).kind, PropagationKind::kLogDistance);
+  EXPECT_EQ(PropagationOf(w[0].params).log_distance.exponent, 2.0);
 }
 
 // wifi has its own rate: one variant however many bandwidths and latencies the others sweep, its
@@ -66,8 +72,7 @@ TEST(Sweep, WifiIsOneVariantAtItsOwnRate) {
       "network: {model: [csma, wifi], bandwidth: [1Mbps, 10Mbps], latency: [1ms, 5ms], wifi: {rate: 54Mbps}}\n");
   const auto v = ExpandNetworks(c.network);
   ASSERT_EQ(v.size(), 2u * 2u + 1u);
-  EXPECT_EQ(v[0].name, "csma 1Mbps 1ms");
-  EXPECT_EQ(v[4].name, "wifi 54Mbps");
+  EXPECT_EQ(NetworkName(v[0].label), "csma 1 Mbit/s 1 ms");
   EXPECT_EQ(v[4].params.model, LinkModelKind::kWifi);
   EXPECT_EQ(v[4].params.wifi.rate, DataRate::Mbps(54));
   EXPECT_EQ(v[4].label.bandwidth_bps, 54e6);
@@ -77,8 +82,10 @@ TEST(Sweep, WifiIsOneVariantAtItsOwnRate) {
       "network: {model: wifi, wifi: {rate: 6Mbps, propagation: radio}, radio: {range: [100m, 200m]}}\n");
   const auto w = ExpandNetworks(r.network);
   ASSERT_EQ(w.size(), 2u);
-  EXPECT_TRUE(w[1].params.wifi_radio);
-  EXPECT_EQ(w[1].params.radio.range_m, 200.0);
+  EXPECT_EQ(PropagationOf(w[1].params).kind, PropagationKind::kRange);
+  EXPECT_EQ(PropagationOf(w[1].params).range_m, 200.0);
+  EXPECT_EQ(NetworkName(w[1].label), "wifi 6 Mbit/s range 200m");
+  EXPECT_FALSE(PropagationOf(v[4].params).NeedsPositions());  // wifi without propagation radio: the full mesh
 }
 
 TEST(Sweep, IdealNetworkIsOneVariant) {
@@ -89,6 +96,20 @@ TEST(Sweep, IdealNetworkIsOneVariant) {
   EXPECT_EQ(networks[0].label.model, "ideal");
   EXPECT_EQ(networks[3].label.bandwidth_bps, 3e6);
   EXPECT_EQ(networks[3].index, 3);
+}
+
+// A swept queue or MTU is in the variant's name, so two variants never share one; a single value
+// is not named. VariantLabels are ExpandNetworks' labels.
+TEST(Sweep, SweptQueuesAndMtusAreNamed) {
+  const ExperimentConfig c = Config("network: {model: point_to_point, queue_packets: [8, 100], mtu: 1500B}\n");
+  const auto v = ExpandNetworks(c.network);
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_EQ(NetworkName(v[0].label), "point-to-point 10 Mbit/s 2 ms queue 8 packets");
+  EXPECT_EQ(NetworkName(v[1].label), "point-to-point 10 Mbit/s 2 ms queue 100 packets");
+  const std::vector<NetworkLabel> labels = VariantLabels(c.network);
+  ASSERT_EQ(labels.size(), 2u);
+  EXPECT_EQ(labels[1].queue_packets, 100);
+  EXPECT_EQ(labels[1].mtu_bytes, 0);
 }
 
 // RunSeed(seed, robots, run) = MixSeed(MixSeed(seed, robots), run), worked out independently of

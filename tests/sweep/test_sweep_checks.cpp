@@ -38,7 +38,7 @@ TEST(SweepChecksTest, AFailoverTimeoutShorterThanPeriodPlusHeartbeatDelayIsRefus
   const std::string net = "network: {bandwidth: 1Mbps, latency: 49ms}\n";
   EXPECT_EQ(ErrorOf(net + "failover: {enabled: true, heartbeat_period: 100ms, timeout: 149ms}\n"),
             "c.yaml: failover.timeout: must be at least heartbeat_period + the worst delay of a heartbeat "
-            "(100ms + 50ms = 150ms on network 'point_to_point 1Mbps 49ms' with 2 robots), got 149ms; "
+            "(100ms + 50ms = 150ms on network 'point-to-point 1 Mbit/s 49 ms' with 2 robots), got 149ms; "
             "a shorter one declares robots lost with nobody gone");
   EXPECT_EQ(ErrorOf(net + "failover: {enabled: true, heartbeat_period: 100ms, timeout: 150ms}\n"), "");
   // Without failover nothing is declared lost: the same timeout is not checked.

@@ -106,7 +106,8 @@ def main():
         # 6. PUBLIC where a header needs it, PRIVATE elsewhere.
         edited(root, replay, "PRIVATE dvpr_data", "PUBLIC dvpr_data",
                f"{replay}: dvpr_replay links dvpr_data PUBLIC, but none of its headers", "PUBLIC for a .cpp")
-        edited(root, replay, "PUBLIC dvpr_channels PRIVATE", "PRIVATE dvpr_channels",
+        edited(root, replay, "PUBLIC dvpr_channels dvpr_results dvpr_config PRIVATE",
+               "PUBLIC dvpr_results dvpr_config PRIVATE dvpr_channels",
                f"{replay}: dvpr_replay links dvpr_channels PRIVATE, but its header includes it", "PRIVATE for a header")
 
         # 7. Kept apart: the evaluation may not reach liblcm, not even through a row.

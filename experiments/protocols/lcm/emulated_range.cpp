@@ -36,7 +36,7 @@ namespace {
 NetworkModelParams RadioOf(const ExperimentConfig& config) {
   NetworkModelParams p;
   p.model = LinkModelKind::kRadio;
-  p.radio = config.network.radio.front();
+  p.propagation = config.network.radio.front();
   return p;
 }
 

@@ -33,7 +33,7 @@ TEST(RealNetworkTest, WhatARealTeamCannotEmulateIsRefusedNamingTheKey) {
   c.network.model = {LinkModelKind::kPointToPoint, LinkModelKind::kRadio};
   EXPECT_EQ(ErrorOf(c), "my.yaml: network.model: a launched team runs on one network: give radio alone");
   c.network.model = {LinkModelKind::kRadio};
-  c.network.radio = {RadioParams{}, RadioParams{}};
+  c.network.radio = {PropagationParams::Radio(), PropagationParams::Radio()};
   c.network.radio[1].range_m = 300;
   EXPECT_EQ(ErrorOf(c), "my.yaml: network.radio.range: a launched team has one radio: give one range");
   c.network.radio.resize(1);
