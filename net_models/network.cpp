@@ -36,16 +36,26 @@ NetworkStack WithAccess(std::unique_ptr<LinkModel> link) {
   return stack;
 }
 
+// The stack with its defaults filled in, so the channel can be built over its propagation.
+NetworkStack Completed(NetworkStack stack, int nodes) {
+  if (nodes <= 0) throw std::invalid_argument("robots = " + std::to_string(nodes) + ": need at least one node");
+  if (!stack.access) throw std::invalid_argument("Network: no link model");
+  stack.CompleteDefaults(nodes);
+  return stack;
+}
+
 }  // namespace
 
 Network::Network(Simulator& sim, int nodes, std::unique_ptr<LinkModel> link, WireParams wire)
     : Network(sim, nodes, WithAccess(std::move(link)), wire) {}
 
 Network::Network(Simulator& sim, int nodes, NetworkStack stack, WireParams wire)
-    : sim_(sim), nodes_(nodes), stack_(std::move(stack)), wire_(wire), pairs_(std::max(nodes, 1)) {
-  if (nodes <= 0) throw std::invalid_argument("robots = " + std::to_string(nodes) + ": need at least one node");
-  if (!stack_.access) throw std::invalid_argument("Network: no link model");
-  stack_.CompleteDefaults(nodes);
+    : sim_(sim),
+      nodes_(nodes),
+      stack_(Completed(std::move(stack), nodes)),
+      channel_(*stack_.propagation),
+      wire_(wire),
+      pairs_(std::max(nodes, 1)) {
   stack_.disconnected.Validate();
   stack_.access->Bind(sim_, *this);
   wire_.Validate();
@@ -173,7 +183,7 @@ std::size_t Network::Send(NodeId src, ChannelId channel, MessageTypeId type, std
   for (const NodeId member : ch.members) {
     if (member != src) dsts_.push_back(member);
   }
-  if (ch.link_local) KeepHeard(src, sim_.Now());
+  if (ch.link_local) channel_.KeepHearers(src, dsts_, sim_.Now());
   Dispatch(src, channel, type, std::move(payload));
   return dsts_.size();
 }
@@ -496,7 +506,7 @@ LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t, bool rou
   if (std::equal(hops_.begin(), hops_.end(), dsts_.begin())) {  // one hop each: the usual case
     for (std::size_t i = 0; i < dsts_.size(); ++i) receiver_of_[i] = static_cast<std::uint32_t>(i);
     const LinkModel::MediumUse use = stack_.access->Transmit(t, outcomes_);
-    ApplyPropagation(t.src, dsts_, t.now, outcomes_, unheard);
+    Propagate(t.src, dsts_, t.now, outcomes_, unheard);
     return use;
   }
   receivers_.clear();
@@ -519,7 +529,7 @@ LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t, bool rou
   LinkModel::MediumUse use;
   if (!receivers_.empty()) {
     use = stack_.access->Transmit(LinkTransmission{t.src, receivers_, t.now, t.frames}, routed_outcomes_);
-    ApplyPropagation(t.src, receivers_, t.now, routed_outcomes_, unheard);
+    Propagate(t.src, receivers_, t.now, routed_outcomes_, unheard);
   }
   for (std::size_t i = 0; i < dsts_.size(); ++i) {
     outcomes_[i] = hop_slot_[i] < 0 ? LinkDelivery{t.now, DropReason::kNoRoute}
@@ -529,60 +539,11 @@ LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t, bool rou
   return use;
 }
 
-// A copy the medium delivered but its receiver does not hear when the transmission starts is lost
-// (out of range, or a stale route: the routing model's UnheardHop); one whose receiver has left
-// range when its frame ends is lost out of range; the others arrive the propagation delay later.
-// The full mesh changes nothing.
-void Network::ApplyPropagation(NodeId src, std::span<const NodeId> receivers, SimTime now,
-                               std::span<LinkDelivery> outcomes, DropReason unheard) {
-  // A copy decided later is the contending medium access's to propagate: it knows who hears whom.
+// A copy decided later is the contending medium access's to propagate: it knows who hears whom.
+void Network::Propagate(NodeId src, std::span<const NodeId> receivers, SimTime now, std::span<LinkDelivery> outcomes,
+                        DropReason unheard) {
   if (std::any_of(outcomes.begin(), outcomes.end(), [](const LinkDelivery& d) { return d.later; })) return;
-  receptions_.resize(receivers.size());
-  stack_.propagation->Reach(src, receivers, now, receptions_);
-  for (std::size_t i = 0; i < receivers.size(); ++i) {
-    LinkDelivery& d = outcomes[i];
-    if (d.drop == DropReason::kNone && !receptions_[i].reaches) d.drop = unheard;
-  }
-  if (stack_.propagation->ChangesOverTime()) {
-    // Asked again at each frame's end, one question per distinct end time (usually one for all).
-    const SimTime after_frame = stack_.access->DelayAfterFrame();
-    for (std::size_t i = 0; i < receivers.size();) {
-      if (outcomes[i].drop != DropReason::kNone) {
-        ++i;
-        continue;
-      }
-      const SimTime end = outcomes[i].arrival;
-      frame_end_receivers_.clear();
-      frame_end_index_.clear();
-      std::size_t j = i;
-      for (; j < receivers.size(); ++j) {
-        if (outcomes[j].drop != DropReason::kNone) continue;
-        if (outcomes[j].arrival != end) break;
-        frame_end_receivers_.push_back(receivers[j]);
-        frame_end_index_.push_back(j);
-      }
-      frame_end_receptions_.resize(frame_end_receivers_.size());
-      stack_.propagation->Reach(src, frame_end_receivers_, end - after_frame, frame_end_receptions_);
-      for (std::size_t k = 0; k < frame_end_index_.size(); ++k) {
-        if (!frame_end_receptions_[k].reaches) outcomes[frame_end_index_[k]].drop = DropReason::kOutOfRange;
-      }
-      i = j;
-    }
-  }
-  for (std::size_t i = 0; i < receivers.size(); ++i) {
-    LinkDelivery& d = outcomes[i];
-    if (d.drop == DropReason::kNone) d.arrival += receptions_[i].delay;
-  }
-}
-
-void Network::KeepHeard(NodeId src, SimTime now) {
-  receptions_.resize(dsts_.size());
-  stack_.propagation->Reach(src, dsts_, now, receptions_);
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < dsts_.size(); ++i) {
-    if (receptions_[i].reaches) dsts_[kept++] = dsts_[i];
-  }
-  dsts_.resize(kept);
+  channel_.Settle(src, receivers, now, outcomes, unheard, stack_.access->DelayAfterFrame());
 }
 
 void Network::NotifyMedium(const Payload& p, NodeId sender, const LinkModel::MediumUse& use) {

@@ -39,6 +39,7 @@
 #include "net_models/node_id.h"
 #include "net_models/pair_map.h"
 #include "net_models/payload_buffers.h"
+#include "net_models/propagation_channel.h"
 #include "net_models/slot_pool.h"
 #include "net_models/units.h"
 #include "net_models/wire_format.h"
@@ -262,11 +263,10 @@ class Network final : private LinkCompletions {
   // Drops copy c of the slot's message at a relay or later: counted against its original pair and
   // reported; the caller releases its reference.
   void DropCopy(std::uint32_t slot, const PendingCopy& c, DropReason reason);
-  // unheard: the drop reason of a receiver that does not hear the transmission when it starts.
-  void ApplyPropagation(NodeId src, std::span<const NodeId> receivers, SimTime now, std::span<LinkDelivery> outcomes,
-                        DropReason unheard);
-  // Keeps, of dsts_, the nodes that hear src at `now` (a link-local send).
-  void KeepHeard(NodeId src, SimTime now);
+  // The channel settles what the medium decided at send time (PropagationChannel::Settle); unheard:
+  // the drop reason of a receiver that does not hear the transmission when it starts.
+  void Propagate(NodeId src, std::span<const NodeId> receivers, SimTime now, std::span<LinkDelivery> outcomes,
+                 DropReason unheard);
   // sender: the node whose transmission it was (the message's source, or a relay).
   void NotifyMedium(const Payload& p, NodeId sender, const LinkModel::MediumUse& use);
   std::uint32_t AllocatePayload(std::vector<std::uint8_t>&& bytes);
@@ -293,6 +293,7 @@ class Network final : private LinkCompletions {
   Simulator& sim_;
   int nodes_;
   NetworkStack stack_;
+  PropagationChannel channel_;  // who hears whom: the stack's propagation
   WireParams wire_;
 
   NameMap channel_ids_;
@@ -370,10 +371,6 @@ class Network final : private LinkCompletions {
   std::vector<Bytes> frames_;
   std::vector<LinkDelivery> outcomes_;
   std::vector<NodeId> hops_;
-  std::vector<Reception> receptions_;
-  std::vector<NodeId> frame_end_receivers_;  // ApplyPropagation: those asked again at a frame's end
-  std::vector<std::size_t> frame_end_index_;
-  std::vector<Reception> frame_end_receptions_;
   std::vector<NodeId> receivers_;           // the distinct next hops, when some copy is relayed or has no route
   std::vector<LinkDelivery> routed_outcomes_;  // by receiver
   std::vector<int> hop_slot_;               // by destination: its next hop's index in receivers_, -1: no route
