@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "experiments/results/protocol_traits.h"
 #include "experiments/results/result_writers.h"
 #include "experiments/results/spread.h"
 
@@ -350,7 +351,8 @@ void LabelNetworks(std::vector<RunResult>& rows, std::span<const NetworkLabel> n
   const auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
   for (std::size_t i = 0; i < rows.size(); ++i) {
     NetworkLabel& row = rows[i].key.network;
-    if (row.model.empty()) continue;  // the paper protocol: no network
+    // The paper protocol has no network, dvpr launch's (lcm) a real one no config describes.
+    if (row.model.empty() || !RowTraits(rows[i].key.protocol).simulated_network) continue;
     const std::string where = runs_csv.string() + ":" + std::to_string(i + 2);
     if (row.variant < 0 || static_cast<std::size_t>(row.variant) >= networks.size()) {
       throw std::runtime_error(where + ": network variant " + std::to_string(row.variant) + ", but the config has " +

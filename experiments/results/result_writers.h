@@ -81,7 +81,8 @@ double PlaceRecognitionBytesPerQuery(const RunResult& r);
 // Reads runs.csv back (dvpr plot). Throws naming the file and line on a malformed row.
 std::vector<RunResult> ReadRunsCsv(const std::filesystem::path& path);
 
-// Gives each network row of `rows` (read from `runs_csv`) its variant's whole label, from the
+// Gives each simulated network's row of `rows` (read from `runs_csv`; not the paper protocol's,
+// which has none, nor dvpr launch's, whose network is real) its variant's whole label, from the
 // variants of the config that made them (VariantLabels, experiments/config/network_variants.h):
 // runs.csv's columns name the variant, its model, rate, latency and loss, the label adds what has
 // no column (propagation, range, next hop). Throws, naming the file and the row's line, when a

@@ -247,6 +247,12 @@ TEST(ResultWriters, RowsReadBackTakeTheirLabelsFromTheConfigsVariants) {
   EXPECT_TRUE(std::isnan(rows[1].key.network.range_m));
   EXPECT_EQ(rows[1].key.network.next_hop, "");
   for (std::size_t i = 0; i < 2; ++i) EXPECT_EQ(CsvRow(rows[i]), CsvRow(std::vector<RunResult>{a, b}[i])) << i;
+  // A launched team's row (protocol lcm) is on a real network, no variant of the config: kept.
+  std::vector<RunResult> launched = {SimRow(0, 0.8)};
+  launched[0].key.protocol = "lcm";
+  launched[0].key.network = NetworkLabel{.variant = 0, .model = "lcm", .loss = "none"};
+  LabelNetworks(launched, variants, dir / "runs.csv");
+  EXPECT_EQ(launched[0].key.network.model, "lcm");
 
   std::vector<RunResult> again = ReadRunsCsv(dir / "runs.csv");
   try {
