@@ -113,7 +113,7 @@ struct NextHopEntry {
 };
 
 // The `network:` section. model, bandwidth, latency, queue_packets and mtu may each be a list;
-// the sweep runs their cross product (ExpandNetworks in sweep.h), each variant a
+// the sweep runs their cross product (ExpandNetworks, network_variants.h), each variant a
 // NetworkModelParams with this loss and these links.
 struct NetworkConfig;
 
