@@ -112,15 +112,15 @@ struct NextHopEntry {
   bool operator==(const NextHopEntry&) const = default;
 };
 
-// The `network:` section. model, bandwidth, latency, queue_packets and mtu may each be a list;
-// the sweep runs their cross product (ExpandNetworks, network_variants.h), each variant a
-// NetworkModelParams with this loss and these links.
 struct NetworkConfig;
 
 // The propagations a variant of `model` is run over, one variant each: the radio's, wifi's, or
 // the full mesh (every other medium). The one place that decides which media have a propagation.
 const std::vector<PropagationParams>& PropagationsOf(const NetworkConfig& network, LinkModelKind model);
 
+// The `network:` section. model, bandwidth, latency, queue_packets and mtu may each be a list;
+// the sweep runs their cross product (ExpandNetworks, network_variants.h), each variant a
+// NetworkModelParams with this loss and these links.
 struct NetworkConfig {
   std::vector<LinkModelKind> model{NetworkModelParams{}.model};
   std::vector<DataRate> bandwidth{NetworkModelParams{}.bandwidth};
