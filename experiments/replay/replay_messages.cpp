@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
-#include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
@@ -12,6 +11,7 @@
 #include <tuple>
 
 #include "experiments/results/protocol_traits.h"
+#include "experiments/results/result_writers.h"
 #include "experiments/results/results.h"
 
 namespace dvpr::replay {
@@ -175,9 +175,7 @@ NetworkLabel LabelOf(const Row& row, int variant, std::span<const NetworkLabel> 
   named.bandwidth_bps = row.NumberOrNotApplicable(kBandwidth);
   named.latency_ms = row.NumberOrNotApplicable(kLatency);
   named.loss = row.Text(kLoss);
-  const auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
-  if (named.model != label.model || !same(named.bandwidth_bps, label.bandwidth_bps) ||
-      !same(named.latency_ms, label.latency_ms) || named.loss != label.loss) {
+  if (!SameNetworkColumns(named, label)) {
     row.Fail(kModel, "network variant " + std::to_string(variant) + " of the folder's config.yaml ('" +
                          NetworkName(label) + "')", "'" + NetworkName(named) + "'");
   }

@@ -346,9 +346,14 @@ std::vector<RunResult> ReadRunsCsv(const std::filesystem::path& path) {
   return rows;
 }
 
+bool SameNetworkColumns(const NetworkLabel& a, const NetworkLabel& b) {
+  const auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
+  return a.model == b.model && same(a.bandwidth_bps, b.bandwidth_bps) && same(a.latency_ms, b.latency_ms) &&
+         a.loss == b.loss;
+}
+
 void LabelNetworks(std::vector<RunResult>& rows, std::span<const NetworkLabel> networks,
                    const std::filesystem::path& runs_csv) {
-  const auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
   for (std::size_t i = 0; i < rows.size(); ++i) {
     NetworkLabel& row = rows[i].key.network;
     // The paper protocol has no network, dvpr launch's (lcm) a real one no config describes.
@@ -359,8 +364,7 @@ void LabelNetworks(std::vector<RunResult>& rows, std::span<const NetworkLabel> n
                                std::to_string(networks.size()) + " (is config.yaml the one of this run?)");
     }
     const NetworkLabel& label = networks[static_cast<std::size_t>(row.variant)];
-    if (row.model != label.model || !same(row.bandwidth_bps, label.bandwidth_bps) ||
-        !same(row.latency_ms, label.latency_ms) || row.loss != label.loss) {
+    if (!SameNetworkColumns(row, label)) {
       throw std::runtime_error(where + ": network variant " + std::to_string(row.variant) + " is '" +
                                NetworkName(row) + "' here but '" + NetworkName(label) +
                                "' in the config (is config.yaml the one of this run?)");

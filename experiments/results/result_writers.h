@@ -89,6 +89,9 @@ std::vector<RunResult> ReadRunsCsv(const std::filesystem::path& path);
 // row's variant is not among `networks` or differs from it in a column (another config's folder).
 void LabelNetworks(std::vector<RunResult>& rows, std::span<const NetworkLabel> networks,
                    const std::filesystem::path& runs_csv);
+// Whether two labels agree in what the result files' network columns hold (model, rate, latency,
+// loss; NaN equals NaN): a row read back against its config's variant.
+bool SameNetworkColumns(const NetworkLabel& a, const NetworkLabel& b);
 
 // Number formatting shared with the figures' data files: the shortest decimal that reads back
 // to exactly `v` ("" for NaN, 0 for -0).
