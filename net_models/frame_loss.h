@@ -1,6 +1,6 @@
 #pragma once
 // A loss process for the frames of one directed pair (ns-3's ErrorModel:
-// public IsLost -> private DoIsLost). LossyLink keeps one per pair, so a
+// public IsLost -> private DoIsLost). ReceptionLoss keeps one per pair, so a
 // stateful process (Gilbert-Elliott) has its own state on every pair and
 // pairs can use different processes (per-pair overrides).
 #include <cstdint>

@@ -8,7 +8,6 @@
 
 #include "net_models/csma_link.h"
 #include "net_models/ideal_link.h"
-#include "net_models/lossy_link.h"
 #include "net_models/param_checks.h"
 #include "net_models/point_to_point_link.h"
 #include "net_models/radio_link.h"
@@ -116,8 +115,8 @@ void NetworkModelParams::Validate(int nodes) const {
   ValidateNested("loss.", [&] { loss.Validate(); });
   for (std::size_t i = 0; i < links.size(); ++i) ValidateLink(links[i], i, model, nodes);
   if (Contends(model)) {
-    // The loss decorator draws each frame's fate when it is sent; a contending MAC settles its
-    // frames later (link_model.h), so there is nothing to decorate yet.
+    // The channel's loss draws each frame's fate when the medium has decided it at send time; a
+    // contending MAC settles its frames later (link_model.h), past the channel's loss.
     const bool pair_loss = std::any_of(links.begin(), links.end(), [](const LinkOverrideParams& o) { return o.loss; });
     if (loss.model != LossModelKind::kNone || pair_loss) {
       InvalidParam("loss", "a loss model needs a medium access that decides at send time, not model " +
@@ -154,12 +153,7 @@ std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int n
       link = std::make_unique<WifiLink>(ToWifi(params), nodes, run_seed, *propagation);
       break;
   }
-  std::vector<PairLossOverride> loss_overrides;
-  for (const auto& o : params.links) {
-    if (o.loss) loss_overrides.push_back({o.src, o.dst, *o.loss});
-  }
-  if (params.loss.model == LossModelKind::kNone && loss_overrides.empty()) return link;
-  return std::make_unique<LossyLink>(std::move(link), nodes, params.loss, loss_overrides, run_seed);
+  return link;
 }
 
 }  // namespace dvpr

@@ -86,9 +86,10 @@ PropagationParams PropagationOf(const NetworkModelParams& params);
 // DIX Ethernet for csma; 802.11 for wifi).
 WireParams WireOf(const NetworkModelParams& params);
 
-// The link model for `nodes` nodes, wrapped in a LossyLink when any pair has
-// loss. run_seed seeds the loss streams. Model wifi senses through `propagation` (the stack's,
-// which must outlive it; required for wifi, std::invalid_argument without it).
+// The medium access of `params` for `nodes` nodes (validated); run_seed seeds a contending
+// model's backoffs. Loss is the channel's, not the medium's: MakeNetworkStack builds it
+// (ReceptionLoss). Model wifi senses through `propagation` (the stack's, which must outlive it;
+// required for wifi, std::invalid_argument without it).
 std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int nodes, std::uint64_t run_seed,
                                          PropagationModel* propagation = nullptr);
 

@@ -53,7 +53,7 @@ Network::Network(Simulator& sim, int nodes, NetworkStack stack, WireParams wire)
     : sim_(sim),
       nodes_(nodes),
       stack_(Completed(std::move(stack), nodes)),
-      channel_(*stack_.propagation),
+      channel_(*stack_.propagation, stack_.loss.get()),
       wire_(wire),
       pairs_(std::max(nodes, 1)) {
   stack_.disconnected.Validate();
@@ -506,7 +506,7 @@ LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t, bool rou
   if (std::equal(hops_.begin(), hops_.end(), dsts_.begin())) {  // one hop each: the usual case
     for (std::size_t i = 0; i < dsts_.size(); ++i) receiver_of_[i] = static_cast<std::uint32_t>(i);
     const LinkModel::MediumUse use = stack_.access->Transmit(t, outcomes_);
-    Propagate(t.src, dsts_, t.now, outcomes_, unheard);
+    Propagate(t.src, dsts_, t.now, t.frames.size(), outcomes_, unheard);
     return use;
   }
   receivers_.clear();
@@ -529,7 +529,7 @@ LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t, bool rou
   LinkModel::MediumUse use;
   if (!receivers_.empty()) {
     use = stack_.access->Transmit(LinkTransmission{t.src, receivers_, t.now, t.frames}, routed_outcomes_);
-    Propagate(t.src, receivers_, t.now, routed_outcomes_, unheard);
+    Propagate(t.src, receivers_, t.now, t.frames.size(), routed_outcomes_, unheard);
   }
   for (std::size_t i = 0; i < dsts_.size(); ++i) {
     outcomes_[i] = hop_slot_[i] < 0 ? LinkDelivery{t.now, DropReason::kNoRoute}
@@ -540,10 +540,10 @@ LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t, bool rou
 }
 
 // A copy decided later is the contending medium access's to propagate: it knows who hears whom.
-void Network::Propagate(NodeId src, std::span<const NodeId> receivers, SimTime now, std::span<LinkDelivery> outcomes,
-                        DropReason unheard) {
+void Network::Propagate(NodeId src, std::span<const NodeId> receivers, SimTime now, std::size_t frames,
+                        std::span<LinkDelivery> outcomes, DropReason unheard) {
   if (std::any_of(outcomes.begin(), outcomes.end(), [](const LinkDelivery& d) { return d.later; })) return;
-  channel_.Settle(src, receivers, now, outcomes, unheard, stack_.access->DelayAfterFrame());
+  channel_.Settle(src, receivers, now, frames, outcomes, unheard, stack_.access->DelayAfterFrame());
 }
 
 void Network::NotifyMedium(const Payload& p, NodeId sender, const LinkModel::MediumUse& use) {

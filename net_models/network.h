@@ -265,8 +265,8 @@ class Network final : private LinkCompletions {
   void DropCopy(std::uint32_t slot, const PendingCopy& c, DropReason reason);
   // The channel settles what the medium decided at send time (PropagationChannel::Settle); unheard:
   // the drop reason of a receiver that does not hear the transmission when it starts.
-  void Propagate(NodeId src, std::span<const NodeId> receivers, SimTime now, std::span<LinkDelivery> outcomes,
-                 DropReason unheard);
+  void Propagate(NodeId src, std::span<const NodeId> receivers, SimTime now, std::size_t frames,
+                 std::span<LinkDelivery> outcomes, DropReason unheard);
   // sender: the node whose transmission it was (the message's source, or a relay).
   void NotifyMedium(const Payload& p, NodeId sender, const LinkModel::MediumUse& use);
   std::uint32_t AllocatePayload(std::vector<std::uint8_t>&& bytes);

@@ -54,6 +54,13 @@ NetworkStack MakeNetworkStack(const NetworkModelParams& params, int nodes, std::
   // wifi senses through the propagation: it comes first.
   stack.propagation = MakePropagation(propagation, *stack.mobility, run_seed);
   stack.access = MakeLinkModel(params, nodes, run_seed, stack.propagation.get());
+  std::vector<PairLossOverride> loss_overrides;
+  for (const LinkOverrideParams& o : params.links) {
+    if (o.loss) loss_overrides.push_back({o.src, o.dst, *o.loss});
+  }
+  if (params.loss.model != LossModelKind::kNone || !loss_overrides.empty()) {
+    stack.loss = std::make_unique<ReceptionLoss>(nodes, params.loss, loss_overrides, run_seed);
+  }
   stack.disconnected = params.disconnected;
   stack.CompleteDefaults(nodes);
   switch (params.next_hop) {

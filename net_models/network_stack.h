@@ -19,6 +19,7 @@
 #include "net_models/mobility_model.h"
 #include "net_models/next_hop_routing.h"
 #include "net_models/propagation_model.h"
+#include "net_models/reception_loss.h"
 
 namespace dvpr {
 
@@ -27,6 +28,7 @@ struct NetworkStack {
   std::unique_ptr<PropagationModel> propagation;  // null: FullMeshPropagation
   std::unique_ptr<LinkModel> access;              // the medium access; required
   std::unique_ptr<NextHopRouting> next_hop;       // null: DirectNextHop
+  std::unique_ptr<ReceptionLoss> loss;            // null: no frame is lost on the channel
   // What becomes of a copy the routing finds no way for: dropped, or held (store-and-forward).
   DisconnectedParams disconnected;
 
@@ -36,7 +38,8 @@ struct NetworkStack {
 };
 
 // The configured stack for `nodes` nodes: the link model of `params` (MakeLinkModel, seeded by
-// run_seed) as the medium access over `mobility` (null: fixed at the origin); the full mesh,
+// run_seed) as the medium access over `mobility` (null: fixed at the origin); the channel's loss
+// of params.loss and the links' loss overrides (none when every pair is lossless); the full mesh,
 // or for model radio the propagation of params.radio (range or log_distance) over `mobility`,
 // which a radio requires (std::invalid_argument without it); the next hop of params.next_hop
 // (direct, or shortest_path over that propagation). Where the next models plug in: a medium

@@ -2,8 +2,11 @@
 
 namespace dvpr {
 
-void PropagationChannel::Settle(NodeId src, std::span<const NodeId> receivers, SimTime now,
+void PropagationChannel::Settle(NodeId src, std::span<const NodeId> receivers, SimTime now, std::size_t frames,
                                 std::span<LinkDelivery> outcomes, DropReason unheard, SimTime after_frame) {
+  // Loss before propagation, each pair's draws as many as its frames: the order of the draws is
+  // the run's (seeded per pair) and must not depend on who hears whom.
+  if (loss_ != nullptr) loss_->Apply(src, receivers, frames, outcomes);
   receptions_.resize(receivers.size());
   propagation_.Reach(src, receivers, now, receptions_);
   for (std::size_t i = 0; i < receivers.size(); ++i) {

@@ -3,7 +3,7 @@
 // what another sends at a virtual time, and the propagation delay the air adds to the link's
 // arrival time (ns-3's PropagationLossModel and PropagationDelayModel in one question). A model
 // that depends on distance is built over a MobilityModel; one that loses transmissions at random
-// draws from its own seeded stream, as the loss decorator does.
+// draws from its own seeded stream, as the channel's loss does (reception_loss.h).
 //
 // The Network asks once per transmission, for all its receivers together, after the medium
 // access model has put it on the medium: a copy the medium delivered but the receiver does not

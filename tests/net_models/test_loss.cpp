@@ -1,14 +1,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "net_models/gilbert_elliott_loss.h"
-#include "net_models/ideal_link.h"
 #include "net_models/link_factory.h"
-#include "net_models/lossy_link.h"
 #include "net_models/network.h"
-#include "net_models/point_to_point_link.h"
+#include "net_models/network_stack.h"
 #include "sim/simulator.h"
 
 namespace dvpr {
@@ -24,7 +23,7 @@ TEST(BernoulliLoss, LossRateOver100000MessagesIsWithinThreeSigma) {
   params.loss.model = LossModelKind::kBernoulli;
   params.loss.bernoulli.p = kP;
   Simulator sim;
-  Network net(sim, 2, MakeLinkModel(params, 2, /*run_seed=*/2024));
+  Network net(sim, 2, MakeNetworkStack(params, 2, /*run_seed=*/2024));
   const ChannelId ch = net.InternChannel("C");
   const MessageTypeId type = net.InternType("t");
   const NodeId dst[] = {NodeId(1)};
@@ -43,17 +42,17 @@ TEST(BernoulliLoss, AMessageIsLostIfAnyOfItsFramesIs) {
   LossParams loss;
   loss.model = LossModelKind::kBernoulli;
   loss.bernoulli.p = 0.5;
-  LossyLink link(std::make_unique<IdealLink>(), 2, loss, {}, 7);
-  const std::vector<Bytes> frames(3, Bytes(100));
+  ReceptionLoss channel_loss(2, loss, {}, 7);
   const NodeId dst[] = {NodeId(1)};
   int delivered = 0;
   for (int i = 0; i < 20000; ++i) {
     LinkDelivery out[1];
-    link.Transmit(LinkTransmission{NodeId(0), dst, SimTime::Zero(), frames}, out);
+    channel_loss.Apply(NodeId(0), dst, /*frames=*/3, out);
     delivered += out[0].drop == DropReason::kNone;
   }
   EXPECT_NEAR(delivered, 2500, 3 * 46.8);
-  EXPECT_EQ(link.LossOf(NodeId(0), NodeId(1))->Frames(), 60000u);
+  EXPECT_EQ(channel_loss.LossOf(NodeId(0), NodeId(1))->Frames(), 60000u);
+  EXPECT_EQ(channel_loss.FramesLost(), channel_loss.LossOf(NodeId(0), NodeId(1))->Lost());
 }
 
 TEST(GilbertElliottLoss, LongRunLossAndBurstLengthMatchTheChain) {
@@ -78,38 +77,52 @@ TEST(GilbertElliottLoss, LongRunLossAndBurstLengthMatchTheChain) {
   EXPECT_NEAR(static_cast<double>(lost) / bursts, 5.0, 4 * 0.05);
 }
 
-// A lost frame was on the air all the same: the sender paid for it. Two
-// 547-byte frames at 1 Mbit/s, both lost (p = 1).
-TEST(LossyLink, ReportsTheInnerLinksMediumUseForLostFrames) {
-  LossParams all;
-  all.model = LossModelKind::kBernoulli;
-  all.bernoulli.p = 1.0;
-  LossyLink link(std::make_unique<PointToPointLink>(
-                     PointToPointParams{DataRate::Mbps(1), SimTime::Millis(5), 100, {}}, 2),
-                 2, all, {}, 1);
-  const NodeId dst[] = {NodeId(1)};
-  const Bytes frames[] = {Bytes(547), Bytes(547)};
-  LinkDelivery out[1];
-  const LinkModel::MediumUse use = link.Transmit(LinkTransmission{NodeId(0), dst, SimTime::Zero(), frames}, out);
-  EXPECT_EQ(out[0].drop, DropReason::kLoss);
-  EXPECT_EQ(use.transmissions, 1u);
-  EXPECT_EQ(use.bytes, Bytes(2 * 547));
+// A lost frame was on the air all the same: the sender paid for it. The same two-frame message
+// over a 1 Mbit/s point-to-point link, lost on the channel (p = 1) and not: the same medium bytes.
+TEST(ReceptionLoss, TheSenderPaysForLostFrames) {
+  const auto send = [](double p) {
+    NetworkModelParams params;
+    params.bandwidth = DataRate::Mbps(1);
+    params.latency = SimTime::Millis(5);
+    if (p > 0) {
+      params.loss.model = LossModelKind::kBernoulli;
+      params.loss.bernoulli.p = p;
+    }
+    Simulator sim;
+    Network net(sim, 2, MakeNetworkStack(params, 2, /*run_seed=*/1));
+    const NodeId dst[] = {NodeId(1)};
+    net.SendTo(NodeId(0), dst, net.InternChannel("C"), net.InternType("t"), std::vector<std::uint8_t>(2000));
+    sim.Run();
+    return std::pair{net.Sender(NodeId(0)), net.Counters(NodeId(0), NodeId(1))};
+  };
+  const auto [lossy, lossy_pair] = send(1.0);
+  const auto [clear, clear_pair] = send(0.0);
+  EXPECT_EQ(lossy_pair.dropped, 1u);
+  EXPECT_EQ(clear_pair.delivered, 1u);
+  EXPECT_EQ(lossy.transmissions, 1u);
+  EXPECT_GT(lossy.medium_bytes, 2000);  // two frames: 2000 payload bytes and their headers
+  EXPECT_EQ(lossy.medium_bytes, clear.medium_bytes);
 }
 
-TEST(LossyLink, PairOverrideReplacesTheDefault) {
+// An override replaces the default of its pair only; a copy the medium already dropped draws
+// nothing.
+TEST(ReceptionLoss, PairOverrideReplacesTheDefault) {
   LossParams none;
   LossParams all;
   all.model = LossModelKind::kBernoulli;
   all.bernoulli.p = 1.0;
   const PairLossOverride cut[] = {{NodeId(0), NodeId(2), all}};
-  LossyLink link(std::make_unique<IdealLink>(), 3, none, cut, 1);
+  ReceptionLoss channel_loss(3, none, cut, 1);
   const NodeId dsts[] = {NodeId(1), NodeId(2)};
-  const Bytes frame[] = {Bytes(100)};
   LinkDelivery out[2];
-  link.Transmit(LinkTransmission{NodeId(0), dsts, SimTime::Zero(), frame}, out);
+  channel_loss.Apply(NodeId(0), dsts, 1, out);
   EXPECT_EQ(out[0].drop, DropReason::kNone);
   EXPECT_EQ(out[1].drop, DropReason::kLoss);
-  EXPECT_EQ(link.LossOf(NodeId(0), NodeId(1)), nullptr);
+  EXPECT_EQ(channel_loss.LossOf(NodeId(0), NodeId(1)), nullptr);
+  out[1] = LinkDelivery{SimTime::Zero(), DropReason::kQueueFull};
+  channel_loss.Apply(NodeId(0), dsts, 1, out);
+  EXPECT_EQ(out[1].drop, DropReason::kQueueFull);
+  EXPECT_EQ(channel_loss.LossOf(NodeId(0), NodeId(2))->Frames(), 1u);
 }
 
 }  // namespace

@@ -6,7 +6,9 @@
 
 #include <vector>
 
+#include "net_models/loss_params.h"
 #include "net_models/propagation_channel.h"
+#include "net_models/reception_loss.h"
 
 namespace dvpr {
 namespace {
@@ -45,7 +47,7 @@ TEST(PropagationChannel, UnheardAtTheStartOrGoneAtTheFramesEndIsLostTheOthersArr
   Scripted p(/*changes=*/true);
   PropagationChannel channel(p);
   std::vector<LinkDelivery> out = AllAt(SimTime::Micros(10));
-  channel.Settle(NodeId(0), kReceivers, SimTime::Zero(), out, DropReason::kStaleRoute, SimTime::Micros(2));
+  channel.Settle(NodeId(0), kReceivers, SimTime::Zero(), /*frames=*/1, out, DropReason::kStaleRoute, SimTime::Micros(2));
   EXPECT_EQ(out[0].drop, DropReason::kNone);
   EXPECT_EQ(out[0].arrival, SimTime::Nanos(10'100));
   EXPECT_EQ(out[1].drop, DropReason::kOutOfRange);   // heard at 0, not at the frame's end (8 us)
@@ -59,7 +61,7 @@ TEST(PropagationChannel, AStillChannelIsAskedOnce) {
   Scripted p(/*changes=*/false);
   PropagationChannel channel(p);
   std::vector<LinkDelivery> out = AllAt(SimTime::Micros(10));
-  channel.Settle(NodeId(0), kReceivers, SimTime::Zero(), out, DropReason::kOutOfRange, SimTime::Micros(2));
+  channel.Settle(NodeId(0), kReceivers, SimTime::Zero(), /*frames=*/1, out, DropReason::kOutOfRange, SimTime::Micros(2));
   EXPECT_EQ(out[1].drop, DropReason::kNone);
   EXPECT_EQ(out[1].arrival, SimTime::Nanos(10'050));
   EXPECT_EQ(out[2].drop, DropReason::kOutOfRange);
@@ -74,13 +76,30 @@ TEST(PropagationChannel, MediumDropsStayAndEachFrameEndIsAskedOnce) {
   std::vector<LinkDelivery> out = {LinkDelivery{SimTime::Micros(4)}, LinkDelivery{SimTime::Micros(4)},
                                    LinkDelivery{SimTime::Micros(20), DropReason::kQueueFull}};
   out[1].arrival = SimTime::Micros(6);  // node 2's frame ends at 4 us: still heard
-  channel.Settle(NodeId(0), kReceivers, SimTime::Zero(), out, DropReason::kOutOfRange, SimTime::Micros(2));
+  channel.Settle(NodeId(0), kReceivers, SimTime::Zero(), /*frames=*/1, out, DropReason::kOutOfRange, SimTime::Micros(2));
   EXPECT_EQ(out[0].arrival, SimTime::Nanos(4'100));
   EXPECT_EQ(out[1].drop, DropReason::kNone);
   EXPECT_EQ(out[1].arrival, SimTime::Nanos(6'050));
   EXPECT_EQ(out[2].drop, DropReason::kQueueFull);
   EXPECT_EQ(out[2].arrival, SimTime::Micros(20));  // no delay added to a drop
   EXPECT_EQ(p.asked_at, (std::vector<SimTime>{SimTime::Zero(), SimTime::Micros(2), SimTime::Micros(4)}));
+}
+
+// The channel's loss comes first (reception_loss.h): a lost copy is lost, heard or not, and each
+// pair draws once per frame whatever the propagation says (here 3 frames, p = 1 on 0 -> 3 only).
+TEST(PropagationChannel, LossComesBeforeThePropagation) {
+  Scripted p(/*changes=*/false);
+  LossParams all;
+  all.model = LossModelKind::kBernoulli;
+  all.bernoulli.p = 1.0;
+  const PairLossOverride cut[] = {{NodeId(0), NodeId(3), all}};
+  ReceptionLoss loss(4, LossParams{}, cut, /*run_seed=*/5);
+  PropagationChannel channel(p, &loss);
+  std::vector<LinkDelivery> out = AllAt(SimTime::Micros(10));
+  channel.Settle(NodeId(0), kReceivers, SimTime::Zero(), /*frames=*/3, out, DropReason::kOutOfRange, SimTime::Zero());
+  EXPECT_EQ(out[0].drop, DropReason::kNone);
+  EXPECT_EQ(out[2].drop, DropReason::kLoss);  // never heard, but lost first
+  EXPECT_EQ(loss.LossOf(NodeId(0), NodeId(3))->Frames(), 3u);
 }
 
 TEST(PropagationChannel, ALinkLocalSendKeepsItsHearersInOrder) {

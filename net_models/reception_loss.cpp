@@ -1,6 +1,7 @@
-#include "net_models/lossy_link.h"
+#include "net_models/reception_loss.h"
 
 #include <stdexcept>
+#include <string>
 
 namespace dvpr {
 namespace {
@@ -12,10 +13,9 @@ std::uint64_t PairComponent(NodeId src, NodeId dst) {
 
 }  // namespace
 
-LossyLink::LossyLink(std::unique_ptr<LinkModel> inner, int nodes, const LossParams& loss,
-                     std::span<const PairLossOverride> overrides, std::uint64_t run_seed)
-    : inner_(std::move(inner)), nodes_(nodes) {
-  if (!inner_) throw std::invalid_argument("LossyLink: no inner link model");
+ReceptionLoss::ReceptionLoss(int nodes, const LossParams& loss, std::span<const PairLossOverride> overrides,
+                             std::uint64_t run_seed)
+    : nodes_(nodes) {
   if (nodes <= 0) throw std::invalid_argument("robots = " + std::to_string(nodes) + ": need at least one node");
   loss.Validate();
   pairs_.reserve(static_cast<std::size_t>(nodes) * static_cast<std::size_t>(nodes));
@@ -33,27 +33,23 @@ LossyLink::LossyLink(std::unique_ptr<LinkModel> inner, int nodes, const LossPara
     o.loss.Validate();
     pairs_[Index(o.src, o.dst)].loss = MakeFrameLoss(o.loss);
   }
-  name_ = std::string(ToString(loss.model)) + "(" + std::string(inner_->Name()) + ")";
 }
 
-std::uint64_t LossyLink::FramesLost() const {
+std::uint64_t ReceptionLoss::FramesLost() const {
   std::uint64_t lost = 0;
   for (const Pair& p : pairs_) lost += p.loss ? p.loss->Lost() : 0;
   return lost;
 }
 
-LinkModel::MediumUse LossyLink::DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) {
-  const MediumUse use = inner_->Transmit(t, out);
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    Pair& pair = pairs_[Index(t.src, t.dsts[i])];
-    if (out[i].drop != DropReason::kNone || !pair.loss) continue;
-    // Every frame is examined, even after a loss, so a stateful process
-    // advances once per frame on the air.
+void ReceptionLoss::Apply(NodeId src, std::span<const NodeId> receivers, std::size_t frames,
+                          std::span<LinkDelivery> outcomes) {
+  for (std::size_t i = 0; i < receivers.size(); ++i) {
+    Pair& pair = pairs_[Index(src, receivers[i])];
+    if (outcomes[i].drop != DropReason::kNone || !pair.loss) continue;
     bool lost = false;
-    for (std::size_t f = 0; f < t.frames.size(); ++f) lost = pair.loss->IsLost(pair.rng) || lost;
-    if (lost) out[i].drop = DropReason::kLoss;
+    for (std::size_t f = 0; f < frames; ++f) lost = pair.loss->IsLost(pair.rng) || lost;
+    if (lost) outcomes[i].drop = DropReason::kLoss;
   }
-  return use;  // a lost frame was on the air all the same
 }
 
 }  // namespace dvpr
