@@ -73,15 +73,25 @@ void CsmaLink::TransmitStart(std::size_t s) {
   sim_->Schedule(tx, [this, s] { TransmitComplete(s); });
 }
 
-// The frame's last bit is on the bus: every destination receives it the channel delay later,
-// when the bus goes idle; the sender rests the interframe gap.
+// The frame's last bit is on the bus: every destination the network's channel lets hear it (all,
+// on a wire's full mesh) receives it the channel delay later, when the bus goes idle; the sender
+// rests the interframe gap.
 void CsmaLink::TransmitComplete(std::size_t s) {
   Station& st = stations_[s];
   st.state = TxState::kGap;
   bus_ = BusState::kPropagating;
   const std::uint32_t id = st.current.message;
   const SimTime arrival = sim_->Now() + params_.delay;
-  for (std::size_t i = 0; i < messages_.Destinations(id).size(); ++i) messages_.Reached(id, i, arrival);
+  const std::span<const NodeId> dsts = messages_.Destinations(id);
+  heard_.resize(dsts.size());
+  Hear(NodeId(static_cast<int>(s)), dsts, sim_->Now(), heard_);
+  for (std::size_t i = 0; i < dsts.size(); ++i) {
+    if (heard_[i].reaches) {
+      messages_.Reached(id, i, arrival + heard_[i].delay);
+    } else {
+      messages_.Lost(id, i, DropReason::kOutOfRange);
+    }
+  }
   messages_.Settle(id, *completions_);
   sim_->Schedule(params_.delay, [this] { bus_ = BusState::kIdle; });
   sim_->Schedule(gap_, [this, s] { TransmitReady(s); });

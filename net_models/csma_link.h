@@ -89,6 +89,7 @@ class CsmaLink final : public LinkModel {
   SlotDraw draw_;
   BusState bus_ = BusState::kIdle;
   SimTime busy_;  // the bus's time transmitting or propagating
+  std::vector<Reception> heard_;  // scratch of TransmitComplete: by destination, the channel's answer
 };
 
 }  // namespace dvpr

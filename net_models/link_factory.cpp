@@ -134,8 +134,7 @@ void NetworkModelParams::Validate(int nodes) const {
   if (next_hop == NextHopKind::kLinkState) ValidateNested("routing.", [&] { link_state.Validate(); });
 }
 
-std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int nodes, std::uint64_t run_seed,
-                                         PropagationModel* propagation) {
+std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int nodes, std::uint64_t run_seed) {
   params.Validate(nodes);
   std::unique_ptr<LinkModel> link;
   switch (params.model) {
@@ -148,10 +147,7 @@ std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int n
       break;
     case LinkModelKind::kRadio: link = std::make_unique<RadioLink>(ToRadio(params), nodes); break;
     case LinkModelKind::kCsma: link = std::make_unique<CsmaLink>(ToCsma(params), nodes, run_seed); break;
-    case LinkModelKind::kWifi:
-      if (propagation == nullptr) throw std::invalid_argument("model wifi senses through a propagation model: none given");
-      link = std::make_unique<WifiLink>(ToWifi(params), nodes, run_seed, *propagation);
-      break;
+    case LinkModelKind::kWifi: link = std::make_unique<WifiLink>(ToWifi(params), nodes, run_seed); break;
   }
   return link;
 }

@@ -87,10 +87,9 @@ PropagationParams PropagationOf(const NetworkModelParams& params);
 WireParams WireOf(const NetworkModelParams& params);
 
 // The medium access of `params` for `nodes` nodes (validated); run_seed seeds a contending
-// model's backoffs. Loss is the channel's, not the medium's: MakeNetworkStack builds it
-// (ReceptionLoss). Model wifi senses through `propagation` (the stack's, which must outlive it;
-// required for wifi, std::invalid_argument without it).
-std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int nodes, std::uint64_t run_seed,
-                                         PropagationModel* propagation = nullptr);
+// model's backoffs. Who hears whom, and the loss, are the channel's, not the medium's: the
+// network lends its channel to the medium at Bind (MakeNetworkStack builds its propagation and
+// ReceptionLoss).
+std::unique_ptr<LinkModel> MakeLinkModel(const NetworkModelParams& params, int nodes, std::uint64_t run_seed);
 
 }  // namespace dvpr

@@ -12,8 +12,13 @@
 // after its backoff depends on what others send in the meantime. Such a model runs its own
 // events on the network's simulator (Bind), marks the copies it decides later (`later`) and
 // reports them through LinkCompletions once the medium has settled them, with the ticket of their
-// transmission; it answers for the propagation too (who senses and who hears whom), so the
-// Network applies none to those copies.
+// transmission.
+//
+// Every medium asks the network's channel (propagation_channel.h, lent at Bind) who hears whom,
+// the same channel whichever way it decides: one that decides at send time hands it its outcomes
+// (Settle: loss, then who hears the transmission when it starts and still at its frame's end);
+// a contending one asks who hears a frame it puts on the air (Hear). An unbound medium is on the
+// full mesh without loss (every receiver hears every frame, no delay added).
 //
 // LinkModel::Transmit is the public, non-virtual entry point (NVI): it checks
 // the request, resets the outcomes and reports what the message put on the
@@ -26,6 +31,7 @@
 
 #include "net_models/mac_counters.h"
 #include "net_models/node_id.h"
+#include "net_models/propagation_model.h"
 #include "net_models/units.h"
 #include "sim/sim_time.h"
 
@@ -55,6 +61,9 @@ struct LinkTransmission {
   SimTime now;
   std::span<const Bytes> frames;  // the message's link frames, in order (wire_format.h)
   std::uint64_t ticket = 0;       // names the transmission to LinkCompletions::Complete
+  // The drop reason of a destination that does not hear the transmission when it starts (out of
+  // range, or a stale route when a learned next hop no longer hears its sender).
+  DropReason unheard = DropReason::kOutOfRange;
 };
 
 // The outcome for one destination: the arrival of the message's last frame,
@@ -63,6 +72,9 @@ struct LinkDelivery {
   SimTime arrival;
   DropReason drop = DropReason::kNone;
   bool later = false;  // decided later: reported through LinkCompletions::Complete
+  // When the copy's last frame ended at the sender (a medium deciding at send time sets it): a
+  // receiver that moves must still hear the transmission then (PropagationChannel::Settle).
+  SimTime frame_end = {};
 };
 
 // Where a contending model reports the copies it left `later`.
@@ -75,6 +87,7 @@ class LinkCompletions {
 };
 
 class Simulator;
+class PropagationChannel;
 
 class LinkModel {
  public:
@@ -97,25 +110,33 @@ class LinkModel {
   // The time the medium was busy with at least one transmission (a contending model; else zero).
   SimTime MediumBusy() const { return DoMediumBusy(); }
 
-  // The network the model serves: a contending model schedules its events on `sim` and reports
-  // to `completions`; the others ignore it. Called once, before the first Transmit.
-  void Bind(Simulator& sim, LinkCompletions& completions) { DoBind(sim, completions); }
+  // The network the model serves: every model asks `channel` who hears whom (both must outlive
+  // the model); a contending model schedules its events on `sim` and reports to `completions`.
+  // Called once, before the first Transmit.
+  void Bind(Simulator& sim, LinkCompletions& completions, PropagationChannel& channel) {
+    channel_ = &channel;
+    DoBind(sim, completions);
+  }
 
-  // "ideal", "point_to_point", "shared_medium", "bernoulli(point_to_point)", ...
+  // "ideal", "point_to_point", "shared_medium", "radio", "csma", "wifi".
   std::string_view Name() const { return DoName(); }
-  // How long after a frame's last bit is sent its arrival comes (a fixed per-hop processing
-  // delay added after serialization; zero for a model without one): the frame ended at the
-  // arrival minus this, when a moving receiver must still have been in range.
-  SimTime DelayAfterFrame() const { return DoDelayAfterFrame(); }
+
+ protected:
+  // A medium that decided t's copies at send time (out[i].arrival and frame_end set, or a drop)
+  // ends its DoTransmit here: the channel loses, delays or keeps each (PropagationChannel::Settle).
+  void Settle(const LinkTransmission& t, std::span<LinkDelivery> out);
+  // A contending medium: who hears a frame src puts on the air at `at` (PropagationModel::Reach).
+  void Hear(NodeId src, std::span<const NodeId> receivers, SimTime at, std::span<Reception> out);
 
  private:
-  // out[i] arrives preset to {t.now, kNone}.
+  // out[i] arrives preset to {t.now, kNone, frame_end t.now}.
   virtual MediumUse DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) = 0;
   virtual std::string_view DoName() const = 0;
-  virtual SimTime DoDelayAfterFrame() const { return SimTime::Zero(); }
   virtual void DoBind(Simulator& /*sim*/, LinkCompletions& /*completions*/) {}
   virtual std::span<const MacCounters> DoMac() const { return {}; }
   virtual SimTime DoMediumBusy() const { return SimTime::Zero(); }
+
+  PropagationChannel* channel_ = nullptr;  // null until Bind: the full mesh without loss
 };
 
 }  // namespace dvpr

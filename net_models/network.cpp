@@ -57,7 +57,7 @@ Network::Network(Simulator& sim, int nodes, NetworkStack stack, WireParams wire)
       wire_(wire),
       pairs_(std::max(nodes, 1)) {
   stack_.disconnected.Validate();
-  stack_.access->Bind(sim_, *this);
+  stack_.access->Bind(sim_, *this, channel_);
   wire_.Validate();
   const auto n = static_cast<std::size_t>(nodes);
   endpoints_.assign(n, nullptr);
@@ -473,7 +473,8 @@ void Network::Retry(NodeId node) {
 }
 
 // Fills outcomes_ for dsts_ and frames_, asking the stack's layers in turn: routing (which copies
-// have a way), medium access (when they arrive), propagation (whether they are heard). The
+// have a way), then the medium access (when they arrive), which asks the channel whether they are
+// heard. The
 // sender counts what its message put on the medium (nothing when it is offline).
 LinkModel::MediumUse Network::TransmitFrom(NodeId src, SimTime now, NodeCounters& sender, bool routed) {
   outcomes_.resize(dsts_.size());
@@ -492,7 +493,7 @@ LinkModel::MediumUse Network::TransmitFrom(NodeId src, SimTime now, NodeCounters
 
 // The routing model names each copy's next hop (hops_); the medium access carries the message to
 // the distinct next hops of the copies that have one (a copy without a route never goes on the
-// medium: DropReason::kNoRoute), and the propagation model says which of them hear it. A copy
+// medium: DropReason::kNoRoute), and its channel says which of them hear it. A copy
 // whose next hop is not its destination goes on from that relay when it arrives there (Relay).
 LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t, bool routed) {
   hops_.resize(dsts_.size());
@@ -505,9 +506,7 @@ LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t, bool rou
   receiver_of_.resize(dsts_.size());
   if (std::equal(hops_.begin(), hops_.end(), dsts_.begin())) {  // one hop each: the usual case
     for (std::size_t i = 0; i < dsts_.size(); ++i) receiver_of_[i] = static_cast<std::uint32_t>(i);
-    const LinkModel::MediumUse use = stack_.access->Transmit(t, outcomes_);
-    Propagate(t.src, dsts_, t.now, t.frames.size(), outcomes_, unheard);
-    return use;
+    return stack_.access->Transmit(LinkTransmission{t.src, t.dsts, t.now, t.frames, t.ticket, unheard}, outcomes_);
   }
   receivers_.clear();
   hop_slot_.resize(dsts_.size());
@@ -528,8 +527,8 @@ LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t, bool rou
   routed_outcomes_.resize(receivers_.size());
   LinkModel::MediumUse use;
   if (!receivers_.empty()) {
-    use = stack_.access->Transmit(LinkTransmission{t.src, receivers_, t.now, t.frames}, routed_outcomes_);
-    Propagate(t.src, receivers_, t.now, t.frames.size(), routed_outcomes_, unheard);
+    use = stack_.access->Transmit(LinkTransmission{t.src, receivers_, t.now, t.frames, t.ticket, unheard},
+                                  routed_outcomes_);
   }
   for (std::size_t i = 0; i < dsts_.size(); ++i) {
     outcomes_[i] = hop_slot_[i] < 0 ? LinkDelivery{t.now, DropReason::kNoRoute}
@@ -537,13 +536,6 @@ LinkModel::MediumUse Network::TransmitRouted(const LinkTransmission& t, bool rou
     receiver_of_[i] = static_cast<std::uint32_t>(std::max(hop_slot_[i], 0));
   }
   return use;
-}
-
-// A copy decided later is the contending medium access's to propagate: it knows who hears whom.
-void Network::Propagate(NodeId src, std::span<const NodeId> receivers, SimTime now, std::size_t frames,
-                        std::span<LinkDelivery> outcomes, DropReason unheard) {
-  if (std::any_of(outcomes.begin(), outcomes.end(), [](const LinkDelivery& d) { return d.later; })) return;
-  channel_.Settle(src, receivers, now, frames, outcomes, unheard, stack_.access->DelayAfterFrame());
 }
 
 void Network::NotifyMedium(const Payload& p, NodeId sender, const LinkModel::MediumUse& use) {

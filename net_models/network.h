@@ -263,10 +263,6 @@ class Network final : private LinkCompletions {
   // Drops copy c of the slot's message at a relay or later: counted against its original pair and
   // reported; the caller releases its reference.
   void DropCopy(std::uint32_t slot, const PendingCopy& c, DropReason reason);
-  // The channel settles what the medium decided at send time (PropagationChannel::Settle); unheard:
-  // the drop reason of a receiver that does not hear the transmission when it starts.
-  void Propagate(NodeId src, std::span<const NodeId> receivers, SimTime now, std::size_t frames,
-                 std::span<LinkDelivery> outcomes, DropReason unheard);
   // sender: the node whose transmission it was (the message's source, or a relay).
   void NotifyMedium(const Payload& p, NodeId sender, const LinkModel::MediumUse& use);
   std::uint32_t AllocatePayload(std::vector<std::uint8_t>&& bytes);
@@ -293,7 +289,7 @@ class Network final : private LinkCompletions {
   Simulator& sim_;
   int nodes_;
   NetworkStack stack_;
-  PropagationChannel channel_;  // who hears whom: the stack's propagation
+  PropagationChannel channel_;  // who hears whom (the stack's propagation and loss), lent to the medium at Bind
   WireParams wire_;
 
   NameMap channel_ids_;

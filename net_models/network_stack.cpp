@@ -51,9 +51,8 @@ NetworkStack MakeNetworkStack(const NetworkModelParams& params, int nodes, std::
   NetworkStack stack;
   stack.mobility = std::move(mobility);
   if (!stack.mobility) stack.mobility = std::make_unique<FixedMobility>(FixedMobility::AtOrigin(nodes));
-  // wifi senses through the propagation: it comes first.
   stack.propagation = MakePropagation(propagation, *stack.mobility, run_seed);
-  stack.access = MakeLinkModel(params, nodes, run_seed, stack.propagation.get());
+  stack.access = MakeLinkModel(params, nodes, run_seed);
   std::vector<PairLossOverride> loss_overrides;
   for (const LinkOverrideParams& o : params.links) {
     if (o.loss) loss_overrides.push_back({o.src, o.dst, *o.loss});

@@ -18,6 +18,7 @@ LinkModel::MediumUse TransmitOnce(FifoTransmitter& tx, SimTime& medium_busy_unti
       d.drop = DropReason::kQueueFull;
     } else {
       d.arrival = r.last_end + params.latency;
+      d.frame_end = r.last_end;
     }
   }
   return LinkModel::MediumUse{t.dsts.empty() ? 0u : 1u, r.bytes_sent};

@@ -19,8 +19,9 @@ struct TransmitterParams {
 };
 
 // Sends t's frames through `tx` onto the medium that is free at `medium_busy_until` (updated).
-// Every destination gets the last frame's end + latency, or every one loses the message to a
-// full queue; one transmission when there is a destination.
+// Every destination gets the last frame's end + latency (frame_end: that end), or every one loses
+// the message to a full queue; one transmission when there is a destination. The caller hands the
+// outcomes to its channel (LinkModel::Settle).
 LinkModel::MediumUse TransmitOnce(FifoTransmitter& tx, SimTime& medium_busy_until, const TransmitterParams& params,
                                   const LinkTransmission& t, std::span<LinkDelivery> out);
 

@@ -60,8 +60,10 @@ LinkModel::MediumUse PointToPointLink::DoTransmit(const LinkTransmission& t, std
       out[i].drop = DropReason::kQueueFull;
     } else {
       out[i].arrival = r.last_end + link.latency;
+      out[i].frame_end = r.last_end;
     }
   }
+  Settle(t, out);
   return use;
 }
 

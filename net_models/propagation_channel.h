@@ -1,15 +1,16 @@
 #pragma once
-// Who hears whom on a network: the stack's propagation model (over the robots' mobility) asked
-// the questions every transmission asks (docs/design.md section 4.1, "propagation"), in one place.
-// The network hands it each transmission a medium access decided at send time; a contending
-// medium access asks the propagation itself while it contends (its copies are decided later).
+// Who hears whom on a network: the stack's propagation model (over the robots' mobility) and its
+// reception loss, asked the questions every transmission asks (docs/design.md section 4.1,
+// "propagation"), in one place. The network owns it and lends it to its medium at Bind
+// (link_model.h); every medium asks it, whichever way it decides its copies.
 //
-// - Settle: first the loss (reception_loss.h, when the channel has one), then: a copy the medium
-//   delivered but whose receiver does not hear the transmission when it
-//   starts is lost (`unheard`: out of range, or a stale route); one whose receiver has left range
-//   when its frame ends is lost out of range (asked once per distinct frame end, and only when
-//   who hears whom changes over time); the others arrive the propagation delay later. The full
-//   mesh changes nothing.
+// - Settle (a medium that decided its copies at send time): first the loss (reception_loss.h,
+//   when the channel has one); then a copy the medium delivered but whose receiver does not hear
+//   the transmission when it starts is lost (t.unheard: out of range, or a stale route); one whose
+//   receiver has left range when its frame ends (LinkDelivery::frame_end) is lost out of range
+//   (asked once per distinct frame end, and only when who hears whom changes over time); the
+//   others arrive the propagation delay later. The full mesh without loss changes nothing.
+// - Hear (a contending medium, for each frame it puts on the air): who hears it, with what delay.
 // - KeepHearers: of a link-local send's members, those that hear the sender.
 #include <cstddef>
 #include <span>
@@ -29,11 +30,12 @@ class PropagationChannel {
   explicit PropagationChannel(PropagationModel& propagation, ReceptionLoss* loss = nullptr)
       : propagation_(propagation), loss_(loss) {}
 
-  // outcomes[i] is receivers[i]'s, as the medium decided it at `now`, for a message of `frames`
-  // frames; after_frame: the medium's time from a frame's end at the sender to its arrival
-  // (LinkModel::DelayAfterFrame).
-  void Settle(NodeId src, std::span<const NodeId> receivers, SimTime now, std::size_t frames,
-              std::span<LinkDelivery> outcomes, DropReason unheard, SimTime after_frame);
+  // out[i] is t.dsts[i]'s, as the medium decided it at t.now.
+  void Settle(const LinkTransmission& t, std::span<LinkDelivery> out);
+  // out[i]: whether receivers[i] hears what src transmits at `at`, and the delay the air adds.
+  void Hear(NodeId src, std::span<const NodeId> receivers, SimTime at, std::span<Reception> out) {
+    propagation_.Reach(src, receivers, at, out);
+  }
   // Keeps, of `nodes`, those that hear src at `at`, in their order.
   void KeepHearers(NodeId src, std::vector<NodeId>& nodes, SimTime at);
 

@@ -5,9 +5,10 @@
 // that depends on distance is built over a MobilityModel; one that loses transmissions at random
 // draws from its own seeded stream, as the channel's loss does (reception_loss.h).
 //
-// The Network asks once per transmission, for all its receivers together, after the medium
-// access model has put it on the medium: a copy the medium delivered but the receiver does not
-// hear is dropped (DropReason::kOutOfRange); its frames were on the air all the same.
+// The network's PropagationChannel asks (propagation_channel.h), for all of a transmission's
+// receivers together, when the medium access has put it on the medium (or, a contending one, a
+// frame on the air): a copy the medium delivered but the receiver does not hear is dropped
+// (DropReason::kOutOfRange); its frames were on the air all the same.
 //
 // Reach is the public, non-virtual entry point (NVI): it checks the request and presets every
 // outcome to "reaches, no added delay", which is the full mesh; a model changes what differs.
@@ -34,7 +35,7 @@ class PropagationModel {
   void Reach(NodeId src, std::span<const NodeId> receivers, SimTime now, std::span<Reception> out);
   // "full_mesh", "range(50m)", ...
   std::string_view Name() const { return DoName(); }
-  // Whether who hears whom can change over time (nodes that move): then the Network asks again
+  // Whether who hears whom can change over time (nodes that move): then the channel asks again
   // at the end of each frame, and a receiver that left range while it was sent does not get it.
   bool ChangesOverTime() const { return DoChangesOverTime(); }
 

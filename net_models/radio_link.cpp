@@ -15,7 +15,9 @@ RadioLink::RadioLink(const RadioLinkParams& params, int nodes) : params_(params)
 // The sender's radio is its own medium: its transmitter's free time is the medium's.
 LinkModel::MediumUse RadioLink::DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) {
   Radio& radio = radios_[static_cast<std::size_t>(t.src.value)];
-  return TransmitOnce(radio.queue, radio.busy_until, params_, t, out);
+  const MediumUse use = TransmitOnce(radio.queue, radio.busy_until, params_, t, out);
+  Settle(t, out);
+  return use;
 }
 
 }  // namespace dvpr

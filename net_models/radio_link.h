@@ -2,8 +2,9 @@
 // "radio": each robot has one radio (docs/network_model.md). A robot's messages are serialized
 // one after another at the bandwidth with the wire format's framing, through its own drop-tail
 // queue; a message for several robots (a broadcast) is ONE transmission that every robot in
-// range hears while it is sent. Who is in range is the stack's propagation model's question
-// (range, log_distance over the robots' positions), asked by the Network after this model.
+// range hears while it is sent. Who is in range is the network's channel's question
+// (propagation_channel.h: range, log_distance over the robots' positions), asked once the queue
+// has put the message on the air.
 //
 // Radios do not contend here: two neighbours may transmit at once and both are heard, the
 // optimistic bound that a contending MAC (CSMA, 802.11 DCF) replaces behind the same seam.
@@ -32,7 +33,6 @@ class RadioLink final : public LinkModel {
 
   MediumUse DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) override;
   std::string_view DoName() const override { return "radio"; }
-  SimTime DoDelayAfterFrame() const override { return params_.latency; }
 
   RadioLinkParams params_;
   std::vector<Radio> radios_;  // one per node

@@ -14,7 +14,9 @@ SharedMediumLink::SharedMediumLink(const SharedMediumParams& params, int nodes) 
 }
 
 LinkModel::MediumUse SharedMediumLink::DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) {
-  return TransmitOnce(senders_[static_cast<std::size_t>(t.src.value)], channel_busy_until_, params_, t, out);
+  const MediumUse use = TransmitOnce(senders_[static_cast<std::size_t>(t.src.value)], channel_busy_until_, params_, t, out);
+  Settle(t, out);
+  return use;
 }
 
 }  // namespace dvpr

@@ -53,8 +53,7 @@ void WifiParams::Validate() const {
   CheckInRange("queue_packets", queue_packets, 1, std::int64_t{1} << 30);
 }
 
-WifiLink::WifiLink(const WifiParams& params, int nodes, std::uint64_t run_seed, PropagationModel& propagation)
-    : params_(params), propagation_(propagation) {
+WifiLink::WifiLink(const WifiParams& params, int nodes, std::uint64_t run_seed) : params_(params) {
   if (nodes <= 0) InvalidParam("nodes", "a network needs at least one node, got " + std::to_string(nodes));
   params_.Validate();
   eifs_ = Eifs(params_);
@@ -197,7 +196,7 @@ void WifiLink::StartAir(std::size_t src, Bytes bytes, DataRate rate, const Air& 
     if (n != src) others_.push_back(NodeId(static_cast<int>(n)));
   }
   reach_.resize(others_.size());
-  propagation_.Reach(NodeId(static_cast<int>(src)), others_, now, reach_);
+  Hear(NodeId(static_cast<int>(src)), others_, now, reach_);
   Air& a = air_[id];
   a = what;
   a.hearers.clear();

@@ -2,8 +2,8 @@
 // "wifi": 802.11a/g OFDM, the distributed coordination function (DCF) of an ad hoc network
 // without QoS, with ns-3's constants (docs/network_model.md, "wifi: 802.11 DCF").
 //
-// A station senses the medium busy while it hears a transmission (the stack's propagation model:
-// everyone on the full mesh, the robots in range over the radio), while it transmits or waits for
+// A station senses the medium busy while it hears a transmission (the network's channel, asked
+// for each frame put on the air: everyone on the full mesh, the robots in range over a range), while it transmits or waits for
 // an ACK, and until the NAV of a unicast frame it overheard ends (its ACK). Its backoff counts
 // down only while the medium has been idle for DIFS (EIFS after a frame it heard in error), one
 // 9 us slot at a time; it transmits when the count reaches zero, or at once when a frame arrives
@@ -32,7 +32,6 @@
 #include "net_models/link_model.h"
 #include "net_models/mac_counters.h"
 #include "net_models/mac_messages.h"
-#include "net_models/propagation_model.h"
 #include "net_models/slot_pool.h"
 #include "sim/random.h"
 #include "sim/simulator.h"
@@ -80,8 +79,8 @@ class WifiLink final : public LinkModel {
   // [0, cw]; a test fixes them.
   using SlotDraw = std::function<std::uint32_t(int station, std::uint32_t cw)>;
 
-  // Who senses and hears whom is `propagation`'s (the stack's; it must outlive the model).
-  WifiLink(const WifiParams& params, int nodes, std::uint64_t run_seed, PropagationModel& propagation);
+  // run_seed seeds each station's backoffs. Who senses and hears whom is the channel's (Bind).
+  WifiLink(const WifiParams& params, int nodes, std::uint64_t run_seed);
   void SetSlotDraw(SlotDraw draw) { draw_ = std::move(draw); }
   // Transmissions lost to a collision at each station as a receiver (a frame it heard in error).
   std::uint64_t CorruptedAt(NodeId station) const { return corrupted_[static_cast<std::size_t>(station.value)]; }
@@ -157,7 +156,6 @@ class WifiLink final : public LinkModel {
   SimTime eifs_;
   DataRate ack_rate_;
   SimTime ack_time_;
-  PropagationModel& propagation_;
   Simulator* sim_ = nullptr;
   LinkCompletions* completions_ = nullptr;
   std::vector<Station> stations_;

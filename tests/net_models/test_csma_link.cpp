@@ -24,10 +24,14 @@ namespace {
 constexpr std::int64_t kQueryFrameNs = 488800;  // 611 B at 10 Mbit/s
 
 struct Bus {
-  explicit Bus(int nodes, SimTime delay, int queue = 100) {
+  // propagation: the network's (null: the full mesh).
+  explicit Bus(int nodes, SimTime delay, int queue = 100, std::unique_ptr<PropagationModel> propagation = nullptr) {
     auto link = std::make_unique<CsmaLink>(CsmaParams{DataRate::Mbps(10), delay, queue}, nodes, 1);
     csma = link.get();
-    net = std::make_unique<Network>(sim, nodes, std::move(link), LinkWire(WireParams{}, LinkFraming::kEthernetDix));
+    NetworkStack stack;
+    stack.access = std::move(link);
+    stack.propagation = std::move(propagation);
+    net = std::make_unique<Network>(sim, nodes, std::move(stack), LinkWire(WireParams{}, LinkFraming::kEthernetDix));
     subscription = net->Subscribe(log);
     channel = net->InternChannel("DVPR_QUERY_3");
     type = net->InternType("dvpr.query_t");
@@ -155,6 +159,32 @@ TEST(CsmaLink, ABroadcastIsOneTransmissionThatEveryoneReceives) {
   EXPECT_EQ(bus.log.lines, (std::vector<std::string>{"0>1 delivered at 493800ns", "0>2 delivered at 493800ns",
                                                      "0>3 delivered at 493800ns"}));
   EXPECT_EQ(bus.net->Sender(NodeId(0)).transmissions, 1u);
+  EXPECT_EQ(bus.net->Sender(NodeId(0)).medium_bytes, 611);
+}
+
+// Node 3 never hears node 0; node 2 hears it 1 us later than the bus delivers.
+class TwoDeafOneLate final : public PropagationModel {
+  void DoReach(NodeId, std::span<const NodeId> receivers, SimTime, std::span<Reception> out) override {
+    for (std::size_t i = 0; i < receivers.size(); ++i) {
+      if (receivers[i].value == 3) out[i].reaches = false;
+      if (receivers[i].value == 2) out[i].delay = SimTime::Micros(1);
+    }
+  }
+  std::string_view DoName() const override { return "two_deaf_one_late"; }
+};
+
+// The bus asks the network's channel who hears each frame when its last bit is on the bus (the
+// full mesh above: everyone). 611 B at 10 Mbit/s end at 488.8 us, delivered 5 us later.
+TEST(CsmaLink, AStationTheChannelDoesNotLetHearLosesTheMessageOutOfRange) {
+  Bus bus(4, SimTime::Micros(5), 100, std::make_unique<TwoDeafOneLate>());
+  bus.sim.ScheduleAt(SimTime::Zero(), [&] {
+    const NodeId all[] = {NodeId(1), NodeId(2), NodeId(3)};
+    bus.net->SendTo(NodeId(0), all, bus.channel, bus.type, std::vector<std::uint8_t>(544, 1));
+  });
+  bus.sim.Run();
+  // In time order: the loss is known when the frame's last bit is on the bus.
+  EXPECT_EQ(bus.log.lines, (std::vector<std::string>{"0>3 at 488800ns: out_of_range", "0>1 delivered at 493800ns",
+                                                     "0>2 delivered at 494800ns"}));
   EXPECT_EQ(bus.net->Sender(NodeId(0)).medium_bytes, 611);
 }
 

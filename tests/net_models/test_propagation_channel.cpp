@@ -1,14 +1,20 @@
 // Who hears whom, asked in one place (net_models/propagation_channel.h): the drop of a receiver
 // that does not hear a transmission's start, the one that leaves range before its frame ends, the
 // air's delay on the others, and a link-local send's hearers, worked out by hand over a scripted
-// propagation model.
+// propagation model; and every medium that decides at send time asks the channel it is bound to.
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <vector>
 
+#include "net_models/ideal_link.h"
 #include "net_models/loss_params.h"
+#include "net_models/point_to_point_link.h"
 #include "net_models/propagation_channel.h"
+#include "net_models/radio_link.h"
 #include "net_models/reception_loss.h"
+#include "net_models/shared_medium_link.h"
+#include "sim/simulator.h"
 
 namespace dvpr {
 namespace {
@@ -40,14 +46,25 @@ class Scripted final : public PropagationModel {
 
 const std::vector<NodeId> kReceivers = {NodeId(1), NodeId(2), NodeId(3)};
 
-std::vector<LinkDelivery> AllAt(SimTime arrival) { return std::vector<LinkDelivery>(3, LinkDelivery{arrival}); }
+const Bytes kFrames[] = {Bytes(100), Bytes(100), Bytes(100)};
 
-// Frames end 2 us before they arrive (after_frame), at 8 us: node 2 has left by then.
+// A transmission from node 0 at time zero to kReceivers of `frames` frames.
+LinkTransmission From0(std::size_t frames, DropReason unheard = DropReason::kOutOfRange) {
+  return LinkTransmission{.src = NodeId(0), .dsts = kReceivers, .now = SimTime::Zero(),
+                          .frames = std::span<const Bytes>(kFrames, frames), .unheard = unheard};
+}
+
+// Every copy arrives at `arrival`, its frame having ended at `frame_end`.
+std::vector<LinkDelivery> AllAt(SimTime arrival, SimTime frame_end) {
+  return std::vector<LinkDelivery>(3, LinkDelivery{.arrival = arrival, .frame_end = frame_end});
+}
+
+// Frames end at 8 us and arrive 2 us later: node 2 has left by the frames' end.
 TEST(PropagationChannel, UnheardAtTheStartOrGoneAtTheFramesEndIsLostTheOthersArriveLater) {
   Scripted p(/*changes=*/true);
   PropagationChannel channel(p);
-  std::vector<LinkDelivery> out = AllAt(SimTime::Micros(10));
-  channel.Settle(NodeId(0), kReceivers, SimTime::Zero(), /*frames=*/1, out, DropReason::kStaleRoute, SimTime::Micros(2));
+  std::vector<LinkDelivery> out = AllAt(SimTime::Micros(10), SimTime::Micros(8));
+  channel.Settle(From0(1, DropReason::kStaleRoute), out);
   EXPECT_EQ(out[0].drop, DropReason::kNone);
   EXPECT_EQ(out[0].arrival, SimTime::Nanos(10'100));
   EXPECT_EQ(out[1].drop, DropReason::kOutOfRange);   // heard at 0, not at the frame's end (8 us)
@@ -60,8 +77,8 @@ TEST(PropagationChannel, UnheardAtTheStartOrGoneAtTheFramesEndIsLostTheOthersArr
 TEST(PropagationChannel, AStillChannelIsAskedOnce) {
   Scripted p(/*changes=*/false);
   PropagationChannel channel(p);
-  std::vector<LinkDelivery> out = AllAt(SimTime::Micros(10));
-  channel.Settle(NodeId(0), kReceivers, SimTime::Zero(), /*frames=*/1, out, DropReason::kOutOfRange, SimTime::Micros(2));
+  std::vector<LinkDelivery> out = AllAt(SimTime::Micros(10), SimTime::Micros(8));
+  channel.Settle(From0(1), out);
   EXPECT_EQ(out[1].drop, DropReason::kNone);
   EXPECT_EQ(out[1].arrival, SimTime::Nanos(10'050));
   EXPECT_EQ(out[2].drop, DropReason::kOutOfRange);
@@ -73,10 +90,10 @@ TEST(PropagationChannel, AStillChannelIsAskedOnce) {
 TEST(PropagationChannel, MediumDropsStayAndEachFrameEndIsAskedOnce) {
   Scripted p(/*changes=*/true);
   PropagationChannel channel(p);
-  std::vector<LinkDelivery> out = {LinkDelivery{SimTime::Micros(4)}, LinkDelivery{SimTime::Micros(4)},
-                                   LinkDelivery{SimTime::Micros(20), DropReason::kQueueFull}};
-  out[1].arrival = SimTime::Micros(6);  // node 2's frame ends at 4 us: still heard
-  channel.Settle(NodeId(0), kReceivers, SimTime::Zero(), /*frames=*/1, out, DropReason::kOutOfRange, SimTime::Micros(2));
+  std::vector<LinkDelivery> out = {LinkDelivery{.arrival = SimTime::Micros(4), .frame_end = SimTime::Micros(2)},
+                                   LinkDelivery{.arrival = SimTime::Micros(6), .frame_end = SimTime::Micros(4)},
+                                   LinkDelivery{.arrival = SimTime::Micros(20), .drop = DropReason::kQueueFull}};
+  channel.Settle(From0(1), out);  // node 2's frame ends at 4 us: still heard
   EXPECT_EQ(out[0].arrival, SimTime::Nanos(4'100));
   EXPECT_EQ(out[1].drop, DropReason::kNone);
   EXPECT_EQ(out[1].arrival, SimTime::Nanos(6'050));
@@ -95,8 +112,8 @@ TEST(PropagationChannel, LossComesBeforeThePropagation) {
   const PairLossOverride cut[] = {{NodeId(0), NodeId(3), all}};
   ReceptionLoss loss(4, LossParams{}, cut, /*run_seed=*/5);
   PropagationChannel channel(p, &loss);
-  std::vector<LinkDelivery> out = AllAt(SimTime::Micros(10));
-  channel.Settle(NodeId(0), kReceivers, SimTime::Zero(), /*frames=*/3, out, DropReason::kOutOfRange, SimTime::Zero());
+  std::vector<LinkDelivery> out = AllAt(SimTime::Micros(10), SimTime::Micros(10));
+  channel.Settle(From0(3), out);
   EXPECT_EQ(out[0].drop, DropReason::kNone);
   EXPECT_EQ(out[2].drop, DropReason::kLoss);  // never heard, but lost first
   EXPECT_EQ(loss.LossOf(NodeId(0), NodeId(3))->Frames(), 3u);
@@ -110,6 +127,59 @@ TEST(PropagationChannel, ALinkLocalSendKeepsItsHearersInOrder) {
   EXPECT_EQ(members, (std::vector<NodeId>{NodeId(2), NodeId(1)}));
   channel.KeepHearers(NodeId(0), members, SimTime::Micros(6));
   EXPECT_EQ(members, (std::vector<NodeId>{NodeId(1)}));
+}
+
+class NoCompletions final : public LinkCompletions {
+  void Complete(std::uint64_t, std::span<const LinkDelivery>) override {}
+};
+
+// Every medium that decides at send time hands its outcomes to the channel it is bound to: over
+// the scripted propagation (it never changes here) node 3 is out of range and node 1 arrives
+// 100 ns after the medium said; unbound, the same medium is on the full mesh without loss.
+TEST(PropagationChannel, EveryMediumThatDecidesAtSendTimeAsksTheChannelItIsBoundTo) {
+  const auto make = [](int which) -> std::unique_ptr<LinkModel> {
+    switch (which) {
+      case 0: return std::make_unique<IdealLink>();
+      case 1: return std::make_unique<PointToPointLink>(PointToPointParams{}, 4);
+      case 2: return std::make_unique<SharedMediumLink>(SharedMediumParams{}, 4);
+      default: return std::make_unique<RadioLink>(RadioLinkParams{}, 4);
+    }
+  };
+  for (int which = 0; which < 4; ++which) {
+    Scripted p(/*changes=*/false);
+    PropagationChannel channel(p);
+    Simulator sim;
+    NoCompletions completions;
+    std::unique_ptr<LinkModel> unbound = make(which);
+    std::unique_ptr<LinkModel> bound = make(which);
+    bound->Bind(sim, completions, channel);
+    std::vector<LinkDelivery> free(3);
+    std::vector<LinkDelivery> heard(3);
+    unbound->Transmit(From0(1), free);
+    bound->Transmit(From0(1), heard);
+    SCOPED_TRACE(std::string(bound->Name()));
+    EXPECT_EQ(p.questions, 1);
+    for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(free[i].drop, DropReason::kNone);
+    EXPECT_EQ(heard[0].drop, DropReason::kNone);
+    EXPECT_EQ(heard[0].arrival, free[0].arrival + SimTime::Nanos(100));
+    EXPECT_EQ(heard[2].drop, DropReason::kOutOfRange);
+  }
+}
+
+// The radio's frame ends when its last bit leaves the sender, its latency before the arrival: a
+// receiver that moves is asked then. 300 B at 10 Mbit/s (PPP framing is the network's, not the
+// medium's: the frames here are the link's bytes) end at 240 us; the latency is 2 ms.
+TEST(PropagationChannel, TheRadiosFrameEndIsItsLastBitNotItsArrival) {
+  Scripted p(/*changes=*/true);
+  PropagationChannel channel(p);
+  Simulator sim;
+  NoCompletions completions;
+  RadioLink radio(RadioLinkParams{}, 4);
+  radio.Bind(sim, completions, channel);
+  std::vector<LinkDelivery> out(3);
+  radio.Transmit(From0(3), out);
+  EXPECT_EQ(p.asked_at, (std::vector<SimTime>{SimTime::Zero(), SimTime::Micros(240)}));
+  EXPECT_EQ(out[0].arrival, SimTime::Micros(2240) + SimTime::Nanos(100));
 }
 
 }  // namespace

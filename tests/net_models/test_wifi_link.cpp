@@ -79,7 +79,7 @@ struct Air {
     } else {
       stack.propagation = std::make_unique<FullMeshPropagation>();
     }
-    auto link = std::make_unique<WifiLink>(WifiParams{rate, DataRate::Mbps(6), queue}, n, 1, *stack.propagation);
+    auto link = std::make_unique<WifiLink>(WifiParams{rate, DataRate::Mbps(6), queue}, n, 1);
     wifi = link.get();
     wifi->SetSlotDraw([this](int s, std::uint32_t cw) { return draws(s, cw); });
     stack.access = std::move(link);
