@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "net_models/link_factory.h"
+#include "net_models/network_helper.h"
 #include "net_models/network.h"
 #include "net_models/network_observer.h"
 #include "net_models/network_stack.h"

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "net_models/link_model.h"
 #include "net_models/node_id.h"
@@ -67,6 +68,42 @@ class NetworkObserver {
   virtual void OnDelivered(const MessageCopy& /*copy*/, SimTime /*at*/) {}
   virtual void OnDropped(const MessageCopy& /*copy*/, SimTime /*at*/, DropReason /*reason*/) {}
   virtual void OnMedium(const MediumReport& /*use*/) {}
+};
+
+class ObserverList;
+
+// Keeps an observer subscribed to a network until destroyed or Reset (RAII).
+// Move-only; must not outlive the network.
+class [[nodiscard]] ObserverSubscription {
+ public:
+  ObserverSubscription() = default;
+  ObserverSubscription(ObserverSubscription&& other) noexcept;
+  ObserverSubscription& operator=(ObserverSubscription&& other) noexcept;
+  ~ObserverSubscription() { Reset(); }
+  void Reset();
+
+ private:
+  friend class ObserverList;
+  ObserverSubscription(ObserverList* list, NetworkObserver* observer) : list_(list), observer_(observer) {}
+  ObserverList* list_ = nullptr;
+  NetworkObserver* observer_ = nullptr;
+};
+
+// A network's observers, in the order they subscribed (Network::Subscribe).
+class ObserverList {
+ public:
+  ObserverSubscription Add(NetworkObserver& observer) {
+    observers_.push_back(&observer);
+    return ObserverSubscription(this, &observer);
+  }
+  bool empty() const { return observers_.empty(); }
+  auto begin() const { return observers_.begin(); }
+  auto end() const { return observers_.end(); }
+
+ private:
+  friend class ObserverSubscription;
+  void Remove(NetworkObserver* observer);
+  std::vector<NetworkObserver*> observers_;
 };
 
 }  // namespace dvpr

@@ -2,19 +2,20 @@
 // The network's four concerns (docs/design.md section 4.1), lowest first, one model each and
 // each model one file: where the nodes are (MobilityModel), what a transmission reaches
 // (PropagationModel), who may send when and when a copy arrives (the medium access: a
-// LinkModel), and which way a copy goes (NextHopRouting). The Network owns the stack and asks
-// its layers in the order routing, medium access, propagation; the agents see none of it.
+// LinkModel), and which way a copy goes (NextHopRouting); the loss on the channel beside them.
+// The Network owns the stack and asks its layers in the order routing, medium access (which
+// asks the channel: propagation); the agents see none of it. The stack of a configured network
+// is network_helper.h's to build.
 //
 // A layer left empty gets dvpr's default, which together are today's network exactly: nodes
 // fixed at the origin, the full mesh, direct one-hop routing. A model of one layer that needs a
-// lower one (a range model the positions, a CSMA model who senses whom) is built with a
+// lower one (a range model the positions, the next hop the propagation) is built with a
 // reference to it: the stack owns them all and keeps the lower layers alive longer (members are
 // destroyed in reverse order).
 #include <cstdint>
 #include <memory>
 
 #include "net_models/disconnected_params.h"
-#include "net_models/link_factory.h"
 #include "net_models/link_model.h"
 #include "net_models/mobility_model.h"
 #include "net_models/next_hop_routing.h"
@@ -33,18 +34,14 @@ struct NetworkStack {
   DisconnectedParams disconnected;
 
   // Fills each empty layer but `access` with its default for `nodes` nodes. Throws
-  // std::invalid_argument when access is empty or mobility places a different number of nodes.
+  // std::invalid_argument when nodes < 1, access is empty or mobility places a different number
+  // of nodes.
   void CompleteDefaults(int nodes);
+  // `stack` with its defaults (CompleteDefaults), as a network takes it.
+  static NetworkStack Completed(NetworkStack stack, int nodes) {
+    stack.CompleteDefaults(nodes);
+    return stack;
+  }
 };
-
-// The configured stack for `nodes` nodes: the link model of `params` (MakeLinkModel, seeded by
-// run_seed) as the medium access over `mobility` (null: fixed at the origin); the channel's loss
-// of params.loss and the links' loss overrides (none when every pair is lossless); the full mesh,
-// or for model radio the propagation of params.radio (range or log_distance) over `mobility`,
-// which a radio requires (std::invalid_argument without it); the next hop of params.next_hop
-// (direct, or shortest_path over that propagation). Where the next models plug in: a medium
-// access or routing kind in NetworkModelParams, made here.
-NetworkStack MakeNetworkStack(const NetworkModelParams& params, int nodes, std::uint64_t run_seed,
-                              std::unique_ptr<MobilityModel> mobility = nullptr);
 
 }  // namespace dvpr

@@ -6,6 +6,7 @@
 
 #include "net_models/gilbert_elliott_loss.h"
 #include "net_models/link_factory.h"
+#include "net_models/network_helper.h"
 #include "net_models/network.h"
 #include "net_models/network_stack.h"
 #include "sim/simulator.h"

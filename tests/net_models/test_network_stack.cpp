@@ -14,6 +14,7 @@
 #include "net_models/fixed_mobility.h"
 #include "net_models/full_mesh_propagation.h"
 #include "net_models/network.h"
+#include "net_models/network_helper.h"
 #include "net_models/point_to_point_link.h"
 #include "sim/simulator.h"
 #include "tests/net_models/copy_log.h"

@@ -9,7 +9,7 @@
 #include "experiments/data/dataset.h"
 #include "experiments/data/split.h"
 #include "experiments/protocols/sim/scenario.h"
-#include "net_models/network_stack.h"
+#include "net_models/network_helper.h"
 #include "net_models/propagation_model.h"
 #include "net_models/track_mobility.h"
 
