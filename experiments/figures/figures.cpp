@@ -95,12 +95,12 @@ std::string RelativeAucScript(const fs::path& data_dir, const fs::path& png) {
            "title 'every run', '" + dat + "' index 1 using 1:2 with linespoints lw 2 pt 7 "
            "lc rgb '#1f3f8f' title 'mean over runs'\n";
   };
-  // The keys where the data is not: relative AUC stays high, the balance ratio grows with n.
-  return Preamble(png, 1200, 520) + "set multiplot layout 1,2\nset key bottom right\n"
-         "set xtics 2\nset yrange [0:*]\n" +
+  // One key for both panels, below them: inside, a key covers points wherever the data fall.
+  return Preamble(png, 1200, 560) + "set multiplot layout 1,2 margins 0.07, 0.98, 0.2, 0.9 spacing 0.1\n"
+         "set key at screen 0.5, screen 0.01 center bottom horizontal\nset xtics 2\nset yrange [0:*]\n" +
          panel("relative_auc", "AUC(decentralized) / AUC(reference)",
                "Relative AUC vs team size (" + protocol + " protocol)") +
-         "set yrange [0:*]\nset key top left\n" +
+         "set yrange [0:*]\nunset key\n" +
          panel("balance", "max robot load / mean load",
                "Worst balance ratio vs team size (" + protocol + " protocol)") +
          "unset multiplot\n";

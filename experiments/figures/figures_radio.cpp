@@ -67,6 +67,20 @@ std::optional<FigureScript> WriteConnectivityFigure(const fs::path& dir, const C
   for (const auto& [key, steps] : series) all_n.insert(key.first);
   std::vector<int> shown(all_n.begin(), all_n.end());
   if (shown.size() > 3) shown = {shown.back()};
+  // Who reaches whom is the propagation's: variants that differ only in their routing (or rate)
+  // have the same lines, drawn once, each propagation in a colour of its own.
+  std::vector<std::string> names;
+  for (const auto& [key, steps] : series) {
+    const std::string name = VariantName(rows, key.second);
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+  const auto colour = [&](const std::string& name) {
+    const auto i = static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+    return names.size() <= 6 ? std::string(kVariantColours[i]) : figure_style::StrategyColour(i);
+  };
+  // One legend for all panels, right of them (it covers no data).
+  const double right = 1.0 - 200.0 / (600 + 500 * static_cast<double>(shown.size()));
+  const std::string key = "set key at screen " + FormatDouble(right + 0.01, 3) + ", screen 0.88 left top box\n";
   std::ostringstream top, bottom;
   for (std::size_t col = 0; col < shown.size(); ++col) {
     const int n = shown[col];
@@ -74,17 +88,18 @@ std::optional<FigureScript> WriteConnectivityFigure(const fs::path& dir, const C
     std::string dat;
     std::ostringstream plot_share, plot_comp;
     int block = 0;
+    std::set<std::string> drawn;
     for (const auto& [key, steps] : series) {
       if (key.first != n) continue;
       const std::string name = VariantName(rows, key.second);
+      if (!drawn.insert(name).second) continue;
       dat += "# " + OneLineText(name) + "\n";
       for (const Step& s : steps) {
         dat += FormatDouble(s.time_s) + " " + std::to_string(s.pairs) + " " +
                FormatDouble(100.0 * s.pairs / (n * (n - 1) / 2.0)) + " " + std::to_string(s.components) + "\n";
       }
       dat += "\n\n";
-      const std::string style = " with steps lw 2 lc rgb '" + std::string(kVariantColours[block % 6]) + "' title " +
-                                GnuplotQuote(name);
+      const std::string style = " with steps lw 2 lc rgb '" + colour(name) + "' title " + GnuplotQuote(name);
       plot_share << (block ? ", \\\n     " : "plot ") << GnuplotQuote(file) << " index " << block << " using 1:3" << style;
       plot_comp << (block ? ", \\\n     " : "plot ") << GnuplotQuote(file) << " index " << block << " using 1:4" << style;
       ++block;
@@ -92,19 +107,19 @@ std::optional<FigureScript> WriteConnectivityFigure(const fs::path& dir, const C
     WriteFileAtomic(dir / file, dat);
     top << "set title " << GnuplotQuote("n = " + std::to_string(n) + ": robot pairs in range of each other") << "\n"
         << "set ylabel '% of the " << n * (n - 1) / 2 << " pairs'\nset yrange [0:100]\n"
-        << (col == 0 ? "set key top right\n" : "unset key\n") << plot_share.str() << "\n";
+        << (col == 0 ? key : "unset key\n") << plot_share.str() << "\n";
     bottom << "set title " << GnuplotQuote("n = " + std::to_string(n) + ": separate networks (1 = the team is one network)")
            << "\nset ylabel 'connected components'\nset yrange [0:" << n + 1 << "]\n"
-           << (col == 0 ? "set key top right\n" : "unset key\n")
-           << plot_comp.str() << "\n";
+           << "unset key\n" << plot_comp.str() << "\n";
   }
   FigureScript f;
   f.width = 600 + 500 * static_cast<int>(shown.size());
   f.height = 900;
   // gnuplot's multiplot fills row by row: the top row (pairs) is drawn first for every column.
-  f.body = "set multiplot layout 2," + std::to_string(shown.size()) + " title " +
+  f.body = "set multiplot layout 2," + std::to_string(shown.size()) + " margins 0.05, " + FormatDouble(right, 3) +
+           ", 0.08, 0.9 spacing 0.06, 0.12 title " +
            GnuplotQuote("Who reaches whom over time (connectivity.csv: run " + std::to_string(first_run) +
-                        ", one line per radio variant)") +
+                        ", one line per propagation: the routings share it)") +
            " font ',13'\nset xlabel 'virtual time (s)'\nset grid\n" + top.str() + bottom.str() + "unset multiplot\n";
   return f;
 }

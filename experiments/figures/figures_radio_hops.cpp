@@ -47,6 +47,28 @@ std::string PanelName(const std::vector<RunResult>& rows, int variant) {
   return RadioLabelOf(rows, variant);
 }
 
+// The classes of the hop axis: one per hop count up to 8 hops, else 1 to 4 and then 5-9, 10-19,
+// 20-64 (a routing loop's copies can make up to 64 transmissions: 64 classes would smear their
+// labels). Only the classes up to the one of `longest` hops.
+struct HopClass {
+  std::size_t first;  // hops, from 1
+  std::size_t last;
+  std::string label;
+};
+std::vector<HopClass> HopClasses(std::size_t longest) {
+  std::vector<HopClass> out;
+  if (longest <= 8) {
+    for (std::size_t h = 1; h <= longest; ++h) out.push_back({h, h, std::to_string(h)});
+    return out;
+  }
+  const std::size_t bounds[][2] = {{1, 1}, {2, 2}, {3, 3}, {4, 4}, {5, 9}, {10, 19}, {20, 64}};
+  for (const auto& b : bounds) {
+    if (b[0] > longest) break;
+    out.push_back({b[0], b[1], b[0] == b[1] ? std::to_string(b[0]) : std::to_string(b[0]) + "-" + std::to_string(b[1])});
+  }
+  return out;
+}
+
 }  // namespace
 
 std::optional<FigureScript> WriteRadioHopsFigure(const fs::path& dir, const CsvTable& t, const std::vector<RunResult>& rows,
@@ -79,14 +101,18 @@ std::optional<FigureScript> WriteRadioHopsFigure(const fs::path& dir, const CsvT
   const int panels = static_cast<int>(counts.size());
   const int columns = std::min(panels, 4);
   const int panel_rows = (panels + columns - 1) / columns;
+  const int width = 420 * columns + 100;
+  const int height = 400 * panel_rows + 130;
+  // The one legend sits under the title, above the panels (it covers no bar).
   std::ostringstream body;
-  body << "set multiplot layout " << panel_rows << "," << columns << " title "
+  body << "set multiplot layout " << panel_rows << "," << columns << " margins 0.05, 0.98, " << FormatDouble(70.0 / height, 3)
+       << ", " << FormatDouble(1.0 - 105.0 / height, 3) << " spacing 0.06, " << FormatDouble(110.0 / height, 3) << " title "
        << GnuplotQuote("Hops of the delivered copies, n = " + std::to_string(n) +
                        " (radio.csv delivered_by_hops, all runs: every delivered copy of every message)")
        << " font ',13'\n"
        << "set style data histograms\nset style histogram clustered gap 1\nset style fill solid 0.85 border -1\n"
-       << "set boxwidth 0.9\nset grid ytics\nset yrange [0:118]\nset ytics 0, 20, 100\nset xlabel 'hops'\nset ylabel '% of delivered copies'\n"
-       << "set key top right\n";
+       << "set boxwidth 0.9\nset grid ytics\nset yrange [0:100]\nset ytics 0, 20, 100\nset xlabel 'hops'\nset ylabel '% of delivered copies'\n"
+       << "set key at screen 0.5, screen " << FormatDouble(1.0 - 45.0 / height, 3) << " center top horizontal box\n";
   int p = 0;
   for (const auto& [variant, by_strategy] : counts) {
     const std::string file = "hops_" + std::to_string(p) + ".dat";
@@ -96,10 +122,11 @@ std::optional<FigureScript> WriteRadioHopsFigure(const fs::path& dir, const CsvT
       for (const double c : by_strategy[static_cast<std::size_t>(s)]) total[static_cast<std::size_t>(s)] += c;
     }
     std::string dat = "# " + OneLineText(PanelName(rows, variant)) + ": hops decentralized_percent broadcast_percent\n";
-    for (std::size_t h = 0; h < longest; ++h) {
-      dat += std::to_string(h + 1);
+    for (const HopClass& k : HopClasses(longest)) {
+      dat += k.label;
       for (std::size_t s = 0; s < 2; ++s) {
-        const double c = h < by_strategy[s].size() ? by_strategy[s][h] : 0.0;
+        double c = 0;
+        for (std::size_t h = k.first; h <= k.last && h <= by_strategy[s].size(); ++h) c += by_strategy[s][h - 1];
         dat += " " + (total[s] > 0 ? FormatDouble(100.0 * c / total[s]) : std::string("NaN"));
       }
       dat += "\n";
@@ -113,8 +140,8 @@ std::optional<FigureScript> WriteRadioHopsFigure(const fs::path& dir, const CsvT
   }
   body << "unset multiplot\n";
   FigureScript f;
-  f.width = 420 * columns + 100;
-  f.height = 380 * panel_rows + 80;
+  f.width = width;
+  f.height = height;
   f.body = body.str();
   return f;
 }

@@ -103,8 +103,10 @@ std::string PrBytesPanel(const fs::path& dir, const TrafficTable& t, int v, cons
   return s.str();
 }
 
-// Right panel of figure 1: the measured ratio on every network, the band [n - 1, n + 1].
-std::string PrRatioPanel(const fs::path& dir, const TrafficTable& t) {
+// Right panel of figure 1: the measured ratio on every network, the band [n - 1, n + 1]. Its key
+// goes below both panels, in key_rows rows (the lines of every network lie on one another: inside
+// the plot a key would cover them).
+std::string PrRatioPanel(const fs::path& dir, const TrafficTable& t, int key_rows) {
   std::string dat, band;
   std::ostringstream plot;
   plot << "plot 'pr_band.dat' using 1:2:3 with filledcurves fc rgb '#e6e6e6' title 'between n - 1 and n + 1'";
@@ -128,11 +130,10 @@ std::string PrRatioPanel(const fs::path& dir, const TrafficTable& t) {
   for (int n : t.robots) band += std::to_string(n) + " " + std::to_string(n - 1) + " " + std::to_string(n + 1) + "\n";
   WriteFileAtomic(dir / "pr_ratio.dat", dat);
   WriteFileAtomic(dir / "pr_band.dat", band);
-  // The ratio rises from bottom left to top right: the key sits in the empty top left.
   return "set title " + GnuplotTitle({"Broadcast / decentralized place-recognition bytes, every network",
                                        "ratio of the means over runs, bars: lowest and highest run"}) +
-         "\nset ylabel 'ratio'\n"
-         "set key top left\n" + plot.str() + "\n";
+         "\nset ylabel 'ratio'\nset key at screen 0.5, screen 0.01 center bottom vertical maxrows " +
+         std::to_string(key_rows) + " font ',9'\n" + plot.str() + "\n";
 }
 
 }  // namespace
@@ -144,11 +145,14 @@ std::optional<FigureScript> WritePlaceRecognitionFigure(const fs::path& dir, con
     why = "needs protocol sim with strategies decentralized and broadcast";
     return std::nullopt;
   }
+  // The right panel's key: the band and every network, in up to three columns below the panels.
+  const int key_rows = (static_cast<int>(t.networks.size()) + 1 + 2) / 3;
   FigureScript f;
   f.width = 1500;
-  f.height = 650;
-  f.body = "set multiplot layout 1,2 spacing 0.1\nset grid\n" + PrBytesPanel(dir, t, v, robots) + "set yrange [0:*]\n" +
-           PrRatioPanel(dir, t) + "unset multiplot\n";
+  f.height = 650 + 18 * key_rows;
+  f.body = "set multiplot layout 1,2 margins 0.07, 0.98, " + FormatDouble((70.0 + 18 * key_rows) / f.height, 3) +
+           ", 0.88 spacing 0.1\nset grid\n" + PrBytesPanel(dir, t, v, robots) + "set yrange [0:*]\n" +
+           PrRatioPanel(dir, t, key_rows) + "unset multiplot\n";
   return f;
 }
 
@@ -270,8 +274,16 @@ std::string BalancedStrategy(const TrafficTable& t, const CsvTable& per_robot, i
   return "";
 }
 
+// The most searches any robot of `s` served in the shown run.
+double MostServed(const CsvTable& per_robot, const std::string& s, int v, int n) {
+  double most = 0;
+  for (const std::size_t i : RunRows(per_robot, s, v, n)) most = std::max(most, per_robot.Count(i, per_robot.Column("queries_received")));
+  return most;
+}
+
+// ymax: the top of the y axis, the same for every panel (their bars are compared).
 std::string LoadPanel(const fs::path& dir, const TrafficTable& t, const CsvTable& per_robot, const std::string& s,
-                      int v, int n) {
+                      int v, int n, double ymax) {
   const std::size_t robot = per_robot.Column("robot"), served = per_robot.Column("queries_received");
   std::string dat;
   double sum = 0, most = -1;
@@ -292,7 +304,7 @@ std::string LoadPanel(const fs::path& dir, const TrafficTable& t, const CsvTable
   const double fair = sum / n;
   std::ostringstream p;
   p << "set title " << Quote(s) << " tc rgb '" << figure_style::StrategyColour(t.StrategyIndex(s)) << "'\n"
-    << "set yrange [0:" << FormatDouble(most * 1.18) << "]\nset label 1 "
+    << "set yrange [0:" << FormatDouble(ymax) << "]\nset label 1 "
     << Quote("busiest: robot " + busiest + ", " + FormatDouble(most / fair, 1) + " x fair share") << " at "
     << busiest << ", " << FormatDouble(most) << " center offset 0,1 front\n"
     << "plot " << Quote(file) << " index 0 using 1:2 with boxes " << Colour(t, s)
@@ -322,7 +334,10 @@ std::optional<FigureScript> WriteRobotLoadFigure(const fs::path& dir, const Traf
              NetworkName(*t.Network(v)) + ")") << " font ',13'\n"
     << "set style fill solid 0.5\nset boxwidth 0.8\nset grid ytics\nset xlabel 'robot'\nset ylabel 'searches served'\n"
     << "set xrange [-0.7:" << n - 0.3 << "]\nset xtics 1\nset key below horizontal\n";
-  for (const std::string& st : shown) s << LoadPanel(dir, t, per_robot, st, v, n);
+  // One y scale for all panels: a balanced strategy's bars are as short as they are.
+  double most = 0;
+  for (const std::string& st : shown) most = std::max(most, MostServed(per_robot, st, v, n));
+  for (const std::string& st : shown) s << LoadPanel(dir, t, per_robot, st, v, n, std::max(most, 1.0) * 1.18);
   return FigureScript{s.str() + "unset multiplot\n", shown.size() == 1 ? 900 : 1500, 600};
 }
 
@@ -393,25 +408,38 @@ std::vector<std::size_t> SharedMediumVariants(const TrafficTable& t) {
 std::string OfferedPanel(const fs::path& dir, const TrafficTable& t, const std::vector<std::size_t>& shared) {
   std::string dat;
   std::ostringstream plot;
-  plot << "plot x with lines lw 2 dt 2 lc rgb '#777777' title 'delivered = offered'";
   int block = 0;
+  double lowest = std::numeric_limits<double>::infinity(), highest = 0;  // offered Mbit/s
   for (const std::string& s : t.strategies) {
     for (std::size_t i : shared) {
       std::vector<std::vector<double>> p;
       for (int n : t.robots) {
         if (const TrafficCell* c = t.Find(s, t.networks[i].variant, n)) {
           p.push_back({c->offered_mbps, c->delivered_mbps, c->offered_ci95, c->delivered_ci95});
+          if (c->offered_mbps > 0) {
+            lowest = std::min(lowest, c->offered_mbps);
+            highest = std::max(highest, c->offered_mbps);
+          }
         }
       }
       if (p.empty()) continue;
       const std::string title = s + ", " + NetworkName(t.networks[i]);
       dat += Block(title, p);
-      plot << ", \\\n     'offered.dat' index " << block++ << " using 1:2:3:4 with xyerrorlines lw 2 " << Colour(t, s)
+      plot << (block ? ", \\\n     " : "plot ") << "'offered.dat' index " << block << " using 1:2:3:4 with xyerrorlines lw 2 "
+           << Colour(t, s)
            << " dt " << NetworkDash(i) << " pt " << NetworkPoint(i) << " title " << Quote(title);
+      ++block;
     }
   }
+  // The reference last, over the data and across the whole axis: where a line leaves it, the
+  // medium saturates.
+  plot << (block ? ", \\\n     " : "plot ") << "x with lines lw 1.5 dt 2 lc rgb '#000000' title 'delivered = offered'";
   WriteFileAtomic(dir / "offered.dat", dat);
-  return "set title " + GnuplotTitle({"Offered vs delivered load (points: n = " + std::to_string(t.robots.front()) +
+  // Whole decades around the data: the reference line, a function, spans the whole axis.
+  const std::string range = highest > 0 ? "set xrange [" + FormatDouble(std::pow(10.0, std::floor(std::log10(lowest)))) + ":" +
+                                              FormatDouble(std::pow(10.0, std::ceil(std::log10(highest)))) + "]\n"
+                                        : std::string();
+  return range + "set title " + GnuplotTitle({"Offered vs delivered load (points: n = " + std::to_string(t.robots.front()) +
                                        " .. " + std::to_string(t.robots.back()) + ")",
                                        "mean over runs, bars: its 95 % confidence interval"}) +
          "\nset xlabel 'offered load, every copy sent [Mbit/s]'\n"
@@ -453,7 +481,7 @@ std::string LatencyPanel(const fs::path& dir, const TrafficTable& t, const std::
   return "set title " + GnuplotTitle({"Mean query latency vs bandwidth at n = " + std::to_string(n),
                                        "mean over runs, bars: its 95 % confidence interval"}) +
          "\nset xlabel 'bandwidth of the shared medium [Mbit/s]'\nset ylabel 'mean query latency [ms]'\n"
-         "set logscale xy\nset key bottom left\n" + plot.str() + "\n";  // latency falls with bandwidth
+         "set autoscale x\nset logscale xy\nset key bottom left\n" + plot.str() + "\n";  // latency falls with bandwidth
 }
 
 }  // namespace

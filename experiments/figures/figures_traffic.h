@@ -3,7 +3,8 @@
 //   place_recognition_bytes.png  place-recognition bytes per query vs n, decentralized against
 //                                broadcast, the n - 1 law drawn and the measured ratio labelled
 //   traffic_by_role.png          all traffic per query, stacked by message role, per strategy
-//   robot_load.png               searches served per robot in one run, fair share, busiest robot
+//   robot_load.png               searches served per robot in one run, fair share, busiest robot;
+//                                one y scale for all its panels (they are compared)
 //   traffic_matrix.png           sender x receiver bytes of one run
 //   saturation.png               offered vs delivered load and latency vs bandwidth, shared medium
 //   loop_closures.png            robot pairs with an inter-robot loop closure over time, and each

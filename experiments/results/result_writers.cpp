@@ -82,6 +82,18 @@ const char* const kClosurePairsHeader =
     "protocol,strategy,robots,run,robot_a,robot_b,first_closure_ns," DVPR_NETWORK_COLUMNS;
 #undef DVPR_NETWORK_COLUMNS
 
+namespace {
+
+// A latency in the unit that reads naturally: "1 us" (not "0.001 ms"), "2 ms", "1.5 s"; to the ns.
+std::string LatencyText(double ms) {
+  const double ns = std::round(ms * 1e6);
+  if (ns != 0 && std::fabs(ns) < 1e6) return FormatDouble(ns / 1e3) + " us";
+  if (std::fabs(ns) >= 1e9) return FormatDouble(ns / 1e9) + " s";
+  return FormatDouble(ms) + " ms";
+}
+
+}  // namespace
+
 std::string NetworkName(const NetworkLabel& n, NameStyle style) {
   if (n.model.empty()) return "";
   std::vector<std::string> parts = {n.model == "point_to_point"  ? "point-to-point"
@@ -97,7 +109,7 @@ std::string NetworkName(const NetworkLabel& n, NameStyle style) {
       parts.push_back(FormatDouble(bps / 1e3) + " kbit/s");
     }
   }
-  if (!std::isnan(n.latency_ms)) parts.push_back(FormatDouble(n.latency_ms) + " ms");
+  if (!std::isnan(n.latency_ms)) parts.push_back(LatencyText(n.latency_ms));
   if (n.queue_packets > 0) parts.push_back("queue " + std::to_string(n.queue_packets) + " packets");
   if (n.mtu_bytes > 0) parts.push_back("MTU " + std::to_string(n.mtu_bytes) + " B");
   const bool page = style == NameStyle::kPage;

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "experiments/figures/figures.h"
 #include "experiments/figures/figures_radio.h"
 #include "experiments/figures/gnuplot_run.h"
@@ -187,6 +189,40 @@ TEST_F(RadioFiguresTest, RadioHopsShareOfCopiesPerStrategyAndVariant) {
   EXPECT_THROW(WriteRadioHopsFigure(dir_, t, Rows(), why), std::runtime_error);
   t.header.back() = "something_else";
   EXPECT_FALSE(WriteRadioHopsFigure(dir_, t, Rows(), why).has_value());
+}
+
+// A routing loop's copies make up to 64 transmissions: beyond 8 hop classes, 5 and more hops are
+// binned (5-9, 10-19, 20-64) so that the axis' labels stay readable; shares on an axis that ends
+// at 100 %, the legend above the panels.
+TEST_F(RadioFiguresTest, RadioHopsBinsLongPathsAndKeepsItsLegendOffTheBars) {
+  CsvTable t;
+  t.header = {"protocol", "strategy", "robots", "run", "network_variant", "delivered_by_hops"};
+  std::vector<std::string> hops(45, "0");
+  hops[0] = "6";   // 1 hop
+  hops[6] = "1";   // 7 hops
+  hops[14] = "1";  // 15 hops
+  hops[44] = "2";  // 45 hops
+  std::string field;
+  for (const std::string& h : hops) field += (field.empty() ? "" : " ") + h;
+  t.rows = {{"sim", "decentralized", "4", "0", "1", field}, {"sim", "broadcast", "4", "0", "1", "4"}};
+  std::string why;
+  const auto f = WriteRadioHopsFigure(dir_, t, Rows(), why);
+  ASSERT_TRUE(f.has_value()) << why;
+  // Of 10 copies: 6 of 1 hop, then 1 in 5-9 (7 hops), 1 in 10-19 (15), 2 in 20-64 (45).
+  EXPECT_EQ(Slurp(dir_ / "hops_0.dat"),
+            "# range 100m shortest_path: hops decentralized_percent broadcast_percent\n"
+            "1 60 100\n2 0 0\n3 0 0\n4 0 0\n5-9 10 0\n10-19 10 0\n20-64 20 0\n");
+  EXPECT_NE(f->body.find("set yrange [0:100]"), std::string::npos) << f->body;
+  const std::size_t key = f->body.find("set key at screen 0.5, screen ");
+  ASSERT_NE(key, std::string::npos) << f->body;
+  double key_y = 0, left = 0, right = 0, bottom = 0, top = 0;
+  ASSERT_EQ(std::sscanf(f->body.c_str() + key, "set key at screen 0.5, screen %lf", &key_y), 1);
+  const std::size_t m = f->body.find("margins ");
+  ASSERT_NE(m, std::string::npos);
+  ASSERT_EQ(std::sscanf(f->body.c_str() + m, "margins %lf, %lf, %lf, %lf", &left, &right, &bottom, &top), 4);
+  // The key (one row of text in its box: about 25 pixels) hangs from key_y; the panels' titles
+  // take the 30 pixels above their plot areas.
+  EXPECT_GT(key_y - 25.0 / f->height, top + 30.0 / f->height) << f->body;
 }
 
 TEST_F(RadioFiguresTest, DrawnOnlyWhereTheResultsHaveThem) {

@@ -147,8 +147,16 @@ TEST_F(TrafficFigures, EachMeanHasItsConfidenceInterval) {
 TEST_F(TrafficFigures, SaturatedPointsAreMarked) {
   const TrafficTable t = TabulateTraffic(Rows());
   std::string why;
-  ASSERT_TRUE(WriteSaturationFigure(dir_, t, why).has_value()) << why;
+  const std::optional<FigureScript> f = WriteSaturationFigure(dir_, t, why);
+  ASSERT_TRUE(f.has_value()) << why;
   EXPECT_EQ(Slurp(dir_ / "saturated.dat"), "100 5 \"50% delivered\"\n100 5 \"25% delivered\"\n");
+  // The reference line is a function (the whole axis) drawn after the data of its panel, so it
+  // is never hidden under them.
+  const std::size_t reference = f->body.find("x with lines");
+  ASSERT_NE(reference, std::string::npos) << f->body;
+  const std::size_t panel_end = f->body.find('\n', reference);
+  EXPECT_EQ(f->body.rfind("'offered.dat' index", panel_end), f->body.rfind("'offered.dat' index", reference));
+  EXPECT_LT(f->body.rfind("'offered.dat' index", reference), reference);
   // Without a shared medium there is nothing to show.
   std::vector<RunResult> p2p = Rows();
   p2p.resize(3);
@@ -171,6 +179,30 @@ TEST_F(TrafficFigures, RobotLoadMarksTheBusiestRobotAndTheFairShare) {
   // Fair share 100 / 4 = 25; the busiest serves 70 = 2.8 times it.
   EXPECT_NE(f->body.find("busiest: robot 1, 2.8 x fair share"), std::string::npos) << f->body;
   EXPECT_NE(f->body.find("fair share (all searches / n = 25)"), std::string::npos);
+}
+
+// Two panels are compared bar for bar: the balanced strategy's (at most 20 searches a robot) is
+// drawn on the paper method's scale (70 x 1.18 = 82.6), not on its own.
+TEST_F(TrafficFigures, RobotLoadPanelsShareOneScale) {
+  CsvTable per_robot;
+  per_robot.header = {"protocol", "strategy", "robots", "run", "robot", "queries_received", "network_variant"};
+  const int decentralized[4] = {10, 70, 10, 10};
+  const int balanced[4] = {20, 20, 20, 20};
+  for (int r = 0; r < 4; ++r) {
+    per_robot.rows.push_back({"sim", "decentralized", "4", "0", std::to_string(r), std::to_string(decentralized[r]), "0"});
+    per_robot.rows.push_back({"sim", "bounded_c10", "4", "0", std::to_string(r), std::to_string(balanced[r]), "0"});
+  }
+  std::vector<RunResult> rows = Rows();
+  rows.push_back(SimRun("bounded_c10", 4, 0, rows.front().key.network, 700, 100));
+  std::string why;
+  const auto f = WriteRobotLoadFigure(dir_, TabulateTraffic(rows), per_robot, why);
+  ASSERT_TRUE(f.has_value()) << why;
+  std::vector<std::string> ranges;
+  for (std::size_t at = f->body.find("set yrange"); at != std::string::npos; at = f->body.find("set yrange", at + 1)) {
+    ranges.push_back(f->body.substr(at, f->body.find('\n', at) - at));
+  }
+  EXPECT_EQ(ranges, (std::vector<std::string>{"set yrange [0:82.6]", "set yrange [0:82.6]"})) << f->body;
+  EXPECT_NE(f->body.find("set title 'bounded_c10'"), std::string::npos) << f->body;
 }
 
 // The robot id is the busiest robot's label position in the script, and src x dst indexes the

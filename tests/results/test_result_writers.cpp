@@ -195,7 +195,7 @@ TEST(ResultWriters, NetworkNamesSayTheirParameters) {
             "shared medium 10 Mbit/s 2 ms");
   EXPECT_EQ(NetworkName(NetworkLabel{.variant = 0, .model = "point_to_point", .bandwidth_bps = 2.5e9,
                                      .latency_ms = 0.5, .loss = "bernoulli"}),
-            "point-to-point 2500 Mbit/s 0.5 ms bernoulli loss");
+            "point-to-point 2500 Mbit/s 500 us bernoulli loss");
   EXPECT_EQ(NetworkName(NetworkLabel{.variant = 0, .model = "point_to_point", .bandwidth_bps = 64e3,
                                      .latency_ms = 20, .loss = "none"}),
             "point-to-point 64 kbit/s 20 ms");
@@ -211,7 +211,16 @@ TEST(ResultWriters, NetworkNamesSayTheirParameters) {
   EXPECT_EQ(NetworkName(radio, NameStyle::kPage), "radio, 10 Mbit/s, 2 ms, range 200m shortest_path");
   EXPECT_EQ(NetworkName(NetworkLabel{.model = "shared_medium", .bandwidth_bps = 1e9, .latency_ms = 0.5,
                                      .loss = "bernoulli"}, NameStyle::kPage),
-            "shared medium, 1 Gbit/s, 0.5 ms, loss: bernoulli");
+            "shared medium, 1 Gbit/s, 500 us, loss: bernoulli");
+  // The latency in the unit that reads naturally, to the ns: 1 us (not 0.001 ms), 1.5 s; 0 ms.
+  const auto latency = [](double ms) {
+    return NetworkName(NetworkLabel{.model = "shared_medium", .bandwidth_bps = 6e6, .latency_ms = ms, .loss = "none"});
+  };
+  EXPECT_EQ(latency(0.001), "shared medium 6 Mbit/s 1 us");
+  EXPECT_EQ(latency(0.0125), "shared medium 6 Mbit/s 12.5 us");
+  EXPECT_EQ(latency(999.5), "shared medium 6 Mbit/s 999.5 ms");
+  EXPECT_EQ(latency(1500), "shared medium 6 Mbit/s 1.5 s");
+  EXPECT_EQ(latency(0), "shared medium 6 Mbit/s 0 ms");
   // Not applicable (NaN): ideal has neither rate nor latency, wifi no latency.
   EXPECT_EQ(NetworkName(NetworkLabel{.model = "ideal", .loss = "none"}, NameStyle::kPage), "ideal");
   EXPECT_EQ(NetworkName(NetworkLabel{.model = "wifi", .bandwidth_bps = 6e6, .loss = "none"}, NameStyle::kPage),
