@@ -26,9 +26,9 @@ CsmaLink::CsmaLink(const CsmaParams& params, int nodes, std::uint64_t run_seed)
   counters_.assign(static_cast<std::size_t>(nodes), MacCounters{});
 }
 
-void CsmaLink::DoBind(Simulator& sim, LinkCompletions& completions) {
+void CsmaLink::DoBind(Simulator& sim, TransmissionLedger& ledger) {
   sim_ = &sim;
-  completions_ = &completions;
+  messages_ = &ledger;
 }
 
 // CsmaNetDevice::Send for each frame: into the queue (or dropped when it is full), and straight
@@ -38,14 +38,14 @@ LinkModel::MediumUse CsmaLink::DoTransmit(const LinkTransmission& t, std::span<L
   const auto s = static_cast<std::size_t>(t.src.value);
   Station& st = stations_[s];
   MediumUse use{t.dsts.empty() ? 0u : 1u, Bytes(0)};
-  const std::uint32_t id = messages_.Enqueue(t, st.queue, static_cast<std::size_t>(params_.queue_packets),
+  const std::uint32_t id = messages_->Enqueue(t, st.queue, static_cast<std::size_t>(params_.queue_packets),
                                              counters_[s], use, [&] {
                                                if (st.state != TxState::kReady) return;
                                                st.current = st.queue.front();
                                                st.queue.pop_front();
                                                TransmitStart(s);
                                              });
-  messages_.HandOver(id, out);
+  messages_->HandOver(id, out, use);
   return use;
 }
 
@@ -82,17 +82,17 @@ void CsmaLink::TransmitComplete(std::size_t s) {
   bus_ = BusState::kPropagating;
   const std::uint32_t id = st.current.message;
   const SimTime arrival = sim_->Now() + params_.delay;
-  const std::span<const NodeId> dsts = messages_.Destinations(id);
+  const std::span<const NodeId> dsts = messages_->Destinations(id);
   heard_.resize(dsts.size());
   Hear(NodeId(static_cast<int>(s)), dsts, sim_->Now(), heard_);
   for (std::size_t i = 0; i < dsts.size(); ++i) {
     if (heard_[i].reaches) {
-      messages_.Reached(id, i, arrival + heard_[i].delay);
+      messages_->Reached(id, i, arrival + heard_[i].delay);
     } else {
-      messages_.Lost(id, i, DropReason::kOutOfRange);
+      messages_->Lost(id, i, DropReason::kOutOfRange);
     }
   }
-  messages_.Settle(id, *completions_);
+  messages_->Settle(id);
   sim_->Schedule(params_.delay, [this] { bus_ = BusState::kIdle; });
   sim_->Schedule(gap_, [this, s] { TransmitReady(s); });
 }
@@ -110,10 +110,10 @@ void CsmaLink::TransmitAbort(std::size_t s) {
   Station& st = stations_[s];
   ++counters_[s].dropped_retry_limit;
   const std::uint32_t id = st.current.message;
-  messages_.LostEverywhere(id, DropReason::kRetryLimit);
+  messages_->LostEverywhere(id, DropReason::kRetryLimit);
   st.retries = 0;
   st.state = TxState::kReady;
-  messages_.Settle(id, *completions_);
+  messages_->Settle(id);
   if (st.state != TxState::kReady || st.queue.empty()) return;
   st.current = st.queue.front();
   st.queue.pop_front();

@@ -23,7 +23,7 @@
 
 #include "net_models/link_model.h"
 #include "net_models/mac_counters.h"
-#include "net_models/mac_messages.h"
+#include "net_models/transmission_ledger.h"
 #include "sim/random.h"
 
 namespace dvpr {
@@ -68,7 +68,7 @@ class CsmaLink final : public LinkModel {
 
   MediumUse DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) override;
   std::string_view DoName() const override { return "csma"; }
-  void DoBind(Simulator& sim, LinkCompletions& completions) override;
+  void DoBind(Simulator& sim, TransmissionLedger& ledger) override;
   std::span<const MacCounters> DoMac() const override { return counters_; }
   SimTime DoMediumBusy() const override { return busy_; }
 
@@ -82,10 +82,9 @@ class CsmaLink final : public LinkModel {
   CsmaParams params_;
   SimTime gap_;
   Simulator* sim_ = nullptr;
-  LinkCompletions* completions_ = nullptr;
   std::vector<Station> stations_;
   std::vector<MacCounters> counters_;
-  MacMessages messages_;
+  TransmissionLedger* messages_ = nullptr;  // the network's (Bind): the transmissions in hand
   SlotDraw draw_;
   BusState bus_ = BusState::kIdle;
   SimTime busy_;  // the bus's time transmitting or propagating

@@ -20,7 +20,7 @@ Forwarder::Forwarder(Simulator& sim, int nodes, NetworkStack& stack, const Avail
   }
 }
 
-void Forwarder::Bind(PropagationChannel& channel) { stack_.access->Bind(sim_, *this, channel); }
+void Forwarder::Bind(PropagationChannel& channel) { stack_.access->Bind(sim_, ledger_, channel); }
 
 // Asks the stack's layers in turn: routing (which copies have a way), then the medium access
 // (when they arrive), which asks the channel whether they are heard.
@@ -28,6 +28,7 @@ LinkModel::MediumUse Forwarder::Transmit(NodeId src, std::span<const NodeId> dst
                                          bool routed) {
   const SimTime now = sim_.Now();
   outcomes_.resize(dsts.size());
+  last_pending_ = LinkModel::MediumUse::kNone;
   if (!availability_.IsOnline(src, now)) {
     // Outside its talk window a store-and-forward sender keeps what it has (routed traffic: a
     // link-local beacon is for the neighbours of the moment, not worth keeping).
@@ -36,7 +37,9 @@ LinkModel::MediumUse Forwarder::Transmit(NodeId src, std::span<const NodeId> dst
     std::fill(outcomes_.begin(), outcomes_.end(), LinkDelivery{now, keeps ? DropReason::kNoRoute : DropReason::kOffline});
     return {};
   }
-  return TransmitRouted(LinkTransmission{src, dsts, now, frames, tickets_++}, routed);
+  const LinkModel::MediumUse use = TransmitRouted(LinkTransmission{src, dsts, now, frames}, routed);
+  last_pending_ = use.pending;
+  return use;
 }
 
 // The routing model names each copy's next hop (hops_); the medium access carries the message to
@@ -55,7 +58,7 @@ LinkModel::MediumUse Forwarder::TransmitRouted(const LinkTransmission& t, bool r
   receiver_of_.resize(dsts.size());
   if (std::equal(hops_.begin(), hops_.end(), dsts.begin())) {  // one hop each: the usual case
     for (std::size_t i = 0; i < dsts.size(); ++i) receiver_of_[i] = static_cast<std::uint32_t>(i);
-    return stack_.access->Transmit(LinkTransmission{t.src, dsts, t.now, t.frames, t.ticket, unheard}, outcomes_);
+    return stack_.access->Transmit(LinkTransmission{t.src, dsts, t.now, t.frames, unheard}, outcomes_);
   }
   receivers_.clear();
   hop_slot_.resize(dsts.size());
@@ -76,8 +79,7 @@ LinkModel::MediumUse Forwarder::TransmitRouted(const LinkTransmission& t, bool r
   routed_outcomes_.resize(receivers_.size());
   LinkModel::MediumUse use;
   if (!receivers_.empty()) {
-    use = stack_.access->Transmit(LinkTransmission{t.src, receivers_, t.now, t.frames, t.ticket, unheard},
-                                  routed_outcomes_);
+    use = stack_.access->Transmit(LinkTransmission{t.src, receivers_, t.now, t.frames, unheard}, routed_outcomes_);
   }
   for (std::size_t i = 0; i < dsts.size(); ++i) {
     outcomes_[i] = hop_slot_[i] < 0 ? LinkDelivery{t.now, DropReason::kNoRoute}
@@ -200,23 +202,22 @@ void Forwarder::Relay(std::uint32_t slot, std::span<const PendingCopy> copies, s
   for (std::uint32_t k = 0; k < dropped; ++k) host_.Release(slot);
 }
 
-// The copy waits for the transmission just handed to the medium access (its ticket is the last).
+// The copy waits for the transmission just handed to the medium access (its entry is the last).
 void Forwarder::Await(std::uint32_t slot, std::size_t i, const PendingCopy& copy) {
-  Awaited& a = awaited_[tickets_ - 1];
-  a.slot = slot;
-  a.copies.push_back(AwaitedCopy{copy, receiver_of_[i]});
+  if (last_pending_ == LinkModel::MediumUse::kNone) {
+    throw std::logic_error("Network: a medium access left a copy open without a ledger entry");
+  }
+  ledger_.Wait(last_pending_, slot, copy, receiver_of_[i]);
 }
 
 // The copies that arrive are scheduled as any others; the lost ones are dropped last (releasing
 // the last reference frees the slot).
-void Forwarder::Complete(std::uint64_t ticket, std::span<const LinkDelivery> outcomes) {
-  const auto it = awaited_.find(ticket);
-  if (it == awaited_.end()) throw std::logic_error("Network: a medium access completed an unknown transmission");
-  const Awaited a = std::move(it->second);
-  awaited_.erase(it);
-  std::vector<PendingCopy>& pending = pending_[a.slot];
+void Forwarder::Complete(std::uint32_t slot, std::span<const AwaitedCopy> copies,
+                         std::span<const LinkDelivery> outcomes) {
+  if (copies.empty()) return;  // no copy waited for it
+  std::vector<PendingCopy>& pending = pending_[slot];
   const auto from = static_cast<std::uint32_t>(pending.size());
-  for (const AwaitedCopy& w : a.copies) {
+  for (const AwaitedCopy& w : copies) {
     const LinkDelivery& d = outcomes[w.receiver];
     if (d.later) throw std::logic_error("Network: a medium access completed a copy it left open");
     if (d.drop != DropReason::kNone) continue;
@@ -224,12 +225,12 @@ void Forwarder::Complete(std::uint64_t ticket, std::span<const LinkDelivery> out
     c.arrival = d.arrival;
     pending.push_back(c);
   }
-  if (pending.size() > from) ScheduleCopies(a.slot, from);
-  for (const AwaitedCopy& w : a.copies) {
+  if (pending.size() > from) ScheduleCopies(slot, from);
+  for (const AwaitedCopy& w : copies) {
     const DropReason reason = outcomes[w.receiver].drop;
     if (reason == DropReason::kNone) continue;
-    host_.DropCopy(a.slot, w.copy, reason);
-    host_.Release(a.slot);
+    host_.DropCopy(slot, w.copy, reason);
+    host_.Release(slot);
   }
 }
 

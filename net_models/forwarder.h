@@ -6,7 +6,7 @@
 // destinations, as single events scheduled one after another would; it captures only (forwarder,
 // slot, range of copies), so it fits the Simulator's inline callback storage), the transmission by a relay of what reached it
 // for others (at most kMaxHops transmissions a copy), the copies a contending medium access
-// decides later (LinkCompletions), and with store-and-forward (disconnected_params.h) the copies
+// decides later (its TransmissionLedger, lent to the medium at Bind), and with store-and-forward (disconnected_params.h) the copies
 // each node holds and its retries.
 //
 // The network owns the messages (a slab of payload slots, each with a count of the copies that
@@ -15,13 +15,14 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
-#include <unordered_map>
 #include <vector>
 
 #include "net_models/availability.h"
 #include "net_models/link_model.h"
 #include "net_models/network_stack.h"
 #include "net_models/node_id.h"
+#include "net_models/pending_copy.h"
+#include "net_models/transmission_ledger.h"
 #include "net_models/units.h"
 #include "sim/sim_time.h"
 
@@ -29,21 +30,6 @@ namespace dvpr {
 
 class PropagationChannel;
 class Simulator;
-
-// A copy on its way: where to, the node it arrives at next (dst, or a relay), its number
-// (MessageCopy::copy), the transmissions it has made (the one under way included), whether a
-// robot has held it (store-and-forward: RouteCounters::held counts a copy once, however many
-// robots and retries hold it), when it arrives there. 48 bits number 2.8e14 copies; hops stay
-// <= Forwarder::kMaxHops.
-struct PendingCopy {
-  NodeId dst;
-  NodeId at;
-  std::uint64_t copy : 48;
-  std::uint64_t hops : 15;
-  std::uint64_t held : 1;
-  SimTime arrival;
-};
-static_assert(sizeof(PendingCopy) <= 24);
 
 // What the forwarder asks of the network whose messages it carries (`slot`: a message's payload
 // slot).
@@ -69,7 +55,7 @@ class ForwarderHost {
   virtual void FirstHeld() = 0;
 };
 
-class Forwarder final : private LinkCompletions {
+class Forwarder final : private LedgerOwner {
  public:
   // A copy is sent on at most this many times (IP's usual TTL): routing that changes under a
   // copy could pass it back and forth; the next relay drops it (DropReason::kHopLimit).
@@ -81,7 +67,8 @@ class Forwarder final : private LinkCompletions {
   Forwarder(const Forwarder&) = delete;
   Forwarder& operator=(const Forwarder&) = delete;
 
-  // Binds the medium access: it reports to this forwarder and asks `channel` who hears whom.
+  // Binds the medium access: it settles what it decides later in this forwarder's ledger and
+  // asks `channel` who hears whom.
   void Bind(PropagationChannel& channel);
   // With store_and_forward: after `horizon` nothing a held copy waits for changes any more (the
   // robots stand where their trajectories end, the talk windows and beacons are over), so a copy
@@ -113,11 +100,13 @@ class Forwarder final : private LinkCompletions {
   void DeliverCopies(std::uint32_t slot, std::uint32_t first, std::uint32_t end);
   // since: by copy, when it was first held (store-and-forward), or empty (held from now on).
   void Relay(std::uint32_t slot, std::span<const PendingCopy> copies, std::span<const SimTime> since = {});
-  // Keeps a copy whose outcome the medium access decides later (outcomes_[i].later): i is its
-  // index in the transmission's destinations, copy what it becomes when it arrives.
+  // Keeps a copy whose outcome the medium access decides later (outcomes_[i].later) in the
+  // ledger entry of the last transmission: i is its index in the transmission's destinations,
+  // copy what it becomes when it arrives.
   void Await(std::uint32_t slot, std::size_t i, const PendingCopy& copy);
-  // A contending medium access decided the copies of transmission `ticket` it had left open.
-  void Complete(std::uint64_t ticket, std::span<const LinkDelivery> outcomes) override;
+  // A contending medium access decided the copies of payload `slot` that waited in one ledger entry.
+  void Complete(std::uint32_t slot, std::span<const AwaitedCopy> copies,
+                std::span<const LinkDelivery> outcomes) override;
   // Store-and-forward: keeps c at its node until the next retry: kNone, or why it cannot
   // (kBufferFull past hold_bytes; past the hold horizon kExpired for a copy held before, kNoRoute
   // for one never held).
@@ -135,19 +124,10 @@ class Forwarder final : private LinkCompletions {
   // vectors keep their capacity when a slot is reused).
   std::vector<std::vector<PendingCopy>> pending_;
 
-  // Copies whose medium access decides later, by the ticket of their transmission (a contending
-  // MAC: csma_link.h, wifi_link.h): the slot, and for each copy the index of its receiver among
-  // the transmission's destinations.
-  struct AwaitedCopy {
-    PendingCopy copy;
-    std::uint32_t receiver = 0;
-  };
-  struct Awaited {
-    std::uint32_t slot = 0;
-    std::vector<AwaitedCopy> copies;
-  };
-  std::unordered_map<std::uint64_t, Awaited> awaited_;
-  std::uint64_t tickets_ = 0;  // transmissions handed to the medium access so far: the next ticket
+  // The transmissions a contending medium access decides later (csma_link.h, wifi_link.h) and
+  // the copies that wait for them, one entry each; lent to the medium at Bind.
+  TransmissionLedger ledger_{*this};
+  std::uint32_t last_pending_ = LinkModel::MediumUse::kNone;  // the last Transmit's ledger entry
 
   // Store-and-forward: by node, the copies it holds (in the order it took them), their bytes,
   // whether its retry is scheduled.

@@ -11,8 +11,8 @@
 // A contending MAC (csma_link.h, wifi_link.h) cannot: whether a station finds the medium idle
 // after its backoff depends on what others send in the meantime. Such a model runs its own
 // events on the network's simulator (Bind), marks the copies it decides later (`later`) and
-// reports them through LinkCompletions once the medium has settled them, with the ticket of their
-// transmission.
+// settles them in the network's TransmissionLedger (transmission_ledger.h, lent at Bind), which
+// tells the network when the last frame of a transmission is decided.
 //
 // Every medium asks the network's channel (propagation_channel.h, lent at Bind) who hears whom,
 // the same channel whichever way it decides: one that decides at send time hands it its outcomes
@@ -60,7 +60,6 @@ struct LinkTransmission {
   std::span<const NodeId> dsts;   // distinct nodes, none equal to src
   SimTime now;
   std::span<const Bytes> frames;  // the message's link frames, in order (wire_format.h)
-  std::uint64_t ticket = 0;       // names the transmission to LinkCompletions::Complete
   // The drop reason of a destination that does not hear the transmission when it starts (out of
   // range, or a stale route when a learned next hop no longer hears its sender).
   DropReason unheard = DropReason::kOutOfRange;
@@ -71,23 +70,15 @@ struct LinkTransmission {
 struct LinkDelivery {
   SimTime arrival;
   DropReason drop = DropReason::kNone;
-  bool later = false;  // decided later: reported through LinkCompletions::Complete
+  bool later = false;  // decided later: settled in the TransmissionLedger
   // When the copy's last frame ended at the sender (a medium deciding at send time sets it): a
   // receiver that moves must still hear the transmission then (PropagationChannel::Settle).
   SimTime frame_end = {};
 };
 
-// Where a contending model reports the copies it left `later`.
-class LinkCompletions {
- public:
-  virtual ~LinkCompletions() = default;
-  // All copies of transmission `ticket`, now decided: outcomes[i] for its dsts[i] (later false).
-  // Called from the model's own events, never from inside Transmit.
-  virtual void Complete(std::uint64_t ticket, std::span<const LinkDelivery> outcomes) = 0;
-};
-
 class Simulator;
 class PropagationChannel;
+class TransmissionLedger;
 
 class LinkModel {
  public:
@@ -98,6 +89,9 @@ class LinkModel {
   struct MediumUse {
     std::uint64_t transmissions = 0;
     Bytes bytes;
+    // The TransmissionLedger entry of a transmission whose copies are decided later; kNone else.
+    static constexpr std::uint32_t kNone = ~std::uint32_t{0};
+    std::uint32_t pending = kNone;
   };
 
   virtual ~LinkModel() = default;
@@ -110,12 +104,12 @@ class LinkModel {
   // The time the medium was busy with at least one transmission (a contending model; else zero).
   SimTime MediumBusy() const { return DoMediumBusy(); }
 
-  // The network the model serves: every model asks `channel` who hears whom (both must outlive
-  // the model); a contending model schedules its events on `sim` and reports to `completions`.
-  // Called once, before the first Transmit.
-  void Bind(Simulator& sim, LinkCompletions& completions, PropagationChannel& channel) {
+  // The network the model serves: every model asks `channel` who hears whom; a contending model
+  // schedules its events on `sim` and settles what it decides later in `ledger` (all must outlive
+  // the model). Called once, before the first Transmit.
+  void Bind(Simulator& sim, TransmissionLedger& ledger, PropagationChannel& channel) {
     channel_ = &channel;
-    DoBind(sim, completions);
+    DoBind(sim, ledger);
   }
 
   // "ideal", "point_to_point", "shared_medium", "radio", "csma", "wifi".
@@ -132,7 +126,7 @@ class LinkModel {
   // out[i] arrives preset to {t.now, kNone, frame_end t.now}.
   virtual MediumUse DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) = 0;
   virtual std::string_view DoName() const = 0;
-  virtual void DoBind(Simulator& /*sim*/, LinkCompletions& /*completions*/) {}
+  virtual void DoBind(Simulator& /*sim*/, TransmissionLedger& /*ledger*/) {}
   virtual std::span<const MacCounters> DoMac() const { return {}; }
   virtual SimTime DoMediumBusy() const { return SimTime::Zero(); }
 

@@ -1,6 +1,6 @@
 #pragma once
 // Numbered slots of T, reused last-freed-first: the network's payloads (network.h), a contending
-// MAC's open messages (mac_messages.h) and wifi's transmissions on the air (wifi_link.h) are each
+// MAC's open transmissions (transmission_ledger.h) and wifi's transmissions on the air (wifi_link.h) are each
 // known by a small slot number that an event captures instead of a pointer.
 //
 // A released slot's T is left as it is: the next Acquire hands it back with its state (a

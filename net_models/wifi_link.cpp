@@ -67,9 +67,9 @@ WifiLink::WifiLink(const WifiParams& params, int nodes, std::uint64_t run_seed) 
   corrupted_.assign(static_cast<std::size_t>(nodes), 0);
 }
 
-void WifiLink::DoBind(Simulator& sim, LinkCompletions& completions) {
+void WifiLink::DoBind(Simulator& sim, TransmissionLedger& ledger) {
   sim_ = &sim;
-  completions_ = &completions;
+  messages_ = &ledger;
 }
 
 LinkModel::MediumUse WifiLink::DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) {
@@ -78,7 +78,7 @@ LinkModel::MediumUse WifiLink::DoTransmit(const LinkTransmission& t, std::span<L
   Station& st = stations_[s];
   MediumUse use{t.dsts.empty() ? 0u : 1u, Bytes(0)};
   const std::uint32_t id =
-      messages_.Enqueue(t, st.queue, static_cast<std::size_t>(params_.queue_packets), counters_[s], use, [] {});
+      messages_->Enqueue(t, st.queue, static_cast<std::size_t>(params_.queue_packets), counters_[s], use, [] {});
   if (st.phase == Phase::kIdle && !st.queue.empty()) {
     EnsureDrawn(s);
     // A frame for an empty queue whose backoff has run out (ns-3.37's
@@ -94,7 +94,7 @@ LinkModel::MediumUse WifiLink::DoTransmit(const LinkTransmission& t, std::span<L
     st.phase = Phase::kContend;
     if (!st.busy) ScheduleAccess(s);
   }
-  messages_.HandOver(id, out);
+  messages_->HandOver(id, out, use);
   return use;
 }
 
@@ -159,7 +159,7 @@ void WifiLink::Access(std::size_t s) {
   st.attempt = EventId();
   if (st.phase != Phase::kContend) throw std::logic_error("WifiLink: access without a frame");
   const std::uint32_t message = st.current.message;
-  const std::span<const NodeId> dsts = messages_.Destinations(message);
+  const std::span<const NodeId> dsts = messages_->Destinations(message);
   Air what;
   what.src = s;
   what.broadcast = dsts.size() != 1;
@@ -227,7 +227,7 @@ void WifiLink::EndAir(std::uint32_t id) {
   stations_[a.src].tx_on = false;
   bool acked = false;
   bool ack_lost = false;
-  const std::span<const NodeId> dsts = a.ack ? std::span<const NodeId>() : messages_.Destinations(a.message);
+  const std::span<const NodeId> dsts = a.ack ? std::span<const NodeId>() : messages_->Destinations(a.message);
   std::vector<char>& reached = reached_;  // by destination: 0 not heard, 1 received, 2 lost to a collision
   reached.assign(dsts.size(), 0);
   bool collided = false;  // lost at a receiver it was for (counted once per transmission)
@@ -250,10 +250,10 @@ void WifiLink::EndAir(std::uint32_t id) {
       if (i == dsts.size()) continue;
       collided = collided || !ok;
       if (ok) {
-        messages_.Reached(a.message, i, now + a.delay[k]);
+        messages_->Reached(a.message, i, now + a.delay[k]);
         reached[i] = 1;
       } else {
-        messages_.Lost(a.message, i, DropReason::kCollision);
+        messages_->Lost(a.message, i, DropReason::kCollision);
         reached[i] = 2;
       }
       continue;
@@ -264,8 +264,8 @@ void WifiLink::EndAir(std::uint32_t id) {
       Station& sender = stations_[a.src];
       if (!sender.settled) {  // a retransmission after a lost ACK arrives twice: the first counts
         sender.settled = true;
-        messages_.Reached(a.message, 0, now + a.delay[k]);
-        messages_.Settle(a.message, *completions_);
+        messages_->Reached(a.message, 0, now + a.delay[k]);
+        messages_->Settle(a.message);
       }
       sim_->Schedule(WifiParams::kSifs, [this, h, src = a.src] { SendAck(h, src); });
     } else if (ok) {
@@ -289,9 +289,9 @@ void WifiLink::EndAir(std::uint32_t id) {
     }
   } else if (a.broadcast) {
     for (std::size_t i = 0; i < dsts.size(); ++i) {
-      if (reached[i] == 0) messages_.Lost(a.message, i, DropReason::kOutOfRange);
+      if (reached[i] == 0) messages_->Lost(a.message, i, DropReason::kOutOfRange);
     }
-    messages_.Settle(a.message, *completions_);
+    messages_->Settle(a.message);
     NextFrame(a.src);
   } else {
     Station& st = stations_[a.src];
@@ -333,9 +333,9 @@ void WifiLink::Failed(std::size_t s) {
     ++counters_[s].dropped_retry_limit;
     if (!st.settled) {
       // Never heard by its receiver: out of range; heard but never received: given up.
-      messages_.Lost(st.current.message, 0, st.dst_heard ? DropReason::kRetryLimit : DropReason::kOutOfRange);
+      messages_->Lost(st.current.message, 0, st.dst_heard ? DropReason::kRetryLimit : DropReason::kOutOfRange);
       st.settled = true;
-      messages_.Settle(st.current.message, *completions_);
+      messages_->Settle(st.current.message);
     }
     NextFrame(s);
     return;
@@ -370,7 +370,7 @@ void WifiLink::NextFrame(std::size_t s) {
 }
 
 std::size_t WifiLink::IndexOf(std::uint32_t message, std::size_t station) const {
-  const std::span<const NodeId> dsts = messages_.Destinations(message);
+  const std::span<const NodeId> dsts = messages_->Destinations(message);
   for (std::size_t i = 0; i < dsts.size(); ++i) {
     if (static_cast<std::size_t>(dsts[i].value) == station) return i;
   }

@@ -31,7 +31,7 @@
 
 #include "net_models/link_model.h"
 #include "net_models/mac_counters.h"
-#include "net_models/mac_messages.h"
+#include "net_models/transmission_ledger.h"
 #include "net_models/slot_pool.h"
 #include "sim/random.h"
 #include "sim/simulator.h"
@@ -120,7 +120,7 @@ class WifiLink final : public LinkModel {
     std::size_t src = 0;
     bool ack = false;
     bool broadcast = false;
-    std::uint32_t message = 0;  // data: its MacMessages id
+    std::uint32_t message = 0;  // data: its TransmissionLedger id
     std::size_t to = 0;         // unicast data: its receiver; ACK: the station it acknowledges
     std::vector<std::size_t> hearers;
     std::vector<char> corrupted;  // by hearer: kClean, kCollided or kUnheard
@@ -129,7 +129,7 @@ class WifiLink final : public LinkModel {
 
   MediumUse DoTransmit(const LinkTransmission& t, std::span<LinkDelivery> out) override;
   std::string_view DoName() const override { return "wifi"; }
-  void DoBind(Simulator& sim, LinkCompletions& completions) override;
+  void DoBind(Simulator& sim, TransmissionLedger& ledger) override;
   std::span<const MacCounters> DoMac() const override { return counters_; }
   SimTime DoMediumBusy() const override { return medium_busy_; }
 
@@ -157,11 +157,10 @@ class WifiLink final : public LinkModel {
   DataRate ack_rate_;
   SimTime ack_time_;
   Simulator* sim_ = nullptr;
-  LinkCompletions* completions_ = nullptr;
   std::vector<Station> stations_;
   std::vector<MacCounters> counters_;
   std::vector<std::uint64_t> corrupted_;
-  MacMessages messages_;
+  TransmissionLedger* messages_ = nullptr;  // the network's (Bind): the transmissions in hand
   SlotDraw draw_;
   SlotPool<Air> air_;  // by id: the transmissions on the air (Station::hearing)
   int on_air_ = 0;

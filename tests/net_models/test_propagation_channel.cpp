@@ -14,6 +14,7 @@
 #include "net_models/radio_link.h"
 #include "net_models/reception_loss.h"
 #include "net_models/shared_medium_link.h"
+#include "net_models/transmission_ledger.h"
 #include "sim/simulator.h"
 
 namespace dvpr {
@@ -129,8 +130,8 @@ TEST(PropagationChannel, ALinkLocalSendKeepsItsHearersInOrder) {
   EXPECT_EQ(members, (std::vector<NodeId>{NodeId(1)}));
 }
 
-class NoCompletions final : public LinkCompletions {
-  void Complete(std::uint64_t, std::span<const LinkDelivery>) override {}
+class NoOwner final : public LedgerOwner {
+  void Complete(std::uint32_t, std::span<const AwaitedCopy>, std::span<const LinkDelivery>) override {}
 };
 
 // Every medium that decides at send time hands its outcomes to the channel it is bound to: over
@@ -149,10 +150,11 @@ TEST(PropagationChannel, EveryMediumThatDecidesAtSendTimeAsksTheChannelItIsBound
     Scripted p(/*changes=*/false);
     PropagationChannel channel(p);
     Simulator sim;
-    NoCompletions completions;
+    NoOwner owner;
+    TransmissionLedger ledger(owner);
     std::unique_ptr<LinkModel> unbound = make(which);
     std::unique_ptr<LinkModel> bound = make(which);
-    bound->Bind(sim, completions, channel);
+    bound->Bind(sim, ledger, channel);
     std::vector<LinkDelivery> free(3);
     std::vector<LinkDelivery> heard(3);
     unbound->Transmit(From0(1), free);
@@ -173,9 +175,10 @@ TEST(PropagationChannel, TheRadiosFrameEndIsItsLastBitNotItsArrival) {
   Scripted p(/*changes=*/true);
   PropagationChannel channel(p);
   Simulator sim;
-  NoCompletions completions;
+  NoOwner owner;
+  TransmissionLedger ledger(owner);
   RadioLink radio(RadioLinkParams{}, 4);
-  radio.Bind(sim, completions, channel);
+  radio.Bind(sim, ledger, channel);
   std::vector<LinkDelivery> out(3);
   radio.Transmit(From0(3), out);
   EXPECT_EQ(p.asked_at, (std::vector<SimTime>{SimTime::Zero(), SimTime::Micros(240)}));

@@ -84,7 +84,7 @@ TEST(SlotPoolTest, AReusedSlotKeepsItsVectorsCapacityAndContents) {
 }
 
 // New slots may move the Ts (index again after an Acquire), but not the buffers they own: a span
-// over a slot's vector taken before stays valid (wifi's EndAir keeps MacMessages::Destinations
+// over a slot's vector taken before stays valid (wifi's EndAir keeps TransmissionLedger::Destinations
 // across sends that open messages).
 TEST(SlotPoolTest, GrowingKeepsTheBuffersTheSlotsOwn) {
   SlotPool<std::vector<int>> pool;
