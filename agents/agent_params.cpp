@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "net_models/param_checks.h"
+#include "net_models/core/param_checks.h"
 
 namespace dvpr {
 

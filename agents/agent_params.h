@@ -5,7 +5,7 @@
 // naming the field as the struct spells it.
 #include <cfloat>
 
-#include "net_models/units.h"
+#include "net_models/core/units.h"
 #include "sim/sim_time.h"
 
 namespace dvpr {

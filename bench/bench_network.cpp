@@ -14,8 +14,8 @@
 #include "agents/messages/sim_transport.h"
 #include "agents/messages/verification_payload.h"
 #include "experiments/protocols/sim/message_rows.h"
-#include "net_models/network.h"
-#include "net_models/point_to_point_link.h"
+#include "net_models/medium/point_to_point_link.h"
+#include "net_models/network/network.h"
 #include "sim/random.h"
 #include "sim/simulator.h"
 

@@ -23,12 +23,12 @@
 #include <tuple>
 #include <vector>
 
-#include "net_models/link_factory.h"
-#include "net_models/network_helper.h"
-#include "net_models/network.h"
-#include "net_models/network_observer.h"
-#include "net_models/network_stack.h"
-#include "net_models/units.h"
+#include "net_models/core/units.h"
+#include "net_models/helper/link_factory.h"
+#include "net_models/helper/network_helper.h"
+#include "net_models/network/network.h"
+#include "net_models/network/network_observer.h"
+#include "net_models/network/network_stack.h"
 #include "sim/simulator.h"
 
 namespace dvpr {

@@ -20,7 +20,7 @@ network's keys and models.
    Refused: a key the reader accepts that the table does not document, and one the table
    documents that the reader does not accept.
 2. Models. The names `network.model` accepts are the reader's table of spellings (kNames in
-   net_models/link_factory.cpp); the models that contend are those Contends() lists there.
+   net_models/helper/link_factory.cpp); the models that contend are those Contends() lists there.
    docs/network_model.md's table under "Link models at a glance" has one row per model, no
    other, and its `contention` cell begins "yes" exactly for the models that contend; the
    `network.model` row of docs/config.md names every model.
@@ -39,7 +39,7 @@ ROOT_READER = "ReadExperiment"
 SECTION = "network"
 CONFIG_DOC = "docs/config.md"
 KEYS_HEADING = "Keys"
-MODEL_NAMES = "net_models/link_factory.cpp"
+MODEL_NAMES = "net_models/helper/link_factory.cpp"
 MODEL_DOC = "docs/network_model.md"
 MODELS_HEADING = "Link models at a glance"
 

@@ -16,7 +16,7 @@
 
 #include "agents/algorithms/ids.h"
 #include "agents/messages/transport.h"
-#include "net_models/network.h"
+#include "net_models/network/network.h"
 
 namespace dvpr {
 

@@ -18,7 +18,7 @@
 
 #include "agents/messages/decoded_messages.h"
 #include "agents/messages/lcm_codec.h"
-#include "net_models/payload_buffers.h"
+#include "net_models/core/payload_buffers.h"
 #include "sim/sim_time.h"
 
 namespace dvpr {

@@ -90,7 +90,7 @@ Exit status:
 
 Examples:
   dvpr run experiments/configs/paper_kitti00.yaml
-  dvpr run experiments/configs/paper_kitti00.yaml --set runs=2 --set robots={from: 2, to: 6}
+  dvpr run experiments/configs/paper_kitti00.yaml --set runs=2 --set 'robots={from: 2, to: 6}'
   dvpr launch --config experiments/configs/paper_kitti00.yaml --robots 4 --speedup 5 \
               --set dataset.frames=1700 --set evaluation.suppression_frames=50
   dvpr replay results/replay_demo

@@ -29,15 +29,15 @@
 #include "agents/agent_params.h"
 #include "agents/routing/failure_detector.h"
 #include "experiments/config/talk_schedule.h"
+#include "experiments/data/robot_trajectory.h"
 #include "experiments/data/synthetic.h"
 #include "experiments/data/synthetic_bow.h"
-#include "experiments/data/robot_trajectory.h"
 #include "experiments/data/team_plan.h"
 #include "experiments/evaluation/ground_truth.h"
 #include "experiments/strategies/run_centroids.h"
 #include "experiments/strategies/strategy_spec.h"
-#include "net_models/link_factory.h"
-#include "net_models/units.h"
+#include "net_models/core/units.h"
+#include "net_models/helper/link_factory.h"
 #include "sim/sim_time.h"
 
 namespace dvpr {

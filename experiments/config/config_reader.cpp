@@ -8,7 +8,7 @@
 #include <system_error>
 
 #include "experiments/data/text_file.h"
-#include "net_models/param_checks.h"
+#include "net_models/core/param_checks.h"
 
 namespace dvpr::config_detail {
 

@@ -1,7 +1,7 @@
 #include "experiments/config/network_variants.h"
 
-#include "net_models/wire_format.h"
-#include "net_models/units.h"
+#include "net_models/core/units.h"
+#include "net_models/core/wire_format.h"
 
 namespace dvpr {
 

@@ -12,7 +12,7 @@
 
 #include "experiments/config/config.h"
 #include "experiments/results/results.h"
-#include "net_models/link_factory.h"
+#include "net_models/helper/link_factory.h"
 
 namespace dvpr {
 

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "net_models/network.h"
+#include "net_models/network/network.h"
 
 namespace dvpr {
 

@@ -20,12 +20,12 @@
 #include "experiments/data/dataset.h"
 #include "experiments/results/bow_rows.h"
 #include "experiments/results/closure_rows.h"
+#include "experiments/results/connectivity_rows.h"
 #include "experiments/results/medium_rows.h"
 #include "experiments/results/radio_rows.h"
-#include "experiments/results/connectivity_rows.h"
 #include "experiments/results/results.h"
 #include "experiments/strategies/strategy_spec.h"
-#include "net_models/link_factory.h"
+#include "net_models/helper/link_factory.h"
 
 namespace dvpr {
 

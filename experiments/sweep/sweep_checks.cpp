@@ -15,8 +15,8 @@
 #include "experiments/strategies/run_routing.h"
 #include "experiments/sweep/sweep.h"
 #include "experiments/sweep/sweep_size.h"
-#include "net_models/csma_link.h"
-#include "net_models/param_checks.h"
+#include "net_models/core/param_checks.h"
+#include "net_models/medium/csma_link.h"
 
 namespace dvpr {
 

@@ -12,7 +12,7 @@
 
 #include "experiments/results/protocol_traits.h"
 #include "experiments/sweep/sweep.h"
-#include "net_models/disconnected_params.h"
+#include "net_models/network/disconnected_params.h"
 
 namespace dvpr {
 

@@ -14,14 +14,14 @@
 #include <utility>
 #include <vector>
 
-#include "agents/messages/bow_query.h"
 #include "agents/bow_robot_agent.h"
+#include "agents/messages/bow_query.h"
 #include "agents/messages/channels.h"
 #include "agents/messages/reply_message.h"
-#include "agents/robot_agent.h"
 #include "agents/messages/sim_transport.h"
 #include "agents/messages/verify_messages.h"
-#include "net_models/ideal_link.h"
+#include "agents/robot_agent.h"
+#include "net_models/medium/ideal_link.h"
 #include "sim/simulator.h"
 #include "tests/agents/fixed_plan.h"
 #include "tests/descriptor_support.h"

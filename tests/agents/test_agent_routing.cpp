@@ -12,11 +12,11 @@
 #include <gtest/gtest.h>
 
 #include "agents/messages/channels.h"
+#include "agents/messages/sim_transport.h"
+#include "agents/robot_agent.h"
 #include "agents/routing/decentralized_routing.h"
 #include "agents/routing/probe_routing.h"
-#include "agents/robot_agent.h"
-#include "agents/messages/sim_transport.h"
-#include "net_models/ideal_link.h"
+#include "net_models/medium/ideal_link.h"
 #include "sim/simulator.h"
 #include "tests/descriptor_support.h"
 

@@ -15,8 +15,8 @@
 #include "agents/messages/lcm_codec.h"
 #include "agents/messages/sim_transport.h"
 #include "agents/messages/verification_payload.h"
-#include "net_models/ideal_link.h"
-#include "net_models/network_observer.h"
+#include "net_models/medium/ideal_link.h"
+#include "net_models/network/network_observer.h"
 #include "sim/simulator.h"
 
 namespace dvpr {

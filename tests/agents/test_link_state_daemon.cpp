@@ -17,11 +17,11 @@
 
 #include "agents/link_state_daemon.h"
 #include "agents/messages/sim_transport.h"
-#include "net_models/fixed_mobility.h"
-#include "net_models/network.h"
-#include "net_models/radio_link.h"
-#include "net_models/range_propagation.h"
-#include "net_models/track_mobility.h"
+#include "net_models/medium/radio_link.h"
+#include "net_models/mobility/fixed_mobility.h"
+#include "net_models/mobility/track_mobility.h"
+#include "net_models/network/network.h"
+#include "net_models/propagation/range_propagation.h"
 #include "sim/simulator.h"
 
 namespace dvpr {
@@ -124,7 +124,7 @@ TEST(LinkStateDaemon, BeaconsCostTheHandWorkedBytesPerSecond) {
 }
 
 // Once the TC of 5 s has spread, robot 0 routes to robot 3 over the chain, three hops, to the
-// nanosecond of the shortest-path chain (tests/net_models/test_radio_chain.cpp): each hop
+// nanosecond of the shortest-path chain (tests/net_models/network/test_radio_chain.cpp): each hop
 // 4.376 ms on the air + 2 ms + 500 ns of flight. Before any beacon it has no route.
 TEST(LinkStateDaemon, LearnedRoutesCarryAMessageOverTheChain) {
   Team t(Chain(), S(20));

@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "agents/messages/channels.h"
+#include "agents/messages/sim_transport.h"
 #include "agents/robot_agent.h"
 #include "agents/routing/routing.h"
-#include "agents/messages/sim_transport.h"
-#include "net_models/ideal_link.h"
+#include "net_models/medium/ideal_link.h"
 #include "sim/simulator.h"
 #include "tests/descriptor_support.h"
 

@@ -7,11 +7,11 @@
 #include <utility>
 #include <vector>
 
-#include "agents/messages/channels.h"
 #include "agents/algorithms/descriptor_index.h"
-#include "agents/robot_agent.h"
+#include "agents/messages/channels.h"
 #include "agents/messages/sim_transport.h"
-#include "net_models/ideal_link.h"
+#include "agents/robot_agent.h"
+#include "net_models/medium/ideal_link.h"
 #include "sim/simulator.h"
 #include "tests/agents/fixed_plan.h"
 #include "tests/descriptor_support.h"

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "agents/messages/channels.h"
-#include "net_models/point_to_point_link.h"
+#include "net_models/medium/point_to_point_link.h"
 #include "sim/simulator.h"
 
 namespace dvpr {

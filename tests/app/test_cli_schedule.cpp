@@ -1,7 +1,7 @@
 // network.schedule through the dvpr binary (issue 35, item 3): a robot whose only talk window
 // lies after the mission receives no query in either method, while without the schedule it
 // serves its share; a launched team refuses the key. The windows' timing is hand-worked at the
-// network's level (tests/net_models/test_talk_windows.cpp).
+// network's level (tests/net_models/network/test_talk_windows.cpp).
 #include <filesystem>
 #include <fstream>
 #include <map>

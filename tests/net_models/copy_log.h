@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "net_models/network_observer.h"
+#include "net_models/network/network_observer.h"
 
 namespace dvpr::testing_support {
 

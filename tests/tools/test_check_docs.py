@@ -3,7 +3,7 @@
 models, and only that.
 
 Copies the checker, the config reader (experiments/config/*.cpp), the models' spellings
-(net_models/link_factory.cpp) and the two docs into a scratch tree, checks that the copy passes,
+(net_models/helper/link_factory.cpp) and the two docs into a scratch tree, checks that the copy passes,
 then changes one thing at a time and checks that it is refused (exit 1) with a line naming the
 doc and the key or model:
 1. docs/config.md: a key's row gone (a key nested four readers deep), a row for a key the reader
@@ -25,7 +25,7 @@ import tempfile
 
 SOURCE = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).resolve().parents[2])
 SECTIONS = "experiments/config/config_sections.cpp"
-FACTORY = "net_models/link_factory.cpp"
+FACTORY = "net_models/helper/link_factory.cpp"
 CONFIG_DOC = "docs/config.md"
 MODEL_DOC = "docs/network_model.md"
 
@@ -100,7 +100,7 @@ def main():
         # 3. The models.
         row = next(l for l in (root / MODEL_DOC).read_text().splitlines(True) if l.startswith("| `csma` |"))
         edited(root, MODEL_DOC, row, "",
-               ["docs/network_model.md: csma: network.model accepts it (net_models/link_factory.cpp), "
+               ["docs/network_model.md: csma: network.model accepts it (net_models/helper/link_factory.cpp), "
                 "the table under 'Link models at a glance' has no row for it"], "a model's row gone")
         edited(root, MODEL_DOC, row, row + "| `token_ring` | - | a ring | no | yes | no | no |\n",
                ["docs/network_model.md: token_ring: a row under 'Link models at a glance', but network.model "
@@ -121,7 +121,7 @@ def main():
         edited(root, "experiments/config/config.cpp", "ExperimentConfig ReadExperiment(", "ExperimentConfig ReadAll(",
                ["check_docs: experiments/config/*.cpp: no ReadExperiment"], "no root reader", want_code=2)
         edited(root, FACTORY, "return kind == LinkModelKind::kCsma ||", "return kind != LinkModelKind::kIdeal && kind == LinkModelKind::kCsma ||",
-               ["check_docs: net_models/link_factory.cpp: Contends() is not"], "Contends() unreadable", want_code=2)
+               ["check_docs: net_models/helper/link_factory.cpp: Contends() is not"], "Contends() unreadable", want_code=2)
         edited(root, FACTORY, '{LinkModelKind::kIdeal, "ideal"},', "",
                ["docs/network_model.md: ideal: a row under 'Link models at a glance', but network.model accepts no such model"],
                "a model gone")

@@ -14,7 +14,10 @@ that it is refused (exit 1) with a message naming the file and what is wrong:
    the row does not name, and a row naming a module no file of it includes;
 6. a PUBLIC link only .cpp files need, and a PRIVATE link a header needs;
 7. a module the "Kept apart" table keeps from liblcm reaching it (dvpr_evaluation allowed
-   dvpr_lcm_log in its row).
+   dvpr_lcm_log in its row);
+8. the network's rooms: the network room (net_models/network/) including a concrete medium
+   (net_models/medium/wifi_link.h), and its row allowed the medium room, which Kept apart forbids:
+   the network knows a medium only as a LinkModel (net_models/link/).
 """
 import pathlib
 import re
@@ -116,10 +119,22 @@ def main():
                "dvpr_evaluation reaches PkgConfig::LCM (through dvpr_lcm_log), which Kept apart forbids",
                "liblcm under the evaluation")
 
+        # 8. The network room sees a medium only through net_models/link/, never a concrete one.
+        planted(root, "net_models/network/planted.cpp", '#include "net_models/medium/wifi_link.h"\n',
+                "net_models/network/planted.cpp:1: dvpr_net_network includes net_models/medium/wifi_link.h "
+                "of dvpr_net_medium", "a concrete medium in the network room")
+        planted(root, "net_models/network/planted.h", '#pragma once\n#include "net_models/helper/link_factory.h"\n',
+                "net_models/network/planted.h:2: dvpr_net_network includes net_models/helper/link_factory.h "
+                "of dvpr_net_helper", "the helper in the network room")
+        row = re.search(r"^\| `dvpr_net_network` \|.*$", (root / doc).read_text(), re.M).group(0)
+        edited(root, doc, row, row.replace("`dvpr_net_routing` |", "`dvpr_net_routing`, `dvpr_net_medium` |"),
+               "dvpr_net_network reaches dvpr_net_medium (through dvpr_net_medium), which Kept apart forbids",
+               "the medium room under the network room")
+
         code, err = run(root)
         assert code == 0, f"the copy after the plants were removed: exit {code}\n{err}"
     print("check_layers: the repository passes; planted includes (quoted and <...>, in sim/, bench/, tests/) "
-          "and CMake links against the table are refused")
+          "and CMake links against the table are refused; the network room reaches no concrete medium")
 
 
 if __name__ == "__main__":

@@ -9,9 +9,9 @@
 #include "experiments/data/dataset.h"
 #include "experiments/data/split.h"
 #include "experiments/protocols/sim/scenario.h"
-#include "net_models/network_helper.h"
-#include "net_models/propagation_model.h"
-#include "net_models/track_mobility.h"
+#include "net_models/helper/network_helper.h"
+#include "net_models/mobility/track_mobility.h"
+#include "net_models/propagation/propagation_model.h"
 
 namespace dvpr {
 

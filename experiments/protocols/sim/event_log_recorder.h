@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "experiments/results/lcm_log/lcm_event_log.h"
-#include "net_models/network_observer.h"
+#include "net_models/network/network_observer.h"
 
 namespace dvpr {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "net_models/network_observer.h"
+#include "net_models/network/network_observer.h"
 
 namespace dvpr {
 

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "experiments/results/results.h"
-#include "net_models/network_observer.h"
-#include "net_models/pair_map.h"
+#include "net_models/core/pair_map.h"
+#include "net_models/network/network_observer.h"
 
 namespace dvpr {
 

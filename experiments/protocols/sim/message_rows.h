@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "experiments/results/results.h"
-#include "net_models/network_observer.h"
+#include "net_models/network/network_observer.h"
 
 namespace dvpr {
 

@@ -15,7 +15,7 @@
 
 #include "agents/algorithms/query_record.h"
 #include "agents/messages/lcm_codec.h"
-#include "net_models/network_observer.h"
+#include "net_models/network/network_observer.h"
 
 namespace dvpr {
 

@@ -7,7 +7,7 @@
 
 #include "agents/algorithms/frame_stream.h"
 #include "agents/messages/channels.h"
-#include "net_models/network_helper.h"
+#include "net_models/helper/network_helper.h"
 
 namespace dvpr {
 

@@ -1,7 +1,7 @@
 #pragma once
 // A simulated team, built in one place from what it physically is (ns-3's helpers): n robots
 // driving their sub-sequences of the deployment (docs/design.md section 3) with their agents,
-// over a network whose stack (net_models/network_stack.h) places each robot on its track. What
+// over a network whose stack (net_models/network/network_stack.h) places each robot on its track. What
 // is measured and written is not the scenario's: the ground-truth oracle comes in with the agent
 // factory, and recorders subscribe to network() before Run (simulation.cpp attaches the run's).
 #include <cstdint>
@@ -11,16 +11,16 @@
 
 #include "agents/agent_core.h"
 #include "agents/agent_params.h"
+#include "agents/algorithms/ids.h"
 #include "agents/link_state_daemon.h"
 #include "agents/messages/decoded_messages.h"
-#include "agents/algorithms/ids.h"
 #include "agents/messages/sim_transport.h"
 #include "agents/team_agent.h"
 #include "experiments/data/dataset.h"
 #include "experiments/data/split.h"
-#include "net_models/link_factory.h"
-#include "net_models/network.h"
-#include "net_models/track_mobility.h"
+#include "net_models/helper/link_factory.h"
+#include "net_models/mobility/track_mobility.h"
+#include "net_models/network/network.h"
 #include "sim/simulator.h"
 
 namespace dvpr {

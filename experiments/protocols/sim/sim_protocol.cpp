@@ -10,7 +10,7 @@
 #include "experiments/protocols/sim/simulation.h"
 #include "experiments/protocols/strategy_inputs.h"
 #include "experiments/strategies/run_routing.h"
-#include "net_models/param_checks.h"
+#include "net_models/core/param_checks.h"
 
 namespace dvpr {
 

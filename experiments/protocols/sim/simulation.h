@@ -9,16 +9,16 @@
 #include <optional>
 #include <vector>
 
-#include "agents/routing/agent_routing.h"
 #include "agents/bow_robot_agent.h"
 #include "agents/robot_agent.h"
-#include "experiments/protocols/sim/scenario.h"
+#include "agents/routing/agent_routing.h"
 #include "experiments/data/dataset.h"
-#include "experiments/results/results.h"
 #include "experiments/evaluation/sim_metrics.h"
-#include "net_models/connectivity.h"
-#include "net_models/link_factory.h"
-#include "net_models/network.h"
+#include "experiments/protocols/sim/scenario.h"
+#include "experiments/results/results.h"
+#include "net_models/helper/link_factory.h"
+#include "net_models/network/network.h"
+#include "net_models/propagation/connectivity.h"
 
 namespace dvpr {
 

@@ -11,10 +11,10 @@
 
 #include "agents/algorithms/descriptor_index.h"
 #include "agents/algorithms/frame_stream.h"
+#include "agents/messages/sim_transport.h"
 #include "agents/recluster/recluster_agent.h"
 #include "agents/recluster/recluster_messages.h"
-#include "agents/messages/sim_transport.h"
-#include "net_models/ideal_link.h"
+#include "net_models/medium/ideal_link.h"
 #include "sim/simulator.h"
 #include "tests/descriptor_support.h"
 

@@ -17,8 +17,8 @@
 #include "experiments/data/loaders.h"
 #include "experiments/data/split.h"
 #include "experiments/protocols/sim/scenario.h"
-#include "net_models/connectivity.h"
-#include "net_models/range_propagation.h"
+#include "net_models/propagation/connectivity.h"
+#include "net_models/propagation/range_propagation.h"
 
 namespace dvpr {
 namespace {

@@ -1,6 +1,6 @@
 // Bytes by message role (issue 16): RoleBytesRecorder on a hand-worked three-robot exchange, with
 // every size worked out from LCM's encoding rules and docs/design.md section 4
-// (net_models/wire_format.h), not taken from the code under test. The role of every channel is
+// (net_models/core/wire_format.h), not taken from the code under test. The role of every channel is
 // pinned in tests/agents/recluster/test_every_channel.cpp.
 //
 // Depends on the LCM sizes of query_t, match_t, verify_request_t, verify_result_t and
@@ -16,8 +16,8 @@
 #include "agents/messages/lcm_codec.h"
 #include "agents/recluster/recluster_messages.h"
 #include "experiments/protocols/sim/message_roles.h"
-#include "net_models/network.h"
-#include "net_models/shared_medium_link.h"
+#include "net_models/medium/shared_medium_link.h"
+#include "net_models/network/network.h"
 #include "sim/simulator.h"
 
 namespace dvpr {

@@ -15,8 +15,8 @@
 #include "experiments/protocols/sim/event_log_recorder.h"
 #include "experiments/protocols/sim/message_rows.h"
 #include "experiments/results/result_writers.h"
-#include "net_models/network.h"
-#include "net_models/point_to_point_link.h"
+#include "net_models/medium/point_to_point_link.h"
+#include "net_models/network/network.h"
 #include "sim/simulator.h"
 
 namespace dvpr {

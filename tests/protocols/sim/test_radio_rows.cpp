@@ -1,12 +1,12 @@
 // radio.csv's drop columns (experiments/results/radio_rows.h) name the network's drop reasons
-// (net_models/link_model.h) in their order after kNone: the simulation copies the counts by
+// (net_models/link/link_model.h) in their order after kNone: the simulation copies the counts by
 // index, so a reason added to one list and not the other would shift every column after it.
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "experiments/results/radio_rows.h"
-#include "net_models/link_model.h"
+#include "net_models/link/link_model.h"
 
 namespace dvpr {
 namespace {
