@@ -6,29 +6,12 @@
 #include <vector>
 
 #include "net_models/mobility/fixed_mobility.h"
-#include "net_models/propagation/full_mesh_propagation.h"
-#include "net_models/propagation/log_distance_propagation.h"
-#include "net_models/propagation/range_propagation.h"
+#include "net_models/propagation/propagation_registry.h"
 #include "net_models/propagation/reception_loss.h"
 #include "net_models/routing/link_state_routing.h"
 #include "net_models/routing/shortest_path_routing.h"
 
 namespace dvpr {
-
-namespace {
-
-// The propagation model of `p` over the robots' positions (propagation_params.h).
-std::unique_ptr<PropagationModel> MakePropagation(const PropagationParams& p, const MobilityModel& mobility,
-                                                  std::uint64_t run_seed) {
-  switch (p.kind) {
-    case PropagationKind::kFullMesh: return std::make_unique<FullMeshPropagation>();
-    case PropagationKind::kRange: return std::make_unique<RangePropagation>(mobility, p.range_m);
-    case PropagationKind::kLogDistance: return std::make_unique<LogDistancePropagation>(mobility, p.log_distance, run_seed);
-  }
-  throw std::logic_error("MakePropagation: unknown propagation kind");
-}
-
-}  // namespace
 
 NetworkStack MakeNetworkStack(const NetworkModelParams& params, int nodes, std::uint64_t run_seed,
                               std::unique_ptr<MobilityModel> mobility) {

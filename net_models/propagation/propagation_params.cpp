@@ -1,21 +1,14 @@
 #include "net_models/propagation/propagation_params.h"
 
-#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include <utility>
 
 #include "net_models/core/param_checks.h"
+#include "net_models/propagation/propagation_registry.h"
 
 namespace dvpr {
 namespace {
-
-constexpr std::array<std::pair<PropagationKind, std::string_view>, 3> kNames{{
-    {PropagationKind::kFullMesh, "full_mesh"},
-    {PropagationKind::kRange, "range"},
-    {PropagationKind::kLogDistance, "log_distance"},
-}};
 
 // lo <= v <= hi (NaN fails), or lo < v when low_open.
 void CheckNumber(std::string_view field, double v, double lo, double hi, bool low_open = false) {
@@ -29,19 +22,17 @@ void CheckNumber(std::string_view field, double v, double lo, double hi, bool lo
 
 PropagationKind ParsePropagationKind(std::string_view name, bool with_full_mesh) {
   std::string expected;
-  for (const auto& [kind, spelling] : kNames) {
-    if (kind == PropagationKind::kFullMesh && !with_full_mesh) continue;
-    if (spelling == name) return kind;
-    expected += (expected.empty() ? "" : ", ") + std::string(spelling);
+  for (const PropagationModelInfo& m : PropagationRegistry::Global().models()) {
+    if (!m.needs_positions && !with_full_mesh) continue;
+    if (m.kind.name() == name) return m.kind;
+    expected += (expected.empty() ? "" : ", ") + std::string(m.kind.name());
   }
   throw std::invalid_argument("unknown value '" + std::string(name) + "' (expected one of: " + expected + ")");
 }
 
-std::string_view ToString(PropagationKind kind) {
-  for (const auto& [k, spelling] : kNames) {
-    if (k == kind) return spelling;
-  }
-  return "unknown";
+bool PropagationParams::NeedsPositions() const {
+  const PropagationModelInfo* m = PropagationRegistry::Global().Find(kind);
+  return m == nullptr || m->needs_positions;  // an unknown kind: MakePropagation refuses it
 }
 
 // Received power tx - L(d) equals the sensitivity where L(d) = tx - sensitivity, so

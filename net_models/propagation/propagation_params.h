@@ -14,13 +14,31 @@
 
 namespace dvpr {
 
-enum class PropagationKind { kFullMesh, kRange, kLogDistance };
+// A propagation model by its config name: "full_mesh", "range", "log_distance", or one a
+// program registered (propagation_registry.h). The name's characters must outlive every kind made
+// from it (a string literal).
+class PropagationKind {
+ public:
+  static const PropagationKind kFullMesh;
+  static const PropagationKind kRange;
+  static const PropagationKind kLogDistance;
 
-// "range" | "log_distance" (and "full_mesh" when `with_full_mesh`: a radio's propagation is over
-// positions); throws std::invalid_argument "unknown value '<name>' (expected one of: range,
-// log_distance)".
+  constexpr explicit PropagationKind(std::string_view name) : name_(name) {}
+  constexpr std::string_view name() const { return name_; }
+  friend constexpr bool operator==(PropagationKind a, PropagationKind b) { return a.name_ == b.name_; }
+
+ private:
+  std::string_view name_;
+};
+inline constexpr PropagationKind PropagationKind::kFullMesh{"full_mesh"};
+inline constexpr PropagationKind PropagationKind::kRange{"range"};
+inline constexpr PropagationKind PropagationKind::kLogDistance{"log_distance"};
+
+// A registered model's kind by name (propagation_registry.h; "full_mesh" only when
+// `with_full_mesh`: a radio's propagation is over positions); throws std::invalid_argument
+// "unknown value '<name>' (expected one of: range, log_distance)".
 PropagationKind ParsePropagationKind(std::string_view name, bool with_full_mesh = false);
-std::string_view ToString(PropagationKind kind);
+inline std::string_view ToString(PropagationKind kind) { return kind.name(); }
 
 struct LogDistanceParams {
   double exponent = 3.0;
@@ -50,8 +68,9 @@ struct PropagationParams {
 
   // A radio's propagation when none is given: range 200 m.
   static PropagationParams Radio() { return PropagationParams{.kind = PropagationKind::kRange}; }
-  // Who hears whom depends on where the robots are: a trajectory is needed.
-  bool NeedsPositions() const { return kind != PropagationKind::kFullMesh; }
+  // Who hears whom depends on where the robots are: a trajectory is needed (the registered
+  // model's say; propagation_registry.h).
+  bool NeedsPositions() const;
   // Throws std::invalid_argument "<field>: ..." ("range: must be in (0, 1e9] metres, got -3",
   // "log_distance.exponent: ...").
   void Validate() const;
