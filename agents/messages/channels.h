@@ -45,7 +45,7 @@ inline std::string VerifyResult(RobotId dst) { return ChannelName(ChannelKind::k
 inline std::string BowQuery(RobotId dst) { return ChannelName(ChannelKind::kBowQuery, dst.value); }
 inline std::string BowProbe(RobotId dst) { return ChannelName(ChannelKind::kBowProbe, dst.value); }
 inline std::string BowMatch(RobotId dst) { return ChannelName(ChannelKind::kBowMatch, dst.value); }
-// link_state routing's beacons (agents/link_state_daemon.h): link-local, the team's channels.
+// link_state routing's beacons (net_models/link_state/daemon/link_state_daemon.h): link-local, the team's channels.
 inline const std::string kHello = ChannelName(ChannelKind::kHello);
 inline const std::string kTopology = ChannelName(ChannelKind::kTopology);
 

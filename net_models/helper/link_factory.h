@@ -13,7 +13,7 @@
 #include "net_models/network/disconnected_params.h"
 #include "net_models/propagation/loss_params.h"
 #include "net_models/propagation/propagation_params.h"
-#include "net_models/routing/link_state_params.h"
+#include "net_models/link_state/link_state_params.h"
 #include "net_models/routing/next_hop_routing.h"
 
 namespace dvpr {

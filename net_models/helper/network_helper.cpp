@@ -8,7 +8,7 @@
 #include "net_models/mobility/fixed_mobility.h"
 #include "net_models/propagation/propagation_registry.h"
 #include "net_models/propagation/reception_loss.h"
-#include "net_models/routing/link_state_routing.h"
+#include "net_models/link_state/link_state_routing.h"
 #include "net_models/routing/shortest_path_routing.h"
 
 namespace dvpr {
@@ -40,11 +40,14 @@ NetworkStack MakeNetworkStack(const NetworkModelParams& params, int nodes, std::
     case NextHopKind::kShortestPath:
       stack.next_hop = std::make_unique<ShortestPathNextHop>(*stack.propagation, nodes);
       break;
-    case NextHopKind::kLinkState:
+    case NextHopKind::kLinkState: {
       // Its tables fill only from the beacons the robots' routing daemons send
-      // (agents/link_state_daemon.h): whoever runs the robots starts them.
-      stack.next_hop = std::make_unique<LinkStateNextHop>(nodes, params.link_state);
+      // (net_models/link_state/daemon/link_state_helper.h): whoever runs the robots starts them.
+      auto tables = std::make_unique<LinkStateNextHop>(nodes, params.link_state);
+      stack.link_state = tables.get();
+      stack.next_hop = std::move(tables);
       break;
+    }
   }
   return stack;
 }

@@ -73,6 +73,8 @@ class Network final : private ForwarderHost {
   const NextHopRouting& next_hop() const { return *stack_.next_hop; }
   // A routing model that learns (link_state) is fed by whoever runs the nodes' daemons.
   NextHopRouting& next_hop() { return *stack_.next_hop; }
+  // The link-state tables when the next hop is link_state routing, else null (NetworkStack).
+  LinkStateNextHop* link_state() { return stack_.link_state; }
   const WireParams& wire() const { return wire_; }
 
   // --- names --------------------------------------------------------------

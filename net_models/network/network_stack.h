@@ -24,12 +24,17 @@
 
 namespace dvpr {
 
+class LinkStateNextHop;
+
 struct NetworkStack {
   std::unique_ptr<MobilityModel> mobility;        // null: FixedMobility::AtOrigin
   std::unique_ptr<PropagationModel> propagation;  // null: FullMeshPropagation
   std::unique_ptr<LinkModel> access;              // the medium access; required
   std::unique_ptr<NextHopRouting> next_hop;       // null: DirectNextHop
   std::unique_ptr<ReceptionLoss> loss;            // null: no frame is lost on the channel
+  // next_hop as the link-state tables its robots' daemons write into, when it is one (set by
+  // whoever built it: MakeNetworkStack; net_models/link_state/), else null.
+  LinkStateNextHop* link_state = nullptr;
   // What becomes of a copy the routing finds no way for: dropped, or held (store-and-forward).
   DisconnectedParams disconnected;
 

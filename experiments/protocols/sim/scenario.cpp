@@ -6,8 +6,8 @@
 #include <utility>
 
 #include "agents/algorithms/frame_stream.h"
-#include "agents/messages/channels.h"
 #include "net_models/helper/network_helper.h"
+#include "net_models/link_state/daemon/link_state_helper.h"
 
 namespace dvpr {
 
@@ -77,17 +77,9 @@ Scenario::Scenario(const Dataset& data, const ScenarioParams& params, const Agen
                            split_.WindowStreams()};
     agents_.push_back(make_agent(setup, *transport));
   }
-  if (params_.network.next_hop == NextHopKind::kLinkState) {
-    auto* routing = dynamic_cast<LinkStateNextHop*>(&network_.next_hop());
-    if (routing == nullptr) throw std::logic_error("Scenario: routing link_state without a LinkStateNextHop");
-    network_.SetLinkLocal(network_.InternChannel(channels::kHello));
-    network_.SetLinkLocal(network_.InternChannel(channels::kTopology));
-    const SimTime last_frame = split_.LastCapture(data_.fps);
-    for (int r = 0; r < params_.robots; ++r) {
-      daemons_.push_back(std::make_unique<LinkStateDaemon>(*transports_[static_cast<std::size_t>(r)], NodeId(r),
-                                                           *routing, last_frame));
-    }
-  }
+  std::vector<Transport*> transports;
+  for (const auto& t : transports_) transports.push_back(t.get());
+  daemons_ = LinkStateHelper::Install(network_, transports, split_.LastCapture(data_.fps));
 }
 
 void Scenario::Run() {

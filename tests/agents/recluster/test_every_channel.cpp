@@ -1,7 +1,7 @@
 // Every channel of every message type, in one place. Each LCM type of lcmtypes/dvpr/*.lcm travels
 // on at least one channel; every channel the agents publish on (agents/messages/channels.h,
 // agents/messages/team_sync.h, agents/recluster/recluster_messages.h; the routing daemon's,
-// agents/link_state_daemon.h) is one of the message catalogue's (lcmtypes/channels/channels.h),
+// net_models/link_state/daemon/link_state_daemon.h) is one of the message catalogue's (lcmtypes/channels/channels.h),
 // with the LCM type it carries and the role that the simulation's recorders, the LCM agent
 // process and `dvpr replay` all read from the catalogue. The names, types and roles below are
 // written by hand from the protocol (docs/design.md section 1, docs/bow.md).

@@ -27,7 +27,7 @@
 #include <span>
 #include <vector>
 
-#include "net_models/routing/link_state_params.h"
+#include "net_models/link_state/link_state_params.h"
 #include "net_models/routing/next_hop_routing.h"
 
 namespace dvpr {

@@ -1,5 +1,5 @@
 #pragma once
-// link_state routing's beacons (net_models/routing/link_state_routing.h) as the LCM messages robots
+// link_state routing's beacons (net_models/link_state/link_state_routing.h) as the LCM messages robots
 // send (lcmtypes/dvpr/routing_hello_t.lcm, routing_topology_t.lcm): a robot's links as robot
 // ids and back. Ids travel as int16_t, as in agent_status_t (a team of up to 32767 robots).
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "net_models/routing/link_state_routing.h"
+#include "net_models/link_state/link_state_routing.h"
 
 #include <algorithm>
 #include <deque>

@@ -1,4 +1,4 @@
-#include "agents/messages/routing_beacons.h"
+#include "net_models/link_state/daemon/routing_beacons.h"
 
 #include <stdexcept>
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
 // A robot's routing daemon for `link_state` routing: what olsrd is to a robot running Linux. It
 // sends the robot's beacons through the robot's own transport, like any of its messages, and
-// writes what it hears into the robot's routing table (net_models/routing/link_state_routing.h), which
+// writes what it hears into the robot's routing table (net_models/link_state/link_state_routing.h), which
 // the network's routing then follows for every copy the robot sends or relays:
 //
 // - every `hello`, from virtual time 0, a HELLO (routing_hello_t) on DVPR_HELLO;
@@ -13,9 +13,9 @@
 // they learned for the hold times, so the last answers still find their way.
 #include <cstdint>
 
-#include "agents/messages/routing_beacons.h"
+#include "net_models/link_state/daemon/routing_beacons.h"
 #include "agents/messages/transport.h"
-#include "net_models/routing/link_state_routing.h"
+#include "net_models/link_state/link_state_routing.h"
 #include "sim/sim_time.h"
 
 namespace dvpr {

@@ -1,5 +1,5 @@
-// link_state routing end to end: each robot's daemon (agents/link_state_daemon.h) sends its
-// beacons through a SimTransport over a 1 Mbit/s radio with 2 ms of processing per hop and a
+// link_state routing end to end: each robot's daemon (net_models/link_state/daemon/link_state_daemon.h,
+// installed by LinkStateHelper) sends its beacons through a SimTransport over a 1 Mbit/s radio with 2 ms of processing per hop and a
 // 200 m range; the routing tables they fill route the robots' messages.
 //
 // Beacon sizes, by hand (lcmtypes/dvpr/routing_*.lcm; wire framing as docs/network_model.md):
@@ -12,11 +12,12 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "agents/link_state_daemon.h"
 #include "agents/messages/sim_transport.h"
+#include "net_models/link_state/daemon/link_state_helper.h"
 #include "net_models/medium/radio_link.h"
 #include "net_models/mobility/fixed_mobility.h"
 #include "net_models/mobility/track_mobility.h"
@@ -54,14 +55,14 @@ class Watch : public NetworkObserver {
 
 struct Team {
   Team(std::unique_ptr<MobilityModel> mobility, SimTime until) : net(sim, 4, Stack(std::move(mobility))) {
-    net.SetLinkLocal(net.InternChannel("DVPR_HELLO"));
-    net.SetLinkLocal(net.InternChannel("DVPR_TOPOLOGY"));
-    channel = net.InternChannel("ALL");
-    type = net.InternType("dvpr.test_t");
+    std::vector<Transport*> robots;
     for (int r = 0; r < 4; ++r) {
       transports.push_back(std::make_unique<SimTransport>(net, NodeId(r)));
-      daemons.push_back(std::make_unique<LinkStateDaemon>(*transports.back(), NodeId(r), *routing, until));
+      robots.push_back(transports.back().get());
     }
+    daemons = LinkStateHelper::Install(net, robots, until);
+    channel = net.InternChannel("ALL");
+    type = net.InternType("dvpr.test_t");
     for (auto& d : daemons) d->Start();
   }
   NetworkStack Stack(std::unique_ptr<MobilityModel> mobility) {
@@ -71,6 +72,7 @@ struct Team {
     s.access = std::make_unique<RadioLink>(RadioLinkParams{DataRate::Mbps(1), SimTime::Millis(2), 100}, 4);
     auto routing_model = std::make_unique<LinkStateNextHop>(4, LinkStateParams{});
     routing = routing_model.get();
+    s.link_state = routing;
     s.next_hop = std::move(routing_model);
     return s;
   }
@@ -156,6 +158,29 @@ TEST(LinkStateDaemon, ARouteThroughARobotThatLeftIsUsedUntilItsHelloExpiresThenR
   EXPECT_EQ(t.watch.lines, (std::vector<std::string>{"delivered at 9012753000ns, 2 hops",
                                                      "dropped at 15900000000ns: stale_route",
                                                      "delivered at 16112753282ns, 2 hops"}));
+}
+
+// The helper installs a daemon per robot only where the next hop is link_state, and on one
+// transport per robot.
+TEST(LinkStateHelper, InstallsOnlyOnLinkStateAndOnlyOneDaemonPerRobot) {
+  Simulator sim;
+  NetworkStack direct;
+  direct.access = std::make_unique<RadioLink>(RadioLinkParams{DataRate::Mbps(1), SimTime::Millis(2), 100}, 2);
+  Network plain(sim, 2, std::move(direct));
+  SimTransport a(plain, NodeId(0)), b(plain, NodeId(1));
+  std::vector<Transport*> both{&a, &b};
+  EXPECT_TRUE(LinkStateHelper::Install(plain, both, S(10)).empty());
+  EXPECT_FALSE(plain.link_state());
+
+  Team t(Chain(), S(20));
+  std::vector<Transport*> three{t.transports[0].get(), t.transports[1].get(), t.transports[2].get()};
+  try {
+    (void)LinkStateHelper::Install(t.net, three, S(20));
+    ADD_FAILURE();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "LinkStateHelper: 3 transports for 4 nodes");
+  }
+  EXPECT_EQ(t.daemons.size(), 4U);
 }
 
 }  // namespace

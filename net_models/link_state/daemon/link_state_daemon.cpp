@@ -1,4 +1,4 @@
-#include "agents/link_state_daemon.h"
+#include "net_models/link_state/daemon/link_state_daemon.h"
 
 #include <vector>
 

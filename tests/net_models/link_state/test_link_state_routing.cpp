@@ -1,4 +1,4 @@
-// link_state routing's tables (net_models/routing/link_state_routing.h), fed by hand as the robots'
+// link_state routing's tables (net_models/link_state/link_state_routing.h), fed by hand as the robots'
 // beacons would feed them: what a robot advertises, which TC is news, the routes it takes, and
 // when what it heard is forgotten (OLSR's hold times: 3 HELLO periods, 3 TC periods).
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "net_models/routing/link_state_routing.h"
+#include "net_models/link_state/link_state_routing.h"
 
 namespace dvpr {
 namespace {
