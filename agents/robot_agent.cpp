@@ -18,13 +18,13 @@ const DescriptorMatrix& DescriptorsOf(const AgentSetup& setup) {
 
 }  // namespace
 
-RobotAgent::RobotAgent(const AgentSetup& setup, Transport& transport, std::unique_ptr<AgentRouting> routing,
+RobotAgent::RobotAgent(const AgentSetup& setup, Transport& transport, std::unique_ptr<AgentPlacement> placement,
                        GeometricVerifier verifier)
     : TaskServer(setup, setup.params.verification.max_distance, transport, std::move(verifier)),
       descriptors_(&DescriptorsOf(setup)),
       index_(static_cast<int>(descriptors_->cols())),
-      routing_(std::move(routing)) {
-  if (routing_ == nullptr) throw std::invalid_argument("RobotAgent: no routing");
+      placement_(std::move(placement)) {
+  if (placement_ == nullptr) throw std::invalid_argument("RobotAgent: no placement");
 }
 
 std::vector<std::string> RobotAgent::InboxChannels(RobotId id) {
@@ -45,20 +45,20 @@ void RobotAgent::Start() {
   subscribe_query(std::string(channels::kQueryAll), QueryRole::kSearch);
   Keep(transport_.Subscribe<match_t>(channels::Match(id_), [this](const match_t& m) { OnMatch(m); }));
   SubscribeVerification();
-  routing_->Start(AgentContext{id_, transport_, index_, frames()});
+  placement_->Start(AgentContext{id_, transport_, index_, frames()});
   StartClock();
 }
 
 void RobotAgent::TakeFrame(int k) {
   const FrameId frame = FrameAt(k);
   const float* descriptor = DescriptorOf(frame);
-  const QueryPlan plan = routing_->Plan(descriptor);
+  const QueryPlan plan = placement_->Plan(descriptor);
   BeginQuery(k, plan.searches);
   PublishQuery(k, plan);
   if (plan.search_here) {
     EnqueueSearch(id_, frame, plan.store_here, [&](DescriptorSearch& job) { job.descriptor = descriptor; });
   } else if (plan.store_here) {
-    routing_->Store(id_, frame, descriptor);
+    placement_->Store(id_, frame, descriptor);
   }
 }
 
@@ -109,7 +109,7 @@ void RobotAgent::SearchAhead() {
 
 void RobotAgent::Searched(const Task& task) {
   const std::optional<IndexMatch>& best = service_best_;
-  if (task.store) routing_->Store(task.querier, task.frame, task.job.descriptor);
+  if (task.store) placement_->Store(task.querier, task.frame, task.job.descriptor);
   if (task.querier == id_) {
     RecordReply(task.frame, id_, best);
     return;
@@ -126,7 +126,7 @@ void RobotAgent::OnQuery(const MessageRef<query_t>& message, QueryRole role) {
   const query_t& q = *message;
   if (!online_ || q.robot == id_.value || Foreign(q.robot) || q.dim != descriptors_->cols()) return;
   if (role == QueryRole::kStore) {
-    routing_->Store(RobotId(q.robot), FrameId(q.frame), q.descriptor.data());
+    placement_->Store(RobotId(q.robot), FrameId(q.frame), q.descriptor.data());
     return;
   }
   EnqueueSearch(RobotId(q.robot), FrameId(q.frame), role == QueryRole::kSearchAndStore, [&](DescriptorSearch& job) {

@@ -6,12 +6,12 @@
 //
 // What every robot does (frame clock, task queue, replies, verification, dropout) is
 // AgentCore's and TaskServer's; this class keeps what the descriptor method adds: a frame's
-// query is its global descriptor, routed by the routing component, and the answers combine into
+// query is its global descriptor, routed by the placement component, and the answers combine into
 // the nearest match. The agent only records what happened (QueryRecord, RobotLoad); metrics are
 // computed elsewhere from those records. It talks only through Transport, so
 // the same code runs in virtual time and as a real LCM process. Where its
-// frames go and how it keeps what it stores is its routing component's
-// (AgentRouting), which may keep per-robot state and messages of its own.
+// frames go and how it keeps what it stores is its placement component's
+// (AgentPlacement), which may keep per-robot state and messages of its own.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -20,12 +20,12 @@
 #include <vector>
 
 #include "agents/agent_core.h"
-#include "agents/routing/agent_routing.h"
+#include "agents/algorithms/descriptor_index.h"
 #include "agents/messages/channels.h"
 #include "agents/messages/decoded_messages.h"
-#include "agents/algorithms/descriptor_index.h"
-#include "agents/task_server.h"
 #include "agents/messages/transport.h"
+#include "agents/placement/agent_placement.h"
+#include "agents/task_server.h"
 
 namespace dvpr {
 
@@ -43,12 +43,12 @@ struct DescriptorSearch {
 
 class RobotAgent final : public TaskServer<DescriptorSearch> {
  public:
-  // `setup.frames.descriptors` holds the descriptors of every frame of the sequence; `routing`
-  // is this robot's component (TeamRouting::MakeAgentRouting).
-  RobotAgent(const AgentSetup& setup, Transport& transport, std::unique_ptr<AgentRouting> routing,
+  // `setup.frames.descriptors` holds the descriptors of every frame of the sequence; `placement`
+  // is this robot's component (TeamPlacement::MakeAgentPlacement).
+  RobotAgent(const AgentSetup& setup, Transport& transport, std::unique_ptr<AgentPlacement> placement,
              GeometricVerifier verifier);
 
-  // Subscribes to the robot's channels, starts its routing component and schedules its first
+  // Subscribes to the robot's channels, starts its placement component and schedules its first
   // frame at t = 0.
   void Start() override;
   // The channels Start() subscribes to (a real agent holds them from before its start barrier:
@@ -56,16 +56,16 @@ class RobotAgent final : public TaskServer<DescriptorSearch> {
   static std::vector<std::string> InboxChannels(RobotId id);
   std::vector<std::string> Inbox() const override { return InboxChannels(id_); }
 
-  std::vector<LostRobot> Lost() const override { return routing_->Lost(); }
+  std::vector<LostRobot> Lost() const override { return placement_->Lost(); }
   std::vector<IndexEntry> WholeFramesStored() const override { return index_.entries(); }
   const IncrementalIndex& index() const { return index_; }
-  const AgentRouting& routing() const { return *routing_; }
+  const AgentPlacement& placement() const { return *placement_; }
 
  private:
   void TakeFrame(int k) override;
   std::span<const float> VerificationFeatures(FrameId frame) override;
   std::int64_t Stored() const override { return static_cast<std::int64_t>(index_.size()); }
-  void Stopped() override { routing_->Stop(); }
+  void Stopped() override { placement_->Stop(); }
   std::int64_t Search(Task& task) override;
   void Searched(const Task& task) override;
 
@@ -83,7 +83,7 @@ class RobotAgent final : public TaskServer<DescriptorSearch> {
   std::optional<IndexMatch> service_best_;  // its search's result, sent when the service ends
   const DescriptorMatrix* descriptors_;
   IncrementalIndex index_;
-  std::unique_ptr<AgentRouting> routing_;
+  std::unique_ptr<AgentPlacement> placement_;
   std::vector<std::uint32_t> match_channels_;  // by robot id (ChannelOf)
 };
 

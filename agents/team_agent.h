@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "agents/routing/failure_detector.h"
 #include "agents/algorithms/ids.h"
 #include "agents/algorithms/index.h"
 #include "agents/algorithms/query_record.h"
 #include "agents/algorithms/robot_load.h"
+#include "agents/placement/failure_detector.h"
 
 namespace dvpr {
 

@@ -16,7 +16,7 @@
 #include "bench/bench_main.h"
 #include "bench/sim_inputs.h"
 
-#include "agents/routing/decentralized_routing.h"
+#include "agents/placement/decentralized_placement.h"
 
 namespace dvpr {
 namespace {
@@ -25,7 +25,7 @@ void Scaling(benchmark::State& state, bench::Training training) {
   const auto frames = static_cast<Eigen::Index>(state.range(0));
   const int robots = static_cast<int>(state.range(1));
   const Dataset data = bench::Tiled(frames);
-  const DecentralizedRouting routing(bench::Table(robots, 10, training));  // training is not measured
+  const DecentralizedPlacement routing(bench::Table(robots, 10, training));  // training is not measured
   SimRunLog log;
   for (auto _ : state) {
     log = RunSimulation(data, routing, bench::PointToPoint(robots));

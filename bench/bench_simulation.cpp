@@ -14,7 +14,7 @@
 #include <memory>
 #include <type_traits>
 
-#include "agents/routing/decentralized_routing.h"
+#include "agents/placement/decentralized_placement.h"
 
 namespace dvpr {
 namespace {
@@ -82,11 +82,11 @@ void Report(benchmark::State& state, const SimRunLog& log) {
 void BM_Kitti00_100Robots(benchmark::State& state, const char* strategy) {
   static const Dataset data = Kitti00();
   const int robots = 100;
-  std::unique_ptr<RoutingStrategy> routing;
+  std::unique_ptr<PlacementStrategy> routing;
   if (std::string(strategy) == "broadcast") {
-    routing = std::make_unique<BroadcastRouting>(robots);
+    routing = std::make_unique<BroadcastPlacement>(robots);
   } else {
-    routing = std::make_unique<DecentralizedRouting>(Table(robots, 30));
+    routing = std::make_unique<DecentralizedPlacement>(Table(robots, 30));
   }
   SimRunLog log;
   for (auto _ : state) {
@@ -104,7 +104,7 @@ BENCHMARK_CAPTURE(BM_Kitti00_100Robots, decentralized, "decentralized")->Unit(be
 void BM_Kitti00_100Robots_Radio200m(benchmark::State& state, NextHopKind kind) {
   static const Dataset data = Kitti00();
   const int robots = 100;
-  const BroadcastRouting routing(robots);
+  const BroadcastPlacement routing(robots);
   SimRunParams params = Radio(robots, 200.0);
   params.scenario.network.routing = kind;
   SimRunLog log;
@@ -123,11 +123,11 @@ BENCHMARK_CAPTURE(BM_Kitti00_100Robots_Radio200m, link_state, NextHopKind::kLink
 void BM_Kitti00_Contending(benchmark::State& state, const char* strategy) {
   static const Dataset data = Kitti00();
   const int robots = static_cast<int>(state.range(0));
-  std::unique_ptr<RoutingStrategy> routing;
+  std::unique_ptr<PlacementStrategy> routing;
   if (std::string(strategy) == "broadcast") {
-    routing = std::make_unique<BroadcastRouting>(robots);
+    routing = std::make_unique<BroadcastPlacement>(robots);
   } else {
-    routing = std::make_unique<DecentralizedRouting>(Table(robots, 30));
+    routing = std::make_unique<DecentralizedPlacement>(Table(robots, 30));
   }
   const SimRunParams params = state.range(1) == 0 ? Csma(robots) : Wifi(robots, state.range(1));
   SimRunLog log;
@@ -145,7 +145,7 @@ BENCHMARK_CAPTURE(BM_Kitti00_Contending, broadcast, "broadcast")
 void BM_Decentralized_1000Robots_100kFrames(benchmark::State& state) {
   static const Dataset data = bench::Tiled(23 * 4541);  // 23 copies: 104 443 frames
   const auto table = Table(1000, 10);  // training is not what this measures
-  const DecentralizedRouting routing(table);
+  const DecentralizedPlacement routing(table);
   SimRunLog log;
   for (auto _ : state) {
     log = RunSimulation(data, routing, PointToPoint(1000));

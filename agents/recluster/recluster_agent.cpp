@@ -7,8 +7,8 @@
 
 #include "agents/algorithms/descriptor_index.h"
 #include "agents/algorithms/frame_stream.h"
+#include "agents/placement/placement.h"
 #include "agents/recluster/recluster_messages.h"
-#include "agents/routing/routing.h"
 
 namespace dvpr {
 
@@ -23,9 +23,9 @@ void Append(descriptor_batch_t& b, RobotId robot, FrameId frame, const float* de
 
 }  // namespace
 
-ReclusterAgentRouting::ReclusterAgentRouting(const ReclusterPlan& plan) : plan_(plan), table_(plan.initial) {}
+ReclusterAgentPlacement::ReclusterAgentPlacement(const ReclusterPlan& plan) : plan_(plan), table_(plan.initial) {}
 
-descriptor_batch_t ReclusterAgentRouting::NewBatch(int epoch) const {
+descriptor_batch_t ReclusterAgentPlacement::NewBatch(int epoch) const {
   descriptor_batch_t b;
   b.utime = transport_->Utime();
   b.epoch = epoch;
@@ -35,7 +35,7 @@ descriptor_batch_t ReclusterAgentRouting::NewBatch(int epoch) const {
   return b;
 }
 
-void ReclusterAgentRouting::Start(const AgentContext& robot) {
+void ReclusterAgentPlacement::Start(const AgentContext& robot) {
   if (plan_.initial->dim() != robot.store.dim()) {
     throw std::invalid_argument("re-clustering: the table and the robot's descriptors differ in dimension");
   }
@@ -57,12 +57,12 @@ void ReclusterAgentRouting::Start(const AgentContext& robot) {
 }
 
 // The owner under this robot's current table searches and stores.
-QueryPlan ReclusterAgentRouting::Plan(const float* descriptor) const {
+QueryPlan ReclusterAgentPlacement::Plan(const float* descriptor) const {
   const RobotId owner = table_->RouteOf(descriptor);
-  return PlanOf(RoutingDecision{{owner}, {owner}}, self_, false);
+  return PlanOf(PlacementDecision{{owner}, {owner}}, self_, false);
 }
 
-void ReclusterAgentRouting::Store(RobotId querier, FrameId frame, const float* descriptor) {
+void ReclusterAgentPlacement::Store(RobotId querier, FrameId frame, const float* descriptor) {
   const RobotId owner = table_->RouteOf(descriptor);
   if (owner == self_) {
     store_->Add(querier, frame, descriptor);
@@ -73,7 +73,7 @@ void ReclusterAgentRouting::Store(RobotId querier, FrameId frame, const float* d
   transport_->Publish(channels::Migrate(owner), b);
 }
 
-void ReclusterAgentRouting::OnEpochBoundary(int epoch) {
+void ReclusterAgentPlacement::OnEpochBoundary(int epoch) {
   if (!online_) return;
   descriptor_batch_t sample = NewBatch(epoch);
   for (std::size_t i = 0; i < store_->size(); ++i) {
@@ -93,7 +93,7 @@ void ReclusterAgentRouting::OnEpochBoundary(int epoch) {
   LeaderCompute(epoch, false);
 }
 
-void ReclusterAgentRouting::OnSample(const descriptor_batch_t& b) {
+void ReclusterAgentPlacement::OnSample(const descriptor_batch_t& b) {
   if (!online_ || b.epoch < 1 || b.epoch > plan_.epochs || b.dim != store_->dim()) return;
   if (b.sender < 0 || b.sender >= plan_.initial->num_robots()) return;
   Pending& pending = pending_[b.epoch];
@@ -104,7 +104,7 @@ void ReclusterAgentRouting::OnSample(const descriptor_batch_t& b) {
 
 // Waits for the leader's own sample and every robot's, or for the timeout; then clusters the
 // union (frame-id order, each frame once) and publishes the table before moving its own store.
-void ReclusterAgentRouting::LeaderCompute(int epoch, bool timed_out) {
+void ReclusterAgentPlacement::LeaderCompute(int epoch, bool timed_out) {
   if (!online_) return;
   const auto it = pending_.find(epoch);
   if (it == pending_.end()) return;
@@ -130,7 +130,7 @@ void ReclusterAgentRouting::LeaderCompute(int epoch, bool timed_out) {
   pending.from.clear();
 }
 
-void ReclusterAgentRouting::PublishTable(std::shared_ptr<const CentroidTable> table, int epoch) {
+void ReclusterAgentPlacement::PublishTable(std::shared_ptr<const CentroidTable> table, int epoch) {
   centroid_table_t msg;
   msg.utime = transport_->Utime();
   msg.epoch = epoch;
@@ -146,7 +146,7 @@ void ReclusterAgentRouting::PublishTable(std::shared_ptr<const CentroidTable> ta
   AdoptTable(std::move(table), epoch);
 }
 
-void ReclusterAgentRouting::OnTable(const centroid_table_t& t) {
+void ReclusterAgentPlacement::OnTable(const centroid_table_t& t) {
   if (!online_ || t.epoch <= epoch_ || t.dim != store_->dim() || t.k < 1) return;
   CentroidMatrix centroids(t.k, t.dim);
   std::vector<RobotId> owners;
@@ -165,7 +165,7 @@ void ReclusterAgentRouting::OnTable(const centroid_table_t& t) {
 
 // Switches to the table and sends every stored descriptor it now routes elsewhere to that
 // owner, one batch per destination (destinations in id order, descriptors in store order).
-void ReclusterAgentRouting::AdoptTable(std::shared_ptr<const CentroidTable> table, int epoch) {
+void ReclusterAgentPlacement::AdoptTable(std::shared_ptr<const CentroidTable> table, int epoch) {
   table_ = std::move(table);
   epoch_ = epoch;
   std::map<int, descriptor_batch_t> moves;
@@ -185,7 +185,7 @@ void ReclusterAgentRouting::AdoptTable(std::shared_ptr<const CentroidTable> tabl
 
 // A batch from a newer epoch is kept whole (this robot re-routes it when that table arrives);
 // otherwise each descriptor is kept if this robot owns it under its own table, else forwarded.
-void ReclusterAgentRouting::OnMigration(const descriptor_batch_t& b) {
+void ReclusterAgentPlacement::OnMigration(const descriptor_batch_t& b) {
   if (!online_ || b.dim != store_->dim()) return;
   std::map<int, descriptor_batch_t> forward;
   for (int i = 0; i < b.count; ++i) {

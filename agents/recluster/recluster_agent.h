@@ -28,16 +28,16 @@
 #include <dvpr/centroid_table_t.hpp>
 #include <dvpr/descriptor_batch_t.hpp>
 
-#include "agents/routing/agent_routing.h"
 #include "agents/algorithms/centroid_table.h"
-#include "agents/recluster/recluster_routing.h"
 #include "agents/messages/transport.h"
+#include "agents/placement/agent_placement.h"
+#include "agents/recluster/recluster_placement.h"
 
 namespace dvpr {
 
-class ReclusterAgentRouting final : public AgentRouting {
+class ReclusterAgentPlacement final : public AgentPlacement {
  public:
-  explicit ReclusterAgentRouting(const ReclusterPlan& plan);  // `plan` outlives the component
+  explicit ReclusterAgentPlacement(const ReclusterPlan& plan);  // `plan` outlives the component
 
   void Start(const AgentContext& robot) override;  // throws if the table's dimension is not the store's
   void Stop() override { online_ = false; }

@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "agents/agent_params.h"
-#include "agents/routing/failure_detector.h"
+#include "agents/placement/failure_detector.h"
 #include "experiments/config/talk_schedule.h"
 #include "experiments/data/robot_trajectory.h"
 #include "experiments/data/synthetic.h"

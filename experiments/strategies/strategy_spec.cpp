@@ -80,21 +80,21 @@ constexpr std::array kRoutings = {
     Family{"multi_probe_", "multi_probe_M",
            [](const Fields& f, Spec& s) {
              if (f.size() != 1) return false;
-             s.routing = Spec::Routing::kProbe;
+             s.placement = Spec::Placement::kProbe;
              s.probe = {.probes = Whole(f[0], 0, "M"), .epsilon = -1};
              return true;
            }},
     Family{"adaptive_probe_", "adaptive_probe_E",
            [](const Fields& f, Spec& s) {
              if (f.size() != 1) return false;
-             s.routing = Spec::Routing::kProbe;
+             s.placement = Spec::Placement::kProbe;
              s.probe = {.probes = kAdaptiveProbes, .epsilon = Number(f[0], "E")};
              return true;
            }},
     Family{"replicate_", "replicate_E[_rR]",
            [](const Fields& f, Spec& s) {
              if (f.empty() || f.size() > 2) return false;
-             s.routing = Spec::Routing::kReplicate;
+             s.placement = Spec::Placement::kReplicate;
              s.replicate = {.epsilon = Number(f[0], "E"),
                             .max_replicas = f.size() == 2 ? Whole(f[1], 'r', "R") : kDefaultReplicas};
              return true;
@@ -157,7 +157,7 @@ Spec ParseParts(std::string_view name) {
   s.name = std::string(name);
   if (name == "decentralized") return s;
   if (name == "broadcast") {
-    s.routing = Spec::Routing::kBroadcast;
+    s.placement = Spec::Placement::kBroadcast;
     return s;
   }
   for (const auto& [bow_name, kind] : {std::pair{"bow_centralized", Spec::Bow::kCentralized},

@@ -1,6 +1,6 @@
 #pragma once
 // A routing strategy as a config names it, parsed into what it means (docs/strategies.md). The
-// config parses every name when it is loaded, so a typo fails before any run; BuildRunRouting
+// config parses every name when it is loaded, so a typo fails before any run; BuildRunPlacement
 // (run_routing.h) turns a spec into a run's table and routing. Names carry their parameters, so
 // a config lists what it compares and every name means one documented thing:
 //
@@ -41,7 +41,7 @@
 #include <string_view>
 
 #include "agents/algorithms/load_balanced_table.h"
-#include "agents/routing/probe_routing.h"
+#include "agents/placement/probe_placement.h"
 
 namespace dvpr {
 
@@ -50,13 +50,14 @@ inline constexpr int kDefaultReplicas = 3;
 
 struct StrategySpec {
   enum class Table { kPaper, kLpt, kBounded, kSampleKMeans, kBalanced, kBalancedSample };
-  enum class Routing { kBroadcast, kNearest, kProbe, kReplicate };
+  // Where a query goes (not the network's next hop: net_models/routing).
+  enum class Placement { kBroadcast, kNearest, kProbe, kReplicate };
   std::string name;                   // as written in the config: the results' strategy column
   Table table = Table::kPaper;        // broadcast: none is used
   int clusters_per_robot = 0;         // 0: the config's training.clusters_per_robot
   bool loads_from_training = false;   // else from the deployment sample
   LoadBalanceParams balance;
-  Routing routing = Routing::kNearest;
+  Placement placement = Placement::kNearest;
   MultiProbeParams probe;             // kProbe
   ReplicationParams replicate;        // kReplicate
   // > 0: adaptive re-clustering every this many frames of each robot's stream (recluster_cC_pP);
@@ -66,12 +67,12 @@ struct StrategySpec {
   enum class Bow { kNone, kCentralized, kBroadcast, kModulo, kDocumentFrequency };
   Bow bow = Bow::kNone;
 
-  bool broadcast() const { return routing == Routing::kBroadcast; }
+  bool broadcast() const { return placement == Placement::kBroadcast; }
   bool reclusters() const { return recluster_period > 0; }
   bool bag_of_words() const { return bow != Bow::kNone; }
   // The paper's method itself (`decentralized`): its table, nearest owner, no re-clustering.
   bool paper_method() const {
-    return table == Table::kPaper && routing == Routing::kNearest && !reclusters() && !bag_of_words();
+    return table == Table::kPaper && placement == Placement::kNearest && !reclusters() && !bag_of_words();
   }
   bool operator==(const StrategySpec&) const = default;
 };

@@ -12,7 +12,7 @@
 #include "agents/messages/team_sync.h"
 #include "experiments/protocols/strategy_inputs.h"
 #include "experiments/results/protocol_traits.h"
-#include "experiments/strategies/run_routing.h"
+#include "experiments/strategies/run_placement.h"
 #include "experiments/sweep/sweep.h"
 #include "experiments/sweep/sweep_size.h"
 #include "net_models/core/param_checks.h"

@@ -146,8 +146,8 @@ RunShape ShapeOf(const ExperimentConfig& c, double dim) {
   shape.strategies = static_cast<double>(c.sweep.strategies.size());
   for (const StrategySpec& s : c.sweep.strategies) {
     shape.bow = shape.bow || s.bag_of_words();
-    if (s.routing == StrategySpec::Routing::kProbe) shape.probes = std::max<double>(shape.probes, s.probe.probes);
-    if (s.routing == StrategySpec::Routing::kReplicate) {
+    if (s.placement == StrategySpec::Placement::kProbe) shape.probes = std::max<double>(shape.probes, s.probe.probes);
+    if (s.placement == StrategySpec::Placement::kReplicate) {
       shape.probes = std::max<double>(shape.probes, s.replicate.max_replicas);
       shape.replicas = std::max<double>(shape.replicas, s.replicate.max_replicas);
     }

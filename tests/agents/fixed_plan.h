@@ -3,12 +3,12 @@
 // own index.
 #include <utility>
 
-#include "agents/routing/agent_routing.h"
 #include "agents/algorithms/descriptor_index.h"
+#include "agents/placement/agent_placement.h"
 
 namespace dvpr::testing_support {
 
-class FixedPlan final : public AgentRouting {
+class FixedPlan final : public AgentPlacement {
  public:
   explicit FixedPlan(QueryPlan plan) : plan_(std::move(plan)) {}
   void Start(const AgentContext& robot) override { store_ = &robot.store; }

@@ -1,13 +1,13 @@
 // Failover's pure parts, on tables small enough to work every distance by hand: which robot
-// succeeds a lost one for a query (agents/routing/failover_routing.h) and when a silent robot is
-// declared lost (agents/routing/failure_detector.h).
+// succeeds a lost one for a query (agents/placement/failover_placement.h) and when a silent robot is
+// declared lost (agents/placement/failure_detector.h).
 #include <optional>
 #include <stdexcept>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "agents/routing/failover_routing.h"
+#include "agents/placement/failover_placement.h"
 #include "tests/descriptor_support.h"
 
 namespace dvpr {
@@ -51,23 +51,23 @@ TEST_F(SuccessorTest, ALostRobotsClustersAreDividedAmongItsNeighbours) {
 
 TEST_F(SuccessorTest, FailOverReplacesLostRobotsOnceInPlace) {
   const float q[2] = {7, 1};  // successor of robot 2: robot 1
-  const RoutingDecision d{Robots({2, 0}), Robots({2})};
-  const RoutingDecision f = FailOver(d, table_.get(), robot2_, q);
+  const PlacementDecision d{Robots({2, 0}), Robots({2})};
+  const PlacementDecision f = FailOver(d, table_.get(), robot2_, q);
   EXPECT_EQ(f.search_at, Robots({1, 0}));
   EXPECT_EQ(f.store_at, Robots({1}));
   // A successor already asked is asked once.
-  const RoutingDecision g = FailOver(RoutingDecision{Robots({2, 1}), Robots({2, 1})}, table_.get(), robot2_, q);
+  const PlacementDecision g = FailOver(PlacementDecision{Robots({2, 1}), Robots({2, 1})}, table_.get(), robot2_, q);
   EXPECT_EQ(g.search_at, Robots({1}));
   EXPECT_EQ(g.store_at, Robots({1}));
   // Nothing lost: unchanged.
-  const RoutingDecision h = FailOver(d, table_.get(), none_, q);
+  const PlacementDecision h = FailOver(d, table_.get(), none_, q);
   EXPECT_EQ(h.search_at, d.search_at);
   EXPECT_EQ(h.store_at, d.store_at);
 }
 
 TEST_F(SuccessorTest, BroadcastHasNoTableSoALostRobotIsNoLongerAsked) {
   const float q[2] = {7, 1};
-  const RoutingDecision f = FailOver(RoutingDecision{Robots({0, 1, 2}), Robots({0})}, nullptr, {false, true, false}, q);
+  const PlacementDecision f = FailOver(PlacementDecision{Robots({0, 1, 2}), Robots({0})}, nullptr, {false, true, false}, q);
   EXPECT_EQ(f.search_at, Robots({0, 2}));
   EXPECT_EQ(f.store_at, Robots({0}));
 }

@@ -7,8 +7,8 @@
 
 #include "agents/messages/channels.h"
 #include "agents/messages/sim_transport.h"
+#include "agents/placement/placement.h"
 #include "agents/robot_agent.h"
-#include "agents/routing/routing.h"
 #include "net_models/medium/ideal_link.h"
 #include "sim/simulator.h"
 #include "tests/descriptor_support.h"
@@ -24,7 +24,7 @@ constexpr std::int64_t kStart = 1317643200000000;
 // searches. Broadcast: each query goes to the other robot, which replies after its 1 ms.
 TEST(MessageTimes, UtimeIsStartPlusSendTimeAndQueriesCarryTheirCaptureTime) {
   const DescriptorMatrix x = testing_support::Column({1, 2, 3, 4});
-  const BroadcastRouting routing(2);
+  const BroadcastPlacement routing(2);
   Simulator sim;
   Network network(sim, 3, std::make_unique<IdealLink>());
   SimTransport observer(network, NodeId(2), kStart);
@@ -39,7 +39,7 @@ TEST(MessageTimes, UtimeIsStartPlusSendTimeAndQueriesCarryTheirCaptureTime) {
   for (int r = 0; r < 2; ++r) {
     transports.push_back(std::make_unique<SimTransport>(network, NodeId(r), kStart));
     agents.push_back(std::make_unique<RobotAgent>(AgentSetup{RobotId(r), 2, params, streams[static_cast<std::size_t>(r)]},
-                                                  *transports.back(), routing.MakeAgentRouting(),
+                                                  *transports.back(), routing.MakeAgentPlacement(),
                                                   [](FrameId, FrameId) { return VerifyVerdict{}; }));
   }
   std::vector<query_t> queries;

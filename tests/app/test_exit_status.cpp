@@ -40,8 +40,8 @@ TEST(ReportErrorTest, InputErrorsAreStatusOne) {
 }
 
 TEST(ReportErrorTest, EverythingElseIsAnInternalErrorStatusThree) {
-  EXPECT_EQ(Report(std::logic_error("BuildRunRouting: broadcast with a table")),
-            std::make_pair(3, std::string("dvpr: internal error: BuildRunRouting: broadcast with a table "
+  EXPECT_EQ(Report(std::logic_error("BuildRunPlacement: broadcast with a table")),
+            std::make_pair(3, std::string("dvpr: internal error: BuildRunPlacement: broadcast with a table "
                                           "(a bug in dvpr; please report it)\n")));
   EXPECT_EQ(Report(std::out_of_range("CentroidTable: no robot 7")).first, 3);
   EXPECT_EQ(Report(std::length_error("vector")).first, 3);

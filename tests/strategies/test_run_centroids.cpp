@@ -12,7 +12,7 @@
 #include <string>
 
 #include "experiments/data/npy.h"
-#include "experiments/strategies/run_routing.h"
+#include "experiments/strategies/run_placement.h"
 #include "experiments/strategies/strategy_spec.h"
 #include "tests/test_support.h"
 

@@ -12,13 +12,13 @@ namespace dvpr {
 namespace {
 
 using Table = StrategySpec::Table;
-using Routing = StrategySpec::Routing;
+using Placement = StrategySpec::Placement;
 
 TEST(ParseStrategy, DecentralizedIsThePaperMethod) {
   const StrategySpec s = ParseStrategy("decentralized");
   EXPECT_EQ(s.name, "decentralized");
   EXPECT_EQ(s.table, Table::kPaper);
-  EXPECT_EQ(s.routing, Routing::kNearest);
+  EXPECT_EQ(s.placement, Placement::kNearest);
   EXPECT_EQ(s.clusters_per_robot, 0);  // the config's
   EXPECT_TRUE(s.paper_method());
   EXPECT_FALSE(s.broadcast());
@@ -48,12 +48,12 @@ TEST(ParseStrategy, BagOfWordsNames) {
 TEST(ParseStrategy, ProbingReadsItsCountOrEpsilon) {
   const StrategySpec m = ParseStrategy("multi_probe_5");
   EXPECT_EQ(m.table, Table::kPaper);
-  EXPECT_EQ(m.routing, Routing::kProbe);
+  EXPECT_EQ(m.placement, Placement::kProbe);
   EXPECT_EQ(m.probe.probes, 5);
   EXPECT_LT(m.probe.epsilon, 0);  // always 5 centroids
   EXPECT_FALSE(m.paper_method());
   const StrategySpec a = ParseStrategy("adaptive_probe_0.05");
-  EXPECT_EQ(a.routing, Routing::kProbe);
+  EXPECT_EQ(a.placement, Placement::kProbe);
   EXPECT_EQ(a.probe.probes, 8);
   EXPECT_EQ(a.probe.epsilon, 0.05);
 }
@@ -61,7 +61,7 @@ TEST(ParseStrategy, ProbingReadsItsCountOrEpsilon) {
 TEST(ParseStrategy, ReplicationReadsEpsilonAndOptionalReplicas) {
   const StrategySpec r = ParseStrategy("replicate_0.2");
   EXPECT_EQ(r.table, Table::kPaper);
-  EXPECT_EQ(r.routing, Routing::kReplicate);
+  EXPECT_EQ(r.placement, Placement::kReplicate);
   EXPECT_EQ(r.replicate.epsilon, 0.2);
   EXPECT_EQ(r.replicate.max_replicas, 3);
   const StrategySpec r8 = ParseStrategy("replicate_1_r8");
@@ -75,7 +75,7 @@ TEST(ParseStrategy, TablesReadTheirClustersPerRobot) {
   EXPECT_EQ(lpt.clusters_per_robot, 7);
   EXPECT_FALSE(lpt.loads_from_training);
   EXPECT_LT(lpt.balance.epsilon, 0);  // LPT, no bound
-  EXPECT_EQ(lpt.routing, Routing::kNearest);
+  EXPECT_EQ(lpt.placement, Placement::kNearest);
   EXPECT_FALSE(lpt.paper_method());
   EXPECT_TRUE(ParseStrategy("lpt_c10_train").loads_from_training);
   const StrategySpec bounded = ParseStrategy("bounded_c10_0.25");
@@ -99,18 +99,18 @@ TEST(ParseStrategy, ReclusteringStartsFromTheTrainingLptTable) {
   EXPECT_FALSE(s.paper_method());
 }
 
-TEST(ParseStrategy, ATableCombinesWithARouting) {
+TEST(ParseStrategy, ATableCombinesWithAPlacement) {
   const StrategySpec s = ParseStrategy("lpt_c10+adaptive_probe_0.1");
   EXPECT_EQ(s.name, "lpt_c10+adaptive_probe_0.1");
   EXPECT_EQ(s.table, Table::kLpt);
   EXPECT_EQ(s.clusters_per_robot, 10);
-  EXPECT_EQ(s.routing, Routing::kProbe);
+  EXPECT_EQ(s.placement, Placement::kProbe);
   EXPECT_EQ(s.probe.probes, 8);
   EXPECT_EQ(s.probe.epsilon, 0.1);
   const StrategySpec b = ParseStrategy("balanced_sample_c1+replicate_0.5_r5");
   EXPECT_EQ(b.table, Table::kBalancedSample);
   EXPECT_EQ(b.clusters_per_robot, 1);
-  EXPECT_EQ(b.routing, Routing::kReplicate);
+  EXPECT_EQ(b.placement, Placement::kReplicate);
   EXPECT_EQ(b.replicate.epsilon, 0.5);
   EXPECT_EQ(b.replicate.max_replicas, 5);
 }
@@ -158,7 +158,7 @@ TEST(ParseStrategy, RefusesNamesOfAnotherShape) {
   EXPECT_NE(Refusal("").find("unknown name"), std::string::npos);
 }
 
-TEST(ParseStrategy, RefusesCombinationsOtherThanTablePlusRouting) {
+TEST(ParseStrategy, RefusesCombinationsOtherThanTablePlusPlacement) {
   EXPECT_EQ(Refusal("multi_probe_2+lpt_c4").find("'multi_probe_2+lpt_c4' is not a strategy: before '+' comes a table"),
             0u);
   EXPECT_EQ(Refusal("lpt_c10+lpt_c4").find("'lpt_c10+lpt_c4' is not a strategy: after '+' comes a routing"), 0u);

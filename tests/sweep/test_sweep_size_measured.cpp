@@ -22,7 +22,7 @@
 #include "experiments/protocols/inputs.h"
 #include "experiments/protocols/sim/simulation.h"
 #include "experiments/protocols/strategy_inputs.h"
-#include "experiments/strategies/run_routing.h"
+#include "experiments/strategies/run_placement.h"
 #include "experiments/sweep/run_sweep.h"
 #include "experiments/sweep/sweep.h"
 #include "experiments/sweep/sweep_size.h"
@@ -95,8 +95,8 @@ class MeasuredSweepTest : public ::testing::Test {
     p.scenario.agent = config_.agent;
     p.scenario.network = network;
     p.outputs.record_messages = true;
-    const RunRouting routing =
-        BuildRunRouting(ParseStrategy("broadcast"), StrategyInputsOf(inputs_), p.scenario.robots, 0);
+    const RunPlacement routing =
+        BuildRunPlacement(ParseStrategy("broadcast"), StrategyInputsOf(inputs_), p.scenario.robots, 0);
     return RunSimulation(inputs_.deployment, *routing.As<StatelessFamily>()->team, p);
   }
   ExperimentConfig config_;

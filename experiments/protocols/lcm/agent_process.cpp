@@ -30,7 +30,7 @@
 #include "experiments/protocols/sim/sim_protocol.h"
 #include "experiments/protocols/strategy_inputs.h"
 #include "experiments/strategies/run_centroids.h"
-#include "experiments/strategies/run_routing.h"
+#include "experiments/strategies/run_placement.h"
 #include "lcmtypes/channels/channels.h"
 #include "net_models/core/wire_format.h"
 
@@ -374,7 +374,7 @@ struct Team {
   SharedInputs inputs;
   int robots = 0;
   StrategySpec strategy;
-  std::optional<RunRouting> routing;  // LoadTeam builds it
+  std::optional<RunPlacement> routing;  // LoadTeam builds it
   std::int64_t key = 0;
 };
 
@@ -411,7 +411,7 @@ Team LoadTeam(const AgentProcessOptions& o, ExperimentConfig config) {
   CheckRealNetwork(t.config, o.config.string());
   if (o.robot >= t.robots) throw std::invalid_argument("--robot " + std::to_string(o.robot) + " is not in a team of " + std::to_string(t.robots));
   // Built by every process from the same inputs, so the whole team routes alike.
-  t.routing.emplace(BuildRunRouting(t.strategy, StrategyInputsOf(t.inputs), t.robots, o.run));
+  t.routing.emplace(BuildRunPlacement(t.strategy, StrategyInputsOf(t.inputs), t.robots, o.run));
   t.key = TeamKey(t.config, t.inputs.deployment, t.routing->table(),
                   t.routing->As<BowFamily>() != nullptr ? &t.inputs.bow : nullptr, t.strategy.name, t.robots, o.run,
                   o.team_nonce);
@@ -479,7 +479,7 @@ std::unique_ptr<TeamAgent> MakeAgent(const AgentProcessOptions& o, const Team& t
       [&](const auto& descriptor) -> std::unique_ptr<TeamAgent> {
         const AgentSetup setup{RobotId(o.robot), descriptor.team->num_robots(), t.config.agent, frames,
                                split.WindowStreams()};
-        return std::make_unique<RobotAgent>(setup, transport, descriptor.team->MakeAgentRouting(),
+        return std::make_unique<RobotAgent>(setup, transport, descriptor.team->MakeAgentPlacement(),
                                             std::move(verifier));
       });
 }

@@ -12,7 +12,7 @@
 #include "experiments/protocols/paper/static_recluster.h"
 #include "experiments/protocols/paper/static_strategies.h"
 #include "experiments/protocols/strategy_inputs.h"
-#include "experiments/strategies/run_routing.h"
+#include "experiments/strategies/run_placement.h"
 
 namespace dvpr {
 
@@ -57,12 +57,12 @@ RunResult PaperBroadcastRow(const RunSpec& spec, const PaperEvaluator& evaluator
 // or of any routing.
 PaperRunResult PaperStrategyRun(const StrategySpec& spec, const RunSpec& run, const PaperEvaluator& evaluator,
                                 const StrategyInputs& inputs, const PaperProtocolParams& params) {
-  const RunRouting routing = BuildRunRouting(spec, inputs, run.robots, run.run);
+  const RunPlacement routing = BuildRunPlacement(spec, inputs, run.robots, run.run);
   const DescriptorMatrix& deployment = evaluator.deployment().descriptors;
   PaperRunResult r = routing.Visit(
       [&](const StatelessFamily& f) {
         return spec.paper_method() ? EvaluatePaperRun(evaluator, *f.table, params, run.run)
-                                   : EvaluateRouting(evaluator, *f.strategy, spec.name, params.keep_curves);
+                                   : EvaluatePlacement(evaluator, *f.strategy, spec.name, params.keep_curves);
       },
       [&](const ReclusterFamily& f) {
         return EvaluateRecluster(evaluator, PlanStaticRecluster(deployment, f.table, f.params), spec.name,
@@ -87,7 +87,7 @@ void AppendBowRun(const StrategySpec& strategy, const RunSpec& spec, const BowEv
   if (bow.IsPlanned(strategy.name, spec.robots)) {
     r = bow.EvaluatePlanned(strategy.name, spec.robots);  // its owners built once, by the plan
   } else {
-    const RunRouting routing = BuildRunRouting(strategy, inputs, spec.robots, spec.run);
+    const RunPlacement routing = BuildRunPlacement(strategy, inputs, spec.robots, spec.run);
     const BowFamily* family = routing.As<BowFamily>();
     if (family == nullptr) throw std::logic_error("AppendBowRun: " + strategy.name + " is not a bow_ strategy");
     r = family->words ? bow.EvaluateShared(*family->words, strategy.name)
@@ -114,7 +114,7 @@ void AppendDescriptorTraffic(const StrategySpec& strategy, const RunSpec& spec, 
   if (strategy.broadcast()) {
     r = DescriptorQueryTraffic(nullptr, spec.robots, x);
   } else {
-    const RunRouting routing = BuildRunRouting(strategy, inputs, spec.robots, spec.run);
+    const RunPlacement routing = BuildRunPlacement(strategy, inputs, spec.robots, spec.run);
     const StatelessFamily* family = routing.As<StatelessFamily>();
     if (family == nullptr) return;  // re-clustering: its traffic is the simulation's to count
     r = DescriptorQueryTraffic(family->strategy, spec.robots, x);
@@ -139,7 +139,7 @@ std::vector<BowEvaluator::PlannedAssignment> PlanBow(const ExperimentConfig& c, 
       const auto same = [&](const BowEvaluator::PlannedAssignment& p) { return p.name == strategy.name && p.robots == robots; };
       if (std::any_of(planned.begin(), planned.end(), same)) continue;
       planned.push_back({strategy.name, robots, [strategy, inputs, robots] {
-                           const RunRouting routing = BuildRunRouting(strategy, inputs, robots, 0);
+                           const RunPlacement routing = BuildRunPlacement(strategy, inputs, robots, 0);
                            const BowFamily* family = routing.As<BowFamily>();
                            if (family == nullptr || !family->words) {
                              throw std::logic_error("PlanBow: " + strategy.name + " has no word owners");

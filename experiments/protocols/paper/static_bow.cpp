@@ -8,9 +8,9 @@
 #include <stdexcept>
 
 #include "agents/messages/bow_query.h"
+#include "agents/messages/team_sync.h"  // Fnv1a
 #include "experiments/data/split.h"
 #include "experiments/results/protocol_traits.h"
-#include "agents/messages/team_sync.h"  // Fnv1a
 
 namespace dvpr {
 
@@ -153,7 +153,7 @@ std::uint64_t OwnersDigest(const WordOwners& owners) {
 
 }  // namespace
 
-BowRunResult DescriptorQueryTraffic(const RoutingStrategy* routing, int robots, const DescriptorMatrix& x) {
+BowRunResult DescriptorQueryTraffic(const PlacementStrategy* routing, int robots, const DescriptorMatrix& x) {
   const SequenceSplit split = SplitSequence(static_cast<int>(x.rows()), robots);
   const std::int64_t bytes = EncodedDescriptorQueryBytes(static_cast<int>(x.cols()));
   BowRunResult out;
@@ -164,7 +164,7 @@ BowRunResult DescriptorQueryTraffic(const RoutingStrategy* routing, int robots, 
       messages += robots - 1;
       continue;
     }
-    const RoutingDecision d = routing->Route(taker, x.row(i).data());
+    const PlacementDecision d = routing->Route(taker, x.row(i).data());
     std::vector<RobotId> to(d.search_at);
     to.insert(to.end(), d.store_at.begin(), d.store_at.end());
     std::sort(to.begin(), to.end());

@@ -26,11 +26,11 @@
 #include <vector>
 
 #include "agents/algorithms/bow_words.h"
-#include "agents/routing/routing.h"
+#include "agents/placement/placement.h"
 #include "experiments/data/bow_data.h"
 #include "experiments/protocols/paper/bow_postings.h"
-#include "experiments/results/bow_rows.h"
 #include "experiments/protocols/paper/static_protocol.h"
+#include "experiments/results/bow_rows.h"
 
 namespace dvpr {
 
@@ -45,7 +45,7 @@ struct BowRunResult {
 // frame's query_t (encoded) to each robot other than its taker that searches or stores it;
 // `routing` null means broadcast (the n - 1 others). Fills bow (queries, partial_queries =
 // those messages, payload_bytes, the size quantiles) and part_sizes; no vote.
-BowRunResult DescriptorQueryTraffic(const RoutingStrategy* routing, int robots, const DescriptorMatrix& x);
+BowRunResult DescriptorQueryTraffic(const PlacementStrategy* routing, int robots, const DescriptorMatrix& x);
 
 class BowEvaluator {
  public:
@@ -81,7 +81,7 @@ class BowEvaluator {
   void Plan(std::vector<PlannedAssignment> planned);
   bool IsPlanned(const std::string& name, int robots) const;
   // A planned assignment's evaluation without its curve, computed once and then copied: the word
-  // assignments do not depend on the run (BowRouting takes none), so the runs of one n ask for
+  // assignments do not depend on the run (BowPlacement takes none), so the runs of one n ask for
   // the same one. The first request evaluates it with the next planned ones not yet started,
   // kBatch in all (EvaluateMany). Safe to call from several threads; a call that finds its
   // evaluation under way in another thread evaluates the next planned ones not started instead

@@ -8,7 +8,7 @@
 #include "experiments/data/npy.h"
 #include "experiments/results/protocol_traits.h"
 #include "experiments/results/safe_output.h"
-#include "experiments/strategies/run_routing.h"
+#include "experiments/strategies/run_placement.h"
 
 namespace dvpr {
 
@@ -147,7 +147,7 @@ PaperRunResult RunPaperRun(const PaperEvaluator& evaluator, const DescriptorMatr
   inputs.deployment = &evaluator.deployment().descriptors;
   inputs.fps = evaluator.deployment().fps;
   inputs.centroids = static_cast<const RunCentroidParams&>(params);
-  const RunRouting paper = BuildRunRouting(ParseStrategy("decentralized"), inputs, robots, run);
+  const RunPlacement paper = BuildRunPlacement(ParseStrategy("decentralized"), inputs, robots, run);
   const double kmeans_s = SecondsSince(start);
   PaperRunResult result = EvaluatePaperRun(evaluator, *paper.table(), params, run);
   result.timings.kmeans_s = kmeans_s;

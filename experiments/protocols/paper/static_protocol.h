@@ -24,9 +24,9 @@
 #include "experiments/data/dataset.h"
 #include "experiments/evaluation/ground_truth.h"
 #include "experiments/evaluation/metrics.h"
-#include "experiments/strategies/run_centroids.h"
-#include "experiments/results/results.h"
 #include "experiments/evaluation/windowed_neighbours.h"
+#include "experiments/results/results.h"
+#include "experiments/strategies/run_centroids.h"
 
 namespace dvpr {
 
@@ -106,8 +106,8 @@ class PaperEvaluator {
   PaperTimings timings_;
 };
 
-// The paper's method in run `run` on `table`, the run's paper table (BuildRunRouting of
-// `decentralized`, experiments/strategies/run_routing.h): metrics, the row's run and seed (the
+// The paper's method in run `run` on `table`, the run's paper table (BuildRunPlacement of
+// `decentralized`, experiments/strategies/run_placement.h): metrics, the row's run and seed (the
 // k-means seed RunSeed(params.seed, n, run); 0 when centroids were given), centroids written
 // if asked.
 PaperRunResult EvaluatePaperRun(const PaperEvaluator& evaluator, const CentroidTable& table,

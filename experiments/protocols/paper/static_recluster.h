@@ -8,7 +8,7 @@
 // under the table of epoch max(e_i, e_j): the later of the two is searched (or, if it is the
 // earlier, searched against) after the earlier has been migrated to its owner under that table.
 // For one fixed table this is the paper's rule. Worst balance ratio = max over robots of the
-// searches served / (N / n), as EvaluateRouting; stored per robot = where each frame ends up
+// searches served / (N / n), as EvaluatePlacement; stored per robot = where each frame ends up
 // (its owner under the last table).
 //
 // Bytes: the static row has no network, so its wire_bytes stay 0 and bytes_per_query
@@ -70,7 +70,7 @@ struct ReclusterTraffic {
 // The re-clustering messages of the plan (see the file comment), descriptors of `dim` floats.
 ReclusterTraffic CountReclusterTraffic(const StaticReclusterPlan& plan, int dim, RobotId leader = RobotId(0));
 
-// Fills the row as EvaluateRouting does (protocol "paper", strategy `name`), plus messages and
+// Fills the row as EvaluatePlacement does (protocol "paper", strategy `name`), plus messages and
 // payload_bytes = the plan's re-clustering traffic; per_robot: searches served, stored at the
 // end, comparisons (candidates of the queries it served).
 PaperRunResult EvaluateRecluster(const PaperEvaluator& evaluator, const StaticReclusterPlan& plan,

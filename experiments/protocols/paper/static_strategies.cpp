@@ -34,7 +34,7 @@ void SetBit(std::vector<std::uint64_t>& bits, std::size_t frame, int words, Robo
       std::uint64_t{1} << (r.value % 64);
 }
 
-RoutedFrames RouteEveryFrame(const Dataset& data, const RoutingStrategy& routing) {
+RoutedFrames RouteEveryFrame(const Dataset& data, const PlacementStrategy& routing) {
   const DescriptorMatrix& x = data.descriptors;
   const int n = routing.num_robots();
   const SequenceSplit split = TeamSplit(data, n);
@@ -48,7 +48,7 @@ RoutedFrames RouteEveryFrame(const Dataset& data, const RoutingStrategy& routing
   f.stores.resize(static_cast<std::size_t>(n));
   for (Eigen::Index i = 0; i < x.rows(); ++i) {
     const auto fi = static_cast<std::size_t>(i);
-    const RoutingDecision d = routing.Route(split.owner[fi], x.row(i).data());
+    const PlacementDecision d = routing.Route(split.owner[fi], x.row(i).data());
     for (RobotId r : d.search_at) SetBit(f.search, fi, f.words, r), ++f.searches[static_cast<std::size_t>(r.value)];
     for (RobotId r : d.store_at) {
       SetBit(f.store, fi, f.words, r);
@@ -77,7 +77,7 @@ std::vector<std::int64_t> Comparisons(const RoutedFrames& f, std::int64_t frames
 
 }  // namespace
 
-PaperRunResult EvaluateRouting(const PaperEvaluator& evaluator, const RoutingStrategy& routing,
+PaperRunResult EvaluatePlacement(const PaperEvaluator& evaluator, const PlacementStrategy& routing,
                                const std::string& name, bool keep_curve) {
   const Dataset& data = evaluator.deployment();
   const RoutedFrames f = RouteEveryFrame(data, routing);

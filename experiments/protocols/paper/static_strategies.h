@@ -13,7 +13,7 @@
 // Ground truth, R and the centralized reference are the evaluator's.
 #include <string>
 
-#include "agents/routing/routing.h"
+#include "agents/placement/placement.h"
 #include "experiments/protocols/paper/static_protocol.h"
 
 namespace dvpr {
@@ -21,7 +21,7 @@ namespace dvpr {
 // Fills row (protocol "paper", strategy `name`, robots, auc, auc_reference, relative_auc,
 // worst_balance_ratio, queries = N), per_robot (queries_received = searches served, stored,
 // comparisons) and the curve when keep_curve. Run, seed and centroids are the caller's.
-PaperRunResult EvaluateRouting(const PaperEvaluator& evaluator, const RoutingStrategy& routing,
+PaperRunResult EvaluatePlacement(const PaperEvaluator& evaluator, const PlacementStrategy& routing,
                                const std::string& name, bool keep_curve);
 
 }  // namespace dvpr

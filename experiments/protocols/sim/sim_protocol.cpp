@@ -9,7 +9,7 @@
 #include "experiments/evaluation/metrics.h"
 #include "experiments/protocols/sim/simulation.h"
 #include "experiments/protocols/strategy_inputs.h"
-#include "experiments/strategies/run_routing.h"
+#include "experiments/strategies/run_placement.h"
 #include "net_models/core/param_checks.h"
 
 namespace dvpr {
@@ -254,7 +254,7 @@ RunFunction MakeSimRun(const SharedInputs& in) {
     run_inputs.cache = &centroids;
     const auto run_one = [&](const StrategySpec& strategy) {
       params.outputs.lcm_log = log_dir.empty() ? std::filesystem::path() : log_dir / LogName(spec, strategy.name);
-      const RunRouting routing = BuildRunRouting(strategy, run_inputs, spec.robots, spec.run);
+      const RunPlacement routing = BuildRunPlacement(strategy, run_inputs, spec.robots, spec.run);
       SimRunLog log = routing.Visit(
           [&](const BowFamily& f) { return RunBowSimulation(*data, bow->frames, f.team, params); },
           [&](const auto& descriptor) { return RunSimulation(*data, *descriptor.team, params); });

@@ -8,13 +8,13 @@
 #include <string>
 
 #include "agents/algorithms/ids.h"
+#include "experiments/evaluation/metrics.h"
 #include "experiments/protocols/sim/event_log_recorder.h"
 #include "experiments/protocols/sim/hop_counts.h"
 #include "experiments/protocols/sim/message_roles.h"
 #include "experiments/protocols/sim/message_rows.h"
 #include "experiments/protocols/sim/pose_oracle.h"
 #include "experiments/protocols/sim/query_hops.h"
-#include "experiments/evaluation/metrics.h"
 #include "experiments/results/lcm_log/lcm_event_log.h"
 
 namespace dvpr {
@@ -150,7 +150,7 @@ SimRunLog RunTeam(const Dataset& data, const SimRunParams& params, const AgentMa
 
 }  // namespace
 
-SimRunLog RunSimulation(const Dataset& data, const TeamRouting& routing, const SimRunParams& params) {
+SimRunLog RunSimulation(const Dataset& data, const TeamPlacement& routing, const SimRunParams& params) {
   params.Validate(data);
   if (routing.num_robots() != params.scenario.robots) {
     throw std::invalid_argument("routing strategy built for " + std::to_string(routing.num_robots()) +
@@ -158,7 +158,7 @@ SimRunLog RunSimulation(const Dataset& data, const TeamRouting& routing, const S
   }
   return RunTeam(data, params, [&](const AgentSetup& setup, Transport& transport,
                                    const GeometricVerifier& verifier) -> std::unique_ptr<TeamAgent> {
-    return std::make_unique<RobotAgent>(setup, transport, routing.MakeAgentRouting(), verifier);
+    return std::make_unique<RobotAgent>(setup, transport, routing.MakeAgentPlacement(), verifier);
   });
 }
 

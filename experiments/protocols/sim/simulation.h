@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "agents/bow_robot_agent.h"
+#include "agents/placement/agent_placement.h"
 #include "agents/robot_agent.h"
-#include "agents/routing/agent_routing.h"
 #include "experiments/data/dataset.h"
 #include "experiments/evaluation/sim_metrics.h"
 #include "experiments/protocols/sim/scenario.h"
@@ -83,7 +83,7 @@ struct SimRunLog {
 
 // Every robot routes through its own component made by `routing` (a stateless strategy or one
 // with per-robot state, such as re-clustering).
-SimRunLog RunSimulation(const Dataset& data, const TeamRouting& routing, const SimRunParams& params);
+SimRunLog RunSimulation(const Dataset& data, const TeamPlacement& routing, const SimRunParams& params);
 // A team of bag-of-words agents (agents/bow_robot_agent.h, docs/bow.md): `vectors` holds one
 // BoW vector per frame of `data` (its descriptors are not used), `plan` how the team splits them.
 SimRunLog RunBowSimulation(const Dataset& data, const std::vector<BowVector>& vectors, const BowTeamPlan& plan,

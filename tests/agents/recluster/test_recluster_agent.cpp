@@ -34,11 +34,11 @@ class ReclusterAgentTest : public ::testing::Test {
     plan.initial = std::make_shared<const CentroidTable>(c, Robots({1, 0}), 2);
     plan.stream_first = {FrameId(0), FrameId(4)};
     plan.epochs = 0;  // no re-clustering: the initial table throughout
-    routing_ = std::make_unique<ReclusterRouting>(std::move(plan));
+    routing_ = std::make_unique<ReclusterPlacement>(std::move(plan));
     for (int r = 0; r < 2; ++r) {
       transports_.push_back(std::make_unique<SimTransport>(network_, NodeId(r)));
       stores_.push_back(std::make_unique<IncrementalIndex>(1));
-      components_.push_back(std::make_unique<ReclusterAgentRouting>(routing_->plan()));
+      components_.push_back(std::make_unique<ReclusterAgentPlacement>(routing_->plan()));
     }
   }
   void Start() {
@@ -52,15 +52,15 @@ class ReclusterAgentTest : public ::testing::Test {
   Network network_;
   DescriptorMatrix x_ = Column({1, 99});
   FrameStream frames_{&x_, FrameId(0), 0, 10.0};
-  std::unique_ptr<ReclusterRouting> routing_;
+  std::unique_ptr<ReclusterPlacement> routing_;
   std::vector<std::unique_ptr<SimTransport>> transports_;
   std::vector<std::unique_ptr<IncrementalIndex>> stores_;
-  std::vector<std::unique_ptr<ReclusterAgentRouting>> components_;
+  std::vector<std::unique_ptr<ReclusterAgentPlacement>> components_;
 };
 
 TEST_F(ReclusterAgentTest, FramesGoToTheOwnerUnderTheRobotsTableToSearchAndStore) {
   Start();
-  const ReclusterAgentRouting& robot0 = *components_[0];
+  const ReclusterAgentPlacement& robot0 = *components_[0];
   EXPECT_EQ(robot0.epoch(), 0);
   EXPECT_EQ(&robot0.table(), routing_->plan().initial.get());
   const float near_0 = 1, near_100 = 99;
@@ -107,7 +107,7 @@ TEST_F(ReclusterAgentTest, AStoppedRobotKeepsNoMigration) {
 
 TEST_F(ReclusterAgentTest, StartRefusesDescriptorsOfAnotherDimension) {
   IncrementalIndex wide(3);
-  ReclusterAgentRouting component(routing_->plan());
+  ReclusterAgentPlacement component(routing_->plan());
   EXPECT_THROW(component.Start(AgentContext{RobotId(0), *transports_[0], wide, frames_}), std::invalid_argument);
 }
 

@@ -24,15 +24,15 @@
 #include "agents/algorithms/bow_words.h"
 #include "agents/algorithms/centroid_table.h"
 #include "agents/auth/message_auth.h"
-#include "agents/routing/failure_detector.h"
 #include "agents/messages/team_sync.h"
-#include "experiments/protocols/lcm/agent_log.h"
+#include "agents/placement/failure_detector.h"
 #include "experiments/config/config.h"
-#include "experiments/protocols/inputs.h"
-#include "experiments/protocols/lcm/lcm_launch.h"
-#include "experiments/protocols/sim/sim_protocol.h"
 #include "experiments/data/split.h"
+#include "experiments/protocols/inputs.h"
+#include "experiments/protocols/lcm/agent_log.h"
+#include "experiments/protocols/lcm/lcm_launch.h"
 #include "experiments/protocols/paper/static_protocol.h"
+#include "experiments/protocols/sim/sim_protocol.h"
 #include "experiments/strategies/run_centroids.h"
 #include "lcm_test_support.h"
 #include "tests/agents/udpm/datagram_builder.h"
@@ -634,7 +634,7 @@ TEST_F(LcmTeamTest, GarbageOnEveryChannelIsCountedAndIgnored) {
 
 // The frames each robot of a decentralized team stores: those the table of run 0 routes to it
 // (each query is kept by its cluster's owner, and only there).
-std::vector<std::int64_t> StoredByRouting(const ExperimentConfig& config, int robots) {
+std::vector<std::int64_t> StoredByPlacement(const ExperimentConfig& config, int robots) {
   const SharedInputs inputs = LoadSharedInputs(config, ConfigPath());
   const CentroidTable table = CentroidTable::RoundRobin(
       RunCentroids(inputs.training, config.training.run_centroids, robots, 0), robots);
@@ -702,7 +702,7 @@ TEST_F(LcmTeamTest, TwoLaunchesOfOneConfigOnOneUrlAreTwoTeams) {
   std::vector<ConfigOverride> overrides;
   for (const auto& s : SmallConfigSets()) overrides.push_back(ParseOverride(s));
   for (const auto& s : extra) overrides.push_back(ParseOverride(s));
-  const std::vector<std::int64_t> stored = StoredByRouting(LoadConfig(ConfigPath(), overrides), kRobots);
+  const std::vector<std::int64_t> stored = StoredByPlacement(LoadConfig(ConfigPath(), overrides), kRobots);
   ASSERT_EQ(std::accumulate(stored.begin(), stored.end(), std::int64_t{0}), 150);
   for (const char* name : {"a", "b"}) {
     SCOPED_TRACE(name);
@@ -822,7 +822,7 @@ TEST_F(LcmTeamTest, ADuplicatingNetworkGivesTheCountsOfACleanOne) {
   std::vector<ConfigOverride> overrides;
   for (const auto& s : SmallConfigSets()) overrides.push_back(ParseOverride(s));
   for (const auto& s : extra) overrides.push_back(ParseOverride(s));
-  ExpectTheTeamsOwnResults(dir_ / "lcm", StoredByRouting(LoadConfig(ConfigPath(), overrides), kRobots), 150);
+  ExpectTheTeamsOwnResults(dir_ / "lcm", StoredByPlacement(LoadConfig(ConfigPath(), overrides), kRobots), 150);
   for (const Row& r : ReadCsv(dir_ / "lcm" / "agents.csv")) {
     EXPECT_GT(std::stoll(r.at("duplicates")), 0) << "robot " << r.at("robot");
     EXPECT_EQ(r.at("malformed_datagrams"), "0") << "robot " << r.at("robot");
@@ -1108,7 +1108,7 @@ TEST_F(LcmTeamTest, AForgerOnTheGroupChangesNothingAndIsCounted) {
   EXPECT_GT(forger.spoofed(), 64u);
   std::vector<ConfigOverride> overrides;
   for (const auto& s : SmallConfigSets()) overrides.push_back(ParseOverride(s));
-  const std::vector<std::int64_t> stored = StoredByRouting(LoadConfig(ConfigPath(), overrides), kRobots);
+  const std::vector<std::int64_t> stored = StoredByPlacement(LoadConfig(ConfigPath(), overrides), kRobots);
   for (int r = 0; r < kRobots; ++r) {
     const AgentLog& log = logs[static_cast<std::size_t>(r)];
     EXPECT_EQ(log.queries.size(), 100u) << "robot " << r;

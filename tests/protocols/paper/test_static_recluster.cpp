@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/routing/decentralized_routing.h"
+#include "agents/placement/decentralized_placement.h"
 #include "experiments/protocols/paper/static_recluster.h"
 #include "experiments/protocols/paper/static_strategies.h"
 
@@ -77,7 +77,7 @@ TEST_F(StaticReclusterTest, RunFindsTheRevisitTheFixedTableMisses) {
   EXPECT_NEAR(got.row.auc, 0.5, 1e-9);
   EXPECT_NEAR(got.row.relative_auc, 1.0, 1e-9);
   // T0 alone (the paper's rule): frame 0 is alone at robot 0 and q4 finds frame 1: AUC 0.
-  const PaperRunResult fixed = EvaluateRouting(evaluator, DecentralizedRouting(tables_[0]), "t0", false);
+  const PaperRunResult fixed = EvaluatePlacement(evaluator, DecentralizedPlacement(tables_[0]), "t0", false);
   EXPECT_EQ(fixed.row.auc, 0.0);
   // Searched at (table of the own epoch): q0 T0 r0, q3 T0 r1, q1 T1 r1, q4 T1 r0, q2 T2 r0,
   // q5 T2 r0: robot 0 serves 4, robot 1 2; balance 4 / (6 / 2).

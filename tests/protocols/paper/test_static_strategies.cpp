@@ -7,10 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include "agents/routing/decentralized_routing.h"
-#include "agents/routing/probe_routing.h"
-#include "experiments/protocols/paper/static_strategies.h"
+#include "agents/placement/decentralized_placement.h"
+#include "agents/placement/probe_placement.h"
 #include "experiments/evaluation/windowed_neighbours.h"
+#include "experiments/protocols/paper/static_strategies.h"
 
 namespace dvpr {
 namespace {
@@ -43,7 +43,7 @@ TEST_F(StaticStrategiesTest, NearestOwnerRoutingMatchesThePaperEvaluation) {
   // recall 0.5, 1 at precision 1, 1; AUC counts from the second step: 0.5.
   EXPECT_NEAR(evaluator.centralized().auc, 0.5, 1e-9);  // precision/recall carry a 1e-12 guard
   const PaperRunResult paper = evaluator.Evaluate(*table_, false);
-  const PaperRunResult general = EvaluateRouting(evaluator, DecentralizedRouting(table_), "decentralized", false);
+  const PaperRunResult general = EvaluatePlacement(evaluator, DecentralizedPlacement(table_), "decentralized", false);
   // Robot 0 stores only frame 0 (q0 has no candidate); q3 searches robot 1 and finds frame 1:
   // nothing correct, AUC 0. Searches: robot 0 one, robot 1 five: balance 5 / (6 / 2).
   EXPECT_EQ(general.row.auc, 0.0);
@@ -59,8 +59,8 @@ TEST_F(StaticStrategiesTest, BoundaryReplicationRecoversTheRevisitAcrossTheBorde
   const PaperEvaluator evaluator(data_, {.radius_m = 5, .suppression_frames = 1}, 2, 1);
   // Only frames 0 (distances 4, 6) and 3 (6, 4) are within 1.55 x their nearest of both
   // centroids: stored at both robots, so q0 finds 3 and q3 finds 0, as centralized.
-  const BoundaryReplicationRouting r(table_, {.epsilon = 0.55, .max_replicas = 2});
-  const PaperRunResult got = EvaluateRouting(evaluator, r, "replicate", false);
+  const BoundaryReplicationPlacement r(table_, {.epsilon = 0.55, .max_replicas = 2});
+  const PaperRunResult got = EvaluatePlacement(evaluator, r, "replicate", false);
   EXPECT_DOUBLE_EQ(got.row.relative_auc, 1.0);
   EXPECT_EQ(got.row.key.strategy, "replicate");
   // Searches unchanged (one robot each); stores: robot 0 keeps 0 and 3, robot 1 all six.
@@ -74,8 +74,8 @@ TEST_F(StaticStrategiesTest, BoundaryReplicationRecoversTheRevisitAcrossTheBorde
 
 TEST_F(StaticStrategiesTest, TwoProbesSearchBothRobotsAndPayInBalance) {
   const PaperEvaluator evaluator(data_, {.radius_m = 5, .suppression_frames = 1}, 2, 1);
-  const MultiProbeRouting r(table_, {.probes = 2, .epsilon = -1});
-  const PaperRunResult got = EvaluateRouting(evaluator, r, "multi_probe_2", false);
+  const MultiProbePlacement r(table_, {.probes = 2, .epsilon = -1});
+  const PaperRunResult got = EvaluatePlacement(evaluator, r, "multi_probe_2", false);
   EXPECT_DOUBLE_EQ(got.row.relative_auc, 1.0);
   EXPECT_DOUBLE_EQ(got.row.worst_balance_ratio, 6.0 / 3.0);  // every robot serves every query
 }

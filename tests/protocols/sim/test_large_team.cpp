@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "agents/routing/decentralized_routing.h"
 #include "agents/algorithms/kmeans.h"
+#include "agents/placement/decentralized_placement.h"
 #include "experiments/data/loaders.h"
 #include "experiments/data/synthetic.h"
 #include "experiments/protocols/sim/simulation.h"
@@ -63,7 +63,7 @@ TEST_P(LargeTeamTest, EveryMatchIsTheExactNearestTheResponderCanHaveStored) {
   const int robots = GetParam();
   const Dataset& data = Data();
   const auto table = DeploymentTrainedTable(robots);
-  const DecentralizedRouting routing(table);
+  const DecentralizedPlacement routing(table);
   SimRunParams params;
   params.scenario.robots = robots;
   params.scenario.network.model = LinkModelKind::kIdeal;  // a frame is stored at its capture time

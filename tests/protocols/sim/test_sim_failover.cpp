@@ -4,9 +4,9 @@
 
 #include <memory>
 
-#include "agents/routing/decentralized_routing.h"
-#include "agents/routing/failover_routing.h"
-#include "agents/routing/probe_routing.h"
+#include "agents/placement/decentralized_placement.h"
+#include "agents/placement/failover_placement.h"
+#include "agents/placement/probe_placement.h"
 #include "experiments/protocols/sim/simulation.h"
 
 namespace dvpr {
@@ -84,7 +84,7 @@ Counts CountQueries(const SimRunLog& log) {
 TEST(SimFailover, QueriesToALostRobotsClustersAreServedByItsSuccessorAfterDetection) {
   const Dataset data = ThreeRobotDataset();
   const auto table = ThreeCentroids();
-  const FailoverTeam team(std::make_unique<DecentralizedRouting>(table), table, Failover(), SimTime::Millis(1900));
+  const FailoverTeam team(std::make_unique<DecentralizedPlacement>(table), table, Failover(), SimTime::Millis(1900));
   const SimRunLog log = RunSimulation(data, team, Params());
   const Counts c = CountQueries(log);
   EXPECT_EQ(c.taken, 20 + 20 + 11);
@@ -104,7 +104,7 @@ TEST(SimFailover, QueriesToALostRobotsClustersAreServedByItsSuccessorAfterDetect
 // serves nothing, and no robot declares robot 2 lost.
 TEST(SimFailover, WithoutFailoverEveryLaterQueryToTheLostRobotIsLost) {
   const Dataset data = ThreeRobotDataset();
-  const DecentralizedRouting routing(ThreeCentroids());
+  const DecentralizedPlacement routing(ThreeCentroids());
   const SimRunLog log = RunSimulation(data, routing, Params());
   const Counts c = CountQueries(log);
   EXPECT_EQ(c.taken, 51);
@@ -123,7 +123,7 @@ TEST(SimFailover, AReplicaKeepsWhatTheLostRobotStored) {
   ReplicationParams replicate;
   replicate.epsilon = 1.0;  // 9.8 < 2 x 6.1: robot 1's centroid is within, robot 0's (10.8) too
   replicate.max_replicas = 2;  // but only two centroids: robots 2 and 1
-  const FailoverTeam team(std::make_unique<BoundaryReplicationRouting>(table, replicate), table, Failover(),
+  const FailoverTeam team(std::make_unique<BoundaryReplicationPlacement>(table, replicate), table, Failover(),
                           SimTime::Millis(1900));
   const SimRunLog log = RunSimulation(data, team, Params());
   EXPECT_EQ(CountQueries(log).incomplete, 2);

@@ -12,14 +12,14 @@
 #include <gtest/gtest.h>
 
 #include "agents/algorithms/kmeans.h"
+#include "agents/messages/sim_transport.h"
 #include "agents/recluster/recluster_agent.h"
 #include "agents/recluster/recluster_messages.h"
 #include "agents/robot_agent.h"
-#include "agents/messages/sim_transport.h"
-#include "experiments/protocols/sim/message_rows.h"
-#include "experiments/protocols/sim/simulation.h"
 #include "experiments/data/split.h"
 #include "experiments/protocols/paper/static_recluster.h"
+#include "experiments/protocols/sim/message_rows.h"
+#include "experiments/protocols/sim/simulation.h"
 #include "sim/random.h"
 #include "sim/simulator.h"
 
@@ -54,7 +54,7 @@ ReclusterPlan MakePlan(const DescriptorMatrix& x, int robots, std::shared_ptr<co
 // A team on the ideal network, agents and their re-clustering components kept for inspection (as
 // RunSimulation, which hides them).
 struct Team {
-  Team(const DescriptorMatrix& x, const ReclusterRouting& routing, const AgentParams& agent) {
+  Team(const DescriptorMatrix& x, const ReclusterPlacement& routing, const AgentParams& agent) {
     const int n = routing.num_robots();
     NetworkModelParams net;
     net.model = LinkModelKind::kIdeal;
@@ -64,7 +64,7 @@ struct Team {
     for (int r = 0; r < n; ++r) {
       const FrameRange range = split.ranges[static_cast<std::size_t>(r)];
       transports.push_back(std::make_unique<SimTransport>(*network, NodeId(r)));
-      auto component = std::make_unique<ReclusterAgentRouting>(routing.plan());
+      auto component = std::make_unique<ReclusterAgentPlacement>(routing.plan());
       routings.push_back(component.get());
       const AgentSetup setup{RobotId(r), n, agent, FrameStream{&x, range.begin, range.size(), 10.0}};
       agents.push_back(std::make_unique<RobotAgent>(setup, *transports.back(), std::move(component),
@@ -97,7 +97,7 @@ struct Team {
   ObserverSubscription messages_subscription;
   std::vector<std::unique_ptr<SimTransport>> transports;
   std::vector<std::unique_ptr<RobotAgent>> agents;
-  std::vector<const ReclusterAgentRouting*> routings;  // robot by robot, owned by the agents
+  std::vector<const ReclusterAgentPlacement*> routings;  // robot by robot, owned by the agents
 };
 
 std::shared_ptr<const CentroidTable> Table1D(float a, int owner_a, float b, int owner_b) {
@@ -156,7 +156,7 @@ class SimReclusterToy : public ::testing::Test {
 };
 
 TEST_F(SimReclusterToy, RoutesByTheTableOfTheMomentAndMovesWhatChangedOwner) {
-  const ReclusterRouting routing(MakePlan(x_, 2, Table1D(0, 1, 100, 0), params_));
+  const ReclusterPlacement routing(MakePlan(x_, 2, Table1D(0, 1, 100, 0), params_));
   const Team team(x_, routing, QuietAgent(20));
   // Before the boundary (T0): frames 0 1 2 of robot 0 go to robot 1, 10 11 of robot 1 to robot
   // 0: 5 remote queries. At t = 0.4 s the frames 4 and 12 are taken before the samples arrive
@@ -190,7 +190,7 @@ TEST_F(SimReclusterToy, RoutesByTheTableOfTheMomentAndMovesWhatChangedOwner) {
 }
 
 TEST_F(SimReclusterToy, SameInputsSameMessages) {
-  const ReclusterRouting routing(MakePlan(x_, 2, Table1D(0, 1, 100, 0), params_));
+  const ReclusterPlacement routing(MakePlan(x_, 2, Table1D(0, 1, 100, 0), params_));
   const Team a(x_, routing, QuietAgent(20));
   const Team b(x_, routing, QuietAgent(20));
   const std::vector<MessageRow> ra = a.messages.Rows();
@@ -231,7 +231,7 @@ class SimReclusterTeam : public ::testing::Test {
 };
 
 TEST_F(SimReclusterTeam, EveryDescriptorEndsAtItsOwnerUnderTheStaticPlannersLastTable) {
-  const ReclusterRouting routing(MakePlan(x_, 4, initial_, params_));
+  const ReclusterPlacement routing(MakePlan(x_, 4, initial_, params_));
   const Team team(x_, routing, QuietAgent(10));
   // On the ideal network with instant service every sample frame is stored by its boundary, so the
   // leader clusters exactly the static planner's sample: the same tables.
@@ -240,7 +240,7 @@ TEST_F(SimReclusterTeam, EveryDescriptorEndsAtItsOwnerUnderTheStaticPlannersLast
   std::vector<int> seen(240, 0);
   for (std::size_t r = 0; r < team.agents.size(); ++r) {
     const RobotAgent* a = team.agents[r].get();
-    const ReclusterAgentRouting& routing = *team.routings[r];
+    const ReclusterAgentPlacement& routing = *team.routings[r];
     EXPECT_EQ(routing.epoch(), 3);
     EXPECT_EQ(routing.table().centroids(), plan.tables[3]->centroids());
     for (int c = 0; c < plan.tables[3]->num_centroids(); ++c) {
@@ -290,7 +290,7 @@ TEST_F(SimReclusterTeam, EveryDescriptorEndsAtItsOwnerUnderTheStaticPlannersLast
 
 TEST_F(SimReclusterTeam, LeaderStopsWaitingForADroppedRobotAndGivesItNoClusters) {
   params_.seed = 5;
-  const ReclusterRouting routing(MakePlan(x_, 4, initial_, params_));
+  const ReclusterPlacement routing(MakePlan(x_, 4, initial_, params_));
   Dataset data;
   data.descriptors = x_;
   data.fps = 10.0;

@@ -9,10 +9,10 @@
 #include <memory>
 #include <utility>
 
-#include "agents/routing/decentralized_routing.h"
 #include "agents/algorithms/kmeans.h"
-#include "experiments/protocols/sim/simulation.h"
+#include "agents/placement/decentralized_placement.h"
 #include "experiments/data/split.h"
+#include "experiments/protocols/sim/simulation.h"
 #include "sim/random.h"
 #include "sim/random_bits.h"
 
@@ -93,7 +93,7 @@ std::shared_ptr<const CentroidTable> AxisTable(int robots, int dim) {
 
 TEST(SimulationHandRouted, DecentralizedSendsOneQueryAndOneReplyPerRemoteFrame) {
   const Dataset data = HandRoutedDataset(240, 16);
-  const DecentralizedRouting routing(AxisTable(4, 16));
+  const DecentralizedPlacement routing(AxisTable(4, 16));
   const SimRunLog log = RunSimulation(data, routing, IdealParams(4));
   // Robot r takes frames 60r .. 60r + 59 and sends frame f to robot f mod 4: in each block of
   // 60, the 15 frames with f mod 4 = r stay home, 45 go out, one to each robot per 4 frames
@@ -116,7 +116,7 @@ TEST(SimulationHandRouted, DecentralizedSendsOneQueryAndOneReplyPerRemoteFrame) 
 }
 
 TEST_F(SimulationTest, BroadcastSendsToEveryOtherRobot) {
-  const BroadcastRouting routing(kRobots);
+  const BroadcastPlacement routing(kRobots);
   const SimRunLog log = RunSimulation(data_, routing, IdealParams(kRobots));
   const auto counts = CountByType(log);
   EXPECT_EQ(counts.at("query_t"), data_.size() * (kRobots - 1));
@@ -135,7 +135,7 @@ struct Reference {
 };
 
 TEST_F(SimulationTest, DecentralizedMatchesEqualTheCausalStaticReference) {
-  const DecentralizedRouting routing(table_);
+  const DecentralizedPlacement routing(table_);
   const SimRunParams params = IdealParams(kRobots);
   const SimRunLog log = RunSimulation(data_, routing, params);
   std::vector<RobotId> owner(static_cast<std::size_t>(data_.size()));
@@ -171,7 +171,7 @@ TEST_F(SimulationTest, DecentralizedMatchesEqualTheCausalStaticReference) {
 }
 
 TEST_F(SimulationTest, SameSeedSameLogAndBusyRobotsQueue) {
-  const BroadcastRouting routing(kRobots);
+  const BroadcastPlacement routing(kRobots);
   SimRunParams p = IdealParams(kRobots);
   p.scenario.agent.service.fixed = SimTime::Millis(30);  // 3 robots' queries per 100 ms frame: 90 ms of work
   const SimRunLog a = RunSimulation(data_, routing, p);
@@ -192,7 +192,7 @@ TEST_F(SimulationTest, SameSeedSameLogAndBusyRobotsQueue) {
 }
 
 TEST_F(SimulationTest, DroppedRobotLosesItsMessagesAndOthersFinish) {
-  const BroadcastRouting routing(kRobots);
+  const BroadcastPlacement routing(kRobots);
   SimRunParams p = IdealParams(kRobots);
   p.scenario.dropouts.push_back({RobotId(2), SimTime::Seconds(3.0)});
   const SimRunLog log = RunSimulation(data_, routing, p);
@@ -213,7 +213,7 @@ TEST_F(SimulationTest, DroppedRobotLosesItsMessagesAndOthersFinish) {
 // Bytes by role (issue 16) against the network's own counters, on a saturated shared medium
 // (drops) with verification traffic: every role is counted once, offered and delivered apart.
 TEST_F(SimulationTest, BytesByRoleSumToTheNetworksTotals) {
-  const BroadcastRouting routing(kRobots);
+  const BroadcastPlacement routing(kRobots);
   SimRunParams p = IdealParams(kRobots);
   p.scenario.network.model = LinkModelKind::kSharedMedium;
   p.scenario.network.bandwidth = DataRate::Kbps(100);

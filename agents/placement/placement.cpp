@@ -1,11 +1,11 @@
-#include "agents/routing/routing.h"
+#include "agents/placement/placement.h"
 
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
 #include "agents/messages/channels.h"
-#include "agents/routing/stateless_routing.h"
+#include "agents/placement/stateless_placement.h"
 
 namespace dvpr {
 
@@ -17,7 +17,7 @@ bool Contains(const std::vector<RobotId>& robots, RobotId r) {
 
 }  // namespace
 
-QueryPlan PlanOf(const RoutingDecision& decision, RobotId self, bool broadcast) {
+QueryPlan PlanOf(const PlacementDecision& decision, RobotId self, bool broadcast) {
   QueryPlan plan;
   plan.search_here = Contains(decision.search_at, self);
   plan.store_here = Contains(decision.store_at, self);
@@ -51,8 +51,8 @@ QueryPlan PlanOf(const RoutingDecision& decision, RobotId self, bool broadcast) 
   return plan;
 }
 
-std::unique_ptr<AgentRouting> RoutingStrategy::MakeAgentRouting() const {
-  return std::make_unique<StatelessRouting>(*this);
+std::unique_ptr<AgentPlacement> PlacementStrategy::MakeAgentPlacement() const {
+  return std::make_unique<StatelessPlacement>(*this);
 }
 
 }  // namespace dvpr

@@ -1,4 +1,4 @@
-// BuildRunRouting (experiments/strategies/run_routing.h) on hand-made 1-D centroids, given as the
+// BuildRunPlacement (experiments/strategies/run_placement.h) on hand-made 1-D centroids, given as the
 // run's centroid file so no k-means decides them: which robots search and store a hand-placed
 // descriptor, worked out by hand from the strategy's rule.
 #include <filesystem>
@@ -11,7 +11,7 @@
 
 #include "experiments/data/npy.h"
 #include "experiments/strategies/deployment_sample.h"
-#include "experiments/strategies/run_routing.h"
+#include "experiments/strategies/run_placement.h"
 #include "tests/descriptor_support.h"
 #include "tests/test_support.h"
 
@@ -26,23 +26,23 @@ using testing_support::Robots;
 // The run's family of the type a test expects; another family fails the test (the exception
 // reaches GoogleTest).
 template <class T>
-const T& FamilyOf(const RunRouting& r) {
+const T& FamilyOf(const RunPlacement& r) {
   const T* f = r.As<T>();
   if (f == nullptr) throw std::runtime_error("the strategy is of another family");
   return *f;
 }
-const StatelessFamily& Stateless(const RunRouting& r) { return FamilyOf<StatelessFamily>(r); }
+const StatelessFamily& Stateless(const RunPlacement& r) { return FamilyOf<StatelessFamily>(r); }
 
-class RunRoutingTest : public ::testing::Test {
+class RunPlacementTest : public ::testing::Test {
  protected:
-  RunRoutingTest() : dir_(dvpr::testing_support::FreshTestDir("strategies")) {
+  RunPlacementTest() : dir_(dvpr::testing_support::FreshTestDir("strategies")) {
     inputs_.training = &training_;
     inputs_.deployment = &deployment_;
     inputs_.centroids.seed = 1;
     inputs_.centroids.centroids_pattern = (dir_ / "c_n{robots}_r{run}.npy").string();
   }
   void Centroids(int robots, const DescriptorMatrix& c) { WriteNpy(dir_ / ("c_n" + std::to_string(robots) + "_r0.npy"), c); }
-  RunRouting Build(const std::string& name, int robots) { return BuildRunRouting(ParseStrategy(name), inputs_, robots, 0); }
+  RunPlacement Build(const std::string& name, int robots) { return BuildRunPlacement(ParseStrategy(name), inputs_, robots, 0); }
 
   fs::path dir_;
   DescriptorMatrix training_ = Column({});
@@ -51,13 +51,13 @@ class RunRoutingTest : public ::testing::Test {
 };
 
 // Three robots, one centroid each: 0, 10, 20 owned by robots 0, 1, 2 (round robin).
-class ThreeRobotsTest : public RunRoutingTest {
+class ThreeRobotsTest : public RunPlacementTest {
  protected:
   ThreeRobotsTest() { Centroids(3, Column({0, 10, 20})); }
 };
 
 TEST_F(ThreeRobotsTest, DecentralizedSendsToTheNearestCentroidsOwner) {
-  const RunRouting r = Build("decentralized", 3);
+  const RunPlacement r = Build("decentralized", 3);
   ASSERT_NE(r.table(), nullptr);
   EXPECT_EQ(r.table()->num_centroids(), 3);
   EXPECT_EQ(Stateless(r).table.get(), r.table());
@@ -65,7 +65,7 @@ TEST_F(ThreeRobotsTest, DecentralizedSendsToTheNearestCentroidsOwner) {
   EXPECT_EQ(Stateless(r).failover, nullptr);  // failover is off
   // 12: nearest 10 (distance 2), owned by robot 1, which searches and stores it.
   const float twelve = 12;
-  const RoutingDecision d = Stateless(r).strategy->Route(RobotId(0), &twelve);
+  const PlacementDecision d = Stateless(r).strategy->Route(RobotId(0), &twelve);
   EXPECT_EQ(d.search_at, Robots({1}));
   EXPECT_EQ(d.store_at, Robots({1}));
   // 16: nearest 20 (4 < 6): robot 2.
@@ -74,20 +74,20 @@ TEST_F(ThreeRobotsTest, DecentralizedSendsToTheNearestCentroidsOwner) {
 }
 
 TEST_F(ThreeRobotsTest, BroadcastSearchesEverywhereAndHasNoTable) {
-  const RunRouting r = Build("broadcast", 3);
+  const RunPlacement r = Build("broadcast", 3);
   EXPECT_EQ(r.table(), nullptr);
   EXPECT_EQ(Stateless(r).team->num_robots(), 3);
   const float twelve = 12;
-  const RoutingDecision d = Stateless(r).strategy->Route(RobotId(1), &twelve);
+  const PlacementDecision d = Stateless(r).strategy->Route(RobotId(1), &twelve);
   EXPECT_EQ(d.search_at, Robots({0, 1, 2}));
   EXPECT_EQ(d.store_at, Robots({1}));  // the querying robot keeps its own frame
 }
 
 TEST_F(ThreeRobotsTest, MultiProbeTwoSearchesTheTwoNearestOwnersAndStoresAtTheNearest) {
-  const RunRouting r = Build("multi_probe_2", 3);
+  const RunPlacement r = Build("multi_probe_2", 3);
   // 12: 10 (2), 20 (8), 0 (12): robots 1 and 2 search, robot 1 stores.
   const float twelve = 12;
-  const RoutingDecision d = Stateless(r).strategy->Route(RobotId(0), &twelve);
+  const PlacementDecision d = Stateless(r).strategy->Route(RobotId(0), &twelve);
   EXPECT_EQ(d.search_at, Robots({1, 2}));
   EXPECT_EQ(d.store_at, Robots({1}));
   // 4: 0 (4), 10 (6), 20 (16): robots 0 and 1.
@@ -96,11 +96,11 @@ TEST_F(ThreeRobotsTest, MultiProbeTwoSearchesTheTwoNearestOwnersAndStoresAtTheNe
 }
 
 TEST_F(ThreeRobotsTest, ReplicateStoresAtOwnersWithinOnePlusEpsilonOfTheNearest) {
-  const RunRouting r = Build("replicate_0.5", 3);
+  const RunPlacement r = Build("replicate_0.5", 3);
   // 14.5: 10 at 4.5, 20 at 5.5 <= 1.5 x 4.5 = 6.75, 0 at 14.5 > 6.75: stored at robots 1 and 2,
   // searched at the nearest only.
   const float x = 14.5f;
-  const RoutingDecision d = Stateless(r).strategy->Route(RobotId(0), &x);
+  const PlacementDecision d = Stateless(r).strategy->Route(RobotId(0), &x);
   EXPECT_EQ(d.search_at, Robots({1}));
   EXPECT_EQ(d.store_at, Robots({1, 2}));
   // 12: 10 at 2, 20 at 8 > 3: robot 1 only.
@@ -114,11 +114,11 @@ TEST_F(ThreeRobotsTest, ReplicateStoresAtOwnersWithinOnePlusEpsilonOfTheNearest)
 // still routes as without it while every robot is alive; re-clustering has no failover.
 TEST_F(ThreeRobotsTest, FailoverWrapsTheStatelessStrategyAndRefusesReclustering) {
   inputs_.failover.enabled = true;
-  const RunRouting r = Build("decentralized", 3);
+  const RunPlacement r = Build("decentralized", 3);
   const StatelessFamily& f = Stateless(r);
   ASSERT_NE(f.failover, nullptr);
-  EXPECT_EQ(static_cast<const TeamRouting*>(f.failover), f.team.get());
-  EXPECT_NE(static_cast<const TeamRouting*>(f.strategy), f.team.get());
+  EXPECT_EQ(static_cast<const TeamPlacement*>(f.failover), f.team.get());
+  EXPECT_NE(static_cast<const TeamPlacement*>(f.strategy), f.team.get());
   const float twelve = 12;
   EXPECT_EQ(f.strategy->Route(RobotId(0), &twelve).search_at, Robots({1}));
   EXPECT_THROW(Build("recluster_c1_p50", 3), std::invalid_argument);
@@ -127,16 +127,16 @@ TEST_F(ThreeRobotsTest, FailoverWrapsTheStatelessStrategyAndRefusesReclustering)
 TEST_F(ThreeRobotsTest, StrategiesOfOneRunShareTheCachedCentroids) {
   RunCentroidCache cache;
   inputs_.cache = &cache;
-  const RunRouting a = Build("decentralized", 3);
+  const RunPlacement a = Build("decentralized", 3);
   fs::remove_all(dir_);  // a second read of the file would now fail
-  const RunRouting b = Build("multi_probe_2", 3);
+  const RunPlacement b = Build("multi_probe_2", 3);
   EXPECT_EQ(b.table()->centroids(), a.table()->centroids());
   inputs_.cache = nullptr;
   EXPECT_THROW(Build("decentralized", 3), std::exception);
 }
 
 // Two robots, two clusters each: centroids 0, 10, 20, 30 (round robin: robots 0 1 0 1).
-class LptTest : public RunRoutingTest {
+class LptTest : public RunPlacementTest {
  protected:
   LptTest() { Centroids(2, Column({0, 10, 20, 30})); }
 };
@@ -148,7 +148,7 @@ TEST_F(LptTest, LptPacksTheClustersOnTheDeploymentSamplesLoads) {
   deployment_ = DescriptorMatrix::Constant(41, 1, 15.0f);
   deployment_(0, 0) = deployment_(20, 0) = 29;
   deployment_(40, 0) = 1;
-  const RunRouting r = Build("lpt_c2", 2);
+  const RunPlacement r = Build("lpt_c2", 2);
   ASSERT_EQ(r.table()->num_centroids(), 4);
   const float one = 1, nineteen = 19, twenty_nine = 29;
   EXPECT_EQ(r.table()->RouteOf(&one), RobotId(1));
@@ -162,7 +162,7 @@ TEST_F(LptTest, LptTrainTakesTheLoadsFromTheTrainingSet) {
   // 10 -> robot 1 (3), 20 -> the less loaded robot 1 (3 < 4). So 19 goes to robot 1 (round
   // robin: 0).
   training_ = Column({1, 1, 1, 29});
-  const RunRouting r = Build("lpt_c2_train", 2);
+  const RunPlacement r = Build("lpt_c2_train", 2);
   const float one = 1, nineteen = 19;
   EXPECT_EQ(r.table()->RouteOf(&one), RobotId(0));
   EXPECT_EQ(r.table()->RouteOf(&nineteen), RobotId(1));
@@ -172,7 +172,7 @@ TEST_F(LptTest, ReclusteringStartsFromItsTableAndCarriesItsParameters) {
   // recluster_c2_p50: C = 2 (the four centroids), period 50, seeded RunSeed(1, 2, 0).
   training_ = Column({1, 1, 1, 29});
   deployment_ = DescriptorMatrix::Constant(200, 1, 5.0f);
-  const RunRouting r = Build("recluster_c2_p50", 2);
+  const RunPlacement r = Build("recluster_c2_p50", 2);
   const ReclusterFamily& f = FamilyOf<ReclusterFamily>(r);
   EXPECT_EQ(f.params.clusters_per_robot, 2);
   EXPECT_EQ(f.params.period, 50);
@@ -184,13 +184,13 @@ TEST_F(LptTest, ReclusteringStartsFromItsTableAndCarriesItsParameters) {
   EXPECT_EQ(f.team->num_robots(), 2);
 }
 
-TEST_F(RunRoutingTest, CentroidFilesMustHaveKRows) {
+TEST_F(RunPlacementTest, CentroidFilesMustHaveKRows) {
   Centroids(2, Column({0, 10, 20}));  // 3 rows, lpt_c2 needs 4
   EXPECT_THROW(Build("lpt_c2", 2), std::invalid_argument);
 }
 
-TEST(RunRouting, NeedsTheTrainingAndDeploymentDescriptors) {
-  EXPECT_THROW(BuildRunRouting(ParseStrategy("broadcast"), StrategyInputs{}, 2, 0), std::invalid_argument);
+TEST(RunPlacement, NeedsTheTrainingAndDeploymentDescriptors) {
+  EXPECT_THROW(BuildRunPlacement(ParseStrategy("broadcast"), StrategyInputs{}, 2, 0), std::invalid_argument);
 }
 
 // Tables that cluster for themselves (k-means on hand-made data, no file).
@@ -209,7 +209,7 @@ TEST(SampleTables, ClusterWhereTheDeploymentIs) {
   for (int i = 0; i < 40; ++i) deployment(i, 0) = i < 20 ? 0.0f : 100.0f;
   const DescriptorMatrix training = DescriptorMatrix::Constant(10, 1, 50.0f);
   const StrategyInputs in = Inputs(training, deployment);
-  const RunRouting routing = BuildRunRouting(ParseStrategy("sample_c2"), in, 2, 0);
+  const RunPlacement routing = BuildRunPlacement(ParseStrategy("sample_c2"), in, 2, 0);
   const CentroidTable* table = routing.table();
   EXPECT_EQ(table->num_centroids(), 2);
   const float a = 1, b = 99;
@@ -226,14 +226,14 @@ TEST(BalancedTables, SplitTheTrainingSetIntoEqualClusters) {
   const DescriptorMatrix training = Lopsided();
   const DescriptorMatrix deployment = DescriptorMatrix::Constant(10, 1, 50.0f);
   const StrategyInputs in = Inputs(training, deployment);
-  const RunRouting balanced_routing = BuildRunRouting(ParseStrategy("balanced_c1"), in, 2, 0);
+  const RunPlacement balanced_routing = BuildRunPlacement(ParseStrategy("balanced_c1"), in, 2, 0);
   const CentroidTable* balanced = balanced_routing.table();
   ASSERT_EQ(balanced->num_centroids(), 2);
   const float one = 1, thirty = 30, hundred = 100;
   EXPECT_NE(balanced->RouteOf(&thirty), balanced->RouteOf(&one));
   EXPECT_EQ(balanced->RouteOf(&thirty), balanced->RouteOf(&hundred));
   // The paper's table on the same training set sends 30 with 1.
-  const RunRouting paper_routing = BuildRunRouting(ParseStrategy("replicate_0.1"), in, 2, 0);
+  const RunPlacement paper_routing = BuildRunPlacement(ParseStrategy("replicate_0.1"), in, 2, 0);
   const CentroidTable* paper = paper_routing.table();
   EXPECT_EQ(paper->RouteOf(&thirty), paper->RouteOf(&one));
   EXPECT_NE(paper->RouteOf(&thirty), paper->RouteOf(&hundred));
@@ -247,7 +247,7 @@ TEST(BalancedTables, BalancedSampleSplitsTheDeploymentSample) {
   for (int i = 0; i < 6; ++i) deployment(i * 20, 0) = lopsided(i, 0);
   const DescriptorMatrix training = DescriptorMatrix::Constant(10, 1, -7.0f);
   const StrategyInputs in = Inputs(training, deployment);
-  const RunRouting r = BuildRunRouting(ParseStrategy("balanced_sample_c1+replicate_0.5_r5"), in, 2, 0);
+  const RunPlacement r = BuildRunPlacement(ParseStrategy("balanced_sample_c1+replicate_0.5_r5"), in, 2, 0);
   ASSERT_EQ(r.table()->num_centroids(), 2);
   const float one = 1, thirty = 30, hundred = 100;
   EXPECT_NE(r.table()->RouteOf(&thirty), r.table()->RouteOf(&one));
@@ -272,17 +272,17 @@ TEST(DeploymentSample, TakesEveryTwentiethFrame) {
 
 // bow_ strategies take their word owners from the dataset's BoW vectors, no table. Document
 // frequencies of {0, 1}, {0}, {2}: [2, 1, 1]; LPT on 2 robots: w0 -> r0, w1 -> r1, w2 -> r1.
-TEST_F(RunRoutingTest, BagOfWordsStrategiesAssignWords) {
+TEST_F(RunPlacementTest, BagOfWordsStrategiesAssignWords) {
   BowData bow;
   bow.vocabulary = 3;
   bow.frames = {{{0, .5f}, {1, .5f}}, {{0, 1.f}}, {{2, 1.f}}};
   inputs_.bow = &bow;
-  const RunRouting modulo = Build("bow_decentralized", 2);
+  const RunPlacement modulo = Build("bow_decentralized", 2);
   const auto& words = FamilyOf<BowFamily>(modulo).words;
   ASSERT_TRUE(words);
   EXPECT_EQ(words->OwnerOf(2), RobotId(0));
   EXPECT_FALSE(modulo.table());
-  const RunRouting df = Build("bow_decentralized_df", 2);
+  const RunPlacement df = Build("bow_decentralized_df", 2);
   const auto& df_words = FamilyOf<BowFamily>(df).words;
   ASSERT_TRUE(df_words);
   EXPECT_EQ(df_words->OwnerOf(0), RobotId(0));
@@ -296,19 +296,19 @@ TEST_F(RunRoutingTest, BagOfWordsStrategiesAssignWords) {
 // What a team of BoW agents sends by (BowTeamPlan): the distributed index its word owners,
 // broadcast none (the whole vector to every robot), centralized one server, robot 0, owning
 // every word of the vocabulary.
-TEST_F(RunRoutingTest, BagOfWordsStrategiesGiveTheirTeamPlan) {
+TEST_F(RunPlacementTest, BagOfWordsStrategiesGiveTheirTeamPlan) {
   BowData bow;
   bow.vocabulary = 3;
   bow.frames = {{{0, .5f}, {1, .5f}}, {{0, 1.f}}, {{2, 1.f}}};
   inputs_.bow = &bow;
-  const RunRouting modulo = Build("bow_decentralized", 3);
+  const RunPlacement modulo = Build("bow_decentralized", 3);
   const BowTeamPlan& plan = FamilyOf<BowFamily>(modulo).team;
   EXPECT_EQ(plan.robots, 3);
   ASSERT_TRUE(plan.words);
   EXPECT_EQ(plan.words->OwnerOf(2), RobotId(2));
   EXPECT_EQ(plan.words, FamilyOf<BowFamily>(modulo).words);  // the distributed index itself
   EXPECT_TRUE(FamilyOf<BowFamily>(Build("bow_broadcast", 3)).team.broadcast());
-  const RunRouting central = Build("bow_centralized", 3);
+  const RunPlacement central = Build("bow_centralized", 3);
   const BowFamily& c = FamilyOf<BowFamily>(central);
   EXPECT_FALSE(c.words);  // the static protocol's reference keeps its own index
   ASSERT_TRUE(c.team.words);

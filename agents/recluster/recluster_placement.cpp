@@ -1,4 +1,4 @@
-#include "agents/recluster/recluster_routing.h"
+#include "agents/recluster/recluster_placement.h"
 
 #include <stdexcept>
 #include <string>
@@ -21,13 +21,13 @@ void ReclusterPlan::Validate() const {
   if (sample_timeout < SimTime::Zero()) fail("sample_timeout must be >= 0");
 }
 
-ReclusterRouting::ReclusterRouting(ReclusterPlan plan)
-    : TeamRouting(plan.initial ? plan.initial->num_robots() : 1), plan_(std::move(plan)) {
+ReclusterPlacement::ReclusterPlacement(ReclusterPlan plan)
+    : TeamPlacement(plan.initial ? plan.initial->num_robots() : 1), plan_(std::move(plan)) {
   plan_.Validate();
 }
 
-std::unique_ptr<AgentRouting> ReclusterRouting::MakeAgentRouting() const {
-  return std::make_unique<ReclusterAgentRouting>(plan_);
+std::unique_ptr<AgentPlacement> ReclusterPlacement::MakeAgentPlacement() const {
+  return std::make_unique<ReclusterAgentPlacement>(plan_);
 }
 
 }  // namespace dvpr

@@ -1,4 +1,4 @@
-#include "agents/routing/failover_routing.h"
+#include "agents/placement/failover_placement.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -7,8 +7,8 @@
 
 #include "agents/algorithms/descriptor_index.h"
 #include "agents/algorithms/frame_stream.h"
-#include "agents/routing/probe_routing.h"
 #include "agents/messages/team_sync.h"
+#include "agents/placement/probe_placement.h"
 
 namespace dvpr {
 
@@ -38,28 +38,28 @@ std::vector<RobotId> Replace(const std::vector<RobotId>& robots, const std::vect
 
 }  // namespace
 
-RoutingDecision FailOver(const RoutingDecision& decision, const CentroidTable* table, const std::vector<bool>& lost,
+PlacementDecision FailOver(const PlacementDecision& decision, const CentroidTable* table, const std::vector<bool>& lost,
                          const float* descriptor) {
   const std::optional<RobotId> successor =
       table != nullptr ? SuccessorOf(*table, lost, descriptor) : std::optional<RobotId>();
-  return RoutingDecision{Replace(decision.search_at, lost, successor), Replace(decision.store_at, lost, successor)};
+  return PlacementDecision{Replace(decision.search_at, lost, successor), Replace(decision.store_at, lost, successor)};
 }
 
-FailoverTeam::FailoverTeam(std::unique_ptr<RoutingStrategy> inner, std::shared_ptr<const CentroidTable> table,
+FailoverTeam::FailoverTeam(std::unique_ptr<PlacementStrategy> inner, std::shared_ptr<const CentroidTable> table,
                            FailoverParams params, SimTime until)
-    : TeamRouting(inner->num_robots()), inner_(std::move(inner)), table_(std::move(table)), params_(params),
+    : TeamPlacement(inner->num_robots()), inner_(std::move(inner)), table_(std::move(table)), params_(params),
       until_(until) {
   params_.Validate();
 }
 
-std::unique_ptr<AgentRouting> FailoverTeam::MakeAgentRouting() const { return std::make_unique<FailoverRouting>(*this); }
+std::unique_ptr<AgentPlacement> FailoverTeam::MakeAgentPlacement() const { return std::make_unique<FailoverPlacement>(*this); }
 
 void FailoverTeam::UseProcessHeartbeats(std::int64_t team_key) {
   announce_ = false;
   team_key_ = team_key;
 }
 
-void FailoverRouting::Start(const AgentContext& robot) {
+void FailoverPlacement::Start(const AgentContext& robot) {
   self_ = robot.self;
   transport_ = &robot.transport;
   store_ = &robot.store;
@@ -75,14 +75,14 @@ void FailoverRouting::Start(const AgentContext& robot) {
   Tick();
 }
 
-void FailoverRouting::Stop() {
+void FailoverPlacement::Stop() {
   online_ = false;
   heartbeats_.Reset();
 }
 
 // Announces (simulation), checks for silent robots, and comes back a period later until the
 // team's last frame: after it no query is routed, so no detection would change anything.
-void FailoverRouting::Tick() {
+void FailoverPlacement::Tick() {
   if (!online_) return;
   if (team_.announces()) Announce();
   detector_->Check(transport_->Now());
@@ -91,7 +91,7 @@ void FailoverRouting::Tick() {
   }
 }
 
-void FailoverRouting::Announce() {
+void FailoverPlacement::Announce() {
   const SimTime now = transport_->Now();
   agent_status_t s;
   s.utime = now.us();
@@ -106,18 +106,18 @@ void FailoverRouting::Announce() {
   transport_->Publish(channels::kStatus, s);
 }
 
-QueryPlan FailoverRouting::Plan(const float* descriptor) const {
-  const RoutingStrategy& inner = team_.inner();
-  RoutingDecision decision = inner.Route(self_, descriptor);
+QueryPlan FailoverPlacement::Plan(const float* descriptor) const {
+  const PlacementStrategy& inner = team_.inner();
+  PlacementDecision decision = inner.Route(self_, descriptor);
   if (!detector_->lost().empty()) decision = FailOver(decision, team_.table(), detector_->lost_flags(), descriptor);
   return PlanOf(decision, self_, inner.UsesBroadcastChannel());
 }
 
-void FailoverRouting::Store(RobotId querier, FrameId frame, const float* descriptor) {
+void FailoverPlacement::Store(RobotId querier, FrameId frame, const float* descriptor) {
   store_->Add(querier, frame, descriptor);
 }
 
-std::vector<LostRobot> FailoverRouting::Lost() const {
+std::vector<LostRobot> FailoverPlacement::Lost() const {
   return detector_ ? detector_->lost() : std::vector<LostRobot>{};
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// The one place a strategy becomes objects: BuildRunRouting turns a StrategySpec
+// The one place a strategy becomes objects: BuildRunPlacement turns a StrategySpec
 // (strategy_spec.h) into the centroid table and the routing of one run (robots, run). The paper
 // protocol, the simulation and `dvpr agent` all call it, so a name means the same in each.
 //
@@ -13,13 +13,13 @@
 #include <utility>
 #include <variant>
 
-#include "agents/bow_robot_agent.h"
 #include "agents/algorithms/bow_words.h"
 #include "agents/algorithms/centroid_table.h"
-#include "agents/routing/agent_routing.h"
-#include "agents/routing/failover_routing.h"
+#include "agents/bow_robot_agent.h"
+#include "agents/placement/agent_placement.h"
+#include "agents/placement/failover_placement.h"
+#include "agents/placement/placement.h"
 #include "agents/recluster/recluster.h"
-#include "agents/routing/routing.h"
 #include "experiments/data/bow_data.h"
 #include "experiments/data/split.h"
 #include "experiments/strategies/run_centroids.h"
@@ -36,25 +36,25 @@ struct StrategyInputs {
   RunCentroidParams centroids;                   // config seed, clusters per robot, centroid files
   RunCentroidCache* cache = nullptr;             // optional, one per run: k-means shared by its strategies
   // enabled: every stateless strategy's team routes around lost robots (FailoverTeam); the
-  // re-clustering strategies have no failover (BuildRunRouting throws).
+  // re-clustering strategies have no failover (BuildRunPlacement throws).
   FailoverParams failover;
   const BowData* bow = nullptr;                  // the deployment's BoW vectors: bow_ strategies' word owners
 };
 
 // One run's routing, by strategy family (docs/strategies.md). A strategy belongs to exactly one
 // family, and what a protocol runs depends on the family alone, so callers visit it
-// (RunRouting::Visit): a family that a caller does not handle is a compile error, not a null
+// (RunPlacement::Visit): a family that a caller does not handle is a compile error, not a null
 // pointer met at run time.
 
 // The descriptor strategies that keep no per-robot state: broadcast, decentralized, multi_probe_,
 // replicate_, on any table (sample_, lpt_, balanced_, ...).
 struct StatelessFamily {
   std::shared_ptr<const CentroidTable> table;  // null for broadcast
-  // What each robot's routing component is made from (TeamRouting::MakeAgentRouting): the
+  // What each robot's routing component is made from (TeamPlacement::MakeAgentPlacement): the
   // strategy itself, or the FailoverTeam around it.
-  std::unique_ptr<TeamRouting> team;
+  std::unique_ptr<TeamPlacement> team;
   // The strategy, owned by `team`: Route(self, descriptor) answers for every robot.
-  const RoutingStrategy* strategy = nullptr;
+  const PlacementStrategy* strategy = nullptr;
   // `team` itself when it fails over (StrategyInputs::failover), null otherwise; real agents
   // tell it that their process announces the heartbeats (UseProcessHeartbeats).
   FailoverTeam* failover = nullptr;
@@ -66,7 +66,7 @@ struct ReclusterFamily {
   // C, P, the sample stride, seed RunSeed(config seed, robots, run). The static protocol plans
   // the epochs from these and the start table.
   ReclusterParams params;
-  std::unique_ptr<TeamRouting> team;  // ReclusterRouting: per-robot state, no failover
+  std::unique_ptr<TeamPlacement> team;  // ReclusterPlacement: per-robot state, no failover
 };
 
 // bow_ strategies: a team of BoW agents (docs/bow.md); no centroid table.
@@ -90,11 +90,11 @@ template <class... F>
 Overloaded(F...) -> Overloaded<F...>;
 }  // namespace detail
 
-class RunRouting {
+class RunPlacement {
  public:
   using Family = std::variant<StatelessFamily, ReclusterFamily, BowFamily>;
 
-  explicit RunRouting(Family family) : family_(std::move(family)) {}
+  explicit RunPlacement(Family family) : family_(std::move(family)) {}
 
   // Calls the one of `handlers` that takes this run's family (a generic lambda may take several).
   template <class... F>
@@ -126,6 +126,6 @@ struct TrainingUse {
 TrainingUse TrainingUseOf(const StrategySpec& spec, const StrategyInputs& inputs);
 
 // Throws std::invalid_argument when an input it needs is missing or the centroid files do not fit.
-RunRouting BuildRunRouting(const StrategySpec& spec, const StrategyInputs& inputs, int robots, int run);
+RunPlacement BuildRunPlacement(const StrategySpec& spec, const StrategyInputs& inputs, int robots, int run);
 
 }  // namespace dvpr

@@ -18,11 +18,11 @@
 #include <string_view>
 #include <vector>
 
-#include "agents/routing/agent_routing.h"
 #include "agents/algorithms/centroid_table.h"
-#include "agents/routing/failure_detector.h"
-#include "agents/routing/routing.h"
 #include "agents/messages/transport.h"
+#include "agents/placement/agent_placement.h"
+#include "agents/placement/failure_detector.h"
+#include "agents/placement/placement.h"
 
 namespace dvpr {
 
@@ -33,26 +33,26 @@ std::optional<RobotId> SuccessorOf(const CentroidTable& table, const std::vector
 
 // `decision` with every lost robot replaced by SuccessorOf (dropped when there is no table or
 // no successor), each robot kept once, at its first place.
-RoutingDecision FailOver(const RoutingDecision& decision, const CentroidTable* table, const std::vector<bool>& lost,
+PlacementDecision FailOver(const PlacementDecision& decision, const CentroidTable* table, const std::vector<bool>& lost,
                          const float* descriptor);
 
-// A stateless strategy with failover: each robot's component (FailoverRouting) listens to the
+// A stateless strategy with failover: each robot's component (FailoverPlacement) listens to the
 // heartbeats and routes around the robots it has declared lost.
-class FailoverTeam final : public TeamRouting {
+class FailoverTeam final : public TeamPlacement {
  public:
   // `table`: the strategy's (null for broadcast). `until`: the team's last frame; heartbeats and
   // checks stop after it, so a simulation ends.
-  FailoverTeam(std::unique_ptr<RoutingStrategy> inner, std::shared_ptr<const CentroidTable> table,
+  FailoverTeam(std::unique_ptr<PlacementStrategy> inner, std::shared_ptr<const CentroidTable> table,
                FailoverParams params, SimTime until);
 
   std::string_view name() const override { return inner_->name(); }
-  std::unique_ptr<AgentRouting> MakeAgentRouting() const override;
+  std::unique_ptr<AgentPlacement> MakeAgentPlacement() const override;
 
   // Real agents: the process already announces agent_status_t heartbeats with its team key, so
   // the components only listen, and only to heartbeats with that key.
   void UseProcessHeartbeats(std::int64_t team_key);
 
-  const RoutingStrategy& inner() const { return *inner_; }
+  const PlacementStrategy& inner() const { return *inner_; }
   const CentroidTable* table() const { return table_.get(); }
   const FailoverParams& params() const { return params_; }
   SimTime until() const { return until_; }
@@ -60,7 +60,7 @@ class FailoverTeam final : public TeamRouting {
   std::int64_t team_key() const { return team_key_; }
 
  private:
-  std::unique_ptr<RoutingStrategy> inner_;
+  std::unique_ptr<PlacementStrategy> inner_;
   std::shared_ptr<const CentroidTable> table_;
   FailoverParams params_;
   SimTime until_;
@@ -68,9 +68,9 @@ class FailoverTeam final : public TeamRouting {
   std::int64_t team_key_ = 0;
 };
 
-class FailoverRouting final : public AgentRouting {
+class FailoverPlacement final : public AgentPlacement {
  public:
-  explicit FailoverRouting(const FailoverTeam& team) : team_(team) {}
+  explicit FailoverPlacement(const FailoverTeam& team) : team_(team) {}
 
   void Start(const AgentContext& robot) override;
   void Stop() override;

@@ -4,19 +4,19 @@
 #include <memory>
 
 #include "agents/algorithms/centroid_table.h"
-#include "agents/routing/routing.h"
+#include "agents/placement/placement.h"
 
 namespace dvpr {
 
-class DecentralizedRouting final : public RoutingStrategy {
+class DecentralizedPlacement final : public PlacementStrategy {
  public:
-  explicit DecentralizedRouting(std::shared_ptr<const CentroidTable> table)
-      : RoutingStrategy(table->num_robots()), table_(std::move(table)) {}
+  explicit DecentralizedPlacement(std::shared_ptr<const CentroidTable> table)
+      : PlacementStrategy(table->num_robots()), table_(std::move(table)) {}
   std::string_view name() const override { return "decentralized"; }
   const CentroidTable& table() const { return *table_; }
 
  private:
-  void DoRoute(RobotId, const float* descriptor, RoutingDecision& out) const override {
+  void DoRoute(RobotId, const float* descriptor, PlacementDecision& out) const override {
     const RobotId owner = table_->RouteOf(descriptor);
     out.search_at.push_back(owner);
     out.store_at.push_back(owner);

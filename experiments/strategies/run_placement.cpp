@@ -1,16 +1,16 @@
-#include "experiments/strategies/run_routing.h"
+#include "experiments/strategies/run_placement.h"
 
 #include <algorithm>
 #include <stdexcept>
 #include <utility>
 
 #include "agents/algorithms/balanced_kmeans.h"
-#include "agents/routing/decentralized_routing.h"
+#include "agents/algorithms/frame_stream.h"
 #include "agents/algorithms/kmeans.h"
 #include "agents/algorithms/load_balanced_table.h"
-#include "agents/routing/probe_routing.h"
-#include "agents/recluster/recluster_routing.h"
-#include "agents/algorithms/frame_stream.h"
+#include "agents/placement/decentralized_placement.h"
+#include "agents/placement/probe_placement.h"
+#include "agents/recluster/recluster_placement.h"
 #include "experiments/data/split.h"
 #include "experiments/strategies/deployment_sample.h"
 
@@ -66,7 +66,7 @@ CentroidTable BuildTable(const StrategySpec& spec, const StrategyInputs& in, int
       return LoadBalancedTable(TrainingCentroids(spec, in, robots, run), loads, robots, spec.balance);
     }
   }
-  throw std::logic_error("BuildRunRouting: unknown table kind");
+  throw std::logic_error("BuildRunPlacement: unknown table kind");
 }
 
 // recluster_cC_pP in run (robots, run); both protocols plan with these.
@@ -79,7 +79,7 @@ ReclusterParams ReclusterParamsOf(const StrategySpec& spec, const StrategyInputs
   return p;
 }
 
-// What the re-clustering team agrees on before the run (agents/recluster/recluster_routing.h). The leader
+// What the re-clustering team agrees on before the run (agents/recluster/recluster_placement.h). The leader
 // waits half a period for the samples.
 ReclusterPlan ReclusterPlanOf(const ReclusterParams& params, std::shared_ptr<const CentroidTable> initial,
                               const StrategyInputs& in, int robots) {
@@ -126,7 +126,7 @@ TrainingUse TrainingUseOf(const StrategySpec& spec, const StrategyInputs& in) {
 
 namespace {
 
-RunRouting BowRouting(const StrategySpec& spec, const StrategyInputs& in, int robots) {
+RunPlacement BowPlacement(const StrategySpec& spec, const StrategyInputs& in, int robots) {
   if (in.bow == nullptr || in.bow->empty()) {
     throw std::invalid_argument("strategy " + spec.name + ": the dataset has no bag-of-words vectors");
   }
@@ -141,25 +141,25 @@ RunRouting BowRouting(const StrategySpec& spec, const StrategyInputs& in, int ro
   if (spec.bow == StrategySpec::Bow::kCentralized) {
     f.team.words = std::make_shared<const WordOwners>(WordOwners::Server(in.bow->vocabulary, robots, RobotId(0)));
   }
-  return RunRouting(std::move(f));
+  return RunPlacement(std::move(f));
 }
 
 }  // namespace
 
-const CentroidTable* RunRouting::table() const {
+const CentroidTable* RunPlacement::table() const {
   return Visit([](const BowFamily&) -> const CentroidTable* { return nullptr; },
                [](const auto& descriptor) -> const CentroidTable* { return descriptor.table.get(); });
 }
 
-RunRouting BuildRunRouting(const StrategySpec& spec, const StrategyInputs& in, int robots, int run) {
-  if (spec.bag_of_words()) return BowRouting(spec, in, robots);
+RunPlacement BuildRunPlacement(const StrategySpec& spec, const StrategyInputs& in, int robots, int run) {
+  if (spec.bag_of_words()) return BowPlacement(spec, in, robots);
   if (in.training == nullptr || in.deployment == nullptr) {
-    throw std::invalid_argument("BuildRunRouting: StrategyInputs needs the training and deployment descriptors");
+    throw std::invalid_argument("BuildRunPlacement: StrategyInputs needs the training and deployment descriptors");
   }
   std::shared_ptr<const CentroidTable> table;
-  std::unique_ptr<RoutingStrategy> stateless;
+  std::unique_ptr<PlacementStrategy> stateless;
   if (spec.broadcast()) {  // no table: every robot searches, each keeps its own frames
-    stateless = std::make_unique<BroadcastRouting>(robots);
+    stateless = std::make_unique<BroadcastPlacement>(robots);
   } else {
     table = std::make_shared<const CentroidTable>(BuildTable(spec, in, robots, run));
     if (spec.reclusters()) {
@@ -169,16 +169,16 @@ RunRouting BuildRunRouting(const StrategySpec& spec, const StrategyInputs& in, i
       ReclusterFamily f;
       f.table = table;
       f.params = ReclusterParamsOf(spec, in, robots, run);
-      f.team = std::make_unique<ReclusterRouting>(ReclusterPlanOf(f.params, table, in, robots));
-      return RunRouting(std::move(f));
+      f.team = std::make_unique<ReclusterPlacement>(ReclusterPlanOf(f.params, table, in, robots));
+      return RunPlacement(std::move(f));
     }
-    switch (spec.routing) {
-      case StrategySpec::Routing::kNearest: stateless = std::make_unique<DecentralizedRouting>(table); break;
-      case StrategySpec::Routing::kProbe: stateless = std::make_unique<MultiProbeRouting>(table, spec.probe); break;
-      case StrategySpec::Routing::kReplicate:
-        stateless = std::make_unique<BoundaryReplicationRouting>(table, spec.replicate);
+    switch (spec.placement) {
+      case StrategySpec::Placement::kNearest: stateless = std::make_unique<DecentralizedPlacement>(table); break;
+      case StrategySpec::Placement::kProbe: stateless = std::make_unique<MultiProbePlacement>(table, spec.probe); break;
+      case StrategySpec::Placement::kReplicate:
+        stateless = std::make_unique<BoundaryReplicationPlacement>(table, spec.replicate);
         break;
-      case StrategySpec::Routing::kBroadcast: throw std::logic_error("BuildRunRouting: broadcast with a table");
+      case StrategySpec::Placement::kBroadcast: throw std::logic_error("BuildRunPlacement: broadcast with a table");
     }
   }
   StatelessFamily f;
@@ -191,7 +191,7 @@ RunRouting BuildRunRouting(const StrategySpec& spec, const StrategyInputs& in, i
   } else {
     f.team = std::move(stateless);
   }
-  return RunRouting(std::move(f));
+  return RunPlacement(std::move(f));
 }
 
 }  // namespace dvpr

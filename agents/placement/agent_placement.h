@@ -2,20 +2,20 @@
 // One robot's routing component: where the robot sends its own frames and how it keeps the
 // queries it is told to store. The agent (RobotAgent) knows only this interface; a strategy
 // with per-robot state (re-clustering, agents/recluster/) keeps that state here, a stateless
-// strategy is wrapped by StatelessRouting (agents/routing/stateless_routing.h).
+// strategy is wrapped by StatelessPlacement (agents/placement/stateless_placement.h).
 //
 // What a received query asks of its receiver comes with it (its channel, QueryRole in
 // agents/messages/channels.h): the agent searches when told to and hands what it must store to Store().
 //
-// TeamRouting is what a run's agents are built from: one shared, immutable object per run that
+// TeamPlacement is what a run's agents are built from: one shared, immutable object per run that
 // makes each robot's component.
 #include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "agents/routing/failure_detector.h"
 #include "agents/algorithms/ids.h"
+#include "agents/placement/failure_detector.h"
 
 namespace dvpr {
 
@@ -39,9 +39,9 @@ struct QueryPlan {
   std::vector<std::string> channels;  // the query is published once on each
 };
 
-class AgentRouting {
+class AgentPlacement {
  public:
-  virtual ~AgentRouting() = default;
+  virtual ~AgentPlacement() = default;
 
   // The robot starts (before its first frame): the component keeps `robot`, subscribes to the
   // channels of its own messages and schedules its own timers.
@@ -53,22 +53,22 @@ class AgentRouting {
   // Keeps a query the robot was told to store (its own frame or a remote one), `querier` being
   // the robot that took it.
   virtual void Store(RobotId querier, FrameId frame, const float* descriptor) = 0;
-  // The robots this component has declared lost (failover, agents/routing/failover_routing.h), in order
+  // The robots this component has declared lost (failover, agents/placement/failover_placement.h), in order
   // of detection; none for a component without failover.
   virtual std::vector<LostRobot> Lost() const { return {}; }
 };
 
-class TeamRouting {
+class TeamPlacement {
  public:
-  virtual ~TeamRouting() = default;
+  virtual ~TeamPlacement() = default;
 
   virtual std::string_view name() const = 0;
   int num_robots() const { return num_robots_; }
   // A new component for one robot of the team; the team routing outlives it.
-  virtual std::unique_ptr<AgentRouting> MakeAgentRouting() const = 0;
+  virtual std::unique_ptr<AgentPlacement> MakeAgentPlacement() const = 0;
 
  protected:
-  explicit TeamRouting(int num_robots) : num_robots_(num_robots) {}
+  explicit TeamPlacement(int num_robots) : num_robots_(num_robots) {}
 
  private:
   int num_robots_;

@@ -1,4 +1,4 @@
-#include "agents/routing/probe_routing.h"
+#include "agents/placement/probe_placement.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,12 +43,12 @@ void MultiProbeParams::Validate() const {
   if (std::isnan(epsilon)) throw std::invalid_argument("multi_probe.epsilon must be a number");
 }
 
-MultiProbeRouting::MultiProbeRouting(std::shared_ptr<const CentroidTable> table, MultiProbeParams params)
-    : RoutingStrategy(table->num_robots()), table_(std::move(table)), params_(params) {
+MultiProbePlacement::MultiProbePlacement(std::shared_ptr<const CentroidTable> table, MultiProbeParams params)
+    : PlacementStrategy(table->num_robots()), table_(std::move(table)), params_(params) {
   params_.Validate();
 }
 
-void MultiProbeRouting::DoRoute(RobotId, const float* descriptor, RoutingDecision& out) const {
+void MultiProbePlacement::DoRoute(RobotId, const float* descriptor, PlacementDecision& out) const {
   const double epsilon = params_.epsilon < 0 ? INFINITY : params_.epsilon;
   out.search_at = OwnersWithin(*table_, descriptor, epsilon, params_.probes);
   out.store_at.push_back(out.search_at.front());
@@ -61,13 +61,13 @@ void ReplicationParams::Validate() const {
   }
 }
 
-BoundaryReplicationRouting::BoundaryReplicationRouting(std::shared_ptr<const CentroidTable> table,
+BoundaryReplicationPlacement::BoundaryReplicationPlacement(std::shared_ptr<const CentroidTable> table,
                                                        ReplicationParams params)
-    : RoutingStrategy(table->num_robots()), table_(std::move(table)), params_(params) {
+    : PlacementStrategy(table->num_robots()), table_(std::move(table)), params_(params) {
   params_.Validate();
 }
 
-void BoundaryReplicationRouting::DoRoute(RobotId, const float* descriptor, RoutingDecision& out) const {
+void BoundaryReplicationPlacement::DoRoute(RobotId, const float* descriptor, PlacementDecision& out) const {
   out.store_at = OwnersWithin(*table_, descriptor, params_.epsilon, params_.max_replicas);
   out.search_at.push_back(out.store_at.front());
 }

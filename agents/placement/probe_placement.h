@@ -2,12 +2,12 @@
 // Strategies that recover the recall the paper loses at cluster borders
 // (issue 8), both over the same centroid table as the paper's method.
 //
-// MultiProbeRouting searches at the owners of several near centroids (FAISS
+// MultiProbePlacement searches at the owners of several near centroids (FAISS
 // nprobe; with epsilon, SPANN's adaptive query-aware pruning: only centroids
 // within (1 + epsilon) times the nearest distance). The descriptor is stored
 // once, at the nearest centroid's owner.
 //
-// BoundaryReplicationRouting searches only at the nearest owner but stores the
+// BoundaryReplicationPlacement searches only at the nearest owner but stores the
 // descriptor also at the owners of centroids within (1 + epsilon) of the
 // nearest (SPANN's closure assignment of boundary points), so later queries
 // from across the border find it.
@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "agents/algorithms/centroid_table.h"
-#include "agents/routing/routing.h"
+#include "agents/placement/placement.h"
 
 namespace dvpr {
 
@@ -37,13 +37,13 @@ struct MultiProbeParams {
   bool operator==(const MultiProbeParams&) const = default;
 };
 
-class MultiProbeRouting final : public RoutingStrategy {
+class MultiProbePlacement final : public PlacementStrategy {
  public:
-  MultiProbeRouting(std::shared_ptr<const CentroidTable> table, MultiProbeParams params);
+  MultiProbePlacement(std::shared_ptr<const CentroidTable> table, MultiProbeParams params);
   std::string_view name() const override { return params_.epsilon < 0 ? "multi_probe" : "adaptive_probe"; }
 
  private:
-  void DoRoute(RobotId self, const float* descriptor, RoutingDecision& out) const override;
+  void DoRoute(RobotId self, const float* descriptor, PlacementDecision& out) const override;
   std::shared_ptr<const CentroidTable> table_;
   MultiProbeParams params_;
 };
@@ -55,13 +55,13 @@ struct ReplicationParams {
   bool operator==(const ReplicationParams&) const = default;
 };
 
-class BoundaryReplicationRouting final : public RoutingStrategy {
+class BoundaryReplicationPlacement final : public PlacementStrategy {
  public:
-  BoundaryReplicationRouting(std::shared_ptr<const CentroidTable> table, ReplicationParams params);
+  BoundaryReplicationPlacement(std::shared_ptr<const CentroidTable> table, ReplicationParams params);
   std::string_view name() const override { return "boundary_replication"; }
 
  private:
-  void DoRoute(RobotId self, const float* descriptor, RoutingDecision& out) const override;
+  void DoRoute(RobotId self, const float* descriptor, PlacementDecision& out) const override;
   std::shared_ptr<const CentroidTable> table_;
   ReplicationParams params_;
 };

@@ -1,4 +1,4 @@
-#include "agents/routing/failure_detector.h"
+#include "agents/placement/failure_detector.h"
 
 #include <stdexcept>
 #include <string>

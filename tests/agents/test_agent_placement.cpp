@@ -13,9 +13,9 @@
 
 #include "agents/messages/channels.h"
 #include "agents/messages/sim_transport.h"
+#include "agents/placement/decentralized_placement.h"
+#include "agents/placement/probe_placement.h"
 #include "agents/robot_agent.h"
-#include "agents/routing/decentralized_routing.h"
-#include "agents/routing/probe_routing.h"
 #include "net_models/medium/ideal_link.h"
 #include "sim/simulator.h"
 #include "tests/descriptor_support.h"
@@ -28,9 +28,9 @@ using dvpr::testing_support::Robots;
 
 using Channels = std::vector<std::string>;
 
-class AgentRoutingTest : public ::testing::Test {
+class AgentPlacementTest : public ::testing::Test {
  protected:
-  AgentRoutingTest() {
+  AgentPlacementTest() {
     CentroidMatrix c(4, 1);
     c << 0, 10, 20, 30;
     table_ = std::make_shared<const CentroidTable>(c, Robots({0, 1, 2, 0}), 3);
@@ -38,7 +38,7 @@ class AgentRoutingTest : public ::testing::Test {
   std::shared_ptr<const CentroidTable> table_;
 };
 
-TEST_F(AgentRoutingTest, RoleChannelsHaveEqualLengthsSoTheRoleCostsNoByte) {
+TEST_F(AgentPlacementTest, RoleChannelsHaveEqualLengthsSoTheRoleCostsNoByte) {
   EXPECT_EQ(channels::QueryTo(RobotId(7), QueryRole::kSearchAndStore), "DVPR_QUERY_7");
   EXPECT_EQ(channels::QueryTo(RobotId(7), QueryRole::kSearch), "DVPR_PROBE_7");
   EXPECT_EQ(channels::QueryTo(RobotId(7), QueryRole::kStore), "DVPR_STORE_7");
@@ -46,8 +46,8 @@ TEST_F(AgentRoutingTest, RoleChannelsHaveEqualLengthsSoTheRoleCostsNoByte) {
   EXPECT_EQ(channels::Store(RobotId(123)).size(), channels::Query(RobotId(123)).size());
 }
 
-TEST_F(AgentRoutingTest, DecentralizedAsksTheOwnerToSearchAndStore) {
-  const DecentralizedRouting r(table_);
+TEST_F(AgentPlacementTest, DecentralizedAsksTheOwnerToSearchAndStore) {
+  const DecentralizedPlacement r(table_);
   const float x = 4;  // nearest centroid 0: robot 0
   const QueryPlan from_2 = PlanOf(r.Route(RobotId(2), &x), RobotId(2), false);
   EXPECT_EQ(from_2.channels, Channels{"DVPR_QUERY_0"});
@@ -62,8 +62,8 @@ TEST_F(AgentRoutingTest, DecentralizedAsksTheOwnerToSearchAndStore) {
   EXPECT_TRUE(from_0.store_here);
 }
 
-TEST_F(AgentRoutingTest, MultiProbeStoresAtTheNearestOwnerAndProbesTheOthers) {
-  const MultiProbeRouting r(table_, {.probes = 2, .epsilon = -1});
+TEST_F(AgentPlacementTest, MultiProbeStoresAtTheNearestOwnerAndProbesTheOthers) {
+  const MultiProbePlacement r(table_, {.probes = 2, .epsilon = -1});
   const float x = 4;  // distances 4 (robot 0), 6 (robot 1): search at 0 and 1, store at 0
   EXPECT_EQ(PlanOf(r.Route(RobotId(2), &x), RobotId(2), false).channels, (Channels{"DVPR_QUERY_0", "DVPR_PROBE_1"}));
   // Robot 1's own frame: it probes itself locally and sends the store to robot 0.
@@ -74,8 +74,8 @@ TEST_F(AgentRoutingTest, MultiProbeStoresAtTheNearestOwnerAndProbesTheOthers) {
   EXPECT_FALSE(from_1.store_here);
 }
 
-TEST_F(AgentRoutingTest, BroadcastIsOnePublicationAndOnlyAsksToSearch) {
-  const BroadcastRouting r(3);
+TEST_F(AgentPlacementTest, BroadcastIsOnePublicationAndOnlyAsksToSearch) {
+  const BroadcastPlacement r(3);
   const float x = 4;
   const QueryPlan from_1 = PlanOf(r.Route(RobotId(1), &x), RobotId(1), r.UsesBroadcastChannel());
   EXPECT_EQ(from_1.channels, Channels{"DVPR_QUERY_ALL"});
@@ -83,13 +83,13 @@ TEST_F(AgentRoutingTest, BroadcastIsOnePublicationAndOnlyAsksToSearch) {
   EXPECT_TRUE(from_1.search_here);
   EXPECT_TRUE(from_1.store_here);
   // A decision that asks a remote robot to store cannot go on the broadcast channel.
-  EXPECT_THROW(PlanOf(RoutingDecision{Robots({0, 1}), Robots({1})}, RobotId(0), true), std::logic_error);
-  EXPECT_THROW(PlanOf(RoutingDecision{Robots({0}), Robots({2})}, RobotId(0), true), std::logic_error);
+  EXPECT_THROW(PlanOf(PlacementDecision{Robots({0, 1}), Robots({1})}, RobotId(0), true), std::logic_error);
+  EXPECT_THROW(PlanOf(PlacementDecision{Robots({0}), Robots({2})}, RobotId(0), true), std::logic_error);
 }
 
-TEST_F(AgentRoutingTest, EachRemoteRobotGetsTheQueryOnceOnTheChannelOfItsRole) {
+TEST_F(AgentPlacementTest, EachRemoteRobotGetsTheQueryOnceOnTheChannelOfItsRole) {
   // Searchers first in the decision's order, then store-only robots; self and repeats skipped.
-  const RoutingDecision d{Robots({2, 0, 1, 2}), Robots({1, 0, 3})};
+  const PlacementDecision d{Robots({2, 0, 1, 2}), Robots({1, 0, 3})};
   const QueryPlan plan = PlanOf(d, RobotId(0), false);
   EXPECT_EQ(plan.channels, (Channels{"DVPR_PROBE_2", "DVPR_QUERY_1", "DVPR_STORE_3"}));
   EXPECT_EQ(plan.searches, 4);
@@ -109,13 +109,13 @@ AgentParams Instant() {
 // Robots on an ideal network plus one more node, the observer, that counts the messages on the
 // channels it is told to watch.
 struct IdealTeam {
-  IdealTeam(int robots, const DescriptorMatrix& x, const TeamRouting& routing, std::vector<FrameStream> streams)
+  IdealTeam(int robots, const DescriptorMatrix& x, const TeamPlacement& routing, std::vector<FrameStream> streams)
       : network(sim, robots + 1, std::make_unique<IdealLink>()), observer(network, NodeId(robots)) {
     for (int r = 0; r < robots; ++r) {
       transports.push_back(std::make_unique<SimTransport>(network, NodeId(r)));
       FrameStream frames = streams.empty() ? FrameStream{&x, FrameId(0), 0, 10.0} : streams[static_cast<std::size_t>(r)];
       agents.push_back(std::make_unique<RobotAgent>(AgentSetup{RobotId(r), robots, Instant(), frames}, *transports.back(),
-                                                    routing.MakeAgentRouting(),
+                                                    routing.MakeAgentPlacement(),
                                                     [](FrameId, FrameId) { return VerifyVerdict{}; }));
     }
   }
@@ -139,11 +139,11 @@ struct IdealTeam {
   std::map<std::string, int> seen;
 };
 
-TEST_F(AgentRoutingTest, AReceiverDoesWhatTheChannelSaysNotWhatItsOwnRoutingWould) {
+TEST_F(AgentPlacementTest, AReceiverDoesWhatTheChannelSaysNotWhatItsOwnRoutingWould) {
   // Robot 1's own routing gives every descriptor to robot 0 (the nearest centroid, 0, is robot
   // 0's here): re-deriving the role from it, robot 1 would do nothing with any of these queries.
   const DescriptorMatrix x = Column({1});
-  const DecentralizedRouting routing(table_);
+  const DecentralizedPlacement routing(table_);
   IdealTeam team(2, x, routing, {});
   for (auto& a : team.agents) a->Start();
   int replies = 0;
@@ -170,12 +170,12 @@ TEST_F(AgentRoutingTest, AReceiverDoesWhatTheChannelSaysNotWhatItsOwnRoutingWoul
   EXPECT_EQ(replies, 3);
 }
 
-TEST_F(AgentRoutingTest, BoundaryReplicaIsKeptWithoutASearch) {
+TEST_F(AgentPlacementTest, BoundaryReplicaIsKeptWithoutASearch) {
   // Robot r takes frame r: robot 0 x = 1 (inside centroid 0: its own), robot 1 x = 20 (exactly on
   // centroid 2: robot 2 only), robot 2 x = 4 (distances 4, 6: search and store at robot 0, a
   // replica at robot 1, as 6 <= 1.6 x 4).
   const DescriptorMatrix x = Column({1, 20, 4});
-  const BoundaryReplicationRouting routing(table_, {.epsilon = 0.6, .max_replicas = 3});
+  const BoundaryReplicationPlacement routing(table_, {.epsilon = 0.6, .max_replicas = 3});
   std::vector<FrameStream> streams;
   for (int r = 0; r < 3; ++r) streams.push_back(FrameStream{&x, FrameId(r), 1, 10.0});
   IdealTeam team(3, x, routing, streams);

@@ -1,14 +1,14 @@
 #pragma once
 // Adaptive re-clustering as a team routing (issue 8): the plan the team agrees on before the
-// run, and the TeamRouting that gives every robot its own ReclusterAgentRouting
+// run, and the TeamPlacement that gives every robot its own ReclusterAgentPlacement
 // (agents/recluster/recluster_agent.h) over that plan.
 #include <memory>
 #include <string_view>
 #include <vector>
 
-#include "agents/routing/agent_routing.h"
 #include "agents/algorithms/centroid_table.h"
 #include "agents/algorithms/ids.h"
+#include "agents/placement/agent_placement.h"
 #include "agents/recluster/recluster.h"
 #include "sim/sim_time.h"
 
@@ -28,13 +28,13 @@ struct ReclusterPlan {
   }
 };
 
-class ReclusterRouting final : public TeamRouting {
+class ReclusterPlacement final : public TeamPlacement {
  public:
-  explicit ReclusterRouting(ReclusterPlan plan);  // validates the plan
+  explicit ReclusterPlacement(ReclusterPlan plan);  // validates the plan
   std::string_view name() const override { return "recluster"; }
   const ReclusterPlan& plan() const { return plan_; }
-  // A ReclusterAgentRouting over plan().
-  std::unique_ptr<AgentRouting> MakeAgentRouting() const override;
+  // A ReclusterAgentPlacement over plan().
+  std::unique_ptr<AgentPlacement> MakeAgentPlacement() const override;
 
  private:
   ReclusterPlan plan_;

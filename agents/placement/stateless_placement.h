@@ -1,15 +1,15 @@
 #pragma once
 // The routing component of a robot whose strategy keeps no per-robot state (the paper's
 // method, broadcast, probing, boundary replication, the load-balanced tables): it asks the
-// team's shared RoutingStrategy and keeps what it is told to store in the robot's own store.
-#include "agents/routing/agent_routing.h"
-#include "agents/routing/routing.h"
+// team's shared PlacementStrategy and keeps what it is told to store in the robot's own store.
+#include "agents/placement/agent_placement.h"
+#include "agents/placement/placement.h"
 
 namespace dvpr {
 
-class StatelessRouting final : public AgentRouting {
+class StatelessPlacement final : public AgentPlacement {
  public:
-  explicit StatelessRouting(const RoutingStrategy& strategy) : strategy_(strategy) {}
+  explicit StatelessPlacement(const PlacementStrategy& strategy) : strategy_(strategy) {}
 
   void Start(const AgentContext& robot) override;
   void Stop() override {}
@@ -17,7 +17,7 @@ class StatelessRouting final : public AgentRouting {
   void Store(RobotId querier, FrameId frame, const float* descriptor) override;
 
  private:
-  const RoutingStrategy& strategy_;
+  const PlacementStrategy& strategy_;
   RobotId self_;
   IncrementalIndex* store_ = nullptr;
 };
