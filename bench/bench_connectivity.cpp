@@ -10,8 +10,8 @@
 #include "bench/bench_main.h"
 #include "bench/sim_inputs.h"
 
-#include "experiments/data/split.h"
-#include "experiments/protocols/sim/scenario.h"
+#include "experiments/domain/data/split.h"
+#include "experiments/domain/scenario/scenario.h"
 #include "net_models/propagation/connectivity.h"
 #include "net_models/propagation/range_propagation.h"
 

@@ -14,8 +14,8 @@
 
 #include "agents/algorithms/kmeans.h"
 #include "experiments/config/config.h"
-#include "experiments/data/loaders.h"
-#include "experiments/data/synthetic.h"
+#include "experiments/domain/data/loaders.h"
+#include "experiments/domain/data/synthetic.h"
 #include "experiments/sweep/run_sweep.h"
 
 namespace dvpr {

@@ -9,8 +9,8 @@
 
 #include "agents/algorithms/centroid_table.h"
 #include "agents/algorithms/kmeans.h"
-#include "experiments/data/loaders.h"
-#include "experiments/data/synthetic.h"
+#include "experiments/domain/data/loaders.h"
+#include "experiments/domain/data/synthetic.h"
 #include "experiments/protocols/sim/simulation.h"
 
 namespace dvpr::bench {

@@ -25,6 +25,9 @@ the module whose folder is the longest prefix of its path. Checked:
 5. Kept apart. The "Kept apart" table, `| module | never reaches |`: nothing in the module's
    closure (what it may use, through any number of rows, and their packages) is one of those
    named, so that, say, the evaluation never links liblcm.
+6. Tiers. The "Tiers" table, `| tier | folders |`, lowest first: a module of a tier may use
+   modules of its own tier and those below, never one above (the domain code of a simulation
+   never reaches the runner); every module under experiments/ is in a tier.
 
 Usage: scripts/check_layers.py [REPO_ROOT]    exit 0: clean, 1: violations, 2: bad table
 """
@@ -65,7 +68,7 @@ def table_rows(text, heading):
         if not line.startswith("|"):
             continue
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
-        if set("".join(cells)) <= {"-", " ", ":"} or cells[0] in ("module", "package"):
+        if set("".join(cells)) <= {"-", " ", ":"} or cells[0] in ("module", "package", "tier"):
             continue
         rows.append(cells)
     return rows
@@ -316,6 +319,38 @@ def check_kept_apart(modules, packages):
     return violations
 
 
+def check_tiers(modules):
+    """Rule 6."""
+    text = DOC.read_text()
+    tiers = []
+    for cells in table_rows(text, "Tiers"):
+        if len(cells) != 2:
+            raise BadTable(f"{DOC_NAME}: Tiers row needs 2 cells (tier, folders): {cells}")
+        tiers.append((cells[0], {f.rstrip("/") for f in names(cells[1])}))
+
+    def tier_of(folder):
+        best, best_len = None, -1
+        for i, (_, folders) in enumerate(tiers):
+            for f in folders:
+                if (folder == f or folder.startswith(f + "/")) and len(f) > best_len:
+                    best, best_len = i, len(f)
+        return best
+
+    violations = []
+    for name, m in sorted(modules.items()):
+        t = tier_of(m["folder"])
+        if t is None:
+            if m["folder"].startswith("experiments/"):
+                violations.append(f"{DOC_NAME}: {name} ({m['folder']}/) is in no tier: add its folder to Tiers")
+            continue
+        for u in sorted(m["uses"]):
+            tu = tier_of(modules[u]["folder"])
+            if tu is not None and tu > t:
+                violations.append(f"{DOC_NAME}: {name} ({tiers[t][0]} tier) may use {u} of the {tiers[tu][0]} "
+                                  f"tier above it (Tiers)")
+    return violations
+
+
 def main():
     try:
         modules, packages = read_tables()
@@ -327,6 +362,7 @@ def main():
     violations += check_cmake(modules, packages, uses_seen, header_needs)
     try:
         violations += check_kept_apart(modules, packages)
+        violations += check_tiers(modules)
     except BadTable as e:
         print(e, file=sys.stderr)
         return 2

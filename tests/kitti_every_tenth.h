@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "experiments/data/dataset.h"
+#include "experiments/domain/data/dataset.h"
 #include "sim/random_bits.h"
 
 namespace dvpr::testing_support {

@@ -1,7 +1,7 @@
 #pragma once
 // What a robot recorded about one of its queries: the one record of a query's outcome. The agent
 // fills it while the replies come in (RobotAgent::outcomes); the simulation's metrics
-// (experiments/evaluation/sim_metrics.h) read it, and a real agent process logs it for the
+// (experiments/domain/evaluation/sim_metrics.h) read it, and a real agent process logs it for the
 // launcher (experiments/protocols/lcm/agent_log.h). Only the PR ranking (MatchOutcome) and the
 // queries.csv row (QueryRow) have types of their own.
 #include <optional>

@@ -14,8 +14,8 @@
 #include "experiments/config/config_reader.h"
 #include "experiments/config/utc_instant.h"
 #include "experiments/config/yaml_check.h"
-#include "experiments/data/text_file.h"
-#include "experiments/strategies/strategy_spec.h"
+#include "experiments/domain/data/text_file.h"
+#include "experiments/domain/strategies/strategy_spec.h"
 
 namespace dvpr {
 
@@ -184,7 +184,7 @@ DatasetConfig ReadDataset(const Field& f) {
   return d;
 }
 
-// dataset.scenario: a kind, or a map {kind, offset, length, seed} (experiments/data/team_plan.h).
+// dataset.scenario: a kind, or a map {kind, offset, length, seed} (experiments/domain/data/team_plan.h).
 ScenarioSpec ReadScenario(const Field& f) {
   ScenarioSpec s;
   if (f.node().IsScalar()) {

@@ -29,13 +29,13 @@
 #include "agents/agent_params.h"
 #include "agents/placement/failure_detector.h"
 #include "experiments/config/talk_schedule.h"
-#include "experiments/data/robot_trajectory.h"
-#include "experiments/data/synthetic.h"
-#include "experiments/data/synthetic_bow.h"
-#include "experiments/data/team_plan.h"
-#include "experiments/evaluation/ground_truth.h"
-#include "experiments/strategies/run_centroids.h"
-#include "experiments/strategies/strategy_spec.h"
+#include "experiments/domain/data/robot_trajectory.h"
+#include "experiments/domain/data/synthetic.h"
+#include "experiments/domain/data/synthetic_bow.h"
+#include "experiments/domain/data/team_plan.h"
+#include "experiments/domain/evaluation/ground_truth.h"
+#include "experiments/domain/strategies/run_centroids.h"
+#include "experiments/domain/strategies/strategy_spec.h"
 #include "net_models/core/units.h"
 #include "net_models/helper/link_factory.h"
 #include "sim/sim_time.h"
@@ -76,7 +76,7 @@ struct DatasetConfig {
   // its defaults by the reader when a bow_ strategy is configured and neither key is given).
   std::optional<std::filesystem::path> bow;
   std::optional<SyntheticBowParams> synthetic_bow;
-  // A planned team (experiments/data/team_plan.h): a scenario on the poses other than split, or
+  // A planned team (experiments/domain/data/team_plan.h): a scenario on the poses other than split, or
   // one pose file per robot (dataset.trajectories; dataset.poses is then not read). Either needs
   // the synthetic source, one robot count (robots: the trajectories' count) and strategies
   // without bag-of-words or re-clustering (checked when the config is read).

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <system_error>
 
-#include "experiments/data/text_file.h"
+#include "experiments/domain/data/text_file.h"
 #include "net_models/core/param_checks.h"
 
 namespace dvpr::config_detail {

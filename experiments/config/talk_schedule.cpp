@@ -11,8 +11,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "experiments/data/printable.h"
-#include "experiments/data/text_file.h"
+#include "experiments/domain/data/printable.h"
+#include "experiments/domain/data/text_file.h"
 
 namespace dvpr {
 

@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "agents/algorithms/ids.h"
-#include "experiments/data/bow_file.h"
-#include "experiments/data/loaders.h"
-#include "experiments/data/synthetic_bow.h"
-#include "experiments/data/team_plan.h"
+#include "experiments/domain/data/bow_file.h"
+#include "experiments/domain/data/loaders.h"
+#include "experiments/domain/data/synthetic_bow.h"
+#include "experiments/domain/data/team_plan.h"
 #include "experiments/results/protocol_traits.h"
 
 namespace dvpr {
@@ -31,7 +31,7 @@ auto WithKey(const std::string& origin, const std::string& key, Fn&& load) {
 // The pose file and the descriptor file are loaded apart, so an error names the key of the file
 // at fault; dataset.frames is checked against the pose file whatever the source (a synthetic
 // deployment longer than its poses would silently run fewer frames than config.yaml says).
-// A planned team's poses (experiments/data/team_plan.h), its descriptors rendered along every
+// A planned team's poses (experiments/domain/data/team_plan.h), its descriptors rendered along every
 // robot's own poses at their times on the common clock.
 Dataset LoadTeamPlan(const ExperimentConfig& c, const Trajectory& poses, const std::string& origin) {
   const DatasetConfig& d = c.dataset;

@@ -3,7 +3,7 @@
 // from a validated config, once. Errors that need the data (dim larger than the descriptors,
 // frame counts of poses and descriptors differing, NaN values) are ConfigErrors naming the key.
 #include "experiments/config/config.h"
-#include "experiments/data/synthetic_bow.h"
+#include "experiments/domain/data/synthetic_bow.h"
 #include "experiments/protocols/run.h"
 
 namespace dvpr {

@@ -16,15 +16,15 @@
 #include "agents/algorithms/descriptors.h"
 #include "experiments/config/config.h"
 #include "experiments/config/network_variants.h"
-#include "experiments/data/bow_data.h"
-#include "experiments/data/dataset.h"
+#include "experiments/domain/data/bow_data.h"
+#include "experiments/domain/data/dataset.h"
+#include "experiments/domain/strategies/strategy_spec.h"
 #include "experiments/results/bow_rows.h"
 #include "experiments/results/closure_rows.h"
 #include "experiments/results/connectivity_rows.h"
 #include "experiments/results/medium_rows.h"
 #include "experiments/results/radio_rows.h"
 #include "experiments/results/results.h"
-#include "experiments/strategies/strategy_spec.h"
 #include "net_models/helper/link_factory.h"
 
 namespace dvpr {

@@ -1,9 +1,9 @@
 #pragma once
-// What BuildRunPlacement (experiments/strategies/run_placement.h) builds every run's table from,
+// What BuildRunPlacement (experiments/domain/strategies/run_placement.h) builds every run's table from,
 // taken from the inputs and config a protocol is given, so the paper, sim and lcm protocols
 // build a strategy from the same data and settings.
+#include "experiments/domain/strategies/run_placement.h"
 #include "experiments/protocols/run.h"
-#include "experiments/strategies/run_placement.h"
 
 namespace dvpr {
 

@@ -3,8 +3,8 @@
 #include <stdexcept>
 
 #include "experiments/config/config.h"
-#include "experiments/data/loaders.h"
-#include "experiments/data/split.h"
+#include "experiments/domain/data/loaders.h"
+#include "experiments/domain/data/split.h"
 
 namespace dvpr::replay {
 

@@ -87,7 +87,7 @@ struct RunKey {
 
 // One row of runs.csv.
 // A team run's place recognition by class and its inter-robot loop closures (docs/design.md
-// section 3, "Inter-robot loop closures"; experiments/evaluation/sim_metrics.h): the trailing
+// section 3, "Inter-robot loop closures"; experiments/domain/evaluation/sim_metrics.h): the trailing
 // columns of runs.csv.
 struct RunClosures {
   std::int64_t inter_queries = 0;     // relevant queries whose true match is another robot's frame
@@ -201,7 +201,7 @@ struct QueryRow {
   bool relevant = false;
   bool correct = false;
   // "inter" when one of the query's true matches is another robot's frame, "intra" when they
-  // are all its own, "" when it is not relevant (experiments/evaluation/sim_metrics.h).
+  // are all its own, "" when it is not relevant (experiments/domain/evaluation/sim_metrics.h).
   std::string query_class;
   // How far the answer came (experiments/protocols/sim/query_hops.h): the transmissions of the
   // query's copy that reached the robot whose reply gave the best match, 0 when the robot's own

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "experiments/parallel/parallel_for_in_order.h"
+#include "experiments/domain/parallel/parallel_for_in_order.h"
 #include "experiments/results/protocol_traits.h"
 #include "experiments/sweep/run_progress.h"
 

@@ -15,7 +15,7 @@
 
 #include "agents/algorithms/descriptors.h"
 #include "experiments/config/config.h"
-#include "experiments/data/dataset.h"
+#include "experiments/domain/data/dataset.h"
 #include "experiments/results/results.h"
 #include "experiments/sweep/sweep.h"
 
@@ -48,7 +48,7 @@ struct ExecutorOptions {
 };
 
 // Calls run_functions.at(spec.protocol)(spec) for every spec on the ParallelFor pool
-// (experiments/parallel/parallel_for_in_order.h), and consume() in spec order as soon as each
+// (experiments/domain/parallel/parallel_for_in_order.h), and consume() in spec order as soon as each
 // output and all before it are done (so memory holds only the outputs waiting for a slower
 // earlier run); consume is never called on two threads at once. The first exception (from a
 // run, with the run named, or from consume) stops new runs and is rethrown after the workers

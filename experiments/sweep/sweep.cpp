@@ -1,7 +1,7 @@
 #include "experiments/sweep/sweep.h"
 
+#include "experiments/domain/strategies/run_centroids.h"
 #include "experiments/results/protocol_traits.h"
-#include "experiments/strategies/run_centroids.h"
 
 namespace dvpr {
 

@@ -7,7 +7,7 @@
 // robots, run): the sim runs decentralized and broadcast on the same data and needs broadcast's
 // AUC for the relative AUC; the paper protocol's reference is the centralized AUC, computed once.
 //
-// Seeding: seed = RunSeed(config seed, robots, run) (experiments/strategies/run_centroids.h), the
+// Seeding: seed = RunSeed(config seed, robots, run) (experiments/domain/strategies/run_centroids.h), the
 // seed of the run's k-means in every protocol. It does not depend on the protocol or network
 // variant, so one (robots, run) trains the same centroids everywhere and network variants are
 // compared on identical data; adding robot counts or runs changes no other run's seed.

@@ -10,9 +10,9 @@
 
 #include "agents/algorithms/ids.h"
 #include "agents/messages/team_sync.h"
+#include "experiments/domain/strategies/run_placement.h"
 #include "experiments/protocols/strategy_inputs.h"
 #include "experiments/results/protocol_traits.h"
-#include "experiments/strategies/run_placement.h"
 #include "experiments/sweep/sweep.h"
 #include "experiments/sweep/sweep_size.h"
 #include "net_models/core/param_checks.h"

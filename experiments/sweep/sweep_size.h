@@ -91,7 +91,7 @@
 #include <string>
 
 #include "experiments/config/config.h"
-#include "experiments/data/dataset.h"
+#include "experiments/domain/data/dataset.h"
 
 namespace dvpr {
 

@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/data/npy.h"
+#include "experiments/domain/data/npy.h"
 #include "tests/app/cli_test_support.h"
 
 namespace dvpr {

@@ -1,5 +1,5 @@
-// The synthetic bag-of-words model (experiments/data/synthetic_bow.h) and users' own BoW files
-// (experiments/data/bow_file.h).
+// The synthetic bag-of-words model (experiments/domain/data/synthetic_bow.h) and users' own BoW files
+// (experiments/domain/data/bow_file.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,8 +15,8 @@
 #include <set>
 #include <string>
 
-#include "experiments/data/bow_file.h"
-#include "experiments/data/synthetic_bow.h"
+#include "experiments/domain/data/bow_file.h"
+#include "experiments/domain/data/synthetic_bow.h"
 
 namespace dvpr {
 namespace {

@@ -1,5 +1,5 @@
 // The two weaknesses of local features the synthetic BoW world models on request
-// (experiments/data/synthetic_bow.h, docs/bow.md): perceptual aliasing (common_words,
+// (experiments/domain/data/synthetic_bow.h, docs/bow.md): perceptual aliasing (common_words,
 // common_share) and viewpoint sensitivity (view_sector_deg), each on a small world worked by hand.
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "experiments/data/synthetic_bow.h"
+#include "experiments/domain/data/synthetic_bow.h"
 
 namespace dvpr {
 namespace {

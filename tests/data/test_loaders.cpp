@@ -1,4 +1,4 @@
-#include "experiments/data/loaders.h"
+#include "experiments/domain/data/loaders.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "experiments/data/npy.h"
+#include "experiments/domain/data/npy.h"
 #include "tests/test_support.h"
 
 namespace dvpr {

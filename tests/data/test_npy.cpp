@@ -1,4 +1,4 @@
-#include "experiments/data/npy.h"
+#include "experiments/domain/data/npy.h"
 
 #include <gtest/gtest.h>
 

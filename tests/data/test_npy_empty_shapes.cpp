@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/data/loaders.h"
-#include "experiments/data/npy.h"
+#include "experiments/domain/data/loaders.h"
+#include "experiments/domain/data/npy.h"
 
 namespace dvpr {
 namespace {

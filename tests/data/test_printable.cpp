@@ -1,5 +1,5 @@
-// Printable (experiments/data/printable.h): file bytes quoted in a one-line error message.
-#include "experiments/data/printable.h"
+// Printable (experiments/domain/data/printable.h): file bytes quoted in a one-line error message.
+#include "experiments/domain/data/printable.h"
 
 #include <gtest/gtest.h>
 

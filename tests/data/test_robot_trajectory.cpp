@@ -11,8 +11,8 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/data/loaders.h"
-#include "experiments/data/robot_trajectory.h"
+#include "experiments/domain/data/loaders.h"
+#include "experiments/domain/data/robot_trajectory.h"
 #include "tests/test_support.h"
 
 namespace dvpr {

@@ -1,4 +1,4 @@
-#include "experiments/data/split.h"
+#include "experiments/domain/data/split.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "experiments/data/synthetic.h"
+#include "experiments/domain/data/synthetic.h"
 
 #include <gtest/gtest.h>
 

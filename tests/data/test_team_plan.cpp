@@ -1,14 +1,14 @@
-// Team plans (experiments/data/team_plan.h, docs/design.md section 3 "Team plans"): which rows
+// Team plans (experiments/domain/data/team_plan.h, docs/design.md section 3 "Team plans"): which rows
 // each robot drives, when it takes each and which frames its window suppresses, worked by hand on
 // small sequences.
-#include "experiments/data/team_plan.h"
+#include "experiments/domain/data/team_plan.h"
 
 #include <stdexcept>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "experiments/data/synthetic.h"
+#include "experiments/domain/data/synthetic.h"
 
 namespace dvpr {
 namespace {

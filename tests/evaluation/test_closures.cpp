@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/evaluation/sim_metrics.h"
+#include "experiments/domain/evaluation/sim_metrics.h"
 
 namespace dvpr {
 namespace {

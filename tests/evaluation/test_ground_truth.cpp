@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/evaluation/ground_truth.h"
+#include "experiments/domain/evaluation/ground_truth.h"
 
 namespace dvpr {
 namespace {

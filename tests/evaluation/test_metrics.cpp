@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/evaluation/metrics.h"
+#include "experiments/domain/evaluation/metrics.h"
 
 namespace dvpr {
 namespace {

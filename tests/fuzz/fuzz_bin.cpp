@@ -1,6 +1,6 @@
 // The raw float32 .bin descriptor loader. The input is 2 bytes bin_frame_width and 2 bytes dim
 // (little-endian int16, so zero, negative and dim > width are tried too), then the file.
-// Properties (experiments/data/loaders.h):
+// Properties (experiments/domain/data/loaders.h):
 // - a bad file or parameter throws std::runtime_error, nothing else;
 // - a file that loads has size / (4 * width) frames, and value (i, j) is float i * width + j of
 //   the file, bit for bit.
@@ -9,7 +9,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "experiments/data/loaders.h"
+#include "experiments/domain/data/loaders.h"
 #include "tests/fuzz/fuzz_support.h"
 
 namespace {

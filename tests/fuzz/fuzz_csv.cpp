@@ -1,4 +1,4 @@
-// The .csv descriptor loader. The input is the file. Properties (experiments/data/loaders.h):
+// The .csv descriptor loader. The input is the file. Properties (experiments/domain/data/loaders.h):
 // - a bad file throws std::runtime_error, nothing else;
 // - loaded with dim 1 and with the full width (the first line's fields), both give the same
 //   first column when both load.
@@ -9,7 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "experiments/data/loaders.h"
+#include "experiments/domain/data/loaders.h"
 #include "tests/fuzz/fuzz_support.h"
 
 namespace {

@@ -1,5 +1,5 @@
 // The .npy reader, as a descriptor file (LoadDescriptors) and as a centroid file (ReadNpyMatrix).
-// The input is the file. Properties (experiments/data/npy.h, loaders.h):
+// The input is the file. Properties (experiments/domain/data/npy.h, loaders.h):
 // - a bad file throws std::runtime_error, nothing else;
 // - a matrix that reads is written (WriteNpy) and read back bit for bit;
 // - the descriptor loader keeps exactly the first `dim` columns of what the reader reads.
@@ -9,8 +9,8 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "experiments/data/loaders.h"
-#include "experiments/data/npy.h"
+#include "experiments/domain/data/loaders.h"
+#include "experiments/domain/data/npy.h"
 #include "tests/fuzz/fuzz_support.h"
 
 namespace {

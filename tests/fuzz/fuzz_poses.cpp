@@ -1,4 +1,4 @@
-// The KITTI pose loader. The input is the pose file. Properties (experiments/data/loaders.h):
+// The KITTI pose loader. The input is the pose file. Properties (experiments/domain/data/loaders.h):
 // - a bad file throws std::runtime_error, nothing else;
 // - a file that loads gives finite positions and finite unit headings.
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "experiments/data/loaders.h"
+#include "experiments/domain/data/loaders.h"
 #include "tests/fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

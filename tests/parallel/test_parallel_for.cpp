@@ -12,8 +12,8 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/parallel/parallel_for.h"
-#include "experiments/parallel/parallel_for_in_order.h"
+#include "experiments/domain/parallel/parallel_for.h"
+#include "experiments/domain/parallel/parallel_for_in_order.h"
 
 namespace dvpr {
 namespace {

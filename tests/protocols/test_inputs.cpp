@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "experiments/config/config.h"
-#include "experiments/data/npy.h"
+#include "experiments/domain/data/npy.h"
 #include "experiments/protocols/inputs.h"
 
 namespace dvpr {

@@ -1,6 +1,6 @@
-// The centroid files of a sweep (experiments/strategies/run_centroids.h): each is checked for its
+// The centroid files of a sweep (experiments/domain/strategies/run_centroids.h): each is checked for its
 // count, width and values, and every error names the file, since a sweep reads many.
-#include "experiments/strategies/run_centroids.h"
+#include "experiments/domain/strategies/run_centroids.h"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +11,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "experiments/data/npy.h"
-#include "experiments/strategies/run_placement.h"
-#include "experiments/strategies/strategy_spec.h"
+#include "experiments/domain/data/npy.h"
+#include "experiments/domain/strategies/run_placement.h"
+#include "experiments/domain/strategies/strategy_spec.h"
 #include "tests/test_support.h"
 
 namespace dvpr {

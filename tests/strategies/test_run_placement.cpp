@@ -1,4 +1,4 @@
-// BuildRunPlacement (experiments/strategies/run_placement.h) on hand-made 1-D centroids, given as the
+// BuildRunPlacement (experiments/domain/strategies/run_placement.h) on hand-made 1-D centroids, given as the
 // run's centroid file so no k-means decides them: which robots search and store a hand-placed
 // descriptor, worked out by hand from the strategy's rule.
 #include <filesystem>
@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/data/npy.h"
-#include "experiments/strategies/deployment_sample.h"
-#include "experiments/strategies/run_placement.h"
+#include "experiments/domain/data/npy.h"
+#include "experiments/domain/strategies/deployment_sample.h"
+#include "experiments/domain/strategies/run_placement.h"
 #include "tests/descriptor_support.h"
 #include "tests/test_support.h"
 

@@ -1,4 +1,4 @@
-// ParseStrategy (experiments/strategies/strategy_spec.h): every family with its parameters read
+// ParseStrategy (experiments/domain/strategies/strategy_spec.h): every family with its parameters read
 // from the name, and the names it refuses with their reasons. Names are chosen by hand, some of
 // them outside what the shipped configs use (lpt_c7, multi_probe_5).
 #include <stdexcept>
@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/strategies/strategy_spec.h"
+#include "experiments/domain/strategies/strategy_spec.h"
 
 namespace dvpr {
 namespace {

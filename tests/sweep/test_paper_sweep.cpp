@@ -16,7 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "experiments/config/config.h"
-#include "experiments/data/npy.h"
+#include "experiments/domain/data/npy.h"
 #include "experiments/protocols/inputs.h"
 #include "experiments/results/result_writers.h"
 #include "experiments/sweep/run_sweep.h"

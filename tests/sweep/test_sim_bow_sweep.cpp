@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "experiments/config/config.h"
-#include "experiments/data/split.h"
+#include "experiments/domain/data/split.h"
 #include "experiments/protocols/inputs.h"
 #include "experiments/sweep/run_sweep.h"
 #include "tests/kitti_every_tenth.h"

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "experiments/config/config.h"
-#include "experiments/strategies/run_centroids.h"
+#include "experiments/domain/strategies/run_centroids.h"
 #include "experiments/sweep/sweep.h"
 
 namespace dvpr {

@@ -19,10 +19,10 @@
 #include <gtest/gtest.h>
 
 #include "experiments/config/config.h"
+#include "experiments/domain/strategies/run_placement.h"
 #include "experiments/protocols/inputs.h"
 #include "experiments/protocols/sim/simulation.h"
 #include "experiments/protocols/strategy_inputs.h"
-#include "experiments/strategies/run_placement.h"
 #include "experiments/sweep/run_sweep.h"
 #include "experiments/sweep/sweep.h"
 #include "experiments/sweep/sweep_size.h"

@@ -17,7 +17,9 @@ that it is refused (exit 1) with a message naming the file and what is wrong:
    dvpr_lcm_log in its row);
 8. the network's rooms: the network room (net_models/network/) including a concrete medium
    (net_models/medium/wifi_link.h), and its row allowed the medium room, which Kept apart forbids:
-   the network knows a medium only as a LinkModel (net_models/link/).
+   the network knows a medium only as a LinkModel (net_models/link/);
+9. the experiments' tiers: a domain module (dvpr_data) allowed a runner's module (dvpr_config) in
+   its row, and an experiments module left out of the Tiers table.
 """
 import pathlib
 import re
@@ -131,10 +133,18 @@ def main():
                "dvpr_net_network reaches dvpr_net_medium (through dvpr_net_medium), which Kept apart forbids",
                "the medium room under the network room")
 
+        # 9. Tiers: the domain never uses the runner; every experiments module is in a tier.
+        row = re.search(r"^\| `dvpr_data` \|.*$", (root / doc).read_text(), re.M).group(0)
+        edited(root, doc, row, row.replace("`dvpr_algorithms` |", "`dvpr_algorithms`, `dvpr_config` |"),
+               "dvpr_data (domain tier) may use dvpr_config of the runner tier above it (Tiers)",
+               "the runner under the domain")
+        edited(root, doc, ", `experiments/replay`", "",
+               "dvpr_replay (experiments/replay/) is in no tier", "a module in no tier")
+
         code, err = run(root)
         assert code == 0, f"the copy after the plants were removed: exit {code}\n{err}"
     print("check_layers: the repository passes; planted includes (quoted and <...>, in sim/, bench/, tests/) "
-          "and CMake links against the table are refused; the network room reaches no concrete medium")
+          "and CMake links against the table are refused; the network room reaches no concrete medium; the domain tier never uses the runner")
 
 
 if __name__ == "__main__":

@@ -6,9 +6,9 @@
 
 #include <vector>
 
-#include "experiments/data/dataset.h"
-#include "experiments/data/split.h"
-#include "experiments/protocols/sim/scenario.h"
+#include "experiments/domain/data/dataset.h"
+#include "experiments/domain/data/split.h"
+#include "experiments/domain/scenario/scenario.h"
 #include "net_models/helper/network_helper.h"
 #include "net_models/mobility/track_mobility.h"
 #include "net_models/propagation/propagation_model.h"

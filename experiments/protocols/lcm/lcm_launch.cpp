@@ -18,16 +18,16 @@
 
 #include "agents/auth/team_secret.h"
 #include "agents/lcm/lcm_transport.h"
-#include "experiments/protocols/lcm/agent_process.h"
-#include "experiments/protocols/inputs.h"
 #include "experiments/config/option_reader.h"
+#include "experiments/domain/data/split.h"
+#include "experiments/domain/evaluation/metrics.h"
+#include "experiments/domain/strategies/run_centroids.h"
+#include "experiments/protocols/inputs.h"
+#include "experiments/protocols/lcm/agent_process.h"
+#include "experiments/protocols/sim/sim_protocol.h"
 #include "experiments/results/protocol_traits.h"
 #include "experiments/results/result_folder.h"
 #include "experiments/results/result_writers.h"
-#include "experiments/protocols/sim/sim_protocol.h"
-#include "experiments/data/split.h"
-#include "experiments/evaluation/metrics.h"
-#include "experiments/strategies/run_centroids.h"
 
 namespace dvpr {
 

@@ -20,7 +20,7 @@
 #include <span>
 #include <vector>
 
-#include "experiments/data/bow_data.h"
+#include "experiments/domain/data/bow_data.h"
 
 namespace dvpr {
 

@@ -7,12 +7,12 @@
 #include <stdexcept>
 
 #include "experiments/config/config.h"
+#include "experiments/domain/strategies/run_placement.h"
 #include "experiments/protocols/paper/static_bow.h"
 #include "experiments/protocols/paper/static_protocol.h"
 #include "experiments/protocols/paper/static_recluster.h"
 #include "experiments/protocols/paper/static_strategies.h"
 #include "experiments/protocols/strategy_inputs.h"
-#include "experiments/strategies/run_placement.h"
 
 namespace dvpr {
 

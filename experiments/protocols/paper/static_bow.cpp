@@ -9,7 +9,7 @@
 
 #include "agents/messages/bow_query.h"
 #include "agents/messages/team_sync.h"  // Fnv1a
-#include "experiments/data/split.h"
+#include "experiments/domain/data/split.h"
 #include "experiments/results/protocol_traits.h"
 
 namespace dvpr {

@@ -27,7 +27,7 @@
 
 #include "agents/algorithms/bow_words.h"
 #include "agents/placement/placement.h"
-#include "experiments/data/bow_data.h"
+#include "experiments/domain/data/bow_data.h"
 #include "experiments/protocols/paper/bow_postings.h"
 #include "experiments/protocols/paper/static_protocol.h"
 #include "experiments/results/bow_rows.h"

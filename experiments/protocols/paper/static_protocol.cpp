@@ -5,10 +5,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "experiments/data/npy.h"
+#include "experiments/domain/data/npy.h"
+#include "experiments/domain/strategies/run_placement.h"
 #include "experiments/results/protocol_traits.h"
 #include "experiments/results/safe_output.h"
-#include "experiments/strategies/run_placement.h"
 
 namespace dvpr {
 

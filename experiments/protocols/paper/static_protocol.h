@@ -21,12 +21,12 @@
 
 #include "agents/algorithms/centroid_table.h"
 #include "agents/algorithms/kmeans.h"
-#include "experiments/data/dataset.h"
-#include "experiments/evaluation/ground_truth.h"
-#include "experiments/evaluation/metrics.h"
-#include "experiments/evaluation/windowed_neighbours.h"
+#include "experiments/domain/data/dataset.h"
+#include "experiments/domain/evaluation/ground_truth.h"
+#include "experiments/domain/evaluation/metrics.h"
+#include "experiments/domain/evaluation/windowed_neighbours.h"
+#include "experiments/domain/strategies/run_centroids.h"
 #include "experiments/results/results.h"
-#include "experiments/strategies/run_centroids.h"
 
 namespace dvpr {
 
@@ -107,7 +107,7 @@ class PaperEvaluator {
 };
 
 // The paper's method in run `run` on `table`, the run's paper table (BuildRunPlacement of
-// `decentralized`, experiments/strategies/run_placement.h): metrics, the row's run and seed (the
+// `decentralized`, experiments/domain/strategies/run_placement.h): metrics, the row's run and seed (the
 // k-means seed RunSeed(params.seed, n, run); 0 when centroids were given), centroids written
 // if asked.
 PaperRunResult EvaluatePaperRun(const PaperEvaluator& evaluator, const CentroidTable& table,

@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "agents/recluster/recluster_messages.h"
-#include "experiments/data/split.h"
+#include "experiments/domain/data/split.h"
 
 namespace dvpr {
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "experiments/data/split.h"
+#include "experiments/domain/data/split.h"
 
 namespace dvpr {
 

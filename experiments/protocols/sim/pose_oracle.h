@@ -3,7 +3,7 @@
 // real agent processes (experiments/protocols/lcm/agent_process.h) both run it, so both verify
 // the same way.
 #include "agents/robot_agent.h"
-#include "experiments/data/dataset.h"
+#include "experiments/domain/data/dataset.h"
 
 namespace dvpr {
 

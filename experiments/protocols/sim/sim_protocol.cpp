@@ -6,10 +6,10 @@
 #include <optional>
 #include <stdexcept>
 
-#include "experiments/evaluation/metrics.h"
+#include "experiments/domain/evaluation/metrics.h"
+#include "experiments/domain/strategies/run_placement.h"
 #include "experiments/protocols/sim/simulation.h"
 #include "experiments/protocols/strategy_inputs.h"
-#include "experiments/strategies/run_placement.h"
 #include "net_models/core/param_checks.h"
 
 namespace dvpr {

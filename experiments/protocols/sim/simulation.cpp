@@ -8,7 +8,7 @@
 #include <string>
 
 #include "agents/algorithms/ids.h"
-#include "experiments/evaluation/metrics.h"
+#include "experiments/domain/evaluation/metrics.h"
 #include "experiments/protocols/sim/event_log_recorder.h"
 #include "experiments/protocols/sim/hop_counts.h"
 #include "experiments/protocols/sim/message_roles.h"

@@ -27,13 +27,13 @@
 #include "agents/messages/team_sync.h"
 #include "agents/placement/failure_detector.h"
 #include "experiments/config/config.h"
-#include "experiments/data/split.h"
+#include "experiments/domain/data/split.h"
+#include "experiments/domain/strategies/run_centroids.h"
 #include "experiments/protocols/inputs.h"
 #include "experiments/protocols/lcm/agent_log.h"
 #include "experiments/protocols/lcm/lcm_launch.h"
 #include "experiments/protocols/paper/static_protocol.h"
 #include "experiments/protocols/sim/sim_protocol.h"
-#include "experiments/strategies/run_centroids.h"
 #include "lcm_test_support.h"
 #include "tests/agents/udpm/datagram_builder.h"
 
@@ -174,7 +174,7 @@ TEST_F(LcmTeamTest, LaunchedTeamMatchesTheIdealSimulation) {
   const ExperimentConfig config = Config();
   const SharedInputs inputs = LoadSharedInputs(config, ConfigPath());
   const Dataset& data = inputs.deployment;
-  // The paper's table of run 0: k-means as every protocol runs it (experiments/strategies/).
+  // The paper's table of run 0: k-means as every protocol runs it (experiments/domain/strategies/).
   const CentroidTable table = CentroidTable::RoundRobin(
       RunCentroids(inputs.training, config.training.run_centroids, kRobots, 0), kRobots);
   const SequenceSplit split = SplitSequence(static_cast<int>(data.size()), kRobots);

@@ -19,9 +19,9 @@
 
 #include "agents/algorithms/centroid_table.h"
 #include "experiments/config/config.h"
-#include "experiments/data/split.h"
+#include "experiments/domain/data/split.h"
+#include "experiments/domain/strategies/run_centroids.h"
 #include "experiments/protocols/inputs.h"
-#include "experiments/strategies/run_centroids.h"
 #include "lcm_test_support.h"
 
 namespace dvpr {

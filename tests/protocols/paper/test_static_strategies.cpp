@@ -9,7 +9,7 @@
 
 #include "agents/placement/decentralized_placement.h"
 #include "agents/placement/probe_placement.h"
-#include "experiments/evaluation/windowed_neighbours.h"
+#include "experiments/domain/evaluation/windowed_neighbours.h"
 #include "experiments/protocols/paper/static_strategies.h"
 
 namespace dvpr {

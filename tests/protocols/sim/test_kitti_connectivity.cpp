@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "experiments/data/loaders.h"
-#include "experiments/data/split.h"
-#include "experiments/protocols/sim/scenario.h"
+#include "experiments/domain/data/loaders.h"
+#include "experiments/domain/data/split.h"
+#include "experiments/domain/scenario/scenario.h"
 #include "net_models/propagation/connectivity.h"
 #include "net_models/propagation/range_propagation.h"
 

@@ -13,8 +13,8 @@
 
 #include "agents/algorithms/kmeans.h"
 #include "agents/placement/decentralized_placement.h"
-#include "experiments/data/loaders.h"
-#include "experiments/data/synthetic.h"
+#include "experiments/domain/data/loaders.h"
+#include "experiments/domain/data/synthetic.h"
 #include "experiments/protocols/sim/simulation.h"
 
 namespace dvpr {

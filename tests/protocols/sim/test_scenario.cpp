@@ -1,6 +1,6 @@
-// The scenario builder (experiments/protocols/sim/scenario.h): the team's physics from
+// The scenario builder (experiments/domain/scenario/scenario.h): the team's physics from
 // ScenarioParams alone, with stand-in agents so every number is worked out by hand.
-#include "experiments/protocols/sim/scenario.h"
+#include "experiments/domain/scenario/scenario.h"
 
 #include <gtest/gtest.h>
 

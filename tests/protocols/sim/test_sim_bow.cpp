@@ -7,9 +7,9 @@
 #include <memory>
 #include <vector>
 
+#include "experiments/domain/data/split.h"
 #include "experiments/protocols/paper/static_bow.h"
 #include "experiments/protocols/sim/simulation.h"
-#include "experiments/data/split.h"
 
 namespace dvpr {
 namespace {

@@ -16,7 +16,7 @@
 #include "agents/recluster/recluster_agent.h"
 #include "agents/recluster/recluster_messages.h"
 #include "agents/robot_agent.h"
-#include "experiments/data/split.h"
+#include "experiments/domain/data/split.h"
 #include "experiments/protocols/paper/static_recluster.h"
 #include "experiments/protocols/sim/message_rows.h"
 #include "experiments/protocols/sim/simulation.h"

@@ -11,7 +11,7 @@
 
 #include "agents/algorithms/kmeans.h"
 #include "agents/placement/decentralized_placement.h"
-#include "experiments/data/split.h"
+#include "experiments/domain/data/split.h"
 #include "experiments/protocols/sim/simulation.h"
 #include "sim/random.h"
 #include "sim/random_bits.h"
