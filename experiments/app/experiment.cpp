@@ -270,24 +270,31 @@ void PrintSummaryTable(const std::vector<RunResult>& rows, std::ostream& out) {
                          r.mean_latency_ms};
     for (int i = 0; i < 5; ++i) a.values[i].push_back(v[i]);
   }
-  int width = 34;  // the label column fits the longest network name
-  for (const Acc& a : groups) width = std::max(width, static_cast<int>(a.label.size()));
-  char line[512];
-  std::snprintf(line, sizeof line, "%-*s %6s %5s %13s %13s %11s %15s %15s\n", width, "protocol strategy",
-                "robots", "runs", "auc", "rel_auc", "worst_bal", "bytes/query", "latency_ms");
-  out << line;
+  // The mean over the runs, +- the half-width of its 95 % confidence interval from two runs on.
+  const auto cell = [](const std::vector<double>& values, int decimals) {
+    const Spread s = SpreadOf(values);
+    std::string c = Cell(s.mean, decimals);
+    if (!std::isnan(s.ci95)) c += "+-" + Cell(s.ci95, decimals);
+    return c;
+  };
+  constexpr int kDecimals[5] = {3, 3, 2, 0, 3};
+  std::vector<std::vector<std::string>> table;  // one row per group: label, robots, runs, 5 metrics
+  table.push_back({"protocol strategy", "robots", "runs", "auc", "rel_auc", "worst_bal", "bytes/query", "latency_ms"});
   for (const Acc& a : groups) {
-    // The mean over the runs, +- the half-width of its 95 % confidence interval from two runs on.
-    const auto cell = [&](int i, int decimals) {
-      const Spread s = SpreadOf(a.values[i]);
-      std::string c = Cell(s.mean, decimals);
-      if (!std::isnan(s.ci95)) c += "+-" + Cell(s.ci95, decimals);
-      return c;
-    };
-    std::snprintf(line, sizeof line, "%-*s %6d %5d %13s %13s %11s %15s %15s\n", width, a.label.c_str(),
-                  a.robots, a.n, cell(0, 3).c_str(), cell(1, 3).c_str(), cell(2, 2).c_str(), cell(3, 0).c_str(),
-                  cell(4, 3).c_str());
-    out << line;
+    std::vector<std::string> row{a.label, std::to_string(a.robots), std::to_string(a.n)};
+    for (int i = 0; i < 5; ++i) row.push_back(cell(a.values[i], kDecimals[i]));
+    table.push_back(std::move(row));
+  }
+  // Every column as wide as its widest cell (at least its usual width, so that short tables keep
+  // the shape they always had): the columns stay aligned whatever the numbers.
+  std::vector<std::size_t> width{34, 6, 5, 13, 13, 11, 15, 15};
+  for (const auto& row : table) {
+    for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
+  }
+  for (const auto& row : table) {
+    std::string line = row[0] + std::string(width[0] - row[0].size(), ' ');
+    for (std::size_t c = 1; c < row.size(); ++c) line += std::string(width[c] - row[c].size() + 1, ' ') + row[c];
+    out << line << '\n';
   }
 }
 
