@@ -162,7 +162,7 @@ std::optional<FigureScript> WriteRadioRangeFigure(const fs::path& dir, const std
                                                   std::string& why, const std::optional<std::string>& routing,
                                                   const std::string& name) {
   struct Cell {
-    Acc bytes, latency;
+    Acc bytes, latency, delivered;
   };
   std::map<std::tuple<std::string, int, double>, Cell> cells;  // (strategy, n, range)
   std::map<std::tuple<std::string, int, double>, int> variant_of;
@@ -177,6 +177,12 @@ std::optional<FigureScript> WriteRadioRangeFigure(const fs::path& dir, const std
     Cell& c = cells[{r.key.strategy, r.key.robots, range}];
     c.bytes.Add(r.bytes_per_query);
     c.latency.Add(r.mean_latency_ms);
+    // The query copies that reached their robot (runs.csv, every run): where the team is split,
+    // most never do, which is why its bytes are low.
+    if (r.roles && r.roles->copies[0].wire > 0) {
+      c.delivered.Add(100.0 * static_cast<double>(r.roles->copies[0].delivered_wire) /
+                      static_cast<double>(r.roles->copies[0].wire));
+    }
     variant_of[{r.key.strategy, r.key.robots, range}] = r.key.network.variant;
   }
   if (ranges.size() < 2) {
@@ -184,7 +190,12 @@ std::optional<FigureScript> WriteRadioRangeFigure(const fs::path& dir, const std
     return std::nullopt;
   }
   const auto answered = AnsweredShares(queries);
-  std::string dat;
+  // The middle panel's share: queries answered (queries.csv) when written, else the query copies
+  // delivered (runs.csv). Points under kSplit % of it are circled in the bytes panel.
+  constexpr double kSplit = 90;
+  const bool by_answer = !answered.empty();
+  const std::string share_name = by_answer ? "answered" : "of query copies delivered";
+  std::string dat, split;
   std::vector<std::pair<std::string, int>> blocks;  // (strategy, n)
   for (const char* s : {"decentralized", "broadcast"}) {
     std::set<int> robots;
@@ -194,15 +205,21 @@ std::optional<FigureScript> WriteRadioRangeFigure(const fs::path& dir, const std
       for (const auto& [k, c] : cells) {
         if (std::get<0>(k) != s || std::get<1>(k) != n) continue;
         const auto a = answered.find({s, n, variant_of.at(k)});
-        dat += FormatDouble(std::get<2>(k)) + " " + Num(c.bytes.Mean()) + " " +
-               Num(a == answered.end() ? kNotApplicable : a->second.Mean()) + " " + Num(c.latency.Mean()) + "\n";
+        const double answered_share = a == answered.end() ? kNotApplicable : a->second.Mean();
+        dat += FormatDouble(std::get<2>(k)) + " " + Num(c.bytes.Mean()) + " " + Num(answered_share) + " " +
+               Num(c.latency.Mean()) + " " + Num(c.delivered.Mean()) + "\n";
+        const double share = by_answer ? answered_share : c.delivered.Mean();
+        if (share < kSplit) {  // false for NaN
+          split += FormatDouble(std::get<2>(k)) + " " + Num(c.bytes.Mean()) + " \"" + FormatDouble(share, 0) + "%\"\n";
+        }
       }
       dat += "\n\n";
       blocks.emplace_back(s, n);
     }
   }
-  const std::string data_file = name + ".dat";
+  const std::string data_file = name + ".dat", split_file = name + "_split.dat";
   WriteFileAtomic(dir / data_file, dat);
+  WriteFileAtomic(dir / split_file, split.empty() ? "# none\n" : split);
   const auto plot = [&](int column) {
     std::ostringstream p;
     std::set<int> all_n;
@@ -227,23 +244,42 @@ std::optional<FigureScript> WriteRadioRangeFigure(const fs::path& dir, const std
   const std::string relays = !routing ? "shortest-path relays where configured"
                              : routing->empty() ? "direct: no relays"
                                                 : *routing + " routing";
-  s << "set multiplot layout 1,3 title " << GnuplotQuote("The team on radios: what range costs (means over runs; " + relays + ")")
+  // One key for the three panels, below them: inside, it would cover the lines.
+  const std::string circled = "circled: under " + FormatDouble(kSplit, 0) + " % " + share_name;
+  std::vector<std::string> title = {"The team on radios: what range costs (means over runs; " + relays + ")"};
+  if (!split.empty()) {
+    title.push_back(circled + ": few bytes because the team is split and most queries never reach a robot, not because "
+                    "the range is cheap");
+  }
+  s << "set multiplot layout 1,3 margins 0.06, 0.98, 0.22, 0.83 spacing 0.07 title " << GnuplotTitle(title)
     << " font ',13'\n"
-    << "set grid\nset xlabel 'radio range (m)'\n" << xt.str()
+    << "set grid\nset xlabel 'radio range (m)'\n" << xt.str() << "set offsets graph 0.05, graph 0.05, 0, 0\n"
     << "set title 'Bytes on the air per query (every transmission, relays included)'\nset ylabel 'bytes per query'\n"
-    << "set logscale y\nset key bottom right\n" << plot(2) << "unset logscale y\nunset key\n"
-    << "set title 'Queries answered (every reply in)'\nset ylabel '% of queries'\nset yrange [0:105]\n";
-  if (answered.empty()) {
-    s << "set label 1 'needs queries.csv (outputs.queries: true)' at graph 0.5, graph 0.5 center front\n"
-      << "plot 1/0 notitle\nunset label 1\n";
+    << "set logscale y\nset key at screen 0.5, screen 0.01 center bottom vertical maxrows 3\n";
+  std::string bytes_plot = plot(2);
+  bytes_plot.pop_back();  // its newline: the circles join the same plot
+  s << bytes_plot;
+  if (split.empty()) {
+    s << "\n";
   } else {
-    s << plot(3);
+    // Fewer bytes where the team is split: most queries never reach a robot that could answer.
+    // The share itself is in the middle panel, at the same range: a label here would crowd.
+    s << ", \\\n     " << GnuplotQuote(split_file) << " using 1:2 with points pt 6 ps 2.6 lw 1.5 lc rgb '#000000' title "
+      << GnuplotQuote("circled: under " + FormatDouble(kSplit, 0) + " % " + (by_answer ? "answered" : "delivered")) << "\n";
+  }
+  s << "unset logscale y\nunset key\n";
+  if (by_answer) {
+    s << "set title 'Queries answered (every reply in; queries.csv)'\nset ylabel '% of queries'\nset yrange [0:100]\n"
+      << plot(3);
+  } else {
+    s << "set title " << GnuplotTitle({"Query copies delivered to their robot", "(runs.csv: query_delivered_wire_bytes / query_copy_wire_bytes)"})
+      << "\nset ylabel '% of query copies'\nset yrange [0:100]\n" << plot(5);
   }
   s << "set yrange [0:*]\nset title 'Mean latency of the answered queries'\nset ylabel 'ms'\n" << plot(4)
     << "unset multiplot\n";
   FigureScript f;
   f.width = 1800;
-  f.height = 600;
+  f.height = 660;
   f.body = s.str();
   return f;
 }

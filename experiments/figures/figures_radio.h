@@ -12,8 +12,10 @@
 //                     panel per radio variant
 //   radio_range.png   from runs.csv, when the sweep has radio variants of two or more ranges:
 //                     bytes on the air per query of decentralized and broadcast, the share of
-//                     queries answered (from queries.csv, when written) and the mean latency,
-//                     against the range, one line per strategy and n
+//                     queries answered (from queries.csv, when written; else the share of query
+//                     copies delivered, from runs.csv) and the mean latency, against the range,
+//                     one line per strategy and n; a bytes point whose share is under 90 % is
+//                     circled and labelled with it (cheap only because the team is split)
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -51,8 +53,10 @@ std::optional<FigureScript> WriteRadioHopsFigure(const std::filesystem::path& da
                                                  const std::vector<RunResult>& rows, std::string& why);
 
 // radio_range.png's data (radio_range.dat: per (strategy, n) a block "range_m bytes_per_query
-// answered_percent mean_latency_ms", means over runs, NaN where unknown); `queries` may be empty
-// (no queries.csv: the answered panel says so). With `routing`, only the radio variants of that
+// answered_percent mean_latency_ms delivered_percent", means over runs, NaN where unknown;
+// delivered_percent: query_delivered_wire_bytes over query_copy_wire_bytes; radio_range_split.dat:
+// "range_m bytes_per_query label" of the circled points); `queries` may be empty (no
+// queries.csv: the middle panel draws delivered_percent). With `routing`, only the radio variants of that
 // routing ("shortest_path", "link_state"; "" for direct), written as <name>.dat: a sweep of
 // several routings draws one figure each.
 std::optional<FigureScript> WriteRadioRangeFigure(const std::filesystem::path& data_dir, const std::vector<RunResult>& rows,

@@ -96,19 +96,50 @@ TEST_F(RadioFiguresTest, RadioRangeMeansPerStrategyTeamAndRange) {
   ASSERT_TRUE(f.has_value()) << why;
   // Decentralized at 100 m: (1000 + 2000) / 2 bytes, (30 + 50) / 2 ms. Point-to-point and
   // log_distance have no range: not on this figure. Broadcast at 100 m has no query row: NaN.
+  // These rows have no bytes by role: no share of query copies delivered (last column NaN).
   EXPECT_EQ(Slurp(dir_ / "radio_range.dat"),
-            "# decentralized n = 4\n100 1500 75 40\n200 800 NaN 4\n\n\n"
-            "# broadcast n = 4\n100 3000 NaN 70\n200 2500 50 6\n\n\n");
-  EXPECT_EQ(f->body.find("needs queries.csv"), std::string::npos);
-  // Without queries.csv the answered panel says what it needs.
-  const auto g = WriteRadioRangeFigure(dir_, Rows(), CsvTable{}, why);
-  ASSERT_TRUE(g.has_value());
-  EXPECT_NE(g->body.find("needs queries.csv (outputs.queries: true)"), std::string::npos) << g->body;
+            "# decentralized n = 4\n100 1500 75 40 NaN\n200 800 NaN 4 NaN\n\n\n"
+            "# broadcast n = 4\n100 3000 NaN 70 NaN\n200 2500 50 6 NaN\n\n\n");
+  EXPECT_NE(f->body.find("using 1:3 "), std::string::npos) << f->body;  // the answered share
+  // Circled: the points that answered under 90 %, decentralized at 100 m (75 %) and broadcast at
+  // 200 m (50 %); broadcast at 100 m has no share (NaN), so no circle.
+  EXPECT_EQ(Slurp(dir_ / "radio_range_split.dat"), "100 1500 \"75%\"\n200 2500 \"50%\"\n");
+  EXPECT_NE(f->body.find("circled: under 90 % answered: few bytes because the team is split"), std::string::npos)
+      << f->body;
   // One range is no curve.
   std::vector<RunResult> one = Rows();
   one.erase(one.begin() + 4, one.begin() + 6);
   EXPECT_FALSE(WriteRadioRangeFigure(dir_, one, q, why).has_value());
   EXPECT_EQ(why, "needs radio variants of two or more ranges");
+}
+
+// Without queries.csv (radio_kitti00.yaml writes none) the middle panel draws the share of query
+// copies delivered, from runs.csv's bytes by role, and no panel is left empty.
+TEST_F(RadioFiguresTest, RadioRangeWithoutQueriesDrawsTheQueryCopiesDelivered) {
+  std::vector<RunResult> rows = Rows();
+  const auto delivered = [](RunResult& r, std::int64_t offered, std::int64_t arrived) {
+    RunRoleBytes b;
+    b.copies[0].wire = offered;
+    b.copies[0].delivered_wire = arrived;
+    r.roles = b;
+  };
+  delivered(rows[1], 1000, 200);   // decentralized 100 m run 0: 20 %
+  delivered(rows[2], 1000, 400);   // run 1: 40 %, mean 30 %
+  delivered(rows[3], 3000, 300);   // broadcast 100 m: 10 %
+  delivered(rows[4], 1000, 1000);  // decentralized 200 m: 100 %
+  delivered(rows[5], 3000, 2850);  // broadcast 200 m: 95 %
+  std::string why;
+  const auto f = WriteRadioRangeFigure(dir_, rows, CsvTable{}, why);
+  ASSERT_TRUE(f.has_value()) << why;
+  EXPECT_EQ(Slurp(dir_ / "radio_range.dat"),
+            "# decentralized n = 4\n100 1500 NaN 40 30\n200 800 NaN 4 100\n\n\n"
+            "# broadcast n = 4\n100 3000 NaN 70 10\n200 2500 NaN 6 95\n\n\n");
+  EXPECT_EQ(Slurp(dir_ / "radio_range_split.dat"), "100 1500 \"30%\"\n100 3000 \"10%\"\n");
+  EXPECT_NE(f->body.find("using 1:5 "), std::string::npos) << f->body;
+  EXPECT_EQ(f->body.find("using 1:3 "), std::string::npos) << f->body;
+  EXPECT_EQ(f->body.find("1/0"), std::string::npos) << f->body;  // no placeholder panel
+  EXPECT_NE(f->body.find("circled: under 90 % of query copies delivered: few bytes because the team is split"),
+            std::string::npos) << f->body;
 }
 
 // robots_in_range.png: the largest team's first run and first strategy, one panel per radio
