@@ -50,14 +50,21 @@ std::string PlotSeries(const fs::path& data_dir, const std::string& stem, const 
   return cmd + "\n";
 }
 
+// "5th", "21st", "22nd", "23rd", "112th".
+std::string Ordinal(int k) {
+  const int tens = k % 100, ones = k % 10;
+  const char* suffix = (tens >= 11 && tens <= 13) ? "th" : ones == 1 ? "st" : ones == 2 ? "nd" : ones == 3 ? "rd" : "th";
+  return std::to_string(k) + suffix;
+}
+
 std::string ConfusionScript(const fs::path& data_dir, const fs::path& png) {
   std::istringstream meta(ReadLines(data_dir / "confusion.meta").at(0));
   int m = 0, step = 0, frames = 0;
   meta >> m >> step >> frames;
   std::ostringstream s;
   s << Preamble(png, 760, 680)
-    << "set title 'Descriptor distance between deployment frames (squared L2, every " << step
-    << "th of " << frames << " frames)'\n"
+    << "set title 'Descriptor distance between deployment frames (squared L2, every " << Ordinal(step)
+    << " of " << frames << " frames)'\n"
     << "set xlabel 'frame index'\nset ylabel 'frame index'\nset cblabel 'squared L2 distance'\n"
     << "set size ratio -1\nset xrange [0:" << m * step << "]\nset yrange [" << m * step
     << ":0]\nset palette defined (0 '#000004', 1 '#3b0f70', 2 '#8c2981', 3 '#de4968', "
@@ -84,11 +91,16 @@ std::string DimsScript(const fs::path& data_dir, const fs::path& png) {
 }
 
 std::string RelativeAucScript(const fs::path& data_dir, const fs::path& png) {
-  const std::string protocol = ReadLines(data_dir / "relative_auc.protocol").at(0);
+  // "paper", or "sim" and the network its rows ran on (a second line since issue 48).
+  const std::vector<std::string> lines = ReadLines(data_dir / "relative_auc.protocol");
+  const std::string protocol = lines.at(0) + " protocol";
+  const std::string network = lines.size() > 1 ? lines[1] : "";
   auto panel = [&](const std::string& stem, const std::string& ylabel, const std::string& title) {
     const std::string dat = stem + ".dat";
+    // The simulation's network on a second line (the paper protocol has none).
+    const std::string quoted = network.empty() ? GnuplotQuote(title) : GnuplotTitle({title, "on " + network});
     // The mean's 95 % confidence band (Student's t over the runs) under the runs and the mean.
-    return "set title " + GnuplotQuote(title) + "\nset xlabel 'robots n'\nset ylabel '" + ylabel +
+    return "set title " + quoted + "\nset xlabel 'robots n'\nset ylabel '" + ylabel +
            "'\nplot '" + stem + "_ci.dat' using 1:2:3 with filledcurves fc rgb '#1f3f8f' fs transparent solid 0.18 "
            "noborder title '95 % confidence interval of the mean', '" + dat +
            "' index 0 using 1:2 with points pt 7 ps 0.6 lc rgb '#7f9fcf' "
@@ -99,10 +111,10 @@ std::string RelativeAucScript(const fs::path& data_dir, const fs::path& png) {
   return Preamble(png, 1200, 560) + "set multiplot layout 1,2 margins 0.07, 0.98, 0.2, 0.9 spacing 0.1\n"
          "set key at screen 0.5, screen 0.01 center bottom horizontal\nset xtics 2\nset yrange [0:*]\n" +
          panel("relative_auc", "AUC(decentralized) / AUC(reference)",
-               "Relative AUC vs team size (" + protocol + " protocol)") +
+               "Relative AUC vs team size (" + protocol + ")") +
          "set yrange [0:*]\nunset key\n" +
          panel("balance", "max robot load / mean load",
-               "Worst balance ratio vs team size (" + protocol + " protocol)") +
+               "Worst balance ratio vs team size (" + protocol + ")") +
          "unset multiplot\n";
 }
 
@@ -137,7 +149,7 @@ void AddTrafficFigures(const fs::path& out_dir, const fs::path& data, const std:
   const TrafficTable t = TabulateTraffic(rows);
   const CsvTable per_robot = ReadCsvTable(out_dir / "per_robot.csv");
   const CsvTable links = ReadCsvTable(out_dir / "links.csv");
-  auto add = [&](const char* name, const std::function<std::optional<FigureScript>(std::string&)>& write) {
+  auto add = [&](const std::string& name, const std::function<std::optional<FigureScript>(std::string&)>& write) {
     std::string why;
     const std::optional<FigureScript> f = write(why);
     const auto script = [f](const fs::path&, const fs::path& png) {
@@ -145,13 +157,35 @@ void AddTrafficFigures(const fs::path& out_dir, const fs::path& data, const std:
     };
     figures.push_back(Figure{name, f.has_value(), script, why});
   };
+  using Write = std::function<std::optional<FigureScript>(std::string&, const VariantFigure&)>;
+  const std::vector<VariantFigure> views = VariantFigures(t);
+  // One figure per network variant (figures_traffic.h); where no variant has its data, one note.
+  const auto per_variant = [&](const std::string& name, const Write& write) {
+    const std::size_t first = figures.size();
+    for (const VariantFigure& view : views) {
+      add(name + view.suffix, [&](std::string& why) { return write(why, view); });
+    }
+    const bool none = std::none_of(figures.begin() + static_cast<std::ptrdiff_t>(first), figures.end(),
+                                   [](const Figure& f) { return f.available; });
+    const bool same = std::all_of(figures.begin() + static_cast<std::ptrdiff_t>(first), figures.end(),
+                                  [&](const Figure& f) { return f.missing == figures[first].missing; });
+    if (views.size() > 1 && none && same) {
+      const std::string why = "on all " + std::to_string(views.size()) + " networks: " + figures[first].missing;
+      figures.resize(first);
+      figures.push_back(Figure{name, false, nullptr, why});
+    }
+  };
   add("place_recognition_bytes", [&](std::string& why) { return WritePlaceRecognitionFigure(data, t, why); });
-  add("traffic_by_role", [&](std::string& why) { return WriteRoleFigure(data, t, why); });
-  add("robot_load", [&](std::string& why) { return WriteRobotLoadFigure(data, t, per_robot, why); });
-  add("traffic_matrix", [&](std::string& why) { return WriteMatrixFigure(data, t, links, why); });
+  per_variant("traffic_by_role", [&](std::string& why, const VariantFigure& v) { return WriteRoleFigure(data, t, why, v); });
+  per_variant("robot_load",
+              [&](std::string& why, const VariantFigure& v) { return WriteRobotLoadFigure(data, t, per_robot, why, v); });
+  per_variant("traffic_matrix",
+              [&](std::string& why, const VariantFigure& v) { return WriteMatrixFigure(data, t, links, why, v); });
   add("saturation", [&](std::string& why) { return WriteSaturationFigure(data, t, why); });
   const CsvTable closure_pairs = ReadCsvTable(out_dir / "closure_pairs.csv");
-  add("loop_closures", [&](std::string& why) { return WriteClosureFigure(data, t, closure_pairs, why); });
+  per_variant("loop_closures", [&](std::string& why, const VariantFigure& v) {
+    return WriteClosureFigure(data, t, closure_pairs, why, v);
+  });
 }
 
 }  // namespace
@@ -163,21 +197,29 @@ std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::span<const Netwo
   const fs::path fig = out_dir / "figures";
   const fs::path data = fig / "data";
   fs::create_directories(data);
-  const bool have3 = WriteRelativeAucData(data, rows);
+  std::string why3;
+  const bool have3 = WriteRelativeAucData(data, rows, &why3);
   const bool strategies = ComparesStrategies(rows);
   const bool have7 = strategies && WriteStrategyTradeoffData(data, rows);
   const bool have8 = strategies && WriteStrategySweepData(data, rows);
+  // Figures 1, 2 and 4 come from the inputs, which only `dvpr run` has (WriteFigureData).
+  const bool inputs = fs::exists(data / "confusion.meta");
+  const std::string no_inputs = "figures/data/ has no data of the inputs: dvpr run writes it when outputs.figures is true";
   std::vector<Figure> figures = {
-      {"confusion_matrix", fs::exists(data / "confusion.meta"), ConfusionScript, "no deployment data"},
-      {"pr_curves", fs::exists(data / "pr_curves.titles"), PrScript, "needs the paper protocol"},
-      {"relative_auc_balance", have3, RelativeAucScript, "no decentralized runs"},
-      {"descriptor_dims", fs::exists(data / "descriptor_dims.titles"), DimsScript, "no data"}};
+      {"confusion_matrix", inputs, ConfusionScript, no_inputs},
+      {"pr_curves", fs::exists(data / "pr_curves.titles"), PrScript, inputs ? "needs the paper protocol" : no_inputs},
+      {"relative_auc_balance", have3, RelativeAucScript, why3},
+      {"descriptor_dims", fs::exists(data / "descriptor_dims.titles"), DimsScript, no_inputs}};
   AddTrafficFigures(out_dir, data, rows, figures);
-  const char* no_strategies = "only the paper's two strategies are configured";
+  const std::string no_strategies = "only the paper's two strategies are configured";
+  // Without any relative AUC, the strategy figures say why as figure 3 does.
+  const std::string no_auc = TabulateStrategies(rows).accuracy_protocol.empty()
+                                 ? "no relative AUC in runs.csv" + (have3 ? std::string() : "; " + why3)
+                                 : std::string();
   figures.push_back({"strategy_tradeoff", have7, StrategyTradeoffScript,
-                     strategies ? "no relative AUC in runs.csv" : no_strategies});
+                     strategies ? (no_auc.empty() ? "no relative AUC in runs.csv" : no_auc) : no_strategies});
   figures.push_back({"strategy_sweep", have8, StrategySweepScript,
-                     strategies ? "needs a relative AUC at two or more n" : no_strategies});
+                     strategies ? (no_auc.empty() ? "needs a relative AUC at two or more n" : no_auc) : no_strategies});
   const std::optional<fs::path> gnuplot = FindProgram("gnuplot");
   if (!gnuplot) {
     log << "dvpr: figures not drawn: gnuplot is not installed (scripts/setup.sh installs it)\n";

@@ -5,12 +5,18 @@
 // everything from the files alone, and a user can edit a script and rerun gnuplot on it.
 // Fixed fonts and sizes, no date stamps: the same data gives the same PNG.
 //
-//   1 confusion_matrix.png   squared descriptor distances of the deployment, every 5th frame
+//   1 confusion_matrix.png   squared descriptor distances of the deployment, every 5th frame, or
+//                            every k-th so that the matrix is at most kConfusionSide frames a
+//                            side (confusion.f32 stays under 4 MB; staggered teams have many frames)
 //   2 pr_curves.png          precision-recall, centralized vs decentralized at one n
 //   3 relative_auc_balance.png  relative AUC and worst balance ratio vs n (mean line, runs dots)
 //   4 descriptor_dims.png    descriptor dimensions 1 and 2, training vs deployment
 //   5-9 the traffic of the simulation (figures_traffic.h): place_recognition_bytes.png,
-//       traffic_by_role.png, robot_load.png, traffic_matrix.png, saturation.png
+//       traffic_by_role.png, robot_load.png, traffic_matrix.png, saturation.png, loop_closures.png;
+//       with several sim network variants traffic_by_role, robot_load, traffic_matrix and
+//       loop_closures are drawn once per variant, <name>-net<v>-<network slug>.png (VariantFigures)
+// A figure with nothing to draw is skipped with a note naming the reason (e.g. no query had a
+// revisit within the frames), and no figure is drawn with an empty panel.
 //   10 strategy_tradeoff.png  every strategy at two n (10 and 20): relative AUC, worst balance,
 //                            bytes per query (dot plots, min-max over runs), and relative AUC vs
 //                            worst balance (one labelled point per strategy, the issue-8 target)
@@ -33,6 +39,10 @@
 namespace dvpr {
 
 // Data files of figures 1, 2 and 4 (they come from the inputs, not from runs.csv).
+// WriteConfusionData samples every `step`-th frame, or every ConfusionStep(frames, step)-th when
+// that keeps the matrix side at most kConfusionSide (1000 x 1000 float32: 4 MB).
+inline constexpr long kConfusionSide = 1000;
+long ConfusionStep(long frames, long step);
 void WriteConfusionData(const std::filesystem::path& data_dir, const DescriptorMatrix& deployment,
                         int step);
 void WritePrCurveData(const std::filesystem::path& data_dir, const std::vector<PrCurve>& curves);
@@ -48,9 +58,13 @@ struct FigureData {
 // All three of the above into out_dir/figures/data/.
 void WriteFigureData(const std::filesystem::path& out_dir, const FigureData& data);
 
-// Data file of figure 3, from runs.csv rows. Each returns false (and writes nothing)
-// when the rows hold nothing to plot (e.g. no sim rows for figure 5).
-bool WriteRelativeAucData(const std::filesystem::path& data_dir, const std::vector<RunResult>& rows);
+// Data file of figure 3, from runs.csv rows: the paper protocol's decentralized runs, else the
+// simulation's on its first network variant with a relative AUC (relative_auc.protocol names
+// the protocol and, for the simulation, that network: the figure's titles say it). Returns false
+// (and writes nothing) when the rows hold nothing to plot; then `why` (when given) says why: no
+// decentralized run, or runs whose reference found nothing (no query had a revisit).
+bool WriteRelativeAucData(const std::filesystem::path& data_dir, const std::vector<RunResult>& rows,
+                          std::string* why = nullptr);
 
 // Figures 7 and 8 (experiments/figures/figures_strategies.cpp): runs.csv aggregated per (strategy, n).
 // Mean, min and max over the runs that have the metric (NaN and runs = 0 when none).

@@ -122,8 +122,8 @@ void WriteFirstMatrix(const fs::path& file, const std::vector<PairFirst>& pairs,
 }  // namespace
 
 std::optional<FigureScript> WriteClosureFigure(const fs::path& dir, const TrafficTable& t, const CsvTable& pairs,
-                                               std::string& why) {
-  const int v = t.ShownVariant();
+                                               std::string& why, const VariantFigure& view) {
+  const int v = view.variant >= 0 ? view.variant : t.ShownVariant();
   const int n = t.robots.empty() ? 0 : t.robots.back();
   std::vector<std::pair<std::string, std::map<int, std::vector<PairFirst>>>> shown;
   for (const std::string& s : t.strategies) {
@@ -131,13 +131,28 @@ std::optional<FigureScript> WriteClosureFigure(const fs::path& dir, const Traffi
     if (!by_run.empty()) shown.emplace_back(s, std::move(by_run));
   }
   if (v < 0 || n < 2 || shown.empty()) {
-    why = "needs protocol sim with two or more robots (closure_pairs.csv)";
+    why = v < 0                   ? NoSimTraffic(t)
+          : n < 2                 ? std::string("needs two or more robots")
+          : pairs.header.empty()  ? std::string("needs closure_pairs.csv")
+                                  : "closure_pairs.csv has no row at n = " + std::to_string(n);
+    return std::nullopt;
+  }
+  // A run without a closure is a line at 0 and a blank matrix: with none anywhere, no figure.
+  const auto closed = [](const std::vector<PairFirst>& run) {
+    return std::any_of(run.begin(), run.end(), [](const PairFirst& f) { return !std::isnan(f.first); });
+  };
+  const bool any = std::any_of(shown.begin(), shown.end(), [&](const auto& s) {
+    return std::any_of(s.second.begin(), s.second.end(), [&](const auto& run) { return closed(run.second); });
+  });
+  if (!any) {
+    why = "no run found an inter-robot loop closure at n = " + std::to_string(n);
     return std::nullopt;
   }
   double end = 0;  // the last frame's time: the runs' longest drive
   for (const std::string& s : t.strategies) {
     if (const TrafficCell* c = t.Find(s, v, n)) end = std::max(end, c->longest_drive_s);
   }
+  const std::string closures_file = view.data_prefix + "closures.dat";
   std::string dat;
   std::ostringstream plot;
   plot << "plot ";
@@ -146,22 +161,27 @@ std::optional<FigureScript> WriteClosureFigure(const fs::path& dir, const Traffi
   for (const auto& [s, by_run] : shown) {
     dat += "# " + OneLineText(s) + "\n" + ShareSteps(by_run, end, highest) + "\n\n";
     const std::string colour = "lc rgb '" + figure_style::StrategyColour(t.StrategyIndex(s)) + "'";
-    plot << (block ? ", \\\n     " : "") << "'closures.dat' index " << block
+    plot << (block ? ", \\\n     " : "") << GnuplotQuote(closures_file) << " index " << block
          << " using 1:3:4 with filledcurves fs transparent solid 0.15 noborder " << colour << " notitle, \\\n"
-         << "     'closures.dat' index " << block << " using 1:2 with lines lw 2 " << colour << " title "
+         << "     " << GnuplotQuote(closures_file) << " index " << block << " using 1:2 with lines lw 2 " << colour << " title "
          << GnuplotQuote(s + " (" + std::to_string(by_run.size()) + (by_run.size() == 1 ? " run)" : " runs)"));
     ++block;
   }
-  WriteFileAtomic(dir / "closures.dat", dat);
-  const std::size_t matrices = std::min<std::size_t>(shown.size(), 2);
+  WriteFileAtomic(dir / closures_file, dat);
+  // The matrices of the first two strategies whose lowest run (run 0) closed a pair: a blank
+  // matrix would be an empty panel.
+  std::vector<std::size_t> with_matrix;
+  for (std::size_t i = 0; i < shown.size() && with_matrix.size() < 2; ++i) {
+    if (closed(shown[i].second.begin()->second)) with_matrix.push_back(i);
+  }
+  const std::size_t matrices = with_matrix.size();
   double top = 0;
   for (std::size_t i = 0; i < matrices; ++i) {
-    const auto& runs = shown[i].second;
-    const std::vector<PairFirst>& pairs_of_run = runs.begin()->second;  // the lowest run (run 0)
+    const std::vector<PairFirst>& pairs_of_run = shown[with_matrix[i]].second.begin()->second;
     for (const PairFirst& f : pairs_of_run) {
       if (!std::isnan(f.first)) top = std::max(top, f.first);
     }
-    WriteFirstMatrix(dir / ("closure_matrix_" + std::to_string(i) + ".dat"), pairs_of_run, n);
+    WriteFirstMatrix(dir / (view.data_prefix + "closure_matrix_" + std::to_string(i) + ".dat"), pairs_of_run, n);
   }
   std::ostringstream s;
   s << "set multiplot layout 1," << 1 + matrices << " title "
@@ -178,12 +198,13 @@ std::optional<FigureScript> WriteClosureFigure(const fs::path& dir, const Traffi
     << FormatDouble(std::max(top, 1.0)) << "]\nset palette defined (0 '#08306b', 1 '#2171b5', 2 '#6baed6', 3 '#c6dbef')\n"
     << "set tics out\nset xtics " << std::max(1, n / 10) << "\nset ytics " << std::max(1, n / 10) << "\n";
   for (std::size_t i = 0; i < matrices; ++i) {
+    const std::size_t k = with_matrix[i];
     s << (i + 1 == matrices ? "set colorbox\nset cblabel 'first closure [s]'\n" : "unset colorbox\n") << "set title "
-      << GnuplotTitle({shown[i].first + ": first closure per pair", "run " +
-                                                                       std::to_string(shown[i].second.begin()->first) +
+      << GnuplotTitle({shown[k].first + ": first closure per pair", "run " +
+                                                                       std::to_string(shown[k].second.begin()->first) +
                                                                        "; blank: none"})
-      << " tc rgb '" << figure_style::StrategyColour(t.StrategyIndex(shown[i].first))
-      << "'\nplot 'closure_matrix_" << i << ".dat' matrix with image notitle\n";
+      << " tc rgb '" << figure_style::StrategyColour(t.StrategyIndex(shown[k].first)) << "'\nplot "
+      << GnuplotQuote(view.data_prefix + "closure_matrix_" + std::to_string(i) + ".dat") << " matrix with image notitle\n";
   }
   return FigureScript{s.str() + "unset multiplot\n", 700 + 550 * static_cast<int>(matrices), 600};
 }

@@ -83,12 +83,40 @@ void WriteConfidenceBand(const std::filesystem::path& file, const std::vector<Ru
   WriteFileAtomic(file, dat.str());
 }
 
+// Why no row has a relative AUC to plot: no decentralized run, or decentralized runs whose
+// reference AUC is 0 or missing (as when no query of the frames revisits a place).
+std::string RelativeAucMissing(const std::vector<RunResult>& rows) {
+  std::int64_t runs = 0, relevant = 0, known = 0, zero_reference = 0;
+  for (const RunResult& r : rows) {
+    const ProtocolTraits traits = RowTraits(r.key.protocol);
+    if (r.key.strategy != "decentralized" || !(traits.static_evaluation || traits.simulated_network)) continue;
+    ++runs;
+    if (r.closures) {
+      ++known;
+      relevant += r.closures->inter_queries + r.closures->intra_queries;
+    }
+    if (r.auc_reference == 0) ++zero_reference;
+  }
+  if (runs == 0) return "no decentralized runs";
+  const std::string all = std::to_string(runs) + " decentralized run" + (runs == 1 ? "" : "s");
+  if (known > 0 && relevant == 0) {
+    return all + ", none with a relative AUC: no query had a revisit within the frames";
+  }
+  if (zero_reference == runs) return all + ", none with a relative AUC: the reference's AUC is 0 in every run";
+  return all + ", none with a relative AUC";
+}
+
 }  // namespace
 
 std::string NetworkText(const NetworkLabel& network) { return NetworkName(network); }
 
+long ConfusionStep(long frames, long step) {
+  return std::max(step, (frames + kConfusionSide - 1) / kConfusionSide);
+}
+
 void WriteConfusionData(const std::filesystem::path& data_dir, const DescriptorMatrix& deployment,
-                        int step) {
+                        int wanted_step) {
+  const auto step = static_cast<Eigen::Index>(ConfusionStep(static_cast<long>(deployment.rows()), wanted_step));
   const Eigen::Index m = (deployment.rows() + step - 1) / step;
   DescriptorMatrix sample(m, deployment.cols());
   for (Eigen::Index i = 0; i < m; ++i) sample.row(i) = deployment.row(i * step);
@@ -146,23 +174,33 @@ void WriteFigureData(const std::filesystem::path& out_dir, const FigureData& dat
 }
 
 bool WriteRelativeAucData(const std::filesystem::path& data_dir,
-                          const std::vector<RunResult>& rows) {
+                          const std::vector<RunResult>& rows, std::string* why) {
   // The paper's figure: the static protocol's decentralized rows; the simulation's if there are
-  // none (the first protocol with the trait that has such rows).
+  // none (the first protocol with the trait that has such rows), on its lowest network variant
+  // with a relative AUC (variant 0 unless that one has none).
   std::string protocol;
+  int variant = 0;
   for (bool ProtocolTraits::*trait : {&ProtocolTraits::static_evaluation, &ProtocolTraits::simulated_network}) {
-    const auto it = std::find_if(rows.begin(), rows.end(), [&](const RunResult& r) {
+    const auto has = [&](const RunResult& r) {
       return RowTraits(r.key.protocol).*trait && r.key.strategy == "decentralized" && !std::isnan(r.relative_auc);
-    });
+    };
+    const auto it = std::find_if(rows.begin(), rows.end(), has);
     if (it != rows.end()) {
       protocol = it->key.protocol;
+      variant = it->key.network.variant;
+      for (const RunResult& r : rows) {
+        if (has(r) && r.key.protocol == protocol) variant = std::min(variant, r.key.network.variant);
+      }
       break;
     }
   }
-  if (protocol.empty()) return false;
+  if (protocol.empty()) {
+    if (why != nullptr) *why = RelativeAucMissing(rows);
+    return false;
+  }
   auto pick = [&](const RunResult& r) {
     return r.key.protocol == protocol && r.key.strategy == "decentralized" &&
-           r.key.network.variant == 0;
+           r.key.network.variant == variant;
   };
   Points runs_auc, runs_bal;
   for (const auto& r : rows) {
@@ -180,7 +218,15 @@ bool WriteRelativeAucData(const std::filesystem::path& data_dir,
               {{"every run", runs_bal}, {"mean over runs", bal.empty() ? Points{} : bal[0].second}});
   WriteConfidenceBand(data_dir / "relative_auc_ci.dat", rows, pick, [](const RunResult& r) { return r.relative_auc; });
   WriteConfidenceBand(data_dir / "balance_ci.dat", rows, pick, [](const RunResult& r) { return r.worst_balance_ratio; });
-  WriteFileAtomic(data_dir / "relative_auc.protocol", protocol + "\n");
+  // The simulation's numbers depend on its network: the second line names it.
+  std::string network;
+  for (const RunResult& r : rows) {
+    if (pick(r) && RowTraits(protocol).simulated_network && !r.key.network.model.empty()) {
+      network = NetworkName(r.key.network) + "\n";
+      break;
+    }
+  }
+  WriteFileAtomic(data_dir / "relative_auc.protocol", protocol + "\n" + network);
   return true;
 }
 

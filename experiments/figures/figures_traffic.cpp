@@ -142,7 +142,7 @@ std::optional<FigureScript> WritePlaceRecognitionFigure(const fs::path& dir, con
   const int v = t.ShownVariant();
   const std::vector<int> robots = v < 0 ? std::vector<int>{} : CommonRobots(t, {"decentralized", "broadcast"}, v);
   if (robots.empty()) {
-    why = "needs protocol sim with strategies decentralized and broadcast";
+    why = t.cells.empty() ? NoSimTraffic(t) : "needs protocol sim with strategies decentralized and broadcast";
     return std::nullopt;
   }
   // The right panel's key: the band and every network, in up to three columns below the panels.
@@ -173,7 +173,7 @@ std::vector<int> RolesSent(const TrafficTable& t, int v) {
 }
 
 std::string RolePanel(const fs::path& dir, const TrafficTable& t, int v, std::size_t i, const std::vector<int>& roles,
-                      bool key) {
+                      bool key, const std::string& prefix) {
   const std::string& s = t.strategies[i];
   std::string dat;
   double pr = 0, verify = 0, total = 0;
@@ -189,7 +189,7 @@ std::string RolePanel(const fs::path& dir, const TrafficTable& t, int v, std::si
     for (int r : roles) dat += " " + FormatDouble(b[static_cast<std::size_t>(r)]);
     dat += " " + FormatDouble(total) + " " + FormatDouble(c->total_bytes_ci95) + "\n";
   }
-  const std::string file = "roles_" + std::to_string(i) + ".dat";
+  const std::string file = prefix + "roles_" + std::to_string(i) + ".dat";
   WriteFileAtomic(dir / file, dat);
   std::ostringstream p;
   p << "set title " << Quote(s) << " tc rgb '" << figure_style::StrategyColour(t.StrategyIndex(s)) << "'\n"
@@ -212,8 +212,9 @@ std::string RolePanel(const fs::path& dir, const TrafficTable& t, int v, std::si
 
 }  // namespace
 
-std::optional<FigureScript> WriteRoleFigure(const fs::path& dir, const TrafficTable& t, std::string& why) {
-  const int v = t.ShownVariant();
+std::optional<FigureScript> WriteRoleFigure(const fs::path& dir, const TrafficTable& t, std::string& why,
+                                            const VariantFigure& view) {
+  const int v = view.variant >= 0 ? view.variant : t.ShownVariant();
   std::vector<std::size_t> shown;
   double ymax = 0;
   for (std::size_t i = 0; i < t.strategies.size(); ++i) {
@@ -229,7 +230,7 @@ std::optional<FigureScript> WriteRoleFigure(const fs::path& dir, const TrafficTa
     if (any) shown.push_back(i);
   }
   if (shown.empty()) {
-    why = "needs protocol sim";
+    why = NoSimTraffic(t);
     return std::nullopt;
   }
   const std::vector<int> roles = RolesSent(t, v);
@@ -241,7 +242,7 @@ std::optional<FigureScript> WriteRoleFigure(const fs::path& dir, const TrafficTa
     << "set style data histograms\nset style histogram rowstacked\nset style fill solid 0.9 border rgb '#333333'\n"
     << "set boxwidth 0.75\nset grid ytics\nset xlabel 'robots n'\nset yrange [0:" << FormatDouble(ymax * 1.12) << "]\n";
   for (std::size_t k = 0; k < shown.size(); ++k) {
-    s << (k == 0 ? "set ylabel 'wire bytes per query'\n" : "unset ylabel\n") << RolePanel(dir, t, v, shown[k], roles, k == 0);
+    s << (k == 0 ? "set ylabel 'wire bytes per query'\n" : "unset ylabel\n") << RolePanel(dir, t, v, shown[k], roles, k == 0, view.data_prefix);
   }
   return FigureScript{s.str() + "unset multiplot\n", static_cast<int>(std::max<std::size_t>(2, shown.size())) * 600, 620};
 }
@@ -283,7 +284,7 @@ double MostServed(const CsvTable& per_robot, const std::string& s, int v, int n)
 
 // ymax: the top of the y axis, the same for every panel (their bars are compared).
 std::string LoadPanel(const fs::path& dir, const TrafficTable& t, const CsvTable& per_robot, const std::string& s,
-                      int v, int n, double ymax) {
+                      int v, int n, double ymax, const std::string& prefix) {
   const std::size_t robot = per_robot.Column("robot"), served = per_robot.Column("queries_received");
   std::string dat;
   double sum = 0, most = -1;
@@ -299,7 +300,7 @@ std::string LoadPanel(const fs::path& dir, const TrafficTable& t, const CsvTable
       busiest = id;
     }
   }
-  const std::string file = "load_" + std::to_string(t.StrategyIndex(s)) + ".dat";
+  const std::string file = prefix + "load_" + std::to_string(t.StrategyIndex(s)) + ".dat";
   WriteFileAtomic(dir / file, dat + "\n\n" + busiest + " " + FormatDouble(most) + "\n");
   const double fair = sum / n;
   std::ostringstream p;
@@ -319,11 +320,17 @@ std::string LoadPanel(const fs::path& dir, const TrafficTable& t, const CsvTable
 }  // namespace
 
 std::optional<FigureScript> WriteRobotLoadFigure(const fs::path& dir, const TrafficTable& t, const CsvTable& per_robot,
-                                                 std::string& why) {
-  const int v = t.ShownVariant();
+                                                 std::string& why, const VariantFigure& view) {
+  const int v = view.variant >= 0 ? view.variant : t.ShownVariant();
   const int n = t.robots.empty() ? 0 : t.robots.back();
-  if (v < 0 || RunRows(per_robot, "decentralized", v, n).empty()) {
-    why = "needs protocol sim with strategy decentralized";
+  if (v < 0) {
+    why = NoSimTraffic(t);
+    return std::nullopt;
+  }
+  if (RunRows(per_robot, "decentralized", v, n).empty()) {
+    why = per_robot.header.empty() ? "needs per_robot.csv"
+                                   : "per_robot.csv has no row of strategy decentralized at n = " + std::to_string(n) +
+                                         ", run 0";
     return std::nullopt;
   }
   std::vector<std::string> shown = {"decentralized"};
@@ -337,7 +344,7 @@ std::optional<FigureScript> WriteRobotLoadFigure(const fs::path& dir, const Traf
   // One y scale for all panels: a balanced strategy's bars are as short as they are.
   double most = 0;
   for (const std::string& st : shown) most = std::max(most, MostServed(per_robot, st, v, n));
-  for (const std::string& st : shown) s << LoadPanel(dir, t, per_robot, st, v, n, std::max(most, 1.0) * 1.18);
+  for (const std::string& st : shown) s << LoadPanel(dir, t, per_robot, st, v, n, std::max(most, 1.0) * 1.18, view.data_prefix);
   return FigureScript{s.str() + "unset multiplot\n", shown.size() == 1 ? 900 : 1500, 600};
 }
 
@@ -363,20 +370,23 @@ double WriteMatrix(const fs::path& file, const CsvTable& links, const std::strin
 }  // namespace
 
 std::optional<FigureScript> WriteMatrixFigure(const fs::path& dir, const TrafficTable& t, const CsvTable& links,
-                                              std::string& why) {
-  const int v = t.ShownVariant();
+                                              std::string& why, const VariantFigure& view) {
+  const int v = view.variant >= 0 ? view.variant : t.ShownVariant();
   const int n = t.robots.empty() ? 0 : t.robots.back();
   std::vector<std::string> shown;
   for (const char* s : {"decentralized", "broadcast"}) {
     if (v >= 0 && !RunRows(links, s, v, n).empty()) shown.emplace_back(s);
   }
   if (shown.empty()) {
-    why = "needs protocol sim";
+    why = v < 0                  ? NoSimTraffic(t)
+          : links.header.empty() ? std::string("needs links.csv")
+                                 : "links.csv has no row of strategy decentralized or broadcast at n = " +
+                                       std::to_string(n) + ", run 0";
     return std::nullopt;
   }
   double top = 0;
   for (std::size_t i = 0; i < shown.size(); ++i) {
-    top = std::max(top, WriteMatrix(dir / ("matrix_" + std::to_string(i) + ".dat"), links, shown[i], v, n));
+    top = std::max(top, WriteMatrix(dir / (view.data_prefix + "matrix_" + std::to_string(i) + ".dat"), links, shown[i], v, n));
   }
   std::ostringstream s;
   s << "set multiplot layout 1," << shown.size() << " title "
@@ -390,7 +400,7 @@ std::optional<FigureScript> WriteMatrixFigure(const fs::path& dir, const Traffic
     // One colour bar, beside the last panel: both panels share its range.
     s << (i + 1 == shown.size() ? "set colorbox\nset cblabel 'kB sent'\n" : "unset colorbox\n") << "set title "
       << Quote(shown[i]) << " tc rgb '" << figure_style::StrategyColour(t.StrategyIndex(shown[i]))
-      << "'\nplot 'matrix_" << i << ".dat' matrix with image notitle\n";
+      << "'\nplot " << Quote(view.data_prefix + "matrix_" + std::to_string(i) + ".dat") << " matrix with image notitle\n";
   }
   return FigureScript{s.str() + "unset multiplot\n", shown.size() == 1 ? 800 : 1400, 650};
 }

@@ -1,6 +1,7 @@
 // The numbers of the traffic figures (figures_traffic.cpp): runs.csv's bytes by role, and the
 // per_robot.csv and links.csv rows of one run, read by their header names.
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -43,7 +44,9 @@ TrafficTable TabulateTraffic(const std::vector<RunResult>& rows) {
     if (std::find(t.strategies.begin(), t.strategies.end(), r.key.strategy) == t.strategies.end()) {
       t.strategies.push_back(r.key.strategy);
     }
-    if (!IsSimWithRoles(r) || r.queries <= 0) continue;
+    if (!IsSimWithRoles(r)) continue;
+    t.sim_rows = true;
+    if (r.queries <= 0) continue;
     variants.emplace(r.key.network.variant, r.key.network);
     if (std::find(t.robots.begin(), t.robots.end(), r.key.robots) == t.robots.end()) t.robots.push_back(r.key.robots);
     const std::tuple<std::string, int, int> key{r.key.strategy, r.key.network.variant, r.key.robots};
@@ -91,6 +94,10 @@ TrafficTable TabulateTraffic(const std::vector<RunResult>& rows) {
   return t;
 }
 
+std::string NoSimTraffic(const TrafficTable& t) {
+  return t.sim_rows ? "no run of protocol sim sent a query" : "needs protocol sim";
+}
+
 const TrafficCell* TrafficTable::Find(const std::string& strategy, int variant, int robots) const {
   const auto it = cells.find({strategy, variant, robots});
   return it == cells.end() ? nullptr : &it->second;
@@ -120,6 +127,36 @@ const NetworkLabel* TrafficTable::Network(int variant) const {
     if (n.variant == variant) return &n;
   }
   return nullptr;
+}
+
+std::string NetworkSlug(const NetworkLabel& network) {
+  std::string slug;
+  for (const char c : NetworkName(network)) {
+    const char l = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if ((l >= 'a' && l <= 'z') || (l >= '0' && l <= '9') || l == '.') {
+      slug += l;
+    } else if (!slug.empty() && slug.back() != '-') {
+      slug += '-';
+    }
+  }
+  if (slug.size() > 48) slug.resize(48);
+  while (!slug.empty() && (slug.back() == '-' || slug.back() == '.')) slug.pop_back();
+  return slug;
+}
+
+std::vector<VariantFigure> VariantFigures(const TrafficTable& t) {
+  if (t.networks.size() <= 1) return {VariantFigure{t.ShownVariant(), "", ""}};
+  // The index as wide as the largest (net00 .. net10): the files list in variant order.
+  const std::size_t width = std::to_string(t.networks.back().variant).size();
+  std::vector<VariantFigure> out;
+  for (const NetworkLabel& n : t.networks) {
+    std::string index = std::to_string(n.variant);
+    index.insert(0, width - index.size(), '0');
+    const std::string net = "net" + index;
+    const std::string slug = NetworkSlug(n);
+    out.push_back(VariantFigure{n.variant, "-" + net + (slug.empty() ? "" : "-" + slug), net + "_"});
+  }
+  return out;
 }
 
 CsvTable ReadCsvTable(const std::filesystem::path& path) {

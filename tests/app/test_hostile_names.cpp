@@ -33,10 +33,14 @@ std::string SweepConfig(const std::string& name_yaml) {
          "outputs: {figures: true, messages: true}\n";
 }
 
+// Two network variants: the per-network figures once each (figures_traffic.h), named by it.
 const std::vector<std::string> kFigures = {
-    "confusion_matrix.png", "descriptor_dims.png", "loop_closures.png", "place_recognition_bytes.png", "pr_curves.png",
-    "relative_auc_balance.png", "robot_load.png", "saturation.png", "strategy_sweep.png", "strategy_tradeoff.png",
-    "traffic_by_role.png", "traffic_matrix.png"};
+    "confusion_matrix.png", "descriptor_dims.png", "loop_closures-net0-point-to-point-10-mbit-s-2-ms.png",
+    "loop_closures-net1-shared-medium-10-mbit-s-2-ms.png", "place_recognition_bytes.png", "pr_curves.png",
+    "relative_auc_balance.png", "robot_load-net0-point-to-point-10-mbit-s-2-ms.png",
+    "robot_load-net1-shared-medium-10-mbit-s-2-ms.png", "saturation.png", "strategy_sweep.png", "strategy_tradeoff.png",
+    "traffic_by_role-net0-point-to-point-10-mbit-s-2-ms.png", "traffic_by_role-net1-shared-medium-10-mbit-s-2-ms.png",
+    "traffic_matrix-net0-point-to-point-10-mbit-s-2-ms.png", "traffic_matrix-net1-shared-medium-10-mbit-s-2-ms.png"};
 
 // The canary of every injected command (relative: dvpr and gnuplot run inside dir_).
 constexpr const char* kCanary = "PWNED";
@@ -276,7 +280,8 @@ TEST_F(HostileNamesTest, PlotQuotesTheFieldsOfAnEditedRunsCsv) {
   // Worked by hand: quotes doubled, the tab, CR and the bytes that are not UTF-8 shown as text.
   const std::string quoted = "'mp `touch PWNED` $(touch PWNED); it''s \"x\" @m \\t|\\xFF|\\r|'";
   const path data = out / "figures" / "data";
-  for (const char* gp : {"traffic_by_role.gp", "strategy_sweep.gp", "strategy_tradeoff.gp"}) {
+  for (const char* gp : {"traffic_by_role-net0-point-to-point-10-mbit-s-2-ms.gp", "strategy_sweep.gp",
+                         "strategy_tradeoff.gp"}) {
     EXPECT_NE(Slurp(data / gp).find(quoted), std::string::npos) << gp;
   }
   for (const std::string& name : Names(data)) {
@@ -304,7 +309,7 @@ TEST_F(HostileNamesTest, AFailingGnuplotFailsTheRunAndThePlot) {
   EXPECT_EQ(r.status, 1);
   // The run's folder goes with the error: no log is named, and the earlier results stay.
   EXPECT_EQ(r.err, "dvpr: error: figure confusion_matrix.png: gnuplot failed (exit status 1): line 1: no such "
-                   "terminal (and 11 more figures); nothing was written to " + Out().string() +
+                   "terminal (and 15 more figures); nothing was written to " + Out().string() +
                        " (its earlier results are as they were)\n");
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_EQ(SnapshotFolder(out), committed);
@@ -313,12 +318,12 @@ TEST_F(HostileNamesTest, AFailingGnuplotFailsTheRunAndThePlot) {
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "dvpr: error: figure confusion_matrix.png: gnuplot failed (exit status 1): line 1: no such "
                    "terminal; its log: " + (out / "figures" / "data" / "confusion_matrix.log").string() +
-                       " (and 11 more figures)\n");
+                       " (and 15 more figures)\n");
   Write(bin / "gnuplot", "#!/bin/sh\nprintf '\\211PNG\\r\\n\\032\\n'\n");
   r = DvprArgv({"plot", out.string()}, fake_path);
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "dvpr: error: figure confusion_matrix.png: gnuplot exited 0 but wrote no whole PNG (8 bytes); its log: " +
-                       (out / "figures" / "data" / "confusion_matrix.log").string() + " (and 11 more figures)\n");
+                       (out / "figures" / "data" / "confusion_matrix.log").string() + " (and 15 more figures)\n");
   for (const std::string& png : kFigures) {
     EXPECT_EQ(Slurp(out / "figures" / png), committed.at("figures/" + png)) << png;
   }

@@ -270,7 +270,7 @@ TEST_F(TrafficFigures, LoopClosuresByHand) {
   EXPECT_NE(f->body.find("line: mean over runs, band: lowest to highest run"), std::string::npos) << f->body;
   // Without closure_pairs.csv (the static protocol only) there is nothing to draw.
   EXPECT_FALSE(WriteClosureFigure(dir_, TabulateTraffic(rows), CsvTable{}, why).has_value());
-  EXPECT_EQ(why, "needs protocol sim with two or more robots (closure_pairs.csv)");
+  EXPECT_EQ(why, "needs closure_pairs.csv");
 }
 
 // closure_pairs.csv's robots index the first-closure matrix: a robot outside the team is refused.
@@ -297,10 +297,15 @@ TEST_F(TrafficFigures, StrategyFiguresOnlyBeyondThePapersTwo) {
   EXPECT_NE(log.str().find("strategy_tradeoff.png skipped (only the paper's two strategies are configured)"),
             std::string::npos) << log.str();
   EXPECT_TRUE(fs::exists(dir_ / "figures" / "place_recognition_bytes.png")) << log.str();
-  EXPECT_TRUE(fs::exists(dir_ / "figures" / "traffic_by_role.png")) << log.str();
+  // Two networks: one traffic_by_role figure each (test_figures_honest.cpp has the whole set).
+  EXPECT_TRUE(fs::exists(dir_ / "figures" / "traffic_by_role-net0-point-to-point-10-mbit-s-2-ms.png")) << log.str();
+  EXPECT_TRUE(fs::exists(dir_ / "figures" / "traffic_by_role-net1-shared-medium-100-mbit-s-2-ms.png")) << log.str();
   EXPECT_TRUE(fs::exists(dir_ / "figures" / "saturation.png")) << log.str();
-  EXPECT_NE(log.str().find("robot_load.png skipped"), std::string::npos);  // no per_robot.csv here
-  EXPECT_NE(log.str().find("loop_closures.png skipped"), std::string::npos);  // nor closure_pairs.csv
+  // No per_robot.csv here, nor closure_pairs.csv: one note each, for both networks.
+  EXPECT_NE(log.str().find("robot_load.png skipped (on all 2 networks: needs per_robot.csv)"), std::string::npos)
+      << log.str();
+  EXPECT_NE(log.str().find("loop_closures.png skipped (on all 2 networks: needs closure_pairs.csv)"),
+            std::string::npos) << log.str();
 }
 
 }  // namespace
