@@ -181,7 +181,11 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
   }
   CheckOutputFolder(out_dir);  // before the inputs load: a refused --out fails at once
   CheckSizeBeforeLoading(config, origin, options);
-  SharedInputs inputs = LoadSharedInputs(config, origin, BowProgress(options));
+  // The steps other than the runs on stderr as each starts (issue 48: 6.6 s of silence before the
+  // first run's line, then 10 s of figures), under the same switch as the runs' progress.
+  const PhaseLog phases(options.progress);
+  const auto phase = [&phases](const std::string& what) { phases.Start(what); };
+  SharedInputs inputs = LoadSharedInputs(config, origin, BowProgress(options), phase);
   CheckSweepInputs(inputs, origin, options.allow_large, options.threads);  // what would fail a run fails here, before anything is written
   // Everything is written into folder.dir() and moved to out_dir only when all succeeded.
   ResultFolder folder(out_dir);
@@ -205,18 +209,28 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
                    mac, teams);
     std::vector<PrCurve> curves;
     std::vector<RunConnectivity> connectivity;  // one per simulated run that tracked it, in spec order
-    RunSweep(inputs, protocols, options, [&](const RunSpec&, RunOutput&& out) {
+    ExecutorOptions told = options;
+    told.phase = phase;
+    RunSweep(inputs, protocols, told, [&](const RunSpec&, RunOutput&& out) {
       files.Write(out);
       rows.insert(rows.end(), out.runs.begin(), out.runs.end());
       for (auto& c : out.curves) curves.push_back(std::move(c));
       SummarizeConnectivityRuns(out.connectivity, connectivity);
     });
+    phase("writing the result files");
     files.Commit();
     WriteFileAt(folder.output(), "summary.json", SummaryJson(rows, connectivity));
     if (config.outputs.figures) {
+      phase("figures: writing their data (the deployment's confusion matrix, descriptors, PR curves)");
       WriteFigureData(dir, FigureData{&inputs.deployment.descriptors, &inputs.training, &curves,
                                       config.evaluation.suppression_frames});
-      DrawFigures(dir, VariantLabels(config.network), std::cerr, FigureLog::kGone);  // a failed run removes its folder, logs and all
+      // A line as each figure starts: one may take most of the time (the confusion matrix of a
+      // long team's frames).
+      const FigureProgress drawing = [&phase](const std::string& name, std::size_t before, std::size_t total) {
+        phase("figures " + std::to_string(before + 1) + "/" + std::to_string(total) + ": drawing " + name + ".png");
+      };
+      // a failed run removes its folder, logs and all
+      DrawFigures(dir, VariantLabels(config.network), std::cerr, FigureLog::kGone, drawing);
     }
     folder.Commit();
   } catch (const std::invalid_argument& e) {
