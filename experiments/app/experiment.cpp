@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -181,7 +182,11 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
   }
   CheckOutputFolder(out_dir);  // before the inputs load: a refused --out fails at once
   CheckSizeBeforeLoading(config, origin, options);
-  SharedInputs inputs = LoadSharedInputs(config, origin, BowProgress(options));
+  // The steps other than the runs on stderr as each starts (issue 48: 6.6 s of silence before the
+  // first run's line, then 10 s of figures), under the same switch as the runs' progress.
+  const PhaseLog phases(options.progress);
+  const auto phase = [&phases](const std::string& what) { phases.Start(what); };
+  SharedInputs inputs = LoadSharedInputs(config, origin, BowProgress(options), phase);
   CheckSweepInputs(inputs, origin, options.allow_large, options.threads);  // what would fail a run fails here, before anything is written
   // Everything is written into folder.dir() and moved to out_dir only when all succeeded.
   ResultFolder folder(out_dir);
@@ -205,18 +210,28 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
                    mac, teams);
     std::vector<PrCurve> curves;
     std::vector<RunConnectivity> connectivity;  // one per simulated run that tracked it, in spec order
-    RunSweep(inputs, protocols, options, [&](const RunSpec&, RunOutput&& out) {
+    ExecutorOptions told = options;
+    told.phase = phase;
+    RunSweep(inputs, protocols, told, [&](const RunSpec&, RunOutput&& out) {
       files.Write(out);
       rows.insert(rows.end(), out.runs.begin(), out.runs.end());
       for (auto& c : out.curves) curves.push_back(std::move(c));
       SummarizeConnectivityRuns(out.connectivity, connectivity);
     });
+    phase("writing the result files");
     files.Commit();
     WriteFileAt(folder.output(), "summary.json", SummaryJson(rows, connectivity));
     if (config.outputs.figures) {
+      phase("figures: writing their data (the deployment's confusion matrix, descriptors, PR curves)");
       WriteFigureData(dir, FigureData{&inputs.deployment.descriptors, &inputs.training, &curves,
                                       config.evaluation.suppression_frames});
-      DrawFigures(dir, VariantLabels(config.network), std::cerr, FigureLog::kGone);  // a failed run removes its folder, logs and all
+      // A line as each figure starts: one may take most of the time (the confusion matrix of a
+      // long team's frames).
+      const FigureProgress drawing = [&phase](const std::string& name, std::size_t before, std::size_t total) {
+        phase("figures " + std::to_string(before + 1) + "/" + std::to_string(total) + ": drawing " + name + ".png");
+      };
+      // a failed run removes its folder, logs and all
+      DrawFigures(dir, VariantLabels(config.network), std::cerr, FigureLog::kGone, drawing);
     }
     folder.Commit();
   } catch (const std::invalid_argument& e) {
@@ -253,7 +268,14 @@ std::set<int> ShownRobots(const std::vector<RunResult>& rows) {
 }  // namespace
 
 void PrintSummaryTable(const std::vector<RunResult>& rows, std::ostream& out) {
-  struct Acc { std::string label; int robots; int n = 0; std::vector<double> values[5]; };
+  // lowest_reference: the lowest reference AUC of the group's runs (NaN when none has one).
+  struct Acc {
+    std::string label;
+    int robots;
+    int n = 0;
+    std::vector<double> values[5];
+    double lowest_reference = std::numeric_limits<double>::quiet_NaN();
+  };
   std::vector<Acc> groups;
   std::map<std::string, std::size_t> index;
   const std::set<int> shown = ShownRobots(rows);
@@ -266,6 +288,7 @@ void PrintSummaryTable(const std::vector<RunResult>& rows, std::ostream& out) {
     if (added) groups.push_back(Acc{.label = label, .robots = r.key.robots, .n = 0, .values = {}});
     Acc& a = groups[it->second];
     ++a.n;
+    if (!std::isnan(r.auc_reference) && !(a.lowest_reference <= r.auc_reference)) a.lowest_reference = r.auc_reference;
     const double v[5] = {r.auc, r.relative_auc, r.worst_balance_ratio, r.bytes_per_query,
                          r.mean_latency_ms};
     for (int i = 0; i < 5; ++i) a.values[i].push_back(v[i]);
@@ -280,9 +303,15 @@ void PrintSummaryTable(const std::vector<RunResult>& rows, std::ostream& out) {
   constexpr int kDecimals[5] = {3, 3, 2, 0, 3};
   std::vector<std::vector<std::string>> table;  // one row per group: label, robots, runs, 5 metrics
   table.push_back({"protocol strategy", "robots", "runs", "auc", "rel_auc", "worst_bal", "bytes/query", "latency_ms"});
+  // A relative AUC over a reference that found almost nothing is marked, with a footnote.
+  double lowest_marked = std::numeric_limits<double>::quiet_NaN();
   for (const Acc& a : groups) {
     std::vector<std::string> row{a.label, std::to_string(a.robots), std::to_string(a.n)};
     for (int i = 0; i < 5; ++i) row.push_back(cell(a.values[i], kDecimals[i]));
+    if (a.lowest_reference < kLowReferenceAuc) {
+      row[4] += "*";
+      if (!(lowest_marked <= a.lowest_reference)) lowest_marked = a.lowest_reference;
+    }
     table.push_back(std::move(row));
   }
   // Every column as wide as its widest cell (at least its usual width, so that short tables keep
@@ -295,6 +324,11 @@ void PrintSummaryTable(const std::vector<RunResult>& rows, std::ostream& out) {
     std::string line = row[0] + std::string(width[0] - row[0].size(), ' ');
     for (std::size_t c = 1; c < row.size(); ++c) line += std::string(width[c] - row[c].size() + 1, ' ') + row[c];
     out << line << '\n';
+  }
+  if (!std::isnan(lowest_marked)) {
+    out << "* rel_auc over a reference AUC below " << Cell(kLowReferenceAuc, 2) << " in a run (lowest "
+        << Cell(lowest_marked, 3) << ", runs.csv auc_reference): its reference found almost nothing, the ratio "
+        << "says little (docs/outputs.md)\n";
   }
 }
 

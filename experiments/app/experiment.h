@@ -25,7 +25,12 @@ std::vector<RunResult> RunExperiment(const ExperimentConfig& config, const std::
                                      const ExecutorOptions& options, std::ostream& summary);
 
 // The table printed at the end: per protocol, strategy, network and a few robot counts, the
-// means of the main metrics.
+// means of the main metrics. A rel_auc cell of a group one of whose runs has a reference AUC
+// (auc_reference: the centralized search's, or the run's broadcast) below kLowReferenceAuc ends
+// in '*' ("-*" when no run has a ratio: a reference of AUC 0), and a line under the table gives
+// the lowest such reference AUC and the threshold: a ratio to a reference that found almost
+// nothing says little (docs/outputs.md, "A relative AUC whose reference found almost nothing").
+inline constexpr double kLowReferenceAuc = 0.1;
 void PrintSummaryTable(const std::vector<RunResult>& rows, std::ostream& out);
 
 }  // namespace dvpr

@@ -6,6 +6,7 @@
 #include <functional>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 #include "experiments/figures/figures_contention.h"
 #include "experiments/figures/figures_radio.h"
@@ -191,7 +192,7 @@ void AddTrafficFigures(const fs::path& out_dir, const fs::path& data, const std:
 }  // namespace
 
 std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::span<const NetworkLabel> networks, std::ostream& log,
-                                  FigureLog logs) {
+                                  FigureLog logs, const FigureProgress& progress) {
   std::vector<RunResult> rows = ReadRunsCsv(out_dir / "runs.csv");
   LabelNetworks(rows, networks, out_dir / "runs.csv");
   const fs::path fig = out_dir / "figures";
@@ -225,37 +226,42 @@ std::vector<fs::path> DrawFigures(const fs::path& out_dir, std::span<const Netwo
     log << "dvpr: figures not drawn: gnuplot is not installed (scripts/setup.sh installs it)\n";
     return {};
   }
-  std::vector<fs::path> drawn;
-  std::string failed;  // the first figure that was not drawn; the others are still tried
-  int failures = 0;
-  const auto draw = [&](const std::string& name, const auto& script) {
-    const fs::path png = fig / (name + ".png");
-    try {
-      Draw(*gnuplot, data, png, name, script, logs);
-      drawn.push_back(png);
-    } catch (const std::runtime_error& e) {
-      if (failures++ == 0) failed = e.what();
-    }
-  };
   // The notes of skipped figures follow the drawing, and only when every figure was drawn: before
   // an error they would bury it.
   std::string skipped;
-  for (const Figure& f : figures) {
+  std::vector<Figure> to_draw;
+  for (Figure& f : figures) {
     if (!f.available) {
       skipped += "dvpr: figure " + f.name + ".png skipped (" + f.missing + ")\n";
       continue;
     }
-    draw(f.name, f.script);
+    to_draw.push_back(std::move(f));
   }
   // Figure 9 only where bag-of-words ran (no "skipped" line elsewhere).
-  if (WriteBowComparisonData(out_dir, data, rows)) draw("bow_comparison", BowComparisonScript);
+  if (WriteBowComparisonData(out_dir, data, rows)) to_draw.push_back({"bow_comparison", true, BowComparisonScript, ""});
   // contention.png only where a variant contends for its medium (figures_contention.h).
   if (const std::optional<FigureScript> f = WriteContentionFigure(data, TabulateTraffic(rows))) {
-    draw("contention", [f](const fs::path&, const fs::path& png) { return Preamble(png, f->width, f->height) + f->body; });
+    to_draw.push_back({"contention", true,
+                       [f](const fs::path&, const fs::path& png) { return Preamble(png, f->width, f->height) + f->body; },
+                       ""});
   }
   // The radio's figures only where the results have them (figures_radio.h).
   for (const auto& [name, f] : RadioFigures(out_dir, data, rows)) {
-    draw(name, [f](const fs::path&, const fs::path& png) { return Preamble(png, f.width, f.height) + f.body; });
+    to_draw.push_back(
+        {name, true, [f](const fs::path&, const fs::path& png) { return Preamble(png, f.width, f.height) + f.body; }, ""});
+  }
+  std::vector<fs::path> drawn;
+  std::string failed;  // the first figure that was not drawn; the others are still tried
+  int failures = 0;
+  for (std::size_t i = 0; i < to_draw.size(); ++i) {
+    const fs::path png = fig / (to_draw[i].name + ".png");
+    if (progress) progress(to_draw[i].name, i, to_draw.size());
+    try {
+      Draw(*gnuplot, data, png, to_draw[i].name, to_draw[i].script, logs);
+      drawn.push_back(png);
+    } catch (const std::runtime_error& e) {
+      if (failures++ == 0) failed = e.what();
+    }
   }
   if (failures > 0) {
     throw std::runtime_error(failed + (failures > 1 ? " (and " + std::to_string(failures - 1) + " more figures)" : ""));

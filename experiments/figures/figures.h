@@ -26,7 +26,9 @@
 //                            best; drawn only when the folder has bow.csv
 //   13 connectivity.png, radio_range.png  the radio's (figures_radio.h): drawn only when the
 //                            folder has connectivity.csv, or radio variants of two or more ranges
+#include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <ostream>
 #include <span>
 #include <string>
@@ -128,9 +130,11 @@ inline constexpr int kSeedGlobalQueryBytes = 512;
 // draw (gnuplot_run.h) is an error: the others are still drawn, then std::runtime_error names
 // the first that failed (and its log when `logs` keeps it); its earlier PNG stays as it was, and
 // the notes of skipped figures are not written (they would bury the error). Returns the PNGs
-// written.
+// written. `progress`, if set, hears of each figure as its drawing starts: its name, how many were
+// drawn (or failed) before it, and how many are to be drawn.
+using FigureProgress = std::function<void(const std::string& name, std::size_t before, std::size_t total)>;
 std::vector<std::filesystem::path> DrawFigures(const std::filesystem::path& out_dir,
                                                std::span<const NetworkLabel> networks, std::ostream& log,
-                                               FigureLog logs = FigureLog::kKept);
+                                               FigureLog logs = FigureLog::kKept, const FigureProgress& progress = {});
 
 }  // namespace dvpr

@@ -177,7 +177,7 @@ void MpiRunDistributor::Gather(const std::vector<RunSpec>& specs,
                                const std::function<void(const RunSpec&, RunOutput&&)>& consume,
                                const ExecutorOptions& options) const {
   RankShare share(Share(specs), run_functions, options);
-  RunProgress progress(specs.size(), options.progress);
+  RunProgress progress(RunCosts(specs, options), options.progress, "runs", std::chrono::steady_clock::now());
   std::map<std::size_t, RunOutput> waiting;  // done, not yet in line
   const auto size = static_cast<std::size_t>(world_.size());
   std::size_t next = 0;
@@ -198,11 +198,13 @@ void MpiRunDistributor::Gather(const std::vector<RunSpec>& specs,
           throw std::logic_error("rank " + std::to_string(m->source) + " sent run " + std::to_string(out.index) +
                                  ", not one of its share");
         }
+        progress.Finished(out.index);
         waiting.emplace(out.index, std::move(out.output));
       }
     }
     try {
       if (std::optional<IndexedOutput> out = share.Next(std::chrono::milliseconds(busy ? 0 : 1))) {
+        progress.Finished(out->index);
         waiting.emplace(out->index, std::move(out->output));
       } else if (!busy && share.finished()) {
         std::this_thread::sleep_for(std::chrono::milliseconds(1));  // only other ranks to wait for
@@ -213,7 +215,7 @@ void MpiRunDistributor::Gather(const std::vector<RunSpec>& specs,
     for (auto it = waiting.find(next); it != waiting.end(); it = waiting.find(next)) {
       consume(specs[next], std::move(it->second));
       waiting.erase(it);
-      progress.Done(++next);
+      ++next;
     }
   }
 }

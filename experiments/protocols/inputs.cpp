@@ -124,12 +124,21 @@ BowData LoadBow(const ExperimentConfig& c, const std::string& origin, const Data
   return bow;
 }
 
+// "generating" a synthetic set, "reading" one from files.
+std::string Making(bool files) { return files ? "reading" : "generating"; }
+
 }  // namespace
 
 SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string& origin,
-                              const FrameProgress& bow_progress) {
+                              const FrameProgress& bow_progress, const PhaseNotice& phase) {
+  const auto tell = [&phase](const std::string& what) {
+    if (phase) phase("inputs: " + what);
+  };
   SharedInputs in;
   in.config = &config;
+  const DatasetConfig& d = config.dataset;
+  const bool read = d.source == DatasetSource::kFiles && d.trajectories.empty();  // as LoadDeployment
+  tell(Making(read) + " the deployment's descriptors" + (!read && d.Planned() ? " (every robot's frames of its plan)" : ""));
   in.deployment = LoadDeployment(config, origin);
   in.bow = LoadBow(config, origin, in.deployment, bow_progress);
   const int largest = *std::max_element(config.sweep.robots.begin(), config.sweep.robots.end());
@@ -138,6 +147,10 @@ SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string&
                       std::to_string(in.deployment.size()) + " frames (dataset.frames)");
   }
   if (AnyProtocol(config.sweep.protocols, &ProtocolTraits::sends_messages)) CheckDescriptorsFitTheWire(in.deployment, origin);
+  const TrainingConfig& t = config.training;
+  if (t.run_centroids.centroids_pattern.empty() && t.source != TrainingSource::kDeployment) {
+    tell(Making(t.source == TrainingSource::kFiles) + " the training descriptors");
+  }
   in.training = LoadTraining(config, in.deployment, origin);
   const RunCentroidParams& centroids = config.training.run_centroids;
   const auto k = static_cast<Eigen::Index>(largest) * centroids.clusters_per_robot;

@@ -1,5 +1,6 @@
 #include "experiments/sweep/run_executor.h"
 
+#include <chrono>
 #include <cstdint>
 #include <stdexcept>
 #include <utility>
@@ -56,18 +57,24 @@ RunOutput RunOne(const RunSpec& spec, const std::map<std::string, RunFunction>& 
 
 }  // namespace
 
+std::vector<double> RunCosts(const std::vector<RunSpec>& specs, const ExecutorOptions& options) {
+  if (options.run_seconds.size() == specs.size()) return options.run_seconds;
+  return std::vector<double>(specs.size(), 1.0);
+}
+
 void ExecuteRuns(const std::vector<RunSpec>& specs,
                  const std::map<std::string, RunFunction>& run_functions,
                  const std::function<void(const RunSpec&, RunOutput&&)>& consume,
                  const ExecutorOptions& options) {
-  RunProgress progress(specs.size(), options.progress);
+  RunProgress progress(RunCosts(specs, options), options.progress, "runs", std::chrono::steady_clock::now());
   ParallelForInOrder(
       static_cast<std::int64_t>(specs.size()), options.threads,
-      [&](std::int64_t i) { return RunOne(specs[static_cast<std::size_t>(i)], run_functions); },
-      [&](std::int64_t i, RunOutput&& out) {
-        consume(specs[static_cast<std::size_t>(i)], std::move(out));
-        progress.Done(static_cast<std::size_t>(i) + 1);
-      });
+      [&](std::int64_t i) {
+        RunOutput out = RunOne(specs[static_cast<std::size_t>(i)], run_functions);
+        progress.Finished(static_cast<std::size_t>(i));
+        return out;
+      },
+      [&](std::int64_t i, RunOutput&& out) { consume(specs[static_cast<std::size_t>(i)], std::move(out)); });
 }
 
 }  // namespace dvpr

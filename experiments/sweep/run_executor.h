@@ -45,18 +45,28 @@ struct ExecutorOptions {
   const RunDistributor* distributor = nullptr;
   // dvpr run --allow-large: run a sweep CheckSweepSize (sweep_size.h) would refuse.
   bool allow_large = false;
+  // The modelled cost of each spec, by index (RunSeconds, sweep_size.h), which the progress's
+  // estimate weighs the runs done and left by; empty: every run alike. RunSweep fills it.
+  std::vector<double> run_seconds = {};
+  // Told as a step of the sweep other than its runs starts (a protocol's work done once for all
+  // its runs, RunSweep), for the progress; empty: not told.
+  std::function<void(const std::string& what)> phase = {};
 };
 
 // Calls run_functions.at(spec.protocol)(spec) for every spec on the ParallelFor pool
 // (experiments/domain/parallel/parallel_for_in_order.h), and consume() in spec order as soon as each
 // output and all before it are done (so memory holds only the outputs waiting for a slower
-// earlier run); consume is never called on two threads at once. The first exception (from a
+// earlier run); consume is never called on two threads at once. The progress counts a run as it
+// finishes, in whatever order. The first exception (from a
 // run, with the run named, or from consume) stops new runs and is rethrown after the workers
 // have joined.
 void ExecuteRuns(const std::vector<RunSpec>& specs,
                  const std::map<std::string, RunFunction>& run_functions,
                  const std::function<void(const RunSpec&, RunOutput&&)>& consume,
                  const ExecutorOptions& options = {});
+
+// options.run_seconds when it has a cost for each spec, else 1 for each (the progress's weights).
+std::vector<double> RunCosts(const std::vector<RunSpec>& specs, const ExecutorOptions& options);
 
 // "paper n=5 run 3" / "sim point_to_point 10Mbps 2ms n=5 run 3", for messages.
 std::string Describe(const RunSpec& spec);

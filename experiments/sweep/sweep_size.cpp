@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <optional>
 #include <sstream>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "experiments/results/protocol_traits.h"
@@ -137,11 +139,12 @@ struct RunShape {
   std::vector<LinkStateParams> link_state;  // the radio's link_state entries
 };
 
-RunShape ShapeOf(const ExperimentConfig& c, double dim) {
+// A run of any of `protocols` (the sweep's, or one of them).
+RunShape ShapeOf(const ExperimentConfig& c, double dim, const std::vector<std::string>& protocols) {
   RunShape shape;
   shape.config = &c;
-  shape.sim = AnyProtocol(c.sweep.protocols, &ProtocolTraits::simulated_network);
-  shape.paper = AnyProtocol(c.sweep.protocols, &ProtocolTraits::static_evaluation);
+  shape.sim = AnyProtocol(protocols, &ProtocolTraits::simulated_network);
+  shape.paper = AnyProtocol(protocols, &ProtocolTraits::static_evaluation);
   shape.dim = dim;
   shape.strategies = static_cast<double>(c.sweep.strategies.size());
   for (const StrategySpec& s : c.sweep.strategies) {
@@ -343,7 +346,7 @@ SweepSize Estimate(const ExperimentConfig& c, const std::vector<Team>& teams, do
   for (const std::string& p : s.protocols) per_run_and_count += TraitsOf(p).simulated_network ? NetworkVariants(c.network) : 1.0;
   size.runs = static_cast<double>(s.robots.size()) * s.runs * static_cast<double>(s.strategies.size()) *
               per_run_and_count;
-  const RunShape shape = ShapeOf(c, dim);
+  const RunShape shape = ShapeOf(c, dim, c.sweep.protocols);
   double frames = 0;
   for (const Team& t : teams) {
     const RunEstimate e = EstimateRun(shape, t);
@@ -511,6 +514,23 @@ SweepSize EstimateSweepSize(const ExperimentConfig& c, const Dataset& deployment
                                     : SplitTeam(n, static_cast<double>(deployment.size()), deployment.fps));
   }
   return Estimate(c, teams, static_cast<double>(deployment.dim()));
+}
+
+std::vector<double> RunSeconds(const ExperimentConfig& c, const Dataset& deployment, const std::vector<RunSpec>& specs) {
+  std::map<std::pair<std::string, int>, double> seconds;  // by protocol and team
+  std::vector<double> out;
+  out.reserve(specs.size());
+  for (const RunSpec& spec : specs) {
+    auto [it, added] = seconds.try_emplace({spec.protocol, spec.robots}, 0.0);
+    if (added) {
+      const RunShape shape = ShapeOf(c, static_cast<double>(deployment.dim()), {spec.protocol});
+      const Team team = deployment.plan ? PlannedTeam(*deployment.plan, deployment.fps)
+                                        : SplitTeam(spec.robots, static_cast<double>(deployment.size()), deployment.fps);
+      it->second = EstimateRun(shape, team).Seconds();
+    }
+    out.push_back(it->second);
+  }
+  return out;
 }
 
 SweepMachine SweepMachine::ThisOne(int threads) {

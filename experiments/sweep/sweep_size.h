@@ -89,9 +89,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "experiments/config/config.h"
 #include "experiments/domain/data/dataset.h"
+#include "experiments/protocols/run.h"
 
 namespace dvpr {
 
@@ -164,6 +166,14 @@ SweepSize EstimateSweepSize(const ExperimentConfig& config, std::int64_t frames,
 // With the loaded deployment: its frames (every robot's for a planned team) and its plan's
 // mission.
 SweepSize EstimateSweepSize(const ExperimentConfig& config, const Dataset& deployment);
+
+// The model's seconds of each of `specs` (a sweep of `config` on `deployment`): its protocol's
+// terms for its team, on the sweep's costliest network variant and strategy, so that a team
+// costs more than a smaller one where the messages, beacons, heartbeats, retries or
+// connectivity steps grow with the robots. The progress's estimate weighs the runs by them
+// (ExecutorOptions::run_seconds, RunProgress).
+std::vector<double> RunSeconds(const ExperimentConfig& config, const Dataset& deployment,
+                               const std::vector<RunSpec>& specs);
 
 // The machine a sweep is checked against.
 struct SweepMachine {
