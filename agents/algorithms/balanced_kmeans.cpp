@@ -9,7 +9,7 @@ namespace dvpr {
 
 namespace {
 
-using Index = Eigen::Index;
+using EigenIndex = Eigen::Index;
 using DoubleMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 struct Pair {
@@ -43,21 +43,21 @@ void CheckShapes(const DescriptorMatrix& points, const CentroidMatrix& centroids
   }
 }
 
-CentroidMatrix Means(const DescriptorMatrix& points, const std::vector<int>& labels, Index k) {
+CentroidMatrix Means(const DescriptorMatrix& points, const std::vector<int>& labels, EigenIndex k) {
   DoubleMatrix sums = DoubleMatrix::Zero(k, points.cols());
   std::vector<double> counts(static_cast<std::size_t>(k), 0.0);
-  for (Index i = 0; i < points.rows(); ++i) {
+  for (EigenIndex i = 0; i < points.rows(); ++i) {
     const int c = labels[static_cast<std::size_t>(i)];
     sums.row(c) += points.row(i).cast<double>();
     counts[static_cast<std::size_t>(c)] += 1.0;
   }
-  for (Index c = 0; c < k; ++c) sums.row(c) /= counts[static_cast<std::size_t>(c)];  // every size >= 1
+  for (EigenIndex c = 0; c < k; ++c) sums.row(c) /= counts[static_cast<std::size_t>(c)];  // every size >= 1
   return sums.cast<float>();
 }
 
 double Cost(const DescriptorMatrix& points, const CentroidMatrix& centroids, const std::vector<int>& labels) {
   double cost = 0;
-  for (Index i = 0; i < points.rows(); ++i) {
+  for (EigenIndex i = 0; i < points.rows(); ++i) {
     cost += (points.row(i).cast<double>() - centroids.row(labels[static_cast<std::size_t>(i)]).cast<double>())
                 .squaredNorm();
   }
@@ -68,13 +68,13 @@ double Cost(const DescriptorMatrix& points, const CentroidMatrix& centroids, con
 
 std::vector<int> BalancedAssignment(const DescriptorMatrix& points, const CentroidMatrix& centroids) {
   CheckShapes(points, centroids);
-  const Index n = points.rows();
-  const Index k = centroids.rows();
+  const EigenIndex n = points.rows();
+  const EigenIndex k = centroids.rows();
   const DoubleMatrix d = SquaredDistances(points, centroids);
   std::vector<Pair> pairs;
   pairs.reserve(static_cast<std::size_t>(n * k));
-  for (Index i = 0; i < n; ++i) {
-    for (Index c = 0; c < k; ++c) pairs.push_back({d(i, c), static_cast<std::int32_t>(i), static_cast<std::int32_t>(c)});
+  for (EigenIndex i = 0; i < n; ++i) {
+    for (EigenIndex c = 0; c < k; ++c) pairs.push_back({d(i, c), static_cast<std::int32_t>(i), static_cast<std::int32_t>(c)});
   }
   std::sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) {
     if (a.distance != b.distance) return a.distance < b.distance;
@@ -82,14 +82,14 @@ std::vector<int> BalancedAssignment(const DescriptorMatrix& points, const Centro
     return a.cluster < b.cluster;
   });
   std::vector<int> labels(static_cast<std::size_t>(n), -1);
-  std::vector<Index> sizes(static_cast<std::size_t>(k), 0);
-  Index left = n;
+  std::vector<EigenIndex> sizes(static_cast<std::size_t>(k), 0);
+  EigenIndex left = n;
   // Two passes: up to floor(N/k) per cluster, then the N mod k points left, one per cluster.
-  for (const Index capacity : {n / k, n / k + 1}) {
+  for (const EigenIndex capacity : {n / k, n / k + 1}) {
     for (const Pair& p : pairs) {
       if (left == 0) break;
       int& label = labels[static_cast<std::size_t>(p.point)];
-      Index& size = sizes[static_cast<std::size_t>(p.cluster)];
+      EigenIndex& size = sizes[static_cast<std::size_t>(p.cluster)];
       if (label >= 0 || size >= capacity) continue;
       label = p.cluster;
       ++size;

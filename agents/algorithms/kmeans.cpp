@@ -37,24 +37,24 @@ void KMeansParams::Validate() const {
 
 namespace {
 
-using Index = Eigen::Index;
+using EigenIndex = Eigen::Index;
 using SumMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-constexpr Index kBlockRows = 512;  // rows per GEMM block: the block stays in L2 while reduced
+constexpr EigenIndex kBlockRows = 512;  // rows per GEMM block: the block stays in L2 while reduced
 
 struct Points {
   const DescriptorMatrix& x;
   Eigen::VectorXf norms;  // ||x_i||^2
 };
 
-// Index drawn with probability weight[i] / sum(weight); sum > 0.
-Index DrawWeighted(const std::vector<double>& weight, double total, Xoshiro256& rng) {
+// EigenIndex drawn with probability weight[i] / sum(weight); sum > 0.
+EigenIndex DrawWeighted(const std::vector<double>& weight, double total, Xoshiro256& rng) {
   const double target = rng.Uniform() * total;
   double cumulative = 0;
-  Index last_positive = 0;
+  EigenIndex last_positive = 0;
   for (std::size_t i = 0; i < weight.size(); ++i) {
     if (weight[i] <= 0) continue;
     cumulative += weight[i];
-    last_positive = static_cast<Index>(i);
+    last_positive = static_cast<EigenIndex>(i);
     if (cumulative > target) return last_positive;
   }
   return last_positive;  // rounding left target just above the running sum
@@ -64,7 +64,7 @@ Index DrawWeighted(const std::vector<double>& weight, double total, Xoshiro256& 
 void UpdateNearest(const Points& p, const Eigen::RowVectorXf& center, std::vector<double>& nearest) {
   const Eigen::VectorXf dots = p.x * center.transpose();
   const float cn = center.squaredNorm();
-  for (Index i = 0; i < p.x.rows(); ++i) {
+  for (EigenIndex i = 0; i < p.x.rows(); ++i) {
     const double d = std::max(0.0f, p.norms[i] - 2.0f * dots[i] + cn);
     nearest[static_cast<std::size_t>(i)] = std::min(nearest[static_cast<std::size_t>(i)], d);
   }
@@ -73,10 +73,10 @@ void UpdateNearest(const Points& p, const Eigen::RowVectorXf& center, std::vecto
 // k-means++ (Arthur, Vassilvitskii 2007): first centre uniform, each next one drawn with
 // probability proportional to the squared distance to the nearest centre chosen so far.
 CentroidMatrix SeedPlusPlus(const Points& p, int k, Xoshiro256& rng) {
-  const Index n = p.x.rows();
+  const EigenIndex n = p.x.rows();
   CentroidMatrix centers(k, p.x.cols());
   std::vector<double> nearest(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
-  Index chosen = static_cast<Index>(rng.Below(static_cast<std::uint64_t>(n)));
+  EigenIndex chosen = static_cast<EigenIndex>(rng.Below(static_cast<std::uint64_t>(n)));
   for (int c = 0; c < k; ++c) {
     centers.row(c) = p.x.row(chosen);
     if (c + 1 == k) break;
@@ -85,7 +85,7 @@ CentroidMatrix SeedPlusPlus(const Points& p, int k, Xoshiro256& rng) {
     // All points coincide with a centre: any point will do; the duplicate centre's cluster
     // comes out empty and is re-seeded by Lloyd.
     chosen = total > 0 ? DrawWeighted(nearest, total, rng)
-                       : static_cast<Index>(rng.Below(static_cast<std::uint64_t>(n)));
+                       : static_cast<EigenIndex>(rng.Below(static_cast<std::uint64_t>(n)));
   }
   return centers;
 }
@@ -96,9 +96,9 @@ struct Assignment {
   std::vector<double> upper;    // Hamerly: >= distance to the assigned centroid (not squared)
   std::vector<double> lower;    // Hamerly: <= distance to every other centroid
   SumMatrix sums;               // per cluster, sum of its points (double: order-independent enough)
-  std::vector<Index> counts;
+  std::vector<EigenIndex> counts;
   double inertia = 0;
-  Index changed = 0;            // points whose label differs from the previous assignment
+  EigenIndex changed = 0;            // points whose label differs from the previous assignment
 };
 
 // The lowest score (its first index: ties go to the lower centroid) and the second lowest (equal
@@ -112,9 +112,9 @@ struct NearestPair {
   float second_score;
 };
 
-NearestPair NearestTwoScalar(const float* cn, const float* dots, Index k) {
+NearestPair NearestTwoScalar(const float* cn, const float* dots, EigenIndex k) {
   NearestPair n{0, std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity()};
-  for (Index c = 0; c < k; ++c) {
+  for (EigenIndex c = 0; c < k; ++c) {
     const float score = cn[c] - 2.0f * dots[c];
     const bool better = score < n.best_score;  // strict: an equal score keeps the lower index
     n.second_score = better ? n.best_score : std::min(n.second_score, score);
@@ -125,7 +125,7 @@ NearestPair NearestTwoScalar(const float* cn, const float* dots, Index k) {
 }
 
 #if defined(__AVX2__)
-constexpr Index kVectorNearestMax = 64;  // centroids the vector scan takes (8 registers of 8)
+constexpr EigenIndex kVectorNearestMax = 64;  // centroids the vector scan takes (8 registers of 8)
 
 float LowestLane(__m256 v) {
   __m128 m = _mm_min_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
@@ -136,14 +136,14 @@ float LowestLane(__m256 v) {
 // The same pair with 8 scores a step: the minimum of a set does not depend on the order it is
 // taken in (up to the sign of a zero, which no later sum can tell), and the first index holding
 // it is the lowest set bit of the equality mask.
-NearestPair NearestTwo(const float* cn, const float* dots, Index k) {
+NearestPair NearestTwo(const float* cn, const float* dots, EigenIndex k) {
   if (k > kVectorNearestMax) return NearestTwoScalar(cn, dots, k);
   alignas(32) float scores[kVectorNearestMax];
   const __m256 inf = _mm256_set1_ps(std::numeric_limits<float>::infinity());
   const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-  const Index chunks = (k + 7) / 8;
+  const EigenIndex chunks = (k + 7) / 8;
   __m256 low = inf;
-  for (Index j = 0; j < chunks; ++j) {
+  for (EigenIndex j = 0; j < chunks; ++j) {
     const __m256i in = _mm256_cmpgt_epi32(_mm256_set1_epi32(static_cast<int>(k - 8 * j)), lane);
     const __m256 d = _mm256_maskload_ps(dots + 8 * j, in);
     const __m256 score = _mm256_sub_ps(_mm256_maskload_ps(cn + 8 * j, in), _mm256_add_ps(d, d));
@@ -153,7 +153,7 @@ NearestPair NearestTwo(const float* cn, const float* dots, Index k) {
   }
   const __m256 lowest = _mm256_set1_ps(LowestLane(low));
   std::uint64_t at = 0;
-  for (Index j = 0; j < chunks; ++j) {
+  for (EigenIndex j = 0; j < chunks; ++j) {
     const __m256 equal = _mm256_cmp_ps(_mm256_load_ps(scores + 8 * j), lowest, _CMP_EQ_OQ);
     at |= static_cast<std::uint64_t>(static_cast<unsigned>(_mm256_movemask_ps(equal))) << (8 * j);
   }
@@ -161,7 +161,7 @@ NearestPair NearestTwo(const float* cn, const float* dots, Index k) {
   n.best_score = scores[n.best];
   const __m256i best = _mm256_set1_epi32(n.best);
   __m256 second = inf;
-  for (Index j = 0; j < chunks; ++j) {  // every score but the best's
+  for (EigenIndex j = 0; j < chunks; ++j) {  // every score but the best's
     const __m256i index = _mm256_add_epi32(lane, _mm256_set1_epi32(static_cast<int>(8 * j)));
     const __m256 is_best = _mm256_castsi256_ps(_mm256_cmpeq_epi32(index, best));
     second = _mm256_min_ps(second, _mm256_blendv_ps(_mm256_load_ps(scores + 8 * j), inf, is_best));
@@ -170,7 +170,7 @@ NearestPair NearestTwo(const float* cn, const float* dots, Index k) {
   return n;
 }
 #else
-NearestPair NearestTwo(const float* cn, const float* dots, Index k) { return NearestTwoScalar(cn, dots, k); }
+NearestPair NearestTwo(const float* cn, const float* dots, EigenIndex k) { return NearestTwoScalar(cn, dots, k); }
 #endif
 
 // The points of one group (agents/algorithms/kmeans_dots.h), scored with the exact kernel: per lane,
@@ -186,11 +186,11 @@ struct GroupScores {
 #if DVPR_KMEANS_DOTS
 // NearestTwoScalar for each lane of a group's dots, 8 lanes a register, centroid by centroid in
 // index order with the same strict comparison.
-void NearestOfGroup(const float* cn, const float* dots, Index k, NearestPair* out) {
+void NearestOfGroup(const float* cn, const float* dots, EigenIndex k, NearestPair* out) {
   const __m256 inf = _mm256_set1_ps(std::numeric_limits<float>::infinity());
   for (int half = 0; half < kGroupPoints; half += 8) {
     __m256 best = inf, second = inf, best_c = _mm256_setzero_ps();
-    for (Index c = 0; c < k; ++c) {
+    for (EigenIndex c = 0; c < k; ++c) {
       const __m256 d = _mm256_loadu_ps(dots + kGroupPoints * c + half);
       const __m256 score = _mm256_sub_ps(_mm256_set1_ps(cn[c]), _mm256_add_ps(d, d));
       const __m256 better = _mm256_cmp_ps(score, best, _CMP_LT_OQ);
@@ -204,13 +204,13 @@ void NearestOfGroup(const float* cn, const float* dots, Index k, NearestPair* ou
   }
 }
 #else
-void NearestOfGroup(const float*, const float*, Index, NearestPair*) {}
+void NearestOfGroup(const float*, const float*, EigenIndex, NearestPair*) {}
 #endif
 
 // Scores `count` points (rows[0..count), count <= kGroupPoints) into g.nearest.
 void ScoreGroup(const CentroidMatrix& centers, const Eigen::VectorXf& cn, const float* const* rows, int count,
                 GroupScores& g) {
-  const Index k = centers.rows();
+  const EigenIndex k = centers.rows();
   g.dots.resize(static_cast<std::size_t>(k * kGroupPoints));
   TransposeGroup(rows, count, centers.cols(), g.xt);
   GroupDots(g.xt, centers.cols(), centers.data(), k, g.dots.data());
@@ -221,18 +221,18 @@ void ScoreGroup(const CentroidMatrix& centers, const Eigen::VectorXf& cn, const 
 // says so for the build and the shapes; the first points are checked against Eigen on this
 // machine (its caches size Eigen's blocks).
 bool GroupScoresMatchEigen(const DescriptorMatrix& x, const CentroidMatrix& centers, GroupScores& g) {
-  const Index k = centers.rows();
-  const Index n = std::min<Index>(kGroupPoints, x.rows());
+  const EigenIndex k = centers.rows();
+  const EigenIndex n = std::min<EigenIndex>(kGroupPoints, x.rows());
   if (!DotsReplicable(k, x.cols()) || n < 4) return false;
   DistanceMatrix want(n, k);
   want.noalias() = x.topRows(n) * centers.transpose();
   const float* rows[kGroupPoints];
-  for (Index r = 0; r < n; ++r) rows[r] = x.row(r).data();
+  for (EigenIndex r = 0; r < n; ++r) rows[r] = x.row(r).data();
   g.dots.resize(static_cast<std::size_t>(k * kGroupPoints));
   TransposeGroup(rows, static_cast<int>(n), x.cols(), g.xt);
   GroupDots(g.xt, x.cols(), centers.data(), k, g.dots.data());
-  for (Index r = 0; r < n / 4 * 4; ++r) {
-    for (Index c = 0; c < k; ++c) {
+  for (EigenIndex r = 0; r < n / 4 * 4; ++r) {
+    for (EigenIndex c = 0; c < k; ++c) {
       if (std::memcmp(&g.dots[static_cast<std::size_t>(kGroupPoints * c + r)], &want(r, c), sizeof(float)) != 0) {
         return false;
       }
@@ -242,7 +242,7 @@ bool GroupScoresMatchEigen(const DescriptorMatrix& x, const CentroidMatrix& cent
 }
 
 // Point i's nearest centroid in a full pass: its label, distance, bounds and sums.
-void AssignPoint(const Points& p, Index i, const NearestPair& n, Assignment& a) {
+void AssignPoint(const Points& p, EigenIndex i, const NearestPair& n, Assignment& a) {
   auto& label = a.labels[static_cast<std::size_t>(i)];
   a.changed += (label != n.best);
   label = n.best;
@@ -261,29 +261,29 @@ void AssignPoint(const Points& p, Index i, const NearestPair& n, Assignment& a) 
 // (rows mod 4) by Eigen with 4 points before them (which puts them on their path in the block's
 // product), reduced while in cache.
 void Assign(const Points& p, const CentroidMatrix& centers, Assignment& a, GroupScores& g) {
-  const Index n = p.x.rows();
-  const Index k = centers.rows();
+  const EigenIndex n = p.x.rows();
+  const EigenIndex k = centers.rows();
   const Eigen::VectorXf cn = SquaredNorms(centers);
   a.sums.setZero(k, p.x.cols());
   a.counts.assign(static_cast<std::size_t>(k), 0);
   a.inertia = 0;
   a.changed = 0;
   DistanceMatrix dots;
-  for (Index first = 0; first < n; first += kBlockRows) {
-    const Index rows = std::min(kBlockRows, n - first);
-    const Index grouped = g.on ? rows / 4 * 4 : 0;
-    for (Index r = 0; r < grouped; r += kGroupPoints) {
-      const int count = static_cast<int>(std::min<Index>(kGroupPoints, grouped - r));
+  for (EigenIndex first = 0; first < n; first += kBlockRows) {
+    const EigenIndex rows = std::min(kBlockRows, n - first);
+    const EigenIndex grouped = g.on ? rows / 4 * 4 : 0;
+    for (EigenIndex r = 0; r < grouped; r += kGroupPoints) {
+      const int count = static_cast<int>(std::min<EigenIndex>(kGroupPoints, grouped - r));
       const float* row[kGroupPoints];
       for (int l = 0; l < count; ++l) row[l] = p.x.row(first + r + l).data();
       ScoreGroup(centers, cn, row, count, g);
       for (int l = 0; l < count; ++l) AssignPoint(p, first + r + l, g.nearest[l], a);
     }
     if (grouped == rows) continue;
-    const Index from = grouped == 0 ? 0 : grouped - 4;
+    const EigenIndex from = grouped == 0 ? 0 : grouped - 4;
     dots.resize(rows - from, k);
     dots.noalias() = p.x.middleRows(first + from, rows - from) * centers.transpose();
-    for (Index r = grouped; r < rows; ++r) AssignPoint(p, first + r, NearestTwo(cn.data(), dots.row(r - from).data(), k), a);
+    for (EigenIndex r = grouped; r < rows; ++r) AssignPoint(p, first + r, NearestTwo(cn.data(), dots.row(r - from).data(), k), a);
   }
 }
 
@@ -294,9 +294,9 @@ int RelocateEmpty(const Points& p, Assignment& a) {
     if (a.counts[c] == 0) empty.push_back(static_cast<int>(c));
   }
   if (empty.empty()) return 0;
-  std::vector<Index> order(a.labels.size());
-  std::iota(order.begin(), order.end(), Index{0});
-  std::stable_sort(order.begin(), order.end(), [&](Index l, Index r) {
+  std::vector<EigenIndex> order(a.labels.size());
+  std::iota(order.begin(), order.end(), EigenIndex{0});
+  std::stable_sort(order.begin(), order.end(), [&](EigenIndex l, EigenIndex r) {
     return a.distance[static_cast<std::size_t>(l)] > a.distance[static_cast<std::size_t>(r)];
   });
   std::size_t next = 0;
@@ -306,7 +306,7 @@ int RelocateEmpty(const Points& p, Assignment& a) {
       ++next;  // taking the only point of a cluster would just move the hole
     }
     if (next == order.size()) break;  // fewer distinct points than clusters: stays empty
-    const Index i = order[next++];
+    const EigenIndex i = order[next++];
     auto& label = a.labels[static_cast<std::size_t>(i)];
     a.sums.row(label) -= p.x.row(i).cast<double>();
     --a.counts[static_cast<std::size_t>(label)];
@@ -323,9 +323,9 @@ int RelocateEmpty(const Points& p, Assignment& a) {
 double MeanVariance(const DescriptorMatrix& x) {
   Eigen::RowVectorXd sum = Eigen::RowVectorXd::Zero(x.cols());
   Eigen::RowVectorXd sum_sq = Eigen::RowVectorXd::Zero(x.cols());
-  for (Index i = 0; i < x.rows(); ++i) {
+  for (EigenIndex i = 0; i < x.rows(); ++i) {
     const float* row = x.row(i).data();
-    for (Index j = 0; j < x.cols(); ++j) {
+    for (EigenIndex j = 0; j < x.cols(); ++j) {
       const double v = row[j];
       sum[j] += v;
       sum_sq[j] += v * v;
@@ -338,10 +338,10 @@ double MeanVariance(const DescriptorMatrix& x) {
 // Half the distance from each centroid to its nearest other centroid: a point closer than that
 // to its own centroid cannot be closer to any other (Hamerly 2010).
 std::vector<double> HalfGaps(const CentroidMatrix& centers) {
-  const Index k = centers.rows();
+  const EigenIndex k = centers.rows();
   std::vector<double> gap(static_cast<std::size_t>(k), std::numeric_limits<double>::infinity());
-  for (Index c = 0; c < k; ++c) {
-    for (Index o = 0; o < k; ++o) {
+  for (EigenIndex c = 0; c < k; ++c) {
+    for (EigenIndex o = 0; o < k; ++o) {
       if (o == c) continue;
       const double d = std::sqrt(static_cast<double>((centers.row(c) - centers.row(o)).squaredNorm()));
       gap[static_cast<std::size_t>(c)] = std::min(gap[static_cast<std::size_t>(c)], 0.5 * d);
@@ -355,14 +355,14 @@ std::vector<double> HalfGaps(const CentroidMatrix& centers) {
 // product and its rounding are unchanged: Eigen's GEMM sums a row differently depending on where
 // it falls in its block (agents/algorithms/kmeans_dots.h), and one such row decides a label in the paper sweep.
 struct Gathered {
-  std::vector<Index> index;   // kBlockRows slots; the first `size` are in use
-  Index size = 0;
+  std::vector<EigenIndex> index;   // kBlockRows slots; the first `size` are in use
+  EigenIndex size = 0;
   DescriptorMatrix rows;      // the rows of an Eigen product, copied together
 };
 
 // Gathered point i (its row `x`) scored nearest `n`: Hamerly's bounds from the two scores, and
 // the move, with the sums, if its centroid changed.
-void TakeNearest(const Points& p, Index i, const float* x, const NearestPair& n, Assignment& a) {
+void TakeNearest(const Points& p, EigenIndex i, const float* x, const NearestPair& n, Assignment& a) {
   const auto ui = static_cast<std::size_t>(i);
   a.upper[ui] = std::sqrt(static_cast<double>(std::max(0.0f, p.norms[i] + n.best_score)));
   a.lower[ui] = std::sqrt(static_cast<double>(std::max(0.0f, p.norms[i] + n.second_score)));
@@ -383,23 +383,23 @@ void TakeNearest(const Points& p, Index i, const float* x, const NearestPair& n,
 // The rows are read where they are: the pass has just measured them, so they are in cache.
 void ReassignGathered(const Points& p, const CentroidMatrix& centers, const Eigen::VectorXf& cn,
                       Gathered& g, DistanceMatrix& dots, GroupScores& s, Assignment& a) {
-  const Index k = centers.rows();
-  const Index grouped = s.on ? g.size / 4 * 4 : 0;
-  for (Index r = 0; r < grouped; r += kGroupPoints) {
-    const int count = static_cast<int>(std::min<Index>(kGroupPoints, grouped - r));
+  const EigenIndex k = centers.rows();
+  const EigenIndex grouped = s.on ? g.size / 4 * 4 : 0;
+  for (EigenIndex r = 0; r < grouped; r += kGroupPoints) {
+    const int count = static_cast<int>(std::min<EigenIndex>(kGroupPoints, grouped - r));
     const float* row[kGroupPoints];
     for (int l = 0; l < count; ++l) row[l] = p.x.row(g.index[static_cast<std::size_t>(r + l)]).data();
     ScoreGroup(centers, cn, row, count, s);
     for (int l = 0; l < count; ++l) TakeNearest(p, g.index[static_cast<std::size_t>(r + l)], row[l], s.nearest[l], a);
   }
   if (grouped < g.size) {
-    const Index from = grouped == 0 ? 0 : grouped - 4;
+    const EigenIndex from = grouped == 0 ? 0 : grouped - 4;
     g.rows.resize(g.size - from, p.x.cols());
-    for (Index r = from; r < g.size; ++r) g.rows.row(r - from) = p.x.row(g.index[static_cast<std::size_t>(r)]);
+    for (EigenIndex r = from; r < g.size; ++r) g.rows.row(r - from) = p.x.row(g.index[static_cast<std::size_t>(r)]);
     dots.resize(g.size - from, k);
     dots.noalias() = g.rows * centers.transpose();
-    for (Index r = grouped; r < g.size; ++r) {
-      const Index i = g.index[static_cast<std::size_t>(r)];
+    for (EigenIndex r = grouped; r < g.size; ++r) {
+      const EigenIndex i = g.index[static_cast<std::size_t>(r)];
       TakeNearest(p, i, p.x.row(i).data(), NearestTwo(cn.data(), dots.row(r - from).data(), k), a);
     }
   }
@@ -408,7 +408,7 @@ void ReassignGathered(const Points& p, const CentroidMatrix& centers, const Eige
 
 // Scratch space of the bounded passes, kept across iterations.
 struct BoundsWork {
-  std::vector<Index> suspects;  // points whose stale bounds allow a change (first ones in use)
+  std::vector<EigenIndex> suspects;  // points whose stale bounds allow a change (first ones in use)
   Gathered gathered;
   DistanceMatrix dots;
   std::unique_ptr<GroupScores> scores = std::make_unique<GroupScores>();
@@ -434,7 +434,7 @@ Moves BoundMoves(const std::vector<double>& moved) {
 // Loosens the bounds by the moves and lists the points they no longer clear (upper bound above
 // both the half gap of their centroid and the lower bound), in index order, in one pass; returns
 // how many. `out` holds a slot for every point.
-std::size_t Suspects(const Moves& moves, const std::vector<double>& gap, Assignment& a, std::vector<Index>& out) {
+std::size_t Suspects(const Moves& moves, const std::vector<double>& gap, Assignment& a, std::vector<EigenIndex>& out) {
   const auto n = a.labels.size();
   out.resize(n);
   std::size_t count = 0;
@@ -442,7 +442,7 @@ std::size_t Suspects(const Moves& moves, const std::vector<double>& gap, Assignm
     const auto own = static_cast<std::size_t>(a.labels[i]);
     const double upper = a.upper[i] += moves.own[own];
     const double lower = a.lower[i] -= moves.other[own];
-    out[count] = static_cast<Index>(i);
+    out[count] = static_cast<EigenIndex>(i);
     count += upper > std::max(gap[own], lower);  // no branch: a suspect is a coin flip
   }
   return count;
@@ -451,10 +451,10 @@ std::size_t Suspects(const Moves& moves, const std::vector<double>& gap, Assignm
 // Asks the memory for the rows of point `i` ahead of their use: the points to re-measure are
 // scattered over the 20 000 x 512-byte rows, and their loads, one after the other, were most
 // of the pass's time.
-void PrefetchRow(const DescriptorMatrix& x, Index i) {
+void PrefetchRow(const DescriptorMatrix& x, EigenIndex i) {
   const char* row = reinterpret_cast<const char*>(x.data() + i * x.cols());
-  const Index bytes = x.cols() * static_cast<Index>(sizeof(float));
-  for (Index b = 0; b < bytes; b += 64) __builtin_prefetch(row + b);
+  const EigenIndex bytes = x.cols() * static_cast<EigenIndex>(sizeof(float));
+  for (EigenIndex b = 0; b < bytes; b += 64) __builtin_prefetch(row + b);
 }
 
 // One Hamerly assignment pass: only points whose bounds cannot exclude a change are measured,
@@ -472,7 +472,7 @@ void AssignWithBounds(const Points& p, const CentroidMatrix& centers, const Move
   g.index.resize(kBlockRows);
   for (std::size_t s = 0; s < suspects; ++s) {
     if (s + kAhead < suspects) PrefetchRow(p.x, w.suspects[s + kAhead]);
-    const Index i = w.suspects[s];
+    const EigenIndex i = w.suspects[s];
     const auto ui = static_cast<std::size_t>(i);
     const int own = a.labels[ui];
     const double limit = std::max(gap[static_cast<std::size_t>(own)], a.lower[ui]);
@@ -489,7 +489,7 @@ void AssignWithBounds(const Points& p, const CentroidMatrix& centers, const Move
 
 // Exact squared distance of every point to its own centroid (for the empty-cluster re-seed).
 void OwnDistances(const Points& p, const CentroidMatrix& centers, Assignment& a) {
-  for (Index i = 0; i < p.x.rows(); ++i) {
+  for (EigenIndex i = 0; i < p.x.rows(); ++i) {
     a.distance[static_cast<std::size_t>(i)] =
         (p.x.row(i) - centers.row(a.labels[static_cast<std::size_t>(i)])).squaredNorm();
   }
@@ -531,7 +531,7 @@ KMeansResult Lloyd(const Points& p, const KMeansParams& params, std::uint64_t se
       result.empty_cluster_reseeds += RelocateEmpty(p, a);
     }
     double shift = 0;
-    for (Index c = 0; c < result.centroids.rows(); ++c) {
+    for (EigenIndex c = 0; c < result.centroids.rows(); ++c) {
       const auto count = a.counts[static_cast<std::size_t>(c)];
       moved[static_cast<std::size_t>(c)] = 0;
       if (count == 0) continue;  // no point to move it to: keep the old centroid

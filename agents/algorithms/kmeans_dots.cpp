@@ -6,9 +6,9 @@
 
 namespace dvpr {
 
-using Index = Eigen::Index;
+using EigenIndex = Eigen::Index;
 
-bool DotsReplicable(Index k, Index d) {
+bool DotsReplicable(EigenIndex k, EigenIndex d) {
   return DVPR_KMEANS_DOTS && d % 8 == 0 && d >= 16 && d <= kMaxDotsDim && k >= 2 && k * d * 12 <= 32768;
 }
 
@@ -19,11 +19,11 @@ namespace {
 // Where the chain orders change among the k centroid rows (ChainOf): [0, one) one chain,
 // [one, even_odd) even and odd chains, the rest eight chains.
 struct ChainRanges {
-  Index one;
-  Index even_odd;
+  EigenIndex one;
+  EigenIndex even_odd;
 };
 
-ChainRanges RangesOf(Index k) {
+ChainRanges RangesOf(EigenIndex k) {
   ChainRanges r{0, 0};
   while (r.one < k && ChainOf(r.one, k) == DotChain::kOne) ++r.one;
   r.even_odd = r.one;
@@ -53,10 +53,10 @@ __m256 Finish(__m256 sum) { return _mm256_add_ps(sum, _mm256_setzero_ps()); }
 
 // AVX: the 16 lanes as two registers (low and high). One chain a centroid, C centroids side by side.
 template <int C>
-void OneChain256(const float* xt, Index d, const float* c, float* out) {
+void OneChain256(const float* xt, EigenIndex d, const float* c, float* out) {
   __m256 lo[C], hi[C];
   for (int j = 0; j < C; ++j) lo[j] = _mm256_setzero_ps(), hi[j] = _mm256_setzero_ps();
-  for (Index p = 0; p < d; ++p) {
+  for (EigenIndex p = 0; p < d; ++p) {
     const __m256 xl = _mm256_load_ps(xt + 16 * p);
     const __m256 xh = _mm256_load_ps(xt + 16 * p + 8);
     for (int j = 0; j < C; ++j) {
@@ -73,12 +73,12 @@ void OneChain256(const float* xt, Index d, const float* c, float* out) {
 
 // Even and odd dimensions in two chains, added at the end (Eigen's 1- and half-packet panels).
 template <int C>
-void EvenOdd256(const float* xt, Index d, const float* c, float* out) {
+void EvenOdd256(const float* xt, EigenIndex d, const float* c, float* out) {
   __m256 el[C], eh[C], ol[C], oh[C];
   for (int j = 0; j < C; ++j) {
     el[j] = _mm256_setzero_ps(), eh[j] = el[j], ol[j] = el[j], oh[j] = el[j];
   }
-  for (Index p = 0; p < d; p += 2) {
+  for (EigenIndex p = 0; p < d; p += 2) {
     const __m256 x0l = _mm256_load_ps(xt + 16 * p), x0h = _mm256_load_ps(xt + 16 * p + 8);
     const __m256 x1l = _mm256_load_ps(xt + 16 * p + 16), x1h = _mm256_load_ps(xt + 16 * p + 24);
     for (int j = 0; j < C; ++j) {
@@ -95,10 +95,10 @@ void EvenOdd256(const float* xt, Index d, const float* c, float* out) {
 }
 
 // Eight chains by dimension mod 8 (Eigen's single-row path), for the 8 lanes from xt on.
-void EightHalf256(const float* xt, Index d, const float* c, float* out) {
+void EightHalf256(const float* xt, EigenIndex d, const float* c, float* out) {
   __m256 s[8];
   for (auto& v : s) v = _mm256_setzero_ps();
-  for (Index p = 0; p < d; p += 8) {
+  for (EigenIndex p = 0; p < d; p += 8) {
     for (int m = 0; m < 8; ++m) s[m] = _mm256_fmadd_ps(_mm256_load_ps(xt + 16 * (p + m)), _mm256_broadcast_ss(c + p + m), s[m]);
   }
   const __m256 low = _mm256_add_ps(_mm256_add_ps(s[0], s[2]), _mm256_add_ps(s[4], s[6]));
@@ -106,9 +106,9 @@ void EightHalf256(const float* xt, Index d, const float* c, float* out) {
   _mm256_storeu_ps(out, Finish(_mm256_add_ps(low, high)));
 }
 
-void GroupDots256(const float* xt, Index d, const float* centroids, Index k, float* dots) {
+void GroupDots256(const float* xt, EigenIndex d, const float* centroids, EigenIndex k, float* dots) {
   const ChainRanges r = RangesOf(k);
-  Index c = 0;
+  EigenIndex c = 0;
   for (; c + 4 <= r.one; c += 4) OneChain256<4>(xt, d, centroids + c * d, dots + 16 * c);
   for (; c < r.one; ++c) OneChain256<1>(xt, d, centroids + c * d, dots + 16 * c);
   for (; c + 2 <= r.even_odd; c += 2) EvenOdd256<2>(xt, d, centroids + c * d, dots + 16 * c);
@@ -126,10 +126,10 @@ void GroupDots256(const float* xt, Index d, const float* centroids, Index k, flo
 DVPR_AVX512 __m512 Finish512(__m512 sum) { return _mm512_add_ps(sum, _mm512_setzero_ps()); }
 
 template <int C>
-DVPR_AVX512 void OneChain512(const float* xt, Index d, const float* c, float* out) {
+DVPR_AVX512 void OneChain512(const float* xt, EigenIndex d, const float* c, float* out) {
   __m512 s[C];
   for (int j = 0; j < C; ++j) s[j] = _mm512_setzero_ps();
-  for (Index p = 0; p < d; ++p) {
+  for (EigenIndex p = 0; p < d; ++p) {
     const __m512 x = _mm512_load_ps(xt + 16 * p);
     for (int j = 0; j < C; ++j) s[j] = _mm512_fmadd_ps(x, _mm512_set1_ps(c[j * d + p]), s[j]);
   }
@@ -137,10 +137,10 @@ DVPR_AVX512 void OneChain512(const float* xt, Index d, const float* c, float* ou
 }
 
 template <int C>
-DVPR_AVX512 void EvenOdd512(const float* xt, Index d, const float* c, float* out) {
+DVPR_AVX512 void EvenOdd512(const float* xt, EigenIndex d, const float* c, float* out) {
   __m512 e[C], o[C];
   for (int j = 0; j < C; ++j) e[j] = _mm512_setzero_ps(), o[j] = e[j];
-  for (Index p = 0; p < d; p += 2) {
+  for (EigenIndex p = 0; p < d; p += 2) {
     const __m512 x0 = _mm512_load_ps(xt + 16 * p);
     const __m512 x1 = _mm512_load_ps(xt + 16 * p + 16);
     for (int j = 0; j < C; ++j) {
@@ -151,10 +151,10 @@ DVPR_AVX512 void EvenOdd512(const float* xt, Index d, const float* c, float* out
   for (int j = 0; j < C; ++j) _mm512_storeu_ps(out + 16 * j, Finish512(_mm512_add_ps(e[j], o[j])));
 }
 
-DVPR_AVX512 void Eight512(const float* xt, Index d, const float* c, float* out) {
+DVPR_AVX512 void Eight512(const float* xt, EigenIndex d, const float* c, float* out) {
   __m512 s[8];
   for (auto& v : s) v = _mm512_setzero_ps();
-  for (Index p = 0; p < d; p += 8) {
+  for (EigenIndex p = 0; p < d; p += 8) {
     for (int m = 0; m < 8; ++m) s[m] = _mm512_fmadd_ps(_mm512_load_ps(xt + 16 * (p + m)), _mm512_set1_ps(c[p + m]), s[m]);
   }
   const __m512 low = _mm512_add_ps(_mm512_add_ps(s[0], s[2]), _mm512_add_ps(s[4], s[6]));
@@ -162,9 +162,9 @@ DVPR_AVX512 void Eight512(const float* xt, Index d, const float* c, float* out) 
   _mm512_storeu_ps(out, Finish512(_mm512_add_ps(low, high)));
 }
 
-DVPR_AVX512 void GroupDots512(const float* xt, Index d, const float* centroids, Index k, float* dots) {
+DVPR_AVX512 void GroupDots512(const float* xt, EigenIndex d, const float* centroids, EigenIndex k, float* dots) {
   const ChainRanges r = RangesOf(k);
-  Index c = 0;
+  EigenIndex c = 0;
   for (; c + 8 <= r.one; c += 8) OneChain512<8>(xt, d, centroids + c * d, dots + 16 * c);
   for (; c < r.one; ++c) OneChain512<1>(xt, d, centroids + c * d, dots + 16 * c);
   for (; c + 4 <= r.even_odd; c += 4) EvenOdd512<4>(xt, d, centroids + c * d, dots + 16 * c);
@@ -181,12 +181,12 @@ bool HasAvx512Dots() {
   return has;
 }
 
-void TransposeGroup(const float* const* rows, int count, Index d, float* xt) {
+void TransposeGroup(const float* const* rows, int count, EigenIndex d, float* xt) {
   alignas(32) static constexpr float kZeros[kMaxDotsDim] = {};
   const float* from[kGroupPoints];  // missing points read zeros: no branch in the loop
   for (int lane = 0; lane < kGroupPoints; ++lane) from[lane] = lane < count ? rows[lane] : kZeros;
   for (int half = 0; half < 2; ++half) {
-    for (Index p = 0; p < d; p += 8) {
+    for (EigenIndex p = 0; p < d; p += 8) {
       __m256 r[8];
       for (int lane = 0; lane < 8; ++lane) r[lane] = _mm256_loadu_ps(from[8 * half + lane] + p);
       Transpose8(r);
@@ -195,7 +195,7 @@ void TransposeGroup(const float* const* rows, int count, Index d, float* xt) {
   }
 }
 
-void GroupDots(const float* xt, Index d, const float* centroids, Index k, float* dots, DotsKernel kernel) {
+void GroupDots(const float* xt, EigenIndex d, const float* centroids, EigenIndex k, float* dots, DotsKernel kernel) {
   const bool wide = kernel == DotsKernel::kAvx512 || (kernel == DotsKernel::kBest && HasAvx512Dots());
   if (wide) {
     GroupDots512(xt, d, centroids, k, dots);
@@ -207,8 +207,8 @@ void GroupDots(const float* xt, Index d, const float* centroids, Index k, float*
 #else
 
 bool HasAvx512Dots() { return false; }
-void TransposeGroup(const float* const*, int, Index, float*) {}
-void GroupDots(const float*, Index, const float*, Index, float*, DotsKernel) {}
+void TransposeGroup(const float* const*, int, EigenIndex, float*) {}
+void GroupDots(const float*, EigenIndex, const float*, EigenIndex, float*, DotsKernel) {}
 
 #endif
 

@@ -267,7 +267,6 @@ std::map<std::string, std::string> ReadMeta(const fs::path& path) {
 }
 
 // Names from runs.csv reach the scripts only single-quoted (gnuplot_text.h).
-std::string Quote(const std::string& s) { return GnuplotQuote(s); }
 
 std::string Margins(double l, double r, double b, double t) {
   std::ostringstream s;
@@ -510,8 +509,8 @@ std::string DotPanelScript(const DotPanel& p, const std::vector<int>& ns, bool f
     not_measured << "set label 'not measured' at graph 0.02, first " << row
                  << " left tc rgb '#888888' font ',9'\n";
   }
-  s << Margins(p.left, p.right, 0.53, 0.915) << "set title " << Quote(p.title)
-    << "\nset xlabel " << Quote(p.xlabel) << "\nunset logscale x\nset xtics auto\n"
+  s << Margins(p.left, p.right, 0.53, 0.915) << "set title " << GnuplotQuote(p.title)
+    << "\nset xlabel " << GnuplotQuote(p.xlabel) << "\nunset logscale x\nset xtics auto\n"
     << "set format x '%g'\nunset arrow\nunset label\n" << p.setup << not_measured.str()
     << (first ? "set key at screen 0.015, 0.945 left top vertical box opaque samplen 1 font ',11'\n"
               : "unset key\nset ytics 1 scale 0\nset format y ''\n")
@@ -521,7 +520,7 @@ std::string DotPanelScript(const DotPanel& p, const std::vector<int>& ns, bool f
     const std::string y = ns.size() == 1 ? "1" : (k == 0 ? "($1-0.17)" : "($1+0.17)");
     s << (k ? ", \\\n     " : "") << "'strategy_tradeoff.dat' using " << mean << ':' << y << ':'
       << mean + 1 << ':' << mean + 2 << " with xerrorbars lw 1.5 " << kStyle[k] << " title "
-      << Quote("n = " + std::to_string(ns[k]));
+      << GnuplotQuote("n = " + std::to_string(ns[k]));
   }
   return s.str() + "\n";
 }
@@ -530,7 +529,7 @@ std::string TradeoffDotPanels(const std::map<std::string, std::string>& meta,
                               const std::vector<std::string>& names, const std::vector<int>& ns) {
   std::ostringstream s;
   s << "set yrange [" << names.size() << "-0.5:-0.5]\nset ytics scale 0 font ',11' (";
-  for (std::size_t i = 0; i < names.size(); ++i) s << (i ? ", " : "") << Quote(names[i]) << ' ' << i;
+  for (std::size_t i = 0; i < names.size(); ++i) s << (i ? ", " : "") << GnuplotQuote(names[i]) << ' ' << i;
   s << ")\nset grid xtics lc rgb '#dddddd'\n";
   for (std::size_t i = 0; i < names.size(); i += 2) {
     s << "set object rect from graph 0, first " << i << "-0.5 to graph 1, first " << i
@@ -588,7 +587,7 @@ std::string TradeoffScatter(const fs::path& data_dir, const std::map<std::string
     int leader = 0;
     in >> gx >> gy >> align >> leader >> x >> y;
     std::getline(in >> std::ws, text);
-    s << "set label " << Quote(text) << " at graph " << gx << ", graph " << gy << ' ' << align
+    s << "set label " << GnuplotQuote(text) << " at graph " << gx << ", graph " << gy << ' ' << align
       << " front font ',10'\n";
     if (leader) {
       s << "set arrow from graph " << gx << ", graph " << gy << " to first " << x << ", first "
@@ -637,9 +636,9 @@ std::string SweepPanel(const std::string& file, const std::vector<std::string>& 
                        bool titles) {
   std::string cmd = "plot ";
   for (std::size_t i = 0; i < names.size(); ++i) {
-    cmd += (i ? ", \\\n     " : "") + Quote(file) + " index " + std::to_string(i) +
+    cmd += (i ? ", \\\n     " : "") + GnuplotQuote(file) + " index " + std::to_string(i) +
            " using 1:2 with linespoints lt " + std::to_string(i + 1) + " " +
-           (titles ? "title " + Quote(names[i]) : std::string("notitle"));
+           (titles ? "title " + GnuplotQuote(names[i]) : std::string("notitle"));
   }
   return cmd + "\n";
 }

@@ -21,7 +21,6 @@ using figure_style::NetworkDash;
 using figure_style::NetworkPoint;
 
 // Names from runs.csv reach the scripts only single-quoted (gnuplot_text.h).
-std::string Quote(const std::string& s) { return GnuplotQuote(s); }
 
 std::string Xtics(const std::vector<int>& robots) {
   std::string s = "set xtics (";
@@ -125,7 +124,7 @@ std::string PrRatioPanel(const fs::path& dir, const TrafficTable& t, int key_row
     if (p.empty()) continue;
     dat += Block(NetworkName(t.networks[i]), p);
     plot << ", \\\n     'pr_ratio.dat' index " << block++ << " using 1:2:3:4 with yerrorlines lw 1.5 lc rgb '#222222' dt "
-         << NetworkDash(i) << " pt " << NetworkPoint(i) << " title " << Quote(NetworkName(t.networks[i]));
+         << NetworkDash(i) << " pt " << NetworkPoint(i) << " title " << GnuplotQuote(NetworkName(t.networks[i]));
   }
   for (int n : t.robots) band += std::to_string(n) + " " + std::to_string(n - 1) + " " + std::to_string(n + 1) + "\n";
   WriteFileAtomic(dir / "pr_ratio.dat", dat);
@@ -192,20 +191,20 @@ std::string RolePanel(const fs::path& dir, const TrafficTable& t, int v, std::si
   const std::string file = prefix + "roles_" + std::to_string(i) + ".dat";
   WriteFileAtomic(dir / file, dat);
   std::ostringstream p;
-  p << "set title " << Quote(s) << " tc rgb '" << figure_style::StrategyColour(t.StrategyIndex(s)) << "'\n"
-    << "set label 1 " << Quote("largest n: place recognition " + FormatDouble(100 * pr / total, 0) +
+  p << "set title " << GnuplotQuote(s) << " tc rgb '" << figure_style::StrategyColour(t.StrategyIndex(s)) << "'\n"
+    << "set label 1 " << GnuplotQuote("largest n: place recognition " + FormatDouble(100 * pr / total, 0) +
                                 "%, verification " + FormatDouble(100 * verify / total, 0) + "%")
     << " at graph 0.02, graph 0.95 left front font ',10'\n";
   p << (key ? "set key at screen 0.5, screen 0.02 center bottom horizontal\n" : "unset key\n") << "plot ";
   for (std::size_t k = 0; k < roles.size(); ++k) {
     const auto r = static_cast<std::size_t>(roles[k]);
-    p << (k ? ", \\\n     " : "") << Quote(file) << " using " << k + 2 << (k == 0 ? ":xtic(1)" : "")
+    p << (k ? ", \\\n     " : "") << GnuplotQuote(file) << " using " << k + 2 << (k == 0 ? ":xtic(1)" : "")
       << " lc rgb '" << figure_style::kRoleColours[r] << "' "
-      << (key ? "title " + Quote(kMessageRoleNames[r]) : std::string("notitle"));
+      << (key ? "title " + GnuplotQuote(kMessageRoleNames[r]) : std::string("notitle"));
   }
   // The total's confidence interval over the stack: the bars of a histogram stand at x = 0, 1, ...
   // (drawn as vectors: yerrorbars also put a point on each bar top in a histogram's fill style).
-  p << ", \\\n     " << Quote(file) << " using 0:($" << roles.size() + 2 << "-$" << roles.size() + 3 << "):(0):(2*$" << roles.size() + 3
+  p << ", \\\n     " << GnuplotQuote(file) << " using 0:($" << roles.size() + 2 << "-$" << roles.size() + 3 << "):(0):(2*$" << roles.size() + 3
     << ") with vectors heads size 0.1,90 lw 1.2 lc rgb '#000000' " << (key ? "title '95 % CI of the total'" : "notitle");
   return p.str() + "\nunset label 1\n";
 }
@@ -304,14 +303,14 @@ std::string LoadPanel(const fs::path& dir, const TrafficTable& t, const CsvTable
   WriteFileAtomic(dir / file, dat + "\n\n" + busiest + " " + FormatDouble(most) + "\n");
   const double fair = sum / n;
   std::ostringstream p;
-  p << "set title " << Quote(s) << " tc rgb '" << figure_style::StrategyColour(t.StrategyIndex(s)) << "'\n"
+  p << "set title " << GnuplotQuote(s) << " tc rgb '" << figure_style::StrategyColour(t.StrategyIndex(s)) << "'\n"
     << "set yrange [0:" << FormatDouble(ymax) << "]\nset label 1 "
-    << Quote("busiest: robot " + busiest + ", " + FormatDouble(most / fair, 1) + " x fair share") << " at "
+    << GnuplotQuote("busiest: robot " + busiest + ", " + FormatDouble(most / fair, 1) + " x fair share") << " at "
     << busiest << ", " << FormatDouble(most) << " center offset 0,1 front\n"
-    << "plot " << Quote(file) << " index 0 using 1:2 with boxes " << Colour(t, s)
+    << "plot " << GnuplotQuote(file) << " index 0 using 1:2 with boxes " << Colour(t, s)
     << " fs solid 0.45 title 'searches served', '' index 1 using 1:2 with boxes " << Colour(t, s)
     << " fs solid 1.0 border lc rgb '#000000' title 'busiest robot', " << FormatDouble(fair)
-    << " with lines dt 2 lw 2 lc rgb '#000000' title " << Quote("fair share (all searches / n = " +
+    << " with lines dt 2 lw 2 lc rgb '#000000' title " << GnuplotQuote("fair share (all searches / n = " +
                                                                  FormatDouble(fair, 0) + ")")
     << "\nunset label 1\n";
   return p.str();
@@ -337,7 +336,7 @@ std::optional<FigureScript> WriteRobotLoadFigure(const fs::path& dir, const Traf
   if (const std::string b = BalancedStrategy(t, per_robot, v, n); !b.empty()) shown.push_back(b);
   std::ostringstream s;
   s << "set multiplot layout 1," << shown.size() << " margins 0.07,0.98,0.2,0.86 spacing 0.06 title "
-    << Quote("Searches served per robot, one run (n = " + std::to_string(n) + ", run 0, " +
+    << GnuplotQuote("Searches served per robot, one run (n = " + std::to_string(n) + ", run 0, " +
              NetworkName(*t.Network(v)) + ")") << " font ',13'\n"
     << "set style fill solid 0.5\nset boxwidth 0.8\nset grid ytics\nset xlabel 'robot'\nset ylabel 'searches served'\n"
     << "set xrange [-0.7:" << n - 0.3 << "]\nset xtics 1\nset key below horizontal\n";
@@ -390,7 +389,7 @@ std::optional<FigureScript> WriteMatrixFigure(const fs::path& dir, const Traffic
   }
   std::ostringstream s;
   s << "set multiplot layout 1," << shown.size() << " title "
-    << Quote("Wire kB sent, sender x receiver (colour bar in kB), one run (n = " + std::to_string(n) + ", run 0, " +
+    << GnuplotQuote("Wire kB sent, sender x receiver (colour bar in kB), one run (n = " + std::to_string(n) + ", run 0, " +
              NetworkName(*t.Network(v)) + ")") << " font ',13'\n"
     << "set size ratio -1\nunset grid\nunset key\nset xlabel 'receiver'\nset ylabel 'sender'\n"
     << "set xrange [-0.5:" << n - 0.5 << "]\nset yrange [" << n - 0.5 << ":-0.5]\nset cbrange [0:" << FormatDouble(top)
@@ -399,8 +398,8 @@ std::optional<FigureScript> WriteMatrixFigure(const fs::path& dir, const Traffic
   for (std::size_t i = 0; i < shown.size(); ++i) {
     // One colour bar, beside the last panel: both panels share its range.
     s << (i + 1 == shown.size() ? "set colorbox\nset cblabel 'kB sent'\n" : "unset colorbox\n") << "set title "
-      << Quote(shown[i]) << " tc rgb '" << figure_style::StrategyColour(t.StrategyIndex(shown[i]))
-      << "'\nplot " << Quote(view.data_prefix + "matrix_" + std::to_string(i) + ".dat") << " matrix with image notitle\n";
+      << GnuplotQuote(shown[i]) << " tc rgb '" << figure_style::StrategyColour(t.StrategyIndex(shown[i]))
+      << "'\nplot " << GnuplotQuote(view.data_prefix + "matrix_" + std::to_string(i) + ".dat") << " matrix with image notitle\n";
   }
   return FigureScript{s.str() + "unset multiplot\n", shown.size() == 1 ? 800 : 1400, 650};
 }
@@ -437,7 +436,7 @@ std::string OfferedPanel(const fs::path& dir, const TrafficTable& t, const std::
       dat += Block(title, p);
       plot << (block ? ", \\\n     " : "plot ") << "'offered.dat' index " << block << " using 1:2:3:4 with xyerrorlines lw 2 "
            << Colour(t, s)
-           << " dt " << NetworkDash(i) << " pt " << NetworkPoint(i) << " title " << Quote(title);
+           << " dt " << NetworkDash(i) << " pt " << NetworkPoint(i) << " title " << GnuplotQuote(title);
       ++block;
     }
   }
@@ -479,7 +478,7 @@ std::string LatencyPanel(const fs::path& dir, const TrafficTable& t, const std::
     if (p.empty()) continue;
     dat += Block(s, p);
     plot << (block ? ", \\\n     " : "") << "'latency.dat' index " << block << " using 1:2:3 with yerrorlines lw 2 pt 7 "
-         << Colour(t, s) << " title " << Quote(s);
+         << Colour(t, s) << " title " << GnuplotQuote(s);
     ++block;
   }
   WriteFileAtomic(dir / "latency.dat", dat);

@@ -46,7 +46,7 @@ std::pair<char32_t, std::size_t> DecodeUtf8(std::string_view s, std::size_t i) {
 }
 
 void AppendEscape(std::string& out, unsigned value) {
-  char buf[8];
+  char buf[16];  // \uXXXX; room for 8 digits, as the compiler cannot see that value <= 0xffff
   std::snprintf(buf, sizeof buf, "\\u%04x", value);
   out += buf;
 }

@@ -15,8 +15,6 @@ namespace dvpr {
 
 namespace {
 
-constexpr int kDirFlags = O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC;
-
 struct Entry {
   std::string name;
   bool folder = false;  // a real folder, not a link to one

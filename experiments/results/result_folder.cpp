@@ -17,6 +17,7 @@
 #include "experiments/results/manifest.h"
 #include "experiments/results/mount_point.h"
 #include "experiments/results/result_writers.h"
+#include "experiments/results/safe_output.h"
 #include "experiments/results/termination_cleanup.h"
 
 namespace dvpr {
@@ -25,7 +26,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kDirFlags = O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC;
 constexpr const char* kTemporaryPrefix = ".dvpr-run-";
 
 // The absolute target without a trailing separator ("out/" names the folder "out").

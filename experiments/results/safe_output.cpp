@@ -19,7 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kDirFlags = O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC;
 constexpr int kAttempts = 100;  // EEXIST on a fresh random name: someone is guessing; give up
 
 std::string Why(int error) { return std::strerror(error); }

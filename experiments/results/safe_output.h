@@ -11,6 +11,8 @@
 //   WriteFileAt(dir, "summary.json", text);              // a whole file at once
 //   AtomicFile f(dir, "runs.csv"); f.stream() << ...; f.Commit();   // row by row
 //   ScratchDir s(dir); /* gnuplot writes s.path() / "x.png" */ s.CommitFile("x.png", "x.png");
+#include <fcntl.h>
+
 #include <filesystem>
 #include <memory>
 #include <ostream>
@@ -117,6 +119,9 @@ class ScratchDir {
   std::string name_;
   std::filesystem::path path_;
 };
+
+// How a folder is opened to write in or read below it: never through a symbolic link.
+inline constexpr int kDirFlags = O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC;
 
 // 16 lowercase hex digits from the kernel's random source (getrandom): an unpredictable part of
 // a temporary name.

@@ -34,7 +34,7 @@ std::vector<std::string> Split(const std::string& line) {
 }
 
 // The CSV's header and its rows by column name.
-std::pair<std::string, std::vector<Row>> ReadCsv(const fs::path& file) {
+std::pair<std::string, std::vector<Row>> ReadCsvWithHeader(const fs::path& file) {
   std::stringstream in(Slurp(file));
   std::string header;
   std::getline(in, header);
@@ -83,7 +83,7 @@ class RadioOutputsTest : public ::testing::Test {
 
 TEST_F(RadioOutputsTest, RadioCsvPerRobotAndMessagesAgree) {
   const fs::path out = Run({"network.routing=shortest_path"});
-  const auto [radio_header, radio] = ReadCsv(out / "radio.csv");
+  const auto [radio_header, radio] = ReadCsvWithHeader(out / "radio.csv");
   EXPECT_EQ(radio_header,
             "protocol,strategy,robots,run,delivered_copies,mean_hops,max_hops,relay_transmissions,relay_bytes,"
             "held_copies,routing_transmissions,routing_bytes,dropped_queue_full,dropped_loss,dropped_offline,"
@@ -94,10 +94,10 @@ TEST_F(RadioOutputsTest, RadioCsvPerRobotAndMessagesAgree) {
   ASSERT_EQ(radio.size(), 2u);
   for (const Row& r : radio) EXPECT_EQ(r.at("network_model"), "radio");
 
-  const auto [robot_header, robots] = ReadCsv(out / "per_robot.csv");
+  const auto [robot_header, robots] = ReadCsvWithHeader(out / "per_robot.csv");
   EXPECT_TRUE(EndsWith(robot_header, ",network_name,relay_transmissions,relay_bytes,routing_transmissions,routing_bytes"))
       << robot_header;
-  const auto [message_header, messages] = ReadCsv(out / "messages.csv");
+  const auto [message_header, messages] = ReadCsvWithHeader(out / "messages.csv");
   EXPECT_TRUE(EndsWith(message_header, ",role,hops")) << message_header;
 
   // Per run: what the robots relayed sums to radio.csv's relaying; messages.csv's delivered
@@ -173,9 +173,9 @@ TEST_F(RadioOutputsTest, RadioCsvPerRobotAndMessagesAgree) {
 // DVPR_HELLO and DVPR_TOPOLOGY with the role "other" (messages.csv), and shortest_path sends none.
 TEST_F(RadioOutputsTest, LinkStateBeaconsAreTheRobotsRoutingBytes) {
   const fs::path out = Run({"network.routing=[shortest_path, link_state]"});
-  const auto [radio_header, radio] = ReadCsv(out / "radio.csv");
+  const auto [radio_header, radio] = ReadCsvWithHeader(out / "radio.csv");
   ASSERT_EQ(radio.size(), 4u);  // two strategies on two radio variants
-  const auto [robot_header, robots] = ReadCsv(out / "per_robot.csv");
+  const auto [robot_header, robots] = ReadCsvWithHeader(out / "per_robot.csv");
   std::map<std::string, long long> routing_tx, routing_bytes;
   for (const Row& r : robots) {
     routing_tx[RunKey(r)] += std::stoll(r.at("routing_transmissions"));
@@ -196,7 +196,7 @@ TEST_F(RadioOutputsTest, LinkStateBeaconsAreTheRobotsRoutingBytes) {
       EXPECT_EQ(r.at("dropped_stale_route"), "0");
     }
   }
-  const auto [message_header, messages] = ReadCsv(out / "messages.csv");
+  const auto [message_header, messages] = ReadCsvWithHeader(out / "messages.csv");
   long long beacons = 0;
   for (const Row& m : messages) {
     if (m.at("channel") != "DVPR_HELLO" && m.at("channel") != "DVPR_TOPOLOGY") continue;
@@ -229,9 +229,9 @@ std::string CopyKey(const Row& r, const std::string& robot) {
 TEST_F(RadioOutputsTest, QueryHopsAreThoseOfTheCopyThatReachedTheAnsweringRobot) {
   const fs::path out =
       Run({"network.routing=shortest_path", "network.radio.range=[100m, 200m]", "outputs.queries=true"});
-  const auto [query_header, queries] = ReadCsv(out / "queries.csv");
+  const auto [query_header, queries] = ReadCsvWithHeader(out / "queries.csv");
   EXPECT_TRUE(EndsWith(query_header, ",network_name,class,hops")) << query_header;
-  const auto [message_header, messages] = ReadCsv(out / "messages.csv");
+  const auto [message_header, messages] = ReadCsvWithHeader(out / "messages.csv");
   std::map<std::string, std::vector<Row>> copies;
   for (const Row& m : messages) {
     if (m.at("role") == "query") copies[CopyKey(m, m.at("src"))].push_back(m);

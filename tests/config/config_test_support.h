@@ -1,6 +1,8 @@
 #pragma once
 // What the config tests share: a config read from YAML text as "test.yaml" (relative files from
 // the source tree), and the error such a text gives.
+#include <gtest/gtest.h>
+
 #include <string>
 
 #include "experiments/config/config.h"
@@ -20,5 +22,14 @@ inline std::string ConfigErrorOf(const std::string& yaml) {
   }
   return "(no error)";
 }
+
+// Expects `error` to begin with `prefix`.
+inline void starts_with(const std::string& error, const std::string& prefix) {
+  EXPECT_EQ(error.rfind(prefix, 0), 0u) << error;
+}
+
+// The short names the config tests use.
+inline ExperimentConfig Parse(const std::string& yaml) { return ParseTestConfig(yaml); }
+inline std::string ErrorOf(const std::string& yaml) { return ConfigErrorOf(yaml); }
 
 }  // namespace dvpr::testing_support

@@ -7,13 +7,12 @@
 #include <gtest/gtest.h>
 
 #include "experiments/config/config.h"
+#include "tests/config/config_test_support.h"
 
 namespace dvpr {
 namespace {
 
-ExperimentConfig Parse(const std::string& yaml) {
-  return ParseConfig(yaml, DVPR_SOURCE_DIR, {}, "test.yaml");
-}
+using testing_support::Parse;
 
 TEST(ConfigEmittedReadsBackTest, EmptyLinksAndDropoutListsMeanNone) {
   const ExperimentConfig c = Parse("network: {links: []}\ndropout: []\n");

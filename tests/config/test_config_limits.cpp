@@ -18,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string ErrorOf(const std::string& yaml, const std::vector<std::string>& sets = {}) {
+std::string LimitErrorOf(const std::string& yaml, const std::vector<std::string>& sets = {}) {
   std::vector<ConfigOverride> overrides;
   for (const auto& s : sets) overrides.push_back(ParseOverride(s));
   try {
@@ -29,7 +29,7 @@ std::string ErrorOf(const std::string& yaml, const std::vector<std::string>& set
   return "(no error)";
 }
 
-std::string ErrorOfSet(const std::string& set) { return ErrorOf("", {set}); }
+std::string ErrorOfSet(const std::string& set) { return LimitErrorOf("", {set}); }
 
 // The cases of issue 12: each one line naming the key, its value as written and the range.
 TEST(ConfigLimits, TheIssuesQuantitiesAreOneRangeError) {
@@ -43,7 +43,7 @@ TEST(ConfigLimits, TheIssuesQuantitiesAreOneRangeError) {
   // Cut to int this was 25000 bytes.
   EXPECT_EQ(ErrorOfSet("verification.request_bytes=4294992296"),
             "test.yaml: verification.request_bytes: must be in [0B, 1GiB], got 4294992296");
-  EXPECT_EQ(ErrorOf("network: {links: [{src: 0, dst: 1, latency: 2562047h}]}\n"),
+  EXPECT_EQ(LimitErrorOf("network: {links: [{src: 0, dst: 1, latency: 2562047h}]}\n"),
             "test.yaml: network.links[0].latency: must be in [0ns, 24h], got 2562047h");
 }
 
@@ -107,28 +107,28 @@ TEST(ConfigLimits, EachRangeAcceptsItsBoundsAndRefusesOnePast) {
 }
 
 TEST(ConfigLimits, ADuplicateKeyIsAnErrorAtItsLine) {
-  EXPECT_EQ(ErrorOf("runs: 2\nname: x\nruns: 3\n"), "test.yaml:3: runs: duplicate key (first at line 1)");
-  EXPECT_EQ(ErrorOf("network:\n  latency: 2ms\n  bandwidth: 1Mbps\n  latency: 3ms\n"),
+  EXPECT_EQ(LimitErrorOf("runs: 2\nname: x\nruns: 3\n"), "test.yaml:3: runs: duplicate key (first at line 1)");
+  EXPECT_EQ(LimitErrorOf("network:\n  latency: 2ms\n  bandwidth: 1Mbps\n  latency: 3ms\n"),
             "test.yaml:4: network.latency: duplicate key (first at line 2)");
-  EXPECT_EQ(ErrorOf("robots: [2, 3]\ndropout:\n  - {robot: 1, at: 1s}\n  - {robot: 0, at: 1s, robot: 1}\n"),
+  EXPECT_EQ(LimitErrorOf("robots: [2, 3]\ndropout:\n  - {robot: 1, at: 1s}\n  - {robot: 0, at: 1s, robot: 1}\n"),
             "test.yaml:4: dropout[1].robot: duplicate key (first at line 4)");
   EXPECT_EQ(ErrorOfSet("network={latency: 2ms, latency: 3ms}"),
             "test.yaml: --set network: network.latency: duplicate key");
   // The same key in different maps, and anchors and aliases, are fine.
-  EXPECT_EQ(ErrorOf("network: {latency: 2ms, links: [{src: 0, dst: 1}, {src: 1, dst: 0}]}\n"
+  EXPECT_EQ(LimitErrorOf("network: {latency: 2ms, links: [{src: 0, dst: 1}, {src: 1, dst: 0}]}\n"
                     "service: {fixed: &t 1ms}\ndropout: [{robot: 1, at: *t}]\n"),
             "(no error)");
 }
 
 // The line is where the second document starts: its '---', else its first key.
 TEST(ConfigLimits, ASecondDocumentIsAnErrorAtItsLine) {
-  EXPECT_EQ(ErrorOf("runs: 2\n---\nruns: 3\n"),
+  EXPECT_EQ(LimitErrorOf("runs: 2\n---\nruns: 3\n"),
             "test.yaml:2: a second YAML document (a config is one document; remove the '---' or '...')");
-  EXPECT_EQ(ErrorOf("---\nruns: 2\n...\n---\nruns: 3\n"),
+  EXPECT_EQ(LimitErrorOf("---\nruns: 2\n...\n---\nruns: 3\n"),
             "test.yaml:4: a second YAML document (a config is one document; remove the '---' or '...')");
-  EXPECT_EQ(ErrorOf("runs: 2\n...\nruns: 3\n"),
+  EXPECT_EQ(LimitErrorOf("runs: 2\n...\nruns: 3\n"),
             "test.yaml:3: a second YAML document (a config is one document; remove the '---' or '...')");
-  EXPECT_EQ(ErrorOf("---\nruns: 2\n...\n"), "(no error)");
+  EXPECT_EQ(LimitErrorOf("---\nruns: 2\n...\n"), "(no error)");
 }
 
 // The radius of ground truth: poses lie within 1e9 m, and position / radius is a grid cell.
@@ -166,15 +166,15 @@ TEST(ConfigLimits, AFifoADeviceOrALoopOfLinksGivenAsAFileIsNamed) {
       {"/dev/zero", "is a device, not a regular file"},
       {(dir / "loop_a").string(), "is a loop of symbolic links"}};
   for (const auto& [path, problem] : cases) {
-    EXPECT_EQ(ErrorOf("dataset: {trajectories: [{poses: " + path + ", format: tum}]}\n"),
+    EXPECT_EQ(LimitErrorOf("dataset: {trajectories: [{poses: " + path + ", format: tum}]}\n"),
               "test.yaml: dataset.trajectories[0].poses: '" + path + "' " + problem);
-    EXPECT_EQ(ErrorOf("dataset: {trajectories: [{poses: " + poses + ", format: kitti, times: " + path + "}]}\n"),
+    EXPECT_EQ(LimitErrorOf("dataset: {trajectories: [{poses: " + poses + ", format: kitti, times: " + path + "}]}\n"),
               "test.yaml: dataset.trajectories[0].times: '" + path + "' " + problem);
     EXPECT_EQ(ErrorOfSet("dataset.poses=" + path), "test.yaml: dataset.poses: '" + path + "' " + problem);
   }
   // A centroid file of the pattern, for the team of 2 in run 0.
   ASSERT_EQ(mkfifo((dir / "c_n2_r0.npy").c_str(), 0600), 0);
-  EXPECT_EQ(ErrorOf("robots: [2]\nruns: 1\ntraining: {centroids: '" + (dir / "c_n{robots}_r{run}.npy").string() + "'}\n"),
+  EXPECT_EQ(LimitErrorOf("robots: [2]\nruns: 1\ntraining: {centroids: '" + (dir / "c_n{robots}_r{run}.npy").string() + "'}\n"),
             "test.yaml: training.centroids: '" + (dir / "c_n2_r0.npy").string() +
                 "' is a FIFO, not a regular file (robots 2, run 0)");
   fs::create_symlink(poses, dir / "link.txt");
@@ -184,33 +184,33 @@ TEST(ConfigLimits, AFifoADeviceOrALoopOfLinksGivenAsAFileIsNamed) {
 // Issue 53: a length or duration that is not 0 but rounds to 0 at the parser's resolution (1 mm,
 // 1 ns) was "must be in (0m, ...], got 0.4mm", a range that contains it; it says what happened.
 TEST(ConfigLimits, AQuantityThatRoundsTo0SaysSoAndNamesTheResolution) {
-  EXPECT_EQ(ErrorOf("network: {model: radio, radio: {range: 0.4mm}}\n"),
+  EXPECT_EQ(LimitErrorOf("network: {model: radio, radio: {range: 0.4mm}}\n"),
             "test.yaml: network.radio.range: 0.4mm rounds to 0 at the resolution of lengths (1mm), below the smallest "
             "allowed value 1mm");
-  EXPECT_EQ(ErrorOf("network: {model: radio, radio: {range: [100m, 0.0004m]}}\n"),
+  EXPECT_EQ(LimitErrorOf("network: {model: radio, radio: {range: [100m, 0.0004m]}}\n"),
             "test.yaml: network.radio.range[1]: 0.0004m rounds to 0 at the resolution of lengths (1mm), below the "
             "smallest allowed value 1mm");
-  EXPECT_EQ(ErrorOf("network: {model: radio, disconnected: {kind: store_and_forward, hold_time: 0.4ns}}\n"),
+  EXPECT_EQ(LimitErrorOf("network: {model: radio, disconnected: {kind: store_and_forward, hold_time: 0.4ns}}\n"),
             "test.yaml: network.disconnected.hold_time: 0.4ns rounds to 0 at the resolution of durations (1ns), below "
             "the smallest allowed value 1ns");
-  EXPECT_EQ(ErrorOf("network: {model: radio, radio: {propagation: log_distance, log_distance: {shadowing_window: "
+  EXPECT_EQ(LimitErrorOf("network: {model: radio, radio: {propagation: log_distance, log_distance: {shadowing_window: "
                     "0.0000000001s}}}\n"),
             "test.yaml: network.radio.log_distance.shadowing_window: 0.0000000001s rounds to 0 at the resolution of "
             "durations (1ns), below the smallest allowed value 1ms");
   // Half a unit rounds up to one, which is allowed; 0 as written is still out of the range.
-  EXPECT_EQ(ErrorOf("network: {model: radio, radio: {range: 0.5mm}}\n"), "(no error)");
-  EXPECT_EQ(ErrorOf("network: {model: radio, radio: {range: 0m}}\n"),
+  EXPECT_EQ(LimitErrorOf("network: {model: radio, radio: {range: 0.5mm}}\n"), "(no error)");
+  EXPECT_EQ(LimitErrorOf("network: {model: radio, radio: {range: 0m}}\n"),
             "test.yaml: network.radio.range: must be in (0m, 1000000km], got 0m");
-  EXPECT_EQ(ErrorOf("network: {model: radio, disconnected: {kind: store_and_forward, hold_time: 0ns}}\n"),
+  EXPECT_EQ(LimitErrorOf("network: {model: radio, disconnected: {kind: store_and_forward, hold_time: 0ns}}\n"),
             "test.yaml: network.disconnected.hold_time: must be in [1ns, 100000h], got 0ns");
   // Where 0 is allowed, a value that rounds to it is 0 (network.latency is in [0ns, 24h]).
-  EXPECT_EQ(ErrorOf("network: {latency: 0.4ns}\n"), "(no error)");
+  EXPECT_EQ(LimitErrorOf("network: {latency: 0.4ns}\n"), "(no error)");
 }
 
 // A key without a value is an error, not its default (runs: would have run 10 runs).
 TEST(ConfigLimits, AKeyWithoutAValueIsAnError) {
-  EXPECT_EQ(ErrorOf("runs:\n"), "test.yaml: runs: no value given (write one, or leave the key out for its default)");
-  EXPECT_EQ(ErrorOf("network: {latency: ~}\n"),
+  EXPECT_EQ(LimitErrorOf("runs:\n"), "test.yaml: runs: no value given (write one, or leave the key out for its default)");
+  EXPECT_EQ(LimitErrorOf("network: {latency: ~}\n"),
             "test.yaml: network.latency: no value given (write one, or leave the key out for its default)");
 }
 

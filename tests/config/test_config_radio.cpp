@@ -15,10 +15,10 @@
 namespace dvpr {
 namespace {
 
-ExperimentConfig Parse(const std::string& yaml) { return testing_support::ParseTestConfig(yaml); }
-std::string ErrorOf(const std::string& yaml) { return testing_support::ConfigErrorOf(yaml); }
+using testing_support::ErrorOf;
+using testing_support::Parse;
 // The error begins with `prefix` (the file, the key and the start of the problem).
-void starts_with(const std::string& error, const std::string& prefix) { EXPECT_EQ(error.rfind(prefix, 0), 0u) << error; }
+using testing_support::starts_with;
 
 TEST(ConfigRadioTest, ARangeListIsOneEntryPerRange) {
   const ExperimentConfig c = Parse(

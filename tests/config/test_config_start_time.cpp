@@ -12,8 +12,8 @@
 namespace dvpr {
 namespace {
 
-ExperimentConfig Parse(const std::string& yaml) { return testing_support::ParseTestConfig(yaml); }
-std::string ErrorOf(const std::string& yaml) { return testing_support::ConfigErrorOf(yaml); }
+using testing_support::ErrorOf;
+using testing_support::Parse;
 
 TEST(StartTime, DefaultsToAFixedInstantNotTheWallClock) {
   EXPECT_EQ(Parse("name: x\n").start_utime, 1317643200000000);  // 2011-10-03T12:00:00Z

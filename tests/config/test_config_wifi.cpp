@@ -10,9 +10,9 @@
 namespace dvpr {
 namespace {
 
-ExperimentConfig Parse(const std::string& yaml) { return testing_support::ParseTestConfig(yaml); }
-std::string ErrorOf(const std::string& yaml) { return testing_support::ConfigErrorOf(yaml); }
-void starts_with(const std::string& error, const std::string& prefix) { EXPECT_EQ(error.rfind(prefix, 0), 0u) << error; }
+using testing_support::ErrorOf;
+using testing_support::Parse;
+using testing_support::starts_with;
 
 TEST(ConfigWifiTest, WifiKeysAreReadWithNs3Defaults) {
   const ExperimentConfig c = Parse("network: {model: [csma, wifi], wifi: {rate: 54Mbps}}\n");

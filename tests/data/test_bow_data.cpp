@@ -17,6 +17,7 @@
 
 #include "experiments/domain/data/bow_file.h"
 #include "experiments/domain/data/synthetic_bow.h"
+#include "tests/data/bow_test_support.h"
 
 namespace dvpr {
 namespace {
@@ -36,10 +37,7 @@ Trajectory Frames(std::initializer_list<std::array<double, 3>> frames) {
   return t;
 }
 
-std::size_t SharedWords(const std::vector<std::int32_t>& a, const std::vector<std::int32_t>& b) {
-  const std::set<std::int32_t> x(a.begin(), a.end()), y(b.begin(), b.end());
-  return static_cast<std::size_t>(std::count_if(x.begin(), x.end(), [&](std::int32_t w) { return y.contains(w); }));
-}
+using testing_support::SharedWords;
 
 class SyntheticBowTest : public ::testing::Test {
  protected:

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "experiments/domain/data/synthetic_bow.h"
+#include "tests/data/bow_test_support.h"
 
 namespace dvpr {
 namespace {
@@ -31,10 +32,7 @@ Trajectory Frames(const std::vector<std::array<double, 3>>& frames) {
   return t;
 }
 
-std::size_t SharedWords(const std::vector<std::int32_t>& a, const std::vector<std::int32_t>& b) {
-  const std::set<std::int32_t> x(a.begin(), a.end()), y(b.begin(), b.end());
-  return static_cast<std::size_t>(std::count_if(x.begin(), x.end(), [&](std::int32_t w) { return y.contains(w); }));
-}
+using testing_support::SharedWords;
 
 class BowWorldTest : public ::testing::Test {
  protected:

@@ -8,15 +8,12 @@
 #include <gtest/gtest.h>
 
 #include "experiments/domain/evaluation/ground_truth.h"
+#include "tests/evaluation/evaluation_test_support.h"
 
 namespace dvpr {
 namespace {
 
-Positions OnLine(const std::vector<double>& x) {
-  Positions p = Positions::Zero(static_cast<Eigen::Index>(x.size()), 3);
-  for (std::size_t i = 0; i < x.size(); ++i) p(static_cast<Eigen::Index>(i), 0) = x[i];
-  return p;
-}
+using testing_support::OnLine;
 
 TEST(GroundTruth, WindowExcludesNeighboursInTheSequence) {
   // Frame i at x = 10 i, except frame 6 back at x = 0.5 (a revisit of frame 0) and frame 1 at

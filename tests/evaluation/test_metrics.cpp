@@ -6,18 +6,14 @@
 #include <gtest/gtest.h>
 
 #include "experiments/domain/evaluation/metrics.h"
+#include "tests/evaluation/evaluation_test_support.h"
 
 namespace dvpr {
 namespace {
 
 constexpr double kR = 5.0;  // radius: a match is correct when it lies < 5 m from the query
 
-// Frames on the x axis at the given coordinates.
-Positions OnLine(const std::vector<double>& x) {
-  Positions p = Positions::Zero(static_cast<Eigen::Index>(x.size()), 3);
-  for (std::size_t i = 0; i < x.size(); ++i) p(static_cast<Eigen::Index>(i), 0) = x[i];
-  return p;
-}
+using testing_support::OnLine;
 
 MatchOutcome Match(int query, int match, double score) {
   return {FrameId(query), FrameId(match), score};

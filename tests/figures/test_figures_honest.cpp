@@ -25,9 +25,7 @@ namespace {
 using dvpr::testing_support::Slurp;
 namespace fs = std::filesystem;
 
-NetworkLabel Net(int variant, const std::string& model, double bps) {
-  return NetworkLabel{.variant = variant, .model = model, .bandwidth_bps = bps, .latency_ms = 2, .loss = "none"};
-}
+using testing_support::Net;
 
 // A sim run of 4 robots: 100 queries over 10 s, 700 bytes of queries and replies, no revisit
 // (relative AUC not applicable, both AUCs 0, no relevant query).

@@ -24,9 +24,7 @@ namespace {
 using dvpr::testing_support::Slurp;
 namespace fs = std::filesystem;
 
-NetworkLabel Net(int variant, const std::string& model, double bps) {
-  return NetworkLabel{.variant = variant, .model = model, .bandwidth_bps = bps, .latency_ms = 2, .loss = "none"};
-}
+using testing_support::Net;
 
 // A sim run with `query` and `reply` copy wire bytes, 1000 more of verification requests, 100
 // queries over 10 s, `delivered` of the copies' wire delivered.

@@ -18,7 +18,7 @@
 namespace dvpr {
 namespace {
 
-ExperimentConfig Config(const std::string& yaml) { return ParseConfig(yaml, DVPR_SOURCE_DIR, {}, "c.yaml"); }
+ExperimentConfig SizeConfig(const std::string& yaml) { return ParseConfig(yaml, DVPR_SOURCE_DIR, {}, "c.yaml"); }
 
 // The message of the ConfigError CheckSweepSize throws, "" when it accepts.
 std::string SizeError(const SweepSize& size, const SweepMachine& machine) {
@@ -45,7 +45,7 @@ constexpr double kGiB = 1024.0 * 1024 * 1024;
 // keeps, 5 x 29 x 25000, and one being decoded = 3650000. Inputs: (1000 + 20000 training) x 16 x 4
 // bytes and the paper's neighbour lists, 1000 x 64 x 8.
 TEST(SweepSizeTest, RunsAndBytesPerRunWorkedByHand) {
-  const ExperimentConfig c = Config(
+  const ExperimentConfig c = SizeConfig(
       "robots: [2, 5]\nruns: 3\nprotocols: [paper, sim]\nstrategies: [decentralized, broadcast]\n"
       "network: {model: [point_to_point, ideal], bandwidth: [1Mbps, 2Mbps], latency: [1ms, 2ms, 3ms]}\n");
   const SweepSize size = EstimateSweepSize(c, 1000, 16);
@@ -58,12 +58,12 @@ TEST(SweepSizeTest, RunsAndBytesPerRunWorkedByHand) {
   EXPECT_EQ(size.bytes_per_run, 4122000.0);
   EXPECT_EQ(size.input_bytes, 21000.0 * 64 + 512000.0);
   // On 10 Mbit/s with 2 ms (the defaults) a request is 20.4 ms on the wire: the same 7 a queue.
-  const SweepSize sim = EstimateSweepSize(Config("robots: [2, 5]\nruns: 3\nprotocols: [sim]\n"), 1000, 16);
+  const SweepSize sim = EstimateSweepSize(SizeConfig("robots: [2, 5]\nruns: 3\nprotocols: [sim]\n"), 1000, 16);
   EXPECT_EQ(sim.bytes_per_run, 216000.0 + 256000.0 + 5 * 29 * 25000.0 + 25000.0);
   EXPECT_EQ(sim.input_bytes, 21000.0 * 64);
   // replicate_1_r4 keeps a frame at up to 4 robots.
   const SweepSize replicated =
-      EstimateSweepSize(Config("robots: [5]\nruns: 1\nprotocols: [sim]\nstrategies: [replicate_1_r4]\n"), 1000, 16);
+      EstimateSweepSize(SizeConfig("robots: [5]\nruns: 1\nprotocols: [sim]\nstrategies: [replicate_1_r4]\n"), 1000, 16);
   EXPECT_EQ(replicated.largest.stored, 4000.0);
   EXPECT_EQ(Bytes(replicated.largest, SizeTerm::kStores), 4 * 216000.0 + 256000.0);
 }
@@ -71,22 +71,22 @@ TEST(SweepSizeTest, RunsAndBytesPerRunWorkedByHand) {
 // robots 2..100000 (99999 counts) x 100000 runs x 2 strategies x (1 + 1) = 4.0e10 runs; the
 // default sweep (19 x 10 x 2 x 2 = 760) passes.
 TEST(SweepSizeTest, ASweepOfBillionsOfRunsIsRefusedWithItsCount) {
-  const ExperimentConfig huge = Config("robots: {from: 2, to: 100000}\nruns: 100000\n");
+  const ExperimentConfig huge = SizeConfig("robots: {from: 2, to: 100000}\nruns: 100000\n");
   const SweepSize size = EstimateSweepSize(huge, 4541, 128);
   EXPECT_EQ(size.runs, 99999.0 * 100000 * 2 * 2);
   EXPECT_EQ(SizeError(size, {.memory_bytes = 1e12}),
             "c.yaml: robots, runs, protocols, strategies, network: the sweep has 4e+10 runs (robot counts x runs x "
             "strategies x network variants), more than 1e+06 (days of computing); narrow it, or pass --allow-large "
             "to run it anyway");
-  EXPECT_EQ(EstimateSweepSize(Config("seed: 1\n"), 4541, 128).runs, 760.0);
-  EXPECT_EQ(SizeError(EstimateSweepSize(Config("seed: 1\n"), 4541, 128), {.memory_bytes = 1e12}), "");
+  EXPECT_EQ(EstimateSweepSize(SizeConfig("seed: 1\n"), 4541, 128).runs, 760.0);
+  EXPECT_EQ(SizeError(EstimateSweepSize(SizeConfig("seed: 1\n"), 4541, 128), {.memory_bytes = 1e12}), "");
 }
 
 // Only the radio sweeps its routing entries: point_to_point, and the radio's 2 ranges x 2
 // routings, are 5 variants; 3 robot counts x 2 runs x 2 strategies x 5 = 60 runs.
 TEST(SweepSizeTest, TheRadiosRoutingsMultiplyItsVariants) {
   const SweepSize size = EstimateSweepSize(
-      Config("robots: [2, 3, 4]\nruns: 2\nprotocols: [sim]\nnetwork: {model: [point_to_point, radio], "
+      SizeConfig("robots: [2, 3, 4]\nruns: 2\nprotocols: [sim]\nnetwork: {model: [point_to_point, radio], "
              "radio: {range: [100m, 200m]}, routing: [shortest_path, link_state]}\n"),
       1000, 16);
   EXPECT_EQ(size.runs, 60.0);
@@ -98,7 +98,7 @@ TEST(SweepSizeTest, TheRadiosRoutingsMultiplyItsVariants) {
 // 547 110 912 (0.51 GiB): 2.29 GiB in all, more than 2 GiB.
 TEST(SweepSizeTest, ARunLargerThanTheMachinesMemoryIsRefusedWithTheEstimate) {
   const SweepSize size =
-      EstimateSweepSize(Config("robots: [8]\nruns: 1\nstrategies: [decentralized]\nprotocols: [sim]\n"), 1 << 20, 128);
+      EstimateSweepSize(SizeConfig("robots: [8]\nruns: 1\nstrategies: [decentralized]\nprotocols: [sim]\n"), 1 << 20, 128);
   EXPECT_EQ(size.runs, 1.0);
   EXPECT_EQ(size.bytes_per_run, 1635778560.0 + 268435456.0 + 10025000.0);
   EXPECT_EQ(size.input_bytes, 547110912.0);
@@ -137,7 +137,7 @@ TEST(SweepSizeTest, EveryShippedConfigPassesWithoutTheFlag) {
 // GiB), four do not (1.91 GiB): threads 4, threads 8 (only the 4 runs there are), one a core.
 TEST(SweepSizeTest, TheRunsInFlightAtOnceShareTheMemory) {
   const SweepSize size =
-      EstimateSweepSize(Config("robots: [8]\nruns: 4\nprotocols: [sim]\nstrategies: [decentralized]\n"
+      EstimateSweepSize(SizeConfig("robots: [8]\nruns: 4\nprotocols: [sim]\nstrategies: [decentralized]\n"
                                "network: {model: [ideal]}\n"),
                         1 << 18, 128);
   EXPECT_EQ(size.runs, 4.0);
@@ -161,7 +161,7 @@ TEST(SweepSizeTest, TheRunsInFlightAtOnceShareTheMemory) {
 // 0.825 s = 165000 s: 45.8 h on one core (refused), 22.9 h on two.
 TEST(SweepSizeTest, ASweepOfMoreThanADayOnTheseCoresIsRefusedWithTheEstimate) {
   const SweepSize size = EstimateSweepSize(
-      Config("robots: [10]\nruns: 100000\nprotocols: [sim]\nstrategies: [broadcast, decentralized]\nnetwork: {model: [ideal]}\n"),
+      SizeConfig("robots: [10]\nruns: 100000\nprotocols: [sim]\nstrategies: [broadcast, decentralized]\nnetwork: {model: [ideal]}\n"),
       10000, 100);
   EXPECT_EQ(size.runs, 200000.0);
   EXPECT_NEAR(size.seconds_per_run, 0.825, 1e-12);
@@ -174,7 +174,7 @@ TEST(SweepSizeTest, ASweepOfMoreThanADayOnTheseCoresIsRefusedWithTheEstimate) {
   EXPECT_EQ(SizeError(size, {.cores = 2}), "");
   // The paper protocol alone: the search only, 0.5 s a run, 27.8 h on one core.
   const SweepSize paper = EstimateSweepSize(
-      Config("robots: [10]\nruns: 100000\nprotocols: [paper]\nstrategies: [broadcast, decentralized]\n"), 10000, 100);
+      SizeConfig("robots: [10]\nruns: 100000\nprotocols: [paper]\nstrategies: [broadcast, decentralized]\n"), 10000, 100);
   EXPECT_NEAR(paper.seconds_per_run, 0.5, 1e-12);
   EXPECT_NE(SizeError(paper, {.cores = 1}).find("about 27.8 h on 1 core (2e+05 runs of up to 0.5 s each)"),
             std::string::npos);
@@ -189,16 +189,16 @@ TEST(SweepSizeTest, SyntheticBowAtItsMaximaIsCountedBeforeTheRuns) {
       "robots: [2]\nruns: 1\nprotocols: [paper]\nstrategies: [bow_decentralized]\n"
       "dataset: {dim: 16, synthetic_bow: {features: 100000, vocabulary: 10000000, landmark_density: 10, "
       "range_m: 1000, field_of_view_deg: 360}}\n";
-  const SweepSize one_frame = EstimateSweepSize(Config(maxima), 1, 16);
+  const SweepSize one_frame = EstimateSweepSize(SizeConfig(maxima), 1, 16);
   EXPECT_NEAR(one_frame.input_seconds, 1.7, 1e-9);
-  const SweepSize size = EstimateSweepSize(Config(maxima), 60000, 16);
+  const SweepSize size = EstimateSweepSize(SizeConfig(maxima), 60000, 16);
   EXPECT_NEAR(size.input_seconds, 102000.0, 1e-6);
   EXPECT_NEAR(size.seconds_per_run, 2.88, 1e-9);
   EXPECT_EQ(SizeError(size, {.cores = 2}),
             "c.yaml: robots, runs, strategies, network, dataset: the sweep would take about 28.3 h on 1 core (1 run of "
             "up to 2.88 s each, and 1.02e+05 s to make dataset.synthetic_bow's vectors), more than 24 h; narrow it, "
             "or pass --allow-large to run it anyway");
-  EXPECT_EQ(SizeError(EstimateSweepSize(Config(maxima), 4541, 16), {.cores = 2}), "");  // 2.14 h
+  EXPECT_EQ(SizeError(EstimateSweepSize(SizeConfig(maxima), 4541, 16), {.cores = 2}), "");  // 2.14 h
   // Its words and vectors: 60000 x (4 x 100000 + 16 x 100000 + 72) + 16 x 10^7 bytes, 112 GiB.
   EXPECT_EQ(size.bow_bytes, 120164320000.0);
   EXPECT_EQ(SizeError(size, {.memory_bytes = 16 * kGiB, .cores = 2}),
@@ -207,10 +207,10 @@ TEST(SweepSizeTest, SyntheticBowAtItsMaximaIsCountedBeforeTheRuns) {
             "vocabulary bytes)), more than this machine's 16 GiB of memory; lower dataset.synthetic_bow's features or "
             "dataset.frames, or pass --allow-large to run it anyway");
   const SweepSize defaults = EstimateSweepSize(
-      Config("robots: [2]\nruns: 1\nprotocols: [paper]\nstrategies: [bow_decentralized]\n"), 4541, 16);
+      SizeConfig("robots: [2]\nruns: 1\nprotocols: [paper]\nstrategies: [bow_decentralized]\n"), 4541, 16);
   EXPECT_NEAR(defaults.input_seconds, 0.247, 1e-3);
   // Descriptor strategies make no BoW vectors.
-  EXPECT_EQ(EstimateSweepSize(Config("robots: [2]\n"), 60000, 16).input_seconds, 0.0);
+  EXPECT_EQ(EstimateSweepSize(SizeConfig("robots: [2]\n"), 60000, 16).input_seconds, 0.0);
 }
 
 // synthetic_bow's words and vectors are inputs while they are made (SyntheticBowWords, then
@@ -222,13 +222,13 @@ TEST(SweepSizeTest, SyntheticBowAtItsMaximaIsCountedBeforeTheRuns) {
 // frame's vectors at 300 words: 1000 x (4000 + 4800 + 72) + 4800. Descriptor strategies make none.
 TEST(SweepSizeTest, SyntheticBowWordsAndVectorsAreInputsWorkedByHand) {
   const std::string run = "robots: [2]\nruns: 1\nprotocols: [paper]\nstrategies: [bow_decentralized]\n";
-  const SweepSize defaults = EstimateSweepSize(Config(run + "dataset: {dim: 16}\n"), 1000, 16);
+  const SweepSize defaults = EstimateSweepSize(SizeConfig(run + "dataset: {dim: 16}\n"), 1000, 16);
   EXPECT_EQ(defaults.bow_bytes, 11672000.0);
   EXPECT_EQ(defaults.input_bytes, 11672000.0 + 21000.0 * 64 + 512000.0);
   const SweepSize small = EstimateSweepSize(
-      Config(run + "dataset: {dim: 16, synthetic_bow: {features: 1000, vocabulary: 300}}\n"), 1000, 16);
+      SizeConfig(run + "dataset: {dim: 16, synthetic_bow: {features: 1000, vocabulary: 300}}\n"), 1000, 16);
   EXPECT_EQ(small.bow_bytes, 8876800.0);
-  const SweepSize descriptors = EstimateSweepSize(Config("robots: [2]\nruns: 1\nprotocols: [paper]\n"), 1000, 16);
+  const SweepSize descriptors = EstimateSweepSize(SizeConfig("robots: [2]\nruns: 1\nprotocols: [paper]\n"), 1000, 16);
   EXPECT_EQ(descriptors.bow_bytes, 0.0);
   EXPECT_EQ(descriptors.input_bytes, 21000.0 * 64 + 512000.0);
 }
@@ -238,7 +238,7 @@ TEST(SweepSizeTest, SyntheticBowWordsAndVectorsAreInputsWorkedByHand) {
 // 5e-10 = 0.057 s of verification payloads, 0.370 s (0.21 s measured on average); its 760 runs
 // take 2.3 min on two cores by the model.
 TEST(SweepSizeTest, TheDefaultSweepsEstimateWorkedByHand) {
-  const SweepSize size = EstimateSweepSize(Config("seed: 1\n"), 4541, 128);
+  const SweepSize size = EstimateSweepSize(SizeConfig("seed: 1\n"), 4541, 128);
   EXPECT_NEAR(size.seconds_per_run, 0.37037, 1e-5);
   EXPECT_EQ(SizeError(size, {.memory_bytes = kGiB, .cores = 1}), "");
 }
@@ -251,16 +251,16 @@ TEST(SweepSizeTest, TheDefaultSweepsEstimateWorkedByHand) {
 TEST(SweepSizeTest, LinkStateBeaconsCountedByHand) {
   const std::string team = "robots: [4]\nruns: 1\nprotocols: [sim]\nstrategies: [broadcast]\n";
   const SweepSize size = EstimateSweepSize(
-      Config(team + "network: {model: radio, routing: {kind: link_state, hello: 1s, topology: 2s}}\n"), 204, 8);
+      SizeConfig(team + "network: {model: radio, routing: {kind: link_state, hello: 1s, topology: 2s}}\n"), 204, 8);
   EXPECT_DOUBLE_EQ(size.slowest.mission_s, 5.0);
   EXPECT_EQ(size.slowest.beacons, 24.0 + 48.0);
   EXPECT_DOUBLE_EQ(Seconds(size.slowest, SizeTerm::kBeacons), 72 * 4 * 1e-6);
   // A list of routings: the link_state variant's beacons; shortest_path sends none.
   const SweepSize listed = EstimateSweepSize(
-      Config(team + "network: {model: radio, routing: [shortest_path, {kind: link_state, hello: 1s, topology: 2s}]}\n"),
+      SizeConfig(team + "network: {model: radio, routing: [shortest_path, {kind: link_state, hello: 1s, topology: 2s}]}\n"),
       204, 8);
   EXPECT_EQ(listed.slowest.beacons, 72.0);
-  EXPECT_EQ(EstimateSweepSize(Config(team + "network: {model: radio, routing: shortest_path}\n"), 204, 8).slowest.beacons,
+  EXPECT_EQ(EstimateSweepSize(SizeConfig(team + "network: {model: radio, routing: shortest_path}\n"), 204, 8).slowest.beacons,
             0.0);
 }
 
@@ -269,7 +269,7 @@ TEST(SweepSizeTest, LinkStateBeaconsCountedByHand) {
 // transmissions each heard by up to 19, 1.9e5 s a run.
 TEST(SweepSizeTest, BeaconsEveryMicrosecondAreRefusedNamingTheRouting) {
   const SweepSize size = EstimateSweepSize(
-      Config("network: {model: radio, routing: {kind: link_state, hello: 1us, topology: 1us}}\n"), 4541, 128);
+      SizeConfig("network: {model: radio, routing: {kind: link_state, hello: 1us, topology: 1us}}\n"), 4541, 128);
   EXPECT_EQ(size.slowest.robots, 20);
   EXPECT_EQ(size.slowest.beacons, 420.0 * 22700001);
   EXPECT_EQ(SizeError(size, {.memory_bytes = 16 * kGiB, .cores = 2}),
@@ -283,7 +283,7 @@ TEST(SweepSizeTest, BeaconsEveryMicrosecondAreRefusedNamingTheRouting) {
 // each heard by the 3 others.
 TEST(SweepSizeTest, FailoverHeartbeatsCountedByHand) {
   const SweepSize size = EstimateSweepSize(
-      Config("robots: [4]\nruns: 1\nprotocols: [sim]\nstrategies: [broadcast]\n"
+      SizeConfig("robots: [4]\nruns: 1\nprotocols: [sim]\nstrategies: [broadcast]\n"
              "failover: {enabled: true, heartbeat_period: 250ms, timeout: 1s}\n"),
       204, 8);
   EXPECT_EQ(size.slowest.heartbeats, 84.0);
@@ -302,7 +302,7 @@ TEST(SweepSizeTest, FailoverHeartbeatsCountedByHand) {
 TEST(SweepSizeTest, StoreAndForwardRetriesCountedByHand) {
   const std::string team = "robots: [2]\nruns: 1\nprotocols: [sim]\nstrategies: [broadcast]\n";
   const auto network = [&](const std::string& hold) {
-    return Config(team + "network: {model: radio, routing: shortest_path, "
+    return SizeConfig(team + "network: {model: radio, routing: shortest_path, "
                          "disconnected: {kind: store_and_forward, hold_time: " + hold + "}}\n");
   };
   const SweepSize size = EstimateSweepSize(network("60s"), 42, 8);
@@ -321,12 +321,12 @@ TEST(SweepSizeTest, StoreAndForwardRetriesCountedByHand) {
   // copies are 2 messages, each held with its bytes.
   const std::string three = "robots: [3]\nruns: 1\nprotocols: [sim]\nnetwork: {model: radio, routing: shortest_path, "
                             "disconnected: store_and_forward}\n";
-  EXPECT_DOUBLE_EQ(EstimateSweepSize(Config(three + "strategies: [broadcast]\n"), 63, 8).slowest.retries,
+  EXPECT_DOUBLE_EQ(EstimateSweepSize(SizeConfig(three + "strategies: [broadcast]\n"), 63, 8).slowest.retries,
                    1260.0 + 252.0 + 63.0);
-  const SweepSize decentralized = EstimateSweepSize(Config(three + "strategies: [decentralized]\n"), 63, 8);
+  const SweepSize decentralized = EstimateSweepSize(SizeConfig(three + "strategies: [decentralized]\n"), 63, 8);
   EXPECT_DOUBLE_EQ(decentralized.slowest.retries, 1260.0 + 252.0 + 63.0);
   EXPECT_EQ(Bytes(decentralized.slowest, SizeTerm::kHeld), 126.0 * 160 + 63.0 * 132);
-  const SweepSize probes = EstimateSweepSize(Config(three + "strategies: [multi_probe_2]\n"), 63, 8);
+  const SweepSize probes = EstimateSweepSize(SizeConfig(three + "strategies: [multi_probe_2]\n"), 63, 8);
   EXPECT_EQ(Bytes(probes.slowest, SizeTerm::kHeld), 126.0 * 160 + 126.0 * 132);
 }
 
@@ -339,7 +339,7 @@ TEST(SweepSizeTest, ATalkWindowAfterTheMissionExtendsTheRetries) {
   const std::filesystem::path dir = testing_support::FreshTestDir("sweep_size");
   std::ofstream(dir / "schedule.csv") << "robot,start_s,end_s\n1,5,6\n";
   const SweepSize size = EstimateSweepSize(
-      Config("robots: [2]\nruns: 1\nprotocols: [sim]\nstrategies: [broadcast]\nnetwork: {model: radio, routing: "
+      SizeConfig("robots: [2]\nruns: 1\nprotocols: [sim]\nstrategies: [broadcast]\nnetwork: {model: radio, routing: "
              "shortest_path, disconnected: store_and_forward, schedule: '" + (dir / "schedule.csv").string() + "'}\n"),
       42, 8);
   EXPECT_DOUBLE_EQ(size.slowest.mission_s, 2.0);
@@ -351,14 +351,14 @@ TEST(SweepSizeTest, ATalkWindowAfterTheMissionExtendsTheRetries) {
 // end by the sequence's last frame time, 9.9 s. A loaded plan gives its own latest capture.
 TEST(SweepSizeTest, ThePlanSetsTheMission) {
   const std::string team = "robots: [3]\nruns: 1\nprotocols: [sim]\n";
-  const SweepSize staggered = EstimateSweepSize(Config(team + "dataset: {scenario: {kind: staggered, offset: 10s}}\n"), 100, 8);
+  const SweepSize staggered = EstimateSweepSize(SizeConfig(team + "dataset: {scenario: {kind: staggered, offset: 10s}}\n"), 100, 8);
   EXPECT_EQ(staggered.slowest.frames, 300.0);
   EXPECT_DOUBLE_EQ(staggered.slowest.mission_s, 29.9);
   EXPECT_EQ(staggered.plan_key, "dataset.scenario");
-  const SweepSize reverse = EstimateSweepSize(Config(team + "dataset: {scenario: {kind: reverse}}\n"), 100, 8);
+  const SweepSize reverse = EstimateSweepSize(SizeConfig(team + "dataset: {scenario: {kind: reverse}}\n"), 100, 8);
   EXPECT_DOUBLE_EQ(reverse.slowest.mission_s, 9.9);
   const SweepSize routes =
-      EstimateSweepSize(Config(team + "dataset: {scenario: {kind: random_routes, length: 20}}\n"), 100, 8);
+      EstimateSweepSize(SizeConfig(team + "dataset: {scenario: {kind: random_routes, length: 20}}\n"), 100, 8);
   EXPECT_EQ(routes.slowest.frames, 60.0);
   EXPECT_DOUBLE_EQ(routes.slowest.mission_s, 9.9);
   // A loaded plan: robot 0 at 0, 0.1 and 0.2 s, robot 1 at 5 and 5.1 s; heartbeats every second:
@@ -369,7 +369,7 @@ TEST(SweepSizeTest, ThePlanSetsTheMission) {
   deployment.plan = PlannedSplit({{SimTime::Zero(), SimTime::Millis(100), SimTime::Millis(200)},
                                   {SimTime::Millis(5000), SimTime::Millis(5100)}});
   const SweepSize loaded = EstimateSweepSize(
-      Config("robots: [2]\nruns: 1\nprotocols: [sim]\ndataset: {scenario: {kind: staggered, offset: 5s}}\n"
+      SizeConfig("robots: [2]\nruns: 1\nprotocols: [sim]\ndataset: {scenario: {kind: staggered, offset: 5s}}\n"
              "failover: {enabled: true, heartbeat_period: 1s, timeout: 2s}\n"),
       deployment);
   EXPECT_EQ(loaded.slowest.frames, 5.0);
@@ -382,7 +382,7 @@ TEST(SweepSizeTest, ThePlanSetsTheMission) {
 // step is a row per strategy and the runs' snapshots, 3 x (600 + 8 x 3) bytes.
 TEST(SweepSizeTest, ConnectivityStepsCountedByHand) {
   const SweepSize size = EstimateSweepSize(
-      Config("robots: [3]\nruns: 1\nprotocols: [sim]\nstrategies: [decentralized, broadcast]\n"
+      SizeConfig("robots: [3]\nruns: 1\nprotocols: [sim]\nstrategies: [decentralized, broadcast]\n"
              "network: {model: radio}\noutputs: {connectivity: true}\n"),
       30, 8);
   EXPECT_EQ(size.slowest.connectivity_steps, 10.0);
@@ -394,7 +394,7 @@ TEST(SweepSizeTest, ConnectivityStepsCountedByHand) {
 // 7 s): the mission is 100000 h + 454 s, 3 600 004 541 steps of 3 x 616 bytes, 6.2e3 GiB a run.
 TEST(SweepSizeTest, AConnectivityRowForEveryFramePeriodOf100000HoursIsRefusedNamingThePlan) {
   const SweepSize size = EstimateSweepSize(
-      Config("robots: [2]\nruns: 1\nprotocols: [sim]\ndataset: {scenario: {kind: staggered, offset: 100000h}}\n"
+      SizeConfig("robots: [2]\nruns: 1\nprotocols: [sim]\ndataset: {scenario: {kind: staggered, offset: 100000h}}\n"
              "network: {model: radio}\noutputs: {connectivity: true}\n"),
       4541, 128);
   EXPECT_EQ(size.largest.connectivity_steps, 3600004541.0);
@@ -415,16 +415,16 @@ TEST(SweepSizeTest, AConnectivityRowForEveryFramePeriodOf100000HoursIsRefusedNam
 TEST(SweepSizeTest, VerificationRequestsCountedByHand) {
   const std::string team = "robots: [2]\nruns: 1\nprotocols: [sim]\nstrategies: [broadcast]\n"
                            "verification: {request_bytes: 1000000}\n";
-  const SweepSize ideal = EstimateSweepSize(Config(team + "network: {model: ideal}\n"), 100, 8);
+  const SweepSize ideal = EstimateSweepSize(SizeConfig(team + "network: {model: ideal}\n"), 100, 8);
   EXPECT_EQ(ideal.largest.requests, 100.0);
   EXPECT_EQ(ideal.largest.request_bytes, 1e8);
   EXPECT_DOUBLE_EQ(Seconds(ideal.largest, SizeTerm::kRequests), 0.05);
   EXPECT_EQ(ideal.largest.requests_in_flight, 1.0);
   EXPECT_EQ(Bytes(ideal.largest, SizeTerm::kRequests), 2 * 2 * 1e6 + 1e6);
-  const SweepSize dropped = EstimateSweepSize(Config(team + "network: {queue_packets: 100}\n"), 100, 8);
+  const SweepSize dropped = EstimateSweepSize(SizeConfig(team + "network: {queue_packets: 100}\n"), 100, 8);
   EXPECT_EQ(dropped.largest.requests_in_flight, 0.0);
   EXPECT_EQ(Bytes(dropped.largest, SizeTerm::kRequests), 2 * 1e6 + 1e6);
-  const SweepSize queued = EstimateSweepSize(Config(team + "network: {queue_packets: 1000}\n"), 100, 8);
+  const SweepSize queued = EstimateSweepSize(SizeConfig(team + "network: {queue_packets: 1000}\n"), 100, 8);
   EXPECT_EQ(queued.largest.requests_in_flight, 3.0);
   EXPECT_EQ(Bytes(queued.largest, SizeTerm::kRequests), 2 * 4 * 1e6 + 1e6);
 }
@@ -433,7 +433,7 @@ TEST(SweepSizeTest, VerificationRequestsCountedByHand) {
 // 6 s): the team of 20 keeps 20 requests, and one at a time is made and dropped as it is sent (it
 // is 725 506 packets, for queues of 100), 21 GiB a run.
 TEST(SweepSizeTest, GibibyteRequestsAreRefusedNamingTheRequestSize) {
-  const SweepSize size = EstimateSweepSize(Config("verification: {request_bytes: 1GiB}\n"), 4541, 128);
+  const SweepSize size = EstimateSweepSize(SizeConfig("verification: {request_bytes: 1GiB}\n"), 4541, 128);
   EXPECT_EQ(Bytes(size.largest, SizeTerm::kRequests), 21 * kGiB);
   EXPECT_EQ(SizeError(size, {.memory_bytes = 16 * kGiB, .cores = 2}),
             "c.yaml: verification.request_bytes: 2 runs at once (one a thread) may need up to 42 GiB, each up to 21 "

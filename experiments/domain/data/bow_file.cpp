@@ -21,9 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-[[noreturn]] void FailLine(const fs::path& path, std::size_t line, const std::string& what) {
-  throw std::runtime_error(path.string() + ": line " + std::to_string(line) + ": " + what);
-}
+using text_file::FailLine;
 
 bool IsSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 

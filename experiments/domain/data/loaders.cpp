@@ -17,23 +17,23 @@
 namespace dvpr {
 
 namespace fs = std::filesystem;
-using namespace text_file;  // the text readers these loaders share with robot_trajectory.cpp
+namespace tf = text_file;  // the text readers shared by loaders.cpp and robot_trajectory.cpp
 
 Trajectory LoadKittiPoses(const fs::path& path) {
-  const std::vector<std::string> lines = ReadLines(path);
+  const std::vector<std::string> lines = tf::ReadLines(path);
   const auto n = static_cast<Eigen::Index>(lines.size());
   Trajectory t{Positions(n, 3), Headings(n, 3)};
   for (Eigen::Index i = 0; i < n; ++i) {
     const std::size_t line = static_cast<std::size_t>(i) + 1;
-    const auto tokens = SplitWhitespace(lines[static_cast<std::size_t>(i)]);
+    const auto tokens = tf::SplitWhitespace(lines[static_cast<std::size_t>(i)]);
     if (tokens.size() != 12) {
-      FailLine(path, line, "expected 12 numbers (a 3x4 pose), got " + std::to_string(tokens.size()));
+      tf::FailLine(path, line, "expected 12 numbers (a 3x4 pose), got " + std::to_string(tokens.size()));
     }
     double v[12];
-    for (int k = 0; k < 12; ++k) v[k] = ParseNumber(path, line, tokens[static_cast<std::size_t>(k)]);
+    for (int k = 0; k < 12; ++k) v[k] = tf::ParseNumber(path, line, tokens[static_cast<std::size_t>(k)]);
     for (const int k : {3, 7, 11}) {
       if (std::abs(v[k]) > kMaxPoseTranslation_m) {
-        FailLine(path, line, "translation " + std::string(Trim(tokens[static_cast<std::size_t>(k)])) +
+        tf::FailLine(path, line, "translation " + std::string(tf::Trim(tokens[static_cast<std::size_t>(k)])) +
                                  " m is outside [-1e9, 1e9] m");
       }
     }
@@ -46,8 +46,8 @@ Trajectory LoadKittiPoses(const fs::path& path) {
       t.headings.row(i) /= t.headings.row(i).cwiseAbs().maxCoeff();
       norm = t.headings.row(i).norm();
     }
-    if (norm < 1e-6) FailLine(path, line, "rotation's third column is zero (no heading)");
-    if (!std::isfinite(norm)) FailLine(path, line, "rotation's third column is too large to normalise");
+    if (norm < 1e-6) tf::FailLine(path, line, "rotation's third column is zero (no heading)");
+    if (!std::isfinite(norm)) tf::FailLine(path, line, "rotation's third column is too large to normalise");
     t.headings.row(i) /= norm;
   }
   return t;
@@ -73,25 +73,25 @@ void CheckDescriptorValues(const DescriptorMatrix& m, const std::string& source)
 namespace {
 
 void CheckDim(const fs::path& path, int dim, Eigen::Index width) {
-  if (dim <= 0) Fail(path, "dim must be positive, got " + std::to_string(dim));
+  if (dim <= 0) tf::Fail(path, "dim must be positive, got " + std::to_string(dim));
   if (dim > width) {
-    Fail(path, "dim " + std::to_string(dim) + " is larger than the file's " +
+    tf::Fail(path, "dim " + std::to_string(dim) + " is larger than the file's " +
                    std::to_string(width) + " values per frame");
   }
 }
 
 DescriptorMatrix LoadBin(const fs::path& path, int dim, int frame_width) {
   if (frame_width <= 0) {
-    Fail(path, "bin_frame_width must be positive, got " + std::to_string(frame_width));
+    tf::Fail(path, "bin_frame_width must be positive, got " + std::to_string(frame_width));
   }
   CheckDim(path, dim, frame_width);
-  if (const std::string why = ThereButNotARegularFile(path); !why.empty()) Fail(path, why);
+  if (const std::string why = tf::ThereButNotARegularFile(path); !why.empty()) tf::Fail(path, why);
   std::ifstream in(path, std::ios::binary);
-  if (!in) Fail(path, "cannot open for reading");
+  if (!in) tf::Fail(path, "cannot open for reading");
   const std::uintmax_t bytes = fs::file_size(path);
   const std::uintmax_t frame_bytes = static_cast<std::uintmax_t>(frame_width) * sizeof(float);
   if (bytes % frame_bytes != 0) {
-    Fail(path, "size " + std::to_string(bytes) + " bytes is not a multiple of one frame (" +
+    tf::Fail(path, "size " + std::to_string(bytes) + " bytes is not a multiple of one frame (" +
                    std::to_string(frame_width) + " float32 = " + std::to_string(frame_bytes) +
                    " bytes): truncated, or the wrong bin_frame_width");
   }
@@ -100,7 +100,7 @@ DescriptorMatrix LoadBin(const fs::path& path, int dim, int frame_width) {
   std::vector<float> frame(static_cast<std::size_t>(frame_width));
   for (Eigen::Index i = 0; i < frames; ++i) {
     if (!in.read(reinterpret_cast<char*>(frame.data()), static_cast<std::streamsize>(frame_bytes))) {
-      Fail(path, "read error at frame " + std::to_string(i));
+      tf::Fail(path, "read error at frame " + std::to_string(i));
     }
     std::copy_n(frame.data(), dim, &m(i, 0));
   }
@@ -108,19 +108,19 @@ DescriptorMatrix LoadBin(const fs::path& path, int dim, int frame_width) {
 }
 
 DescriptorMatrix LoadCsv(const fs::path& path, int dim) {
-  const std::vector<std::string> lines = ReadLines(path);
-  const auto width = static_cast<Eigen::Index>(SplitCommas(lines.front()).size());
+  const std::vector<std::string> lines = tf::ReadLines(path);
+  const auto width = static_cast<Eigen::Index>(tf::SplitCommas(lines.front()).size());
   CheckDim(path, dim, width);
   DescriptorMatrix m(static_cast<Eigen::Index>(lines.size()), dim);
   for (std::size_t i = 0; i < lines.size(); ++i) {
-    const auto fields = SplitCommas(lines[i]);
+    const auto fields = tf::SplitCommas(lines[i]);
     if (static_cast<Eigen::Index>(fields.size()) != width) {
-      FailLine(path, i + 1, "expected " + std::to_string(width) + " values (as on line 1), got " +
+      tf::FailLine(path, i + 1, "expected " + std::to_string(width) + " values (as on line 1), got " +
                                 std::to_string(fields.size()));
     }
     for (int j = 0; j < dim; ++j) {
       m(static_cast<Eigen::Index>(i), j) =
-          static_cast<float>(ParseNumber(path, i + 1, fields[static_cast<std::size_t>(j)]));
+          static_cast<float>(tf::ParseNumber(path, i + 1, fields[static_cast<std::size_t>(j)]));
     }
   }
   return m;
@@ -147,9 +147,9 @@ DescriptorMatrix LoadDescriptors(const fs::path& path, int dim, int bin_frame_wi
   } else if (ext == ".csv") {
     m = LoadCsv(path, dim);
   } else {
-    Fail(path, "unknown descriptor file extension '" + ext + "' (expected .npy, .bin or .csv)");
+    tf::Fail(path, "unknown descriptor file extension '" + ext + "' (expected .npy, .bin or .csv)");
   }
-  if (m.rows() == 0) Fail(path, "holds no frames");
+  if (m.rows() == 0) tf::Fail(path, "holds no frames");
   CheckDescriptorValues(m, path.string());
   return m;
 }

@@ -16,7 +16,7 @@
 namespace dvpr {
 
 namespace fs = std::filesystem;
-using namespace text_file;  // the text readers shared with loaders.cpp
+namespace tf = text_file;  // the text readers shared by loaders.cpp and robot_trajectory.cpp
 
 namespace {
 
@@ -34,8 +34,8 @@ struct Pose {
 // The camera's forward axis R(q) (0, 0, 1) of the normalised quaternion.
 Eigen::Vector3d Forward(const fs::path& path, std::size_t line, std::array<double, 4> q) {
   const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  if (!(norm > 1e-9)) FailLine(path, line, "the quaternion is zero (no rotation)");
-  if (!std::isfinite(norm)) FailLine(path, line, "the quaternion is too large to normalise");
+  if (!(norm > 1e-9)) tf::FailLine(path, line, "the quaternion is zero (no rotation)");
+  if (!std::isfinite(norm)) tf::FailLine(path, line, "the quaternion is too large to normalise");
   for (double& v : q) v /= norm;
   const double w = q[0], x = q[1], y = q[2], z = q[3];
   return Eigen::Vector3d(2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)).normalized();
@@ -43,21 +43,21 @@ Eigen::Vector3d Forward(const fs::path& path, std::size_t line, std::array<doubl
 
 void CheckPosition(const fs::path& path, std::size_t line, const std::array<double, 3>& p) {
   for (const double v : p) {
-    if (std::abs(v) > kMaxPoseTranslation_m) FailLine(path, line, "a position is outside [-1e9, 1e9] m");
+    if (std::abs(v) > kMaxPoseTranslation_m) tf::FailLine(path, line, "a position is outside [-1e9, 1e9] m");
   }
 }
 
 TimedTrajectory FromPoses(const fs::path& path, const std::vector<Pose>& poses, const std::vector<std::size_t>& lines) {
-  if (poses.size() < 2) Fail(path, "expected at least 2 poses, got " + std::to_string(poses.size()));
+  if (poses.size() < 2) tf::Fail(path, "expected at least 2 poses, got " + std::to_string(poses.size()));
   const auto n = static_cast<Eigen::Index>(poses.size());
   TimedTrajectory out{Trajectory{Positions(n, 3), Headings(n, 3)}, {}};
   for (Eigen::Index i = 0; i < n; ++i) {
     const Pose& pose = poses[static_cast<std::size_t>(i)];
     const std::size_t line = lines[static_cast<std::size_t>(i)];
     if (i > 0 && !(pose.t > poses[static_cast<std::size_t>(i) - 1].t)) {
-      FailLine(path, line, "timestamp is not after the previous pose's (timestamps must increase)");
+      tf::FailLine(path, line, "timestamp is not after the previous pose's (timestamps must increase)");
     }
-    if (!(pose.t - poses.front().t <= kMaxSpan_s)) FailLine(path, line, kSpanProblem);
+    if (!(pose.t - poses.front().t <= kMaxSpan_s)) tf::FailLine(path, line, kSpanProblem);
     CheckPosition(path, line, pose.p);
     out.trajectory.positions.row(i) << pose.p[0], pose.p[1], pose.p[2];
     out.trajectory.headings.row(i) = Forward(path, line, pose.q).transpose();
@@ -69,13 +69,13 @@ TimedTrajectory FromPoses(const fs::path& path, const std::vector<Pose>& poses, 
 TimedTrajectory LoadTum(const fs::path& path) {
   std::vector<Pose> poses;
   std::vector<std::size_t> lines;
-  const std::vector<std::string> text = ReadLines(path);
+  const std::vector<std::string> text = tf::ReadLines(path);
   for (std::size_t i = 0; i < text.size(); ++i) {
-    if (Trim(text[i]).front() == '#') continue;
-    const auto tokens = SplitWhitespace(text[i]);
-    if (tokens.size() != 8) FailLine(path, i + 1, "expected 8 numbers (t x y z qx qy qz qw), got " + std::to_string(tokens.size()));
+    if (tf::Trim(text[i]).front() == '#') continue;
+    const auto tokens = tf::SplitWhitespace(text[i]);
+    if (tokens.size() != 8) tf::FailLine(path, i + 1, "expected 8 numbers (t x y z qx qy qz qw), got " + std::to_string(tokens.size()));
     double v[8];
-    for (int k = 0; k < 8; ++k) v[k] = ParseNumber(path, i + 1, tokens[static_cast<std::size_t>(k)]);
+    for (int k = 0; k < 8; ++k) v[k] = tf::ParseNumber(path, i + 1, tokens[static_cast<std::size_t>(k)]);
     poses.push_back(Pose{v[0], {v[1], v[2], v[3]}, {v[7], v[4], v[5], v[6]}});
     lines.push_back(i + 1);
   }
@@ -100,19 +100,19 @@ std::string SecondsAsNanos(std::string_view token) {
 // A time in nanoseconds (Kimera-Multi's timestamp_kf(ns), timestamp_ns): a whole number in digits
 // in [0, 2^63 - 1]. A number in another form is refused with what it would be as seconds.
 std::int64_t ParseNanos(const fs::path& path, std::size_t line, const std::string& column, std::string_view token) {
-  token = Trim(token);
+  token = tf::Trim(token);
   if (!token.empty() && token.front() == '+') token.remove_prefix(1);
   std::int64_t ns = 0;
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), ns);
   const bool whole = !token.empty() && end == token.data() + token.size();
   if (whole && (ec == std::errc::result_out_of_range || (ec == std::errc() && ns < 0))) {
-    FailLine(path, line, column + ": " + Printable(token, 40) +
+    tf::FailLine(path, line, column + ": " + Printable(token, 40) +
                              " is out of range (nanoseconds must be a whole number in [0, 9223372036854775807])");
   }
   if (whole && ec == std::errc()) return ns;
-  ParseNumber(path, line, token);  // not a number, NaN or Inf: said as for every other column
+  tf::ParseNumber(path, line, token);  // not a number, NaN or Inf: said as for every other column
   const std::string as_nanos = SecondsAsNanos(token);
-  FailLine(path, line, column + ": expected a whole number of nanoseconds, got '" + Printable(token, 40) + "'" +
+  tf::FailLine(path, line, column + ": expected a whole number of nanoseconds, got '" + Printable(token, 40) + "'" +
                            (as_nanos.empty() ? "" : " (seconds? " + std::string(token) + " s is " + as_nanos + " ns)"));
 }
 
@@ -122,42 +122,42 @@ void CheckNanosLookLikeNanos(const fs::path& path, const std::string& column, co
                              const std::vector<std::size_t>& lines, std::string_view first_token) {
   const auto gaps = static_cast<std::int64_t>(ns.size() - 1);
   if (ns.back() - ns.front() >= 1000 * gaps) return;
-  const std::string as_nanos = SecondsAsNanos(Trim(first_token));
-  FailLine(path, lines.back(),
+  const std::string as_nanos = SecondsAsNanos(tf::Trim(first_token));
+  tf::FailLine(path, lines.back(),
            column + ": " + std::to_string(ns.size()) + " poses in " + std::to_string(ns.back() - ns.front()) +
                " ns, less than 1 us apart on average: seconds or milliseconds where nanoseconds were meant?" +
                (as_nanos.empty() || as_nanos == "0" ? std::string()
                                  : " As seconds, line " + std::to_string(lines.front()) + "'s " +
-                                       std::string(Trim(first_token)) + " is " + as_nanos + " ns"));
+                                       std::string(tf::Trim(first_token)) + " is " + as_nanos + " ns"));
 }
 
 TimedTrajectory LoadCsv(const fs::path& path) {
-  const std::vector<std::string> text = ReadLines(path);
-  const auto header = SplitCommas(text[0]);
+  const std::vector<std::string> text = tf::ReadLines(path);
+  const auto header = tf::SplitCommas(text[0]);
   const auto column = [&](std::initializer_list<std::string_view> names) {
     for (std::size_t i = 0; i < header.size(); ++i) {
       for (const std::string_view n : names) {
-        if (Trim(header[i]) == n) return i;
+        if (tf::Trim(header[i]) == n) return i;
       }
     }
-    FailLine(path, 1, "the header has no column " + std::string(*names.begin()) +
+    tf::FailLine(path, 1, "the header has no column " + std::string(*names.begin()) +
                           " (expected timestamp_kf(ns) or timestamp_ns, x, y, z, qw, qx, qy, qz)");
   };
   const std::size_t t = column({"timestamp_kf(ns)", "timestamp_ns"});
   const std::array<std::size_t, 7> c = {column({"x"}),  column({"y"}),  column({"z"}), column({"qw"}),
                                         column({"qx"}), column({"qy"}), column({"qz"})};
-  const std::string t_name(Trim(header[t]));
+  const std::string t_name(tf::Trim(header[t]));
   std::vector<Pose> poses;
   std::vector<std::size_t> lines;
   std::vector<std::int64_t> ns;
   for (std::size_t i = 1; i < text.size(); ++i) {
-    const auto f = SplitCommas(text[i]);
+    const auto f = tf::SplitCommas(text[i]);
     if (f.size() != header.size()) {
-      FailLine(path, i + 1, "expected " + std::to_string(header.size()) + " fields as the header, got " +
+      tf::FailLine(path, i + 1, "expected " + std::to_string(header.size()) + " fields as the header, got " +
                                 std::to_string(f.size()));
     }
     double v[7];
-    for (std::size_t k = 0; k < 7; ++k) v[k] = ParseNumber(path, i + 1, f[c[k]]);
+    for (std::size_t k = 0; k < 7; ++k) v[k] = tf::ParseNumber(path, i + 1, f[c[k]]);
     ns.push_back(ParseNanos(path, i + 1, t_name, f[t]));
     // Times since the first pose, from exact integer differences (a double of 1.6e18 ns would
     // keep only about 256 ns).
@@ -165,28 +165,28 @@ TimedTrajectory LoadCsv(const fs::path& path) {
     lines.push_back(i + 1);
   }
   TimedTrajectory out = FromPoses(path, poses, lines);
-  CheckNanosLookLikeNanos(path, t_name, ns, lines, SplitCommas(text[1])[t]);
+  CheckNanosLookLikeNanos(path, t_name, ns, lines, tf::SplitCommas(text[1])[t]);
   return out;
 }
 
 TimedTrajectory LoadKitti(const TrajectorySource& s) {
   TimedTrajectory out{LoadKittiPoses(s.poses), {}};
   const auto n = static_cast<std::size_t>(out.trajectory.size());
-  if (n < 2) Fail(s.poses, "expected at least 2 poses, got " + std::to_string(n));
+  if (n < 2) tf::Fail(s.poses, "expected at least 2 poses, got " + std::to_string(n));
   if (!s.times) {
     for (std::size_t i = 0; i < n; ++i) out.times_s.push_back(static_cast<double>(i) / s.fps);
     return out;
   }
-  const std::vector<std::string> text = ReadLines(*s.times);
+  const std::vector<std::string> text = tf::ReadLines(*s.times);
   if (text.size() != n) {
-    Fail(*s.times, std::to_string(text.size()) + " times for the " + std::to_string(n) + " poses of " + s.poses.string());
+    tf::Fail(*s.times, std::to_string(text.size()) + " times for the " + std::to_string(n) + " poses of " + s.poses.string());
   }
   for (std::size_t i = 0; i < n; ++i) {
-    const double t = ParseNumber(*s.times, i + 1, text[i]);
+    const double t = tf::ParseNumber(*s.times, i + 1, text[i]);
     if (i > 0 && !(t > out.times_s.back())) {
-      FailLine(*s.times, i + 1, "timestamp is not after the previous pose's (timestamps must increase)");
+      tf::FailLine(*s.times, i + 1, "timestamp is not after the previous pose's (timestamps must increase)");
     }
-    if (i > 0 && !(t - out.times_s.front() <= kMaxSpan_s)) FailLine(*s.times, i + 1, kSpanProblem);
+    if (i > 0 && !(t - out.times_s.front() <= kMaxSpan_s)) tf::FailLine(*s.times, i + 1, kSpanProblem);
     out.times_s.push_back(t);
   }
   const double first = out.times_s.front();

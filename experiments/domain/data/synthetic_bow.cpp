@@ -155,24 +155,24 @@ View ViewOf(const Trajectory& trajectory, Eigen::Index i) {
           static_cast<double>(i)};
 }
 
-void Require(bool ok, const char* field, const std::string& why) {
+void RequireBowParam(bool ok, const char* field, const std::string& why) {
   if (!ok) throw std::invalid_argument(std::string(field) + ": " + why);
 }
 
 }  // namespace
 
 void SyntheticBowParams::Validate() const {
-  Require(features >= 1 && features <= 100000, "features", "must be in [1, 100000], got " + std::to_string(features));
-  Require(vocabulary >= 2 && vocabulary <= 10000000, "vocabulary",
+  RequireBowParam(features >= 1 && features <= 100000, "features", "must be in [1, 100000], got " + std::to_string(features));
+  RequireBowParam(vocabulary >= 2 && vocabulary <= 10000000, "vocabulary",
           "must be in [2, 10000000], got " + std::to_string(vocabulary));
-  Require(landmark_density > 0 && landmark_density <= 10, "landmark_density", "must be in (0, 10]");
-  Require(range_m > 0 && range_m <= 1000, "range_m", "must be in (0, 1000]");
-  Require(field_of_view_deg > 0 && field_of_view_deg <= 360, "field_of_view_deg", "must be in (0, 360]");
-  Require(common_words >= 0 && common_words < vocabulary, "common_words",
+  RequireBowParam(landmark_density > 0 && landmark_density <= 10, "landmark_density", "must be in (0, 10]");
+  RequireBowParam(range_m > 0 && range_m <= 1000, "range_m", "must be in (0, 1000]");
+  RequireBowParam(field_of_view_deg > 0 && field_of_view_deg <= 360, "field_of_view_deg", "must be in (0, 360]");
+  RequireBowParam(common_words >= 0 && common_words < vocabulary, "common_words",
           "must be in [0, vocabulary - 1 = " + std::to_string(vocabulary - 1) + "], got " + std::to_string(common_words));
-  Require(common_share >= 0 && common_share <= 1, "common_share", "must be in [0, 1]");
-  Require(common_share == 0 || common_words >= 1, "common_share", "needs common_words >= 1 when above 0");
-  Require(view_sector_deg > 0 && view_sector_deg <= 360, "view_sector_deg", "must be in (0, 360]");
+  RequireBowParam(common_share >= 0 && common_share <= 1, "common_share", "must be in [0, 1]");
+  RequireBowParam(common_share == 0 || common_words >= 1, "common_share", "needs common_words >= 1 when above 0");
+  RequireBowParam(view_sector_deg > 0 && view_sector_deg <= 360, "view_sector_deg", "must be in (0, 360]");
 }
 
 std::vector<std::vector<std::int32_t>> SyntheticBowWords(const Trajectory& trajectory,

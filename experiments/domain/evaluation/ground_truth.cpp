@@ -20,10 +20,6 @@ void GroundTruthParams::Validate() const {
 
 namespace {
 
-double SquaredDistance(const Positions& p, Eigen::Index i, Eigen::Index j) {
-  return (p.row(i) - p.row(j)).squaredNorm();
-}
-
 // Calls fn(j) for every j outside the window of i: [0, lo) and (hi, N).
 template <typename Fn>
 void ForEachOutsideWindow(Eigen::Index n, const FrameInterval& window, Fn&& fn) {

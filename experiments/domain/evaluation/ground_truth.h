@@ -19,6 +19,11 @@ struct GroundTruthParams {
 };
 
 // g(i) = min over j outside i's window of ||P_i - P_j||^2; +inf when no frame is outside it.
+// Squared distance between frames i and j of `p`.
+inline double SquaredDistance(const Positions& p, Eigen::Index i, Eigen::Index j) {
+  return (p.row(i) - p.row(j)).squaredNorm();
+}
+
 std::vector<double> NearestOutsideWindowSquared(const Positions& positions, const FrameWindow& window);
 
 // relevant[i] = g(i) < r^2 (1 or 0): over the window of params (one stream, the paper's split), or

@@ -8,6 +8,8 @@
 #include <string>
 #include <unordered_map>
 
+#include "experiments/domain/evaluation/ground_truth.h"
+
 namespace dvpr {
 
 LatencyStats ComputeLatency(const std::vector<QueryRecord>& queries) {
@@ -33,9 +35,6 @@ LatencyStats ComputeLatency(const std::vector<QueryRecord>& queries) {
 }
 
 namespace {
-double SquaredDistance(const Positions& p, Eigen::Index i, Eigen::Index j) {
-  return (p.row(i) - p.row(j)).squaredNorm();
-}
 
 // Frames bucketed in cubes of side `radius`: every frame within the radius of
 // a point lies in the 27 cubes around it, so a relevance test costs the

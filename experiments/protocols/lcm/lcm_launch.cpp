@@ -250,7 +250,7 @@ GatheredRun GatherTeam(const ExperimentConfig& config, const SharedInputs& input
 
 namespace {
 
-struct Team {
+struct LaunchedTeam {
   std::string strategy;
   std::vector<Child> children;
 };
@@ -262,10 +262,10 @@ std::filesystem::path AgentFile(const std::filesystem::path& dir, const std::str
 
 // Starts one agent per robot for `strategy` and waits for them (killing the ones still running
 // at the timeout).
-Team RunTeam(const LaunchOptions& o, std::uint64_t nonce, const std::filesystem::path& secret,
-             const ExperimentConfig& config, const std::string& strategy, const std::filesystem::path& dir,
-             std::ostream& out) {
-  Team team{strategy, {}};
+LaunchedTeam RunTeam(const LaunchOptions& o, std::uint64_t nonce, const std::filesystem::path& secret,
+                     const ExperimentConfig& config, const std::string& strategy, const std::filesystem::path& dir,
+                     std::ostream& out) {
+  LaunchedTeam team{strategy, {}};
   for (int r = 0; r < o.robots; ++r) {
     const auto log = AgentFile(dir, strategy, r, ".log");
     std::filesystem::remove(log);  // a stale log must not pass for this run's
@@ -303,7 +303,7 @@ struct TeamLogs {
 };
 
 // Reads the team's logs, lists each agent in agents.csv and prints why each failed one failed.
-TeamLogs CollectTeam(const ExperimentConfig& config, const Team& team, int robots, const std::filesystem::path& dir,
+TeamLogs CollectTeam(const ExperimentConfig& config, const LaunchedTeam& team, int robots, const std::filesystem::path& dir,
                      std::ostream& agents_csv, std::ostream& out) {
   TeamLogs t;
   t.logs.resize(static_cast<std::size_t>(robots));
@@ -392,7 +392,7 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
   const auth::SecretFolder secret_folder(std::filesystem::temp_directory_path());
   const std::filesystem::path secret = secret_folder.path() / "team.secret";
   auth::WriteSecretFile(secret, auth::DrawSecret());
-  std::vector<Team> teams;
+  std::vector<LaunchedTeam> teams;
   for (const StrategySpec& spec : strategies) teams.push_back(RunTeam(o, nonce, secret, config, spec.name, dir, out));
 
   RunOutput all;
@@ -401,7 +401,7 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
                 "duplicates,kernel_dropped,out_of_range,unauthenticated,held_dropped,held_bytes_peak\n";
   double reference_auc = kNotApplicable, bow_reference_auc = kNotApplicable;
   bool clean = true;
-  for (const Team& team : teams) {
+  for (const LaunchedTeam& team : teams) {
     const TeamLogs t = CollectTeam(config, team, o.robots, dir, agents_csv, out);
     clean = clean && t.clean;
     if (!t.ran) {  // no agent left a log: rows of zeros would pass for a run
