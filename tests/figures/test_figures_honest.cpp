@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -82,6 +83,19 @@ class HonestFigures : public ::testing::Test {
     std::ofstream(dir_ / "links.csv") << links;
     std::ofstream(dir_ / "closure_pairs.csv") << pairs;
   }
+  // Both strategies on point-to-point 10 Mbit/s and a 100 Mbit/s shared medium, decentralized
+  // closing its pair at 2 s: the run files written and every figure drawn (notes on `log`).
+  struct Drawn {
+    std::vector<RunResult> rows;
+    std::vector<fs::path> pngs;
+  };
+  Drawn DrawTwoNetworks(std::ostream& log) const {
+    std::vector<RunResult> rows = Rows({Net(0, "point_to_point", 1e7), Net(1, "shared_medium", 1e8)});
+    WriteRunsCsv(dir_ / "runs.csv", rows);
+    WriteRunFiles(rows, 2'000'000'000);
+    std::vector<fs::path> pngs = DrawFigures(dir_, testing_support::NetworkLabelsOf(rows), log);
+    return {std::move(rows), std::move(pngs)};
+  }
   std::set<std::string> Pngs() const {
     std::set<std::string> out;
     for (const auto& e : fs::directory_iterator(dir_ / "figures")) {
@@ -118,11 +132,8 @@ TEST_F(HonestFigures, NetworkSlugsByHand) {
 // again from the files (as `dvpr plot` does), the same set.
 TEST_F(HonestFigures, TwoVariantsDrawEachGeneralFigurePerNetwork) {
   if (!FindProgram("gnuplot")) GTEST_SKIP() << "gnuplot is not installed";
-  const std::vector<RunResult> rows = Rows({Net(0, "point_to_point", 1e7), Net(1, "shared_medium", 1e8)});
-  WriteRunsCsv(dir_ / "runs.csv", rows);
-  WriteRunFiles(rows, 2'000'000'000);
   std::ostringstream log;
-  const auto drawn = DrawFigures(dir_, testing_support::NetworkLabelsOf(rows), log);
+  const auto [rows, drawn] = DrawTwoNetworks(log);
   std::set<std::string> expected = {"place_recognition_bytes.png", "saturation.png"};
   for (const char* name : {"traffic_by_role", "robot_load", "traffic_matrix", "loop_closures"}) {
     expected.insert(std::string(name) + "-net0-point-to-point-10-mbit-s-2-ms.png");
@@ -187,11 +198,8 @@ bool HasData(const fs::path& file) {
 // loop_closures.png has decentralized's matrix only (two panels, not three).
 TEST_F(HonestFigures, NoDrawnFigureHasAnEmptyPanel) {
   if (!FindProgram("gnuplot")) GTEST_SKIP() << "gnuplot is not installed";
-  const std::vector<RunResult> rows = Rows({Net(0, "point_to_point", 1e7), Net(1, "shared_medium", 1e8)});
-  WriteRunsCsv(dir_ / "runs.csv", rows);
-  WriteRunFiles(rows, 2'000'000'000);
   std::ostringstream log;
-  const auto drawn = DrawFigures(dir_, testing_support::NetworkLabelsOf(rows), log);
+  const std::vector<fs::path> drawn = DrawTwoNetworks(log).pngs;
   ASSERT_FALSE(drawn.empty()) << log.str();
   for (const fs::path& png : drawn) {
     const std::string script = Slurp(dir_ / "figures" / "data" / (png.stem().string() + ".gp"));
