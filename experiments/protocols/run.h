@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "experiments/config/network_variants.h"
 #include "experiments/domain/data/bow_data.h"
 #include "experiments/domain/data/dataset.h"
+#include "experiments/domain/strategies/run_centroids.h"
 #include "experiments/domain/strategies/strategy_spec.h"
 #include "experiments/results/bow_rows.h"
 #include "experiments/results/closure_rows.h"
@@ -47,6 +49,9 @@ struct SharedInputs {
   BowData bow;                         // the deployment's BoW vectors; empty unless a bow_ strategy runs
   DescriptorMatrix training;           // no rows (dim columns) when training.centroids gives the centroids
   std::filesystem::path out_dir;       // centroids go to out_dir/centroids/
+  // Each (robots, run)'s k-means, computed once for every protocol, network variant and strategy
+  // of the sweep that uses it (StrategyInputsOf hands it to the strategies).
+  std::shared_ptr<RunCentroidCache> centroid_cache = std::make_shared<RunCentroidCache>();
 };
 
 // Everything one spec produced: one RunResult per strategy, plus the detail rows. Run functions

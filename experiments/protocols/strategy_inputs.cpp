@@ -14,6 +14,7 @@ StrategyInputs StrategyInputsOf(const SharedInputs& inputs) {
   if (inputs.deployment.plan) s.plan = &*inputs.deployment.plan;
   s.bow = &inputs.bow;
   s.centroids = c.training.run_centroids;  // the config seed, clusters per robot, centroid files
+  s.cache = inputs.centroid_cache.get();   // the sweep's k-means, shared by every run of a (robots, run)
   s.failover = c.failover;
   return s;
 }

@@ -10,6 +10,8 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "experiments/domain/data/npy.h"
 #include "experiments/domain/strategies/run_placement.h"
@@ -113,6 +115,44 @@ TEST_F(CentroidFileTest, RunCentroidsChecksTheFileAgainstTheTrainingWidth) {
   std::uint64_t seed = 99;
   EXPECT_EQ(RunCentroids(DescriptorMatrix(0, 16), params_, 2, 0, &seed).cols(), 16);
   EXPECT_EQ(seed, 0u);
+}
+
+// The sweep's cache (SharedInputs::centroid_cache): the runs of one (robots, run) - its
+// strategies, the paper protocol and each sim network variant, on the sweep's threads - get one
+// k-means (here: one read of the run's file, which is then deleted so that a second read fails).
+TEST_F(CentroidFileTest, TheCacheComputesEachRunOnceForEveryThread) {
+  Write(2, 0, 2, 4);
+  RunCentroidCache cache;
+  const DescriptorMatrix training(0, 4);
+  constexpr int kThreads = 8;
+  std::vector<const CentroidMatrix*> seen(kThreads, nullptr);
+  {
+    std::vector<std::jthread> threads;
+    for (int i = 0; i < kThreads; ++i) {
+      threads.emplace_back([&, i] { seen[i] = &cache.Get(training, params_, 2, 0); });
+    }
+  }
+  for (const CentroidMatrix* c : seen) EXPECT_EQ(c, seen[0]);
+  fs::remove_all(dir_);
+  EXPECT_EQ(&cache.Get(training, params_, 2, 0), seen[0]);
+  EXPECT_EQ(seen[0]->rows(), 2);
+  // Clusters per robot is part of the key: 4 centroids for 2 robots are another file's.
+  RunCentroidParams two_each = params_;
+  two_each.clusters_per_robot = 2;
+  EXPECT_THROW(cache.Get(training, two_each, 2, 0), std::runtime_error);
+}
+
+// A run whose k-means failed (its file is missing) is tried again by the next caller, and one
+// cache serves one config's settings.
+TEST_F(CentroidFileTest, TheCacheRetriesAFailedRunAndRefusesOtherSettings) {
+  RunCentroidCache cache;
+  const DescriptorMatrix training(0, 4);
+  EXPECT_THROW(cache.Get(training, params_, 3, 1), std::runtime_error);
+  Write(3, 1, 3, 4);
+  EXPECT_EQ(cache.Get(training, params_, 3, 1).rows(), 3);
+  RunCentroidParams other = params_;
+  other.seed = 7;
+  EXPECT_THROW(cache.Get(training, other, 3, 1), std::logic_error);
 }
 
 // Which strategies read the run's centroids and which the training descriptors themselves, per

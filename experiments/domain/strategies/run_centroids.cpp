@@ -1,5 +1,7 @@
 #include "experiments/domain/strategies/run_centroids.h"
 
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -72,10 +74,22 @@ CentroidMatrix RunCentroids(const DescriptorMatrix& training, const RunCentroidP
 
 const CentroidMatrix& RunCentroidCache::Get(const DescriptorMatrix& training, const RunCentroidParams& params,
                                             int robots, int run) {
-  const auto key = std::make_tuple(robots, run, params.clusters_per_robot);
-  auto it = computed_.find(key);
-  if (it == computed_.end()) it = computed_.emplace(key, RunCentroids(training, params, robots, run)).first;
-  return it->second;
+  std::shared_ptr<Entry> entry;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    RunCentroidParams settings = params;
+    settings.clusters_per_robot = 0;  // part of the key
+    if (!params_) params_ = settings;
+    if (!(*params_ == settings)) {
+      throw std::logic_error("RunCentroidCache: one cache serves one config's k-means settings and centroid files");
+    }
+    std::shared_ptr<Entry>& slot = computed_[std::make_tuple(robots, run, params.clusters_per_robot)];
+    if (!slot) slot = std::make_shared<Entry>();
+    entry = slot;
+  }
+  // Outside the lock: other keys are computed meanwhile; callers of this key wait here.
+  std::call_once(entry->once, [&] { entry->centroids = RunCentroids(training, params, robots, run); });
+  return entry->centroids;
 }
 
 }  // namespace dvpr

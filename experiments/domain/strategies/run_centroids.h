@@ -10,6 +10,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -52,17 +55,29 @@ void CheckCentroidFiles(const RunCentroidParams& params, const std::vector<int>&
 CentroidMatrix RunCentroids(const DescriptorMatrix& training, const RunCentroidParams& params, int robots, int run,
                             std::uint64_t* seed_used = nullptr);
 
-// RunCentroids computed once per (robots, run, clusters per robot): the strategies of one run
-// that cluster the training set alike (decentralized, multi_probe_2, ...; lpt_c10 and
-// bounded_c10_0.25) share one k-means. RunCentroids is deterministic, so sharing changes no
-// result, only time. For one RunCentroidParams (seed, pattern, k-means settings); not
-// thread-safe: a run keeps its own.
+// RunCentroids computed once per (robots, run, clusters per robot) for a whole sweep: the
+// strategies of one run that cluster the training set alike (decentralized, multi_probe_2, ...;
+// lpt_c10 and bounded_c10_0.25) and the protocols that run the same (robots, run) (paper, and sim
+// once per network variant) share one k-means. RunCentroids is deterministic, so sharing changes
+// no result, only time: the default experiment clustered each (robots, run) three times before.
+// Thread-safe (the sweep's runs call it from several threads; a second caller of a key being
+// computed waits for it, and a k-means that throws is tried again by the next caller). Entries
+// are kept for the sweep: one k x d float matrix per (robots, run), e.g. 190 matrices of at most
+// 20 x 128 floats (2 MB) for the default experiment. For one config's RunCentroidParams (seed,
+// k-means settings, centroid files; clusters per robot is part of the key): Get with other
+// settings throws std::logic_error.
 class RunCentroidCache {
  public:
   const CentroidMatrix& Get(const DescriptorMatrix& training, const RunCentroidParams& params, int robots, int run);
 
  private:
-  std::map<std::tuple<int, int, int>, CentroidMatrix> computed_;
+  struct Entry {
+    std::once_flag once;
+    CentroidMatrix centroids;
+  };
+  std::mutex mutex_;
+  std::optional<RunCentroidParams> params_;  // the settings of the first Get, clusters per robot aside
+  std::map<std::tuple<int, int, int>, std::shared_ptr<Entry>> computed_;
 };
 
 }  // namespace dvpr

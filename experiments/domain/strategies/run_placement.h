@@ -34,7 +34,7 @@ struct StrategyInputs {
   double fps = 10.0;                             // frames per second: the re-clustering leader's timeout
   const SequenceSplit* plan = nullptr;           // a planned team (Dataset::plan): its capture times
   RunCentroidParams centroids;                   // config seed, clusters per robot, centroid files
-  RunCentroidCache* cache = nullptr;             // optional, one per run: k-means shared by its strategies
+  RunCentroidCache* cache = nullptr;             // optional: k-means shared by the runs of a (robots, run)
   // enabled: every stateless strategy's team routes around lost robots (FailoverTeam); the
   // re-clustering strategies have no failover (BuildRunPlacement throws).
   FailoverParams failover;

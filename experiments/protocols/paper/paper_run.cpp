@@ -171,9 +171,7 @@ RunFunction MakePaperRun(const SharedInputs& in) {
     RunOutput out;
     PaperProtocolParams run_params = params;
     run_params.keep_curves = spec.robots == pr_robots && spec.run == 0;
-    RunCentroidCache centroids;  // the run's strategies on the paper's table cluster once
-    StrategyInputs run_inputs = strategy_inputs;
-    run_inputs.cache = &centroids;
+    const StrategyInputs& run_inputs = strategy_inputs;  // its cache: each (robots, run) clusters once
     for (const StrategySpec& strategy : spec.strategies) {
       if (strategy.bag_of_words()) {
         AppendBowRun(strategy, spec, *bow, run_inputs, out);

@@ -249,9 +249,7 @@ RunFunction MakeSimRun(const SharedInputs& in) {
   const StrategyInputs strategy_inputs = StrategyInputsOf(in);
   return [config, data, bow, log_dir, strategy_inputs](const RunSpec& spec) {
     SimRunParams params = ToSimParams(*config, spec);
-    RunCentroidCache centroids;  // the run's strategies on the paper's table cluster once
-    StrategyInputs run_inputs = strategy_inputs;
-    run_inputs.cache = &centroids;
+    const StrategyInputs& run_inputs = strategy_inputs;  // its cache: each (robots, run) clusters once
     const auto run_one = [&](const StrategySpec& strategy) {
       params.outputs.lcm_log = log_dir.empty() ? std::filesystem::path() : log_dir / LogName(spec, strategy.name);
       const RunPlacement routing = BuildRunPlacement(strategy, run_inputs, spec.robots, spec.run);
