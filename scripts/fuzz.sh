@@ -5,7 +5,8 @@
 # test suite runs, so after scripts/test.sh nothing is left to compile but their links. Fails
 # when a target crashes, leaks, trips a sanitizer or one of its properties, times out on one
 # input or allocates beyond the limit; it then prints the command that reruns the saved input.
-#   DVPR_FUZZ_SECONDS  seconds per target (default 15: seven targets, under 2 minutes)
+#   DVPR_FUZZ_SECONDS  seconds per target (default 15: seven targets, one per processor at a
+#                      time: about a minute on 2 cores)
 #   DVPR_FUZZ_BUILD    the sanitizer build directory (default build/asan, scripts/test.sh's)
 #   DVPR_FUZZ_TARGETS  the targets to run (default: all)
 #   DVPR_FUZZ_SEED     libFuzzer's seed (default 1, so CI replays the same mutations and a finding
@@ -32,24 +33,48 @@ if [ -d /dev/shm ] && [ -w /dev/shm ]; then export TMPDIR=/dev/shm; fi
 export ASAN_OPTIONS=detect_leaks=1
 export UBSAN_OPTIONS=print_stacktrace=1
 
-failed=()
-for t in "${TARGETS[@]}"; do
-  bin="$BUILD/tests/fuzz/fuzz_$t"
-  work="$BUILD/fuzz/corpus/$t"
+# One target per processor at a time (a libFuzzer run is one single-threaded process): seven
+# targets of 15 s take about a minute on 2 cores instead of two. Each writes its own log and
+# exit status; they are reported in the order of TARGETS once all have finished.
+JOBS=$(nproc)
+status_dir="$BUILD/fuzz/status"
+rm -rf "$status_dir"
+mkdir -p "$status_dir"
+fuzz_one() {  # fuzz_one TARGET: runs it, leaves its exit status in $status_dir/TARGET
+  local t=$1
+  local bin="$BUILD/tests/fuzz/fuzz_$t"
+  local work="$BUILD/fuzz/corpus/$t"
+  local findings
   findings="$(pwd)/$BUILD/fuzz/findings/$t"
-  log="$BUILD/fuzz/logs/fuzz_$t.log"
+  local log="$BUILD/fuzz/logs/fuzz_$t.log"
   mkdir -p "$work" "$findings" "$(dirname "$log")"
   # The first corpus folder receives new inputs, so the committed seeds stay untouched.
   # -timeout: one input running longer than 10 s is a failure (inputs normally take well under
   # 10 ms); -rss_limit_mb also bounds a single allocation (malloc_limit_mb defaults to it).
-  set +e
+  local rc=0
   "$bin" "$work" "tests/fuzz/corpus/$t" -max_total_time="$SECONDS_EACH" -seed="$SEED" -timeout=10 \
     -rss_limit_mb=2048 -error_exitcode=77 -timeout_exitcode=78 -print_final_stats=1 \
-    -artifact_prefix="$findings/" >"$log" 2>&1
-  rc=$?
-  set -e
-  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
-  if [ "$rc" -eq 0 ]; then
+    -artifact_prefix="$findings/" >"$log" 2>&1 || rc=$?
+  echo "$rc" >"$status_dir/$t"
+}
+running=0
+for t in "${TARGETS[@]}"; do
+  if [ "$running" -ge "$JOBS" ]; then
+    wait -n || true
+    running=$((running - 1))
+  fi
+  fuzz_one "$t" &
+  running=$((running + 1))
+done
+wait
+
+failed=()
+for t in "${TARGETS[@]}"; do
+  bin="$BUILD/tests/fuzz/fuzz_$t"
+  log="$BUILD/fuzz/logs/fuzz_$t.log"
+  rc=$(cat "$status_dir/$t" 2>/dev/null || echo "no status")
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" 2>/dev/null | tail -n 1)
+  if [ "$rc" = 0 ]; then
     echo "fuzz_$t: ${runs:-?} executions in ${SECONDS_EACH} s, nothing found" >&2
     continue
   fi
