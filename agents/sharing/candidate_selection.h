@@ -86,11 +86,18 @@ std::vector<std::size_t> SelectConnectionBiasedGreedy(const SelectionGraph& grap
 //   the k largest gradients, the dual bound u = min(u, F + grad.(s - w)); stop when u - F < tol,
 //   else w += 2/(t + 2) (s - w); at most max_iterations. The last w is rounded to its k largest
 //   entries, compared at 10 decimals, ties by higher similarity, then earlier.
-// - If L(w) is disconnected (lambda_2 = 0: networkx's tracemin_lu fails to factor it and
-//   Swarm-SLAM retries from k - 1 starts with 1..k-1 random picks, np.random, then keeps the
-//   greedy start), we return the greedy start at once: the random retries are not mirrored.
+// - If L(w) is disconnected (lambda_2 = 0), we return the greedy start at once. Swarm-SLAM's
+//   solver (networkx's TraceMIN with an LU of L whose largest-degree diagonal entry is set to
+//   infinity, which makes only a connected Laplacian regular) then raises "singular" as its
+//   comment on run_mac_solver says, and Swarm-SLAM retries from k - 1 starts with 1..k-1 random
+//   picks (np.random) before it keeps the greedy start; the random retries are not mirrored, nor
+//   the case where the LU of a disconnected L happens to succeed in floating point and its
+//   Frank-Wolfe goes on with lambda_2 ~ 0. Since the first step is 1 (w becomes s), only the
+//   start and the first direction can be disconnected; later iterates keep their support.
 // The Fiedler pair comes from a dense eigensolver: O(N^3) time and O(N^2) memory per iteration
-// for N keyframes in the graph (tracemin_lu is sparse); fine up to about a thousand keyframes.
+// for N keyframes in the graph (Swarm-SLAM's TraceMIN is sparse, iterative, to a residual of
+// 1e-8, so its gradients differ from ours in the last digits); fine up to about a thousand
+// keyframes, beyond that a sparse Lanczos solver would be the next step.
 // Where lambda_2 is a multiple eigenvalue the gradient depends on which vector of its space the
 // solver returns, as it does in Swarm-SLAM.
 MacSelection SelectMac(const SelectionGraph& graph, int budget, const MacParams& params = {});
