@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "experiments/config/config.h"
+#include "experiments/protocols/inputs.h"
 #include "tests/app/cli_test_support.h"
 
 namespace dvpr::testing_support {
@@ -187,6 +189,50 @@ TEST_F(TeamPlanCliTest, WhatAPlannedTeamCannotRunWithIsANamedError) {
             std::string::npos)
       << launch.err;
   EXPECT_FALSE(fs::exists(Out()));
+}
+
+
+// The squares team with descriptor files of its own (issue 50, item 1): each robot's rows of the
+// synthetic source's rendering, written to its own .csv file (9 significant digits: float32 reads
+// back exactly), given as dataset.trajectories[i].descriptors with dataset.source files. Both
+// protocols write the same numbers as the synthetic source's run, file for file.
+TEST_F(TeamPlanCliTest, OwnDescriptorFilesGiveTheNumbersOfTheSyntheticSource) {
+  std::string yaml = SquaresYaml();
+  yaml.replace(yaml.find("protocols: [sim]"), 16, "protocols: [paper, sim]");
+  const ExperimentConfig config = ParseConfig(yaml, dir_, {}, "squares.yaml");
+  const SharedInputs synthetic = LoadSharedInputs(config, "squares.yaml");
+  ASSERT_EQ(synthetic.deployment.size(), 34);
+  for (int r = 0; r < 2; ++r) {
+    std::ofstream csv(dir_ / ("robot" + std::to_string(r) + "_desc.csv"));
+    csv.precision(9);
+    for (int i = 17 * r; i < 17 * (r + 1); ++i) {
+      for (int j = 0; j < 16; ++j) csv << (j ? "," : "") << synthetic.deployment.descriptors(i, j);
+      csv << "\n";
+    }
+  }
+  ASSERT_EQ(RunConfig(yaml).status, 0);
+  const fs::path reference = dir_ / "synthetic_out";
+  fs::rename(Out(), reference);
+  std::string files = yaml;
+  files.replace(files.find("source: synthetic"), 17, "source: files");
+  for (int r = 0; r < 2; ++r) {
+    const std::string csv = "robot" + std::to_string(r) + ".csv', format: csv";
+    files.replace(files.find(csv), csv.size(),
+                  csv + ", descriptors: '" + (dir_ / ("robot" + std::to_string(r) + "_desc.csv")).string() + "'");
+  }
+  const Result r = RunConfig(files);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto text = [](const fs::path& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  for (const std::string f : {"runs.csv", "per_robot.csv", "links.csv", "queries.csv", "closure_pairs.csv"}) {
+    ASSERT_TRUE(fs::exists(reference / f)) << f;
+    EXPECT_EQ(text(Out() / f), text(reference / f)) << f;
+  }
+  int paper = 0;
+  for (const Row& run : ReadCsv(Out() / "runs.csv")) paper += run.at("protocol") == "paper" ? 1 : 0;
+  EXPECT_EQ(paper, 2);
 }
 
 }  // namespace
