@@ -401,9 +401,10 @@ void CheckTrajectoryDescriptors(const Field& dataset, const DatasetConfig& d) {
 }
 
 // What a planned team (dataset.scenario other than split, or dataset.trajectories) can run with
-// (docs/config.md, "Team plans"): the one team its plan is made for, descriptors the synthetic
-// model renders along every robot's own poses and times, and strategies that need neither the
-// paper's split nor bag-of-words vectors.
+// (docs/config.md, "Team plans"): teams of its first n robots (n at most the trajectories'
+// count), descriptors the synthetic model renders along every robot's own poses and times (or the
+// trajectories' own files), and strategies that need neither the paper's split nor bag-of-words
+// vectors.
 void CheckTeamPlan(const Field& root, const ExperimentConfig& c) {
   const DatasetConfig& d = c.dataset;
   if (!d.Planned()) return;
@@ -419,11 +420,14 @@ void CheckTeamPlan(const Field& root, const ExperimentConfig& c) {
   if (!d.trajectories.empty() && d.frames) {
     dataset.Child("frames").Fail("dataset.frames cuts dataset.poses, which a team of dataset.trajectories does not read");
   }
-  const std::size_t wanted = d.trajectories.empty() ? 0 : d.trajectories.size();
-  if (c.sweep.robots.size() != 1 || (wanted > 0 && static_cast<std::size_t>(c.sweep.robots.front()) != wanted)) {
-    root.Child("robots").Fail(plan + " plans one team" +
-                              (wanted > 0 ? " of " + std::to_string(wanted) + " robots (one per trajectory)" : std::string()) +
-                              ": give robots as that one count");
+  // A sweep over team sizes runs teams of the plan's first n robots: n at most the trajectories'.
+  const std::size_t given = d.trajectories.size();
+  for (const int n : c.sweep.robots) {
+    if (given > 0 && static_cast<std::size_t>(n) > given) {
+      root.Child("robots").Fail(std::to_string(n) + " robots, but dataset.trajectories gives " + std::to_string(given) +
+                                " (a team of n robots drives the first n trajectories): every count at most " +
+                                std::to_string(given));
+    }
   }
   for (const StrategySpec& s : c.sweep.strategies) {
     if (s.bag_of_words() || s.reclusters()) {

@@ -83,7 +83,11 @@ Dataset LoadTeamPlan(const ExperimentConfig& c, const Trajectory& poses, const s
     team = WithKey(origin, "dataset.trajectories", [&] { return TeamOfTrajectories(d.trajectories, trajectories, d.fps); });
   } else {
     team = WithKey(origin, "dataset.scenario", [&] {
-      return DriveTeam(poses, PlanDrives(d.scenario, static_cast<int>(poses.size()), c.sweep.robots.front(), d.fps), d.fps);
+      // The largest team of the sweep: a smaller one is its first robots (SharedInputs::smaller_teams),
+      // as a plan for that many would drive (robot r's drive depends on r alone, random_routes' on
+      // the draws of robots 0 to r).
+      const int robots = *std::max_element(c.sweep.robots.begin(), c.sweep.robots.end());
+      return DriveTeam(poses, PlanDrives(d.scenario, static_cast<int>(poses.size()), robots, d.fps), d.fps);
     });
   }
   team.name = c.name;
@@ -184,6 +188,11 @@ SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string&
        (read && !d.trajectories.empty() ? " (every robot's own file)"
                                         : !read && d.Planned() ? " (every robot's frames of its plan)" : ""));
   in.deployment = LoadDeployment(config, origin);
+  if (const auto& plan = in.deployment.plan) {
+    for (const int n : config.sweep.robots) {
+      if (n < plan->robots()) in.smaller_teams.emplace(n, FirstRobots(in.deployment, n));
+    }
+  }
   in.bow = LoadBow(config, origin, in.deployment, bow_progress);
   const int largest = *std::max_element(config.sweep.robots.begin(), config.sweep.robots.end());
   if (in.deployment.size() < largest) {

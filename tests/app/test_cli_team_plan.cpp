@@ -4,8 +4,10 @@
 // first inter-robot closure are counted by hand from the poses and times alone; the scenarios on
 // KITTI 00 run in both protocols and keep their plan; what a planned team cannot run with is one
 // named error.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -166,9 +168,7 @@ TEST_F(TeamPlanCliTest, WhatAPlannedTeamCannotRunWithIsANamedError) {
     EXPECT_FALSE(fs::exists(Out() / "runs.csv"));
     return r.err;
   };
-  std::string yaml = KittiYaml("{kind: staggered, offset: 5s}", 3);
-  EXPECT_NE(error(yaml.replace(yaml.find("robots: [3]"), 11, "robots: [2, 3]")).find("robots: dataset.scenario staggered plans one team"),
-            std::string::npos);
+  std::string yaml;
   EXPECT_NE(error(KittiYaml("{kind: staggered}", 3)).find("dataset.scenario.offset: staggered needs a positive offset"),
             std::string::npos);
   EXPECT_NE(error(KittiYaml("{kind: random_routes, length: 5000}", 3)).find("dataset.scenario: length: 5000 frames, the sequence has 200"),
@@ -178,14 +178,16 @@ TEST_F(TeamPlanCliTest, WhatAPlannedTeamCannotRunWithIsANamedError) {
   EXPECT_NE(error(yaml.replace(yaml.find("strategies: ["), 13, "strategies: [bow_decentralized, ")).find("strategies: dataset.scenario reverse: strategy bow_decentralized is not available"),
             std::string::npos);
   yaml = SquaresYaml();
-  EXPECT_NE(error(yaml.replace(yaml.find("robots: [2]"), 11, "robots: [3]")).find("one team of 2 robots (one per trajectory)"),
+  EXPECT_NE(error(yaml.replace(yaml.find("robots: [2]"), 11, "robots: [2, 3]"))
+                .find("robots: 3 robots, but dataset.trajectories gives 2 (a team of n robots drives the first n "
+                      "trajectories): every count at most 2"),
             std::string::npos);
-  // A launched team of another size than the plan's is refused before any agent starts.
+  // A launched team larger than the plan is refused before any agent starts.
   std::ofstream(Config()) << KittiYaml("{kind: staggered, offset: 5s}", 3);
-  const Result launch = Dvpr("launch --config '" + Config().string() + "' --robots 2 --out '" + Out().string() + "'");
+  const Result launch = Dvpr("launch --config '" + Config().string() + "' --robots 4 --out '" + Out().string() + "'");
   EXPECT_NE(launch.status, 0);
-  EXPECT_NE(launch.err.find("--robots: 2 robots, but the config's team plan (dataset.trajectories or "
-                            "dataset.scenario) is for 3"),
+  EXPECT_NE(launch.err.find("--robots: 4 robots, but the config's team plan (dataset.trajectories or "
+                            "dataset.scenario) has 3"),
             std::string::npos)
       << launch.err;
   EXPECT_FALSE(fs::exists(Out()));
@@ -234,6 +236,83 @@ TEST_F(TeamPlanCliTest, OwnDescriptorFilesGiveTheNumbersOfTheSyntheticSource) {
   for (const Row& run : ReadCsv(Out() / "runs.csv")) paper += run.at("protocol") == "paper" ? 1 : 0;
   EXPECT_EQ(paper, 2);
 }
+
+
+// A team plan swept over team sizes (issue 50, item 2): robots [2, 3] runs teams of the plan's
+// first 2 and 3 robots. Each team's rows, in both protocols, are those of a config made for that
+// team alone: for KITTI 00 staggered, the scenario planned for 2 robots; for three trajectories,
+// a config listing only the first two (the synthetic model renders each team along its own poses).
+class TeamSweepCliTest : public TeamPlanCliTest {
+ protected:
+  // Rows of `file` of runs of `robots` robots, in order, whole lines (the header first).
+  static std::vector<std::string> LinesOf(const fs::path& file, int robots) {
+    const auto fields = [](const std::string& line) {
+      std::vector<std::string> out(1);
+      for (const char c : line) {
+        if (c == ',') {
+          out.emplace_back();
+        } else {
+          out.back().push_back(c);
+        }
+      }
+      return out;
+    };
+    std::ifstream in(file);
+    std::string header, line;
+    std::getline(in, header);
+    const std::vector<std::string> names = fields(header);
+    const auto column = static_cast<std::size_t>(std::find(names.begin(), names.end(), "robots") - names.begin());
+    EXPECT_LT(column, names.size()) << file;
+    std::vector<std::string> lines{header};
+    while (std::getline(in, line)) {
+      const std::vector<std::string> values = fields(line);
+      if (column < values.size() && values[column] == std::to_string(robots)) lines.push_back(line);
+    }
+    return lines;
+  }
+  // Runs `sweep` (robots [2, 3]) and, for each n, `alone(n)`; compares the rows of each n.
+  void ExpectEachTeamAsAlone(const std::string& sweep, const std::function<std::string(int)>& alone) {
+    const Result r = RunConfig(sweep);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const fs::path swept = dir_ / "swept";
+    fs::rename(Out(), swept);
+    for (const int n : {2, 3}) {
+      const Result one = RunConfig(alone(n));
+      ASSERT_EQ(one.status, 0) << one.err;
+      for (const std::string f : {"runs.csv", "per_robot.csv", "queries.csv"}) {
+        const std::vector<std::string> mine = LinesOf(swept / f, n);
+        EXPECT_GT(mine.size(), 1u) << f << " n=" << n;
+        EXPECT_EQ(mine, LinesOf(Out() / f, n)) << f << " n=" << n;
+      }
+      fs::remove_all(Out());
+    }
+  }
+  static std::string Replaced(std::string s, const std::string& from, const std::string& to) {
+    return s.replace(s.find(from), from.size(), to);
+  }
+};
+
+TEST_F(TeamSweepCliTest, AStaggeredSweepRunsEachTeamAsItsOwnPlan) {
+  const std::string yaml = Replaced(KittiYaml("{kind: staggered, offset: 5s}", 3), "protocols: [sim]", "protocols: [paper, sim]");
+  ExpectEachTeamAsAlone(Replaced(yaml, "robots: [3]", "robots: [2, 3]"),
+                        [&](int n) { return Replaced(yaml, "robots: [3]", "robots: [" + std::to_string(n) + "]"); });
+}
+
+TEST_F(TeamSweepCliTest, ThreeTrajectoriesRunTeamsOfTheirFirstRobots) {
+  std::ofstream(dir_ / "robot2.csv") << SquareCsv(false);
+  const std::string two = Replaced(SquaresYaml(), "protocols: [sim]", "protocols: [paper, sim]");
+  const std::string entry = "    - {poses: '" + (dir_ / "robot2.csv").string() + "', format: csv, start: 60s}\n";
+  const std::string three = Replaced(two, "training:", entry + "training:");
+  ExpectEachTeamAsAlone(Replaced(three, "robots: [2]", "robots: [2, 3]"),
+                        [&](int n) { return n == 2 ? two : Replaced(three, "robots: [2]", "robots: [3]"); });
+  // The swept runs.csv holds both teams: 34 queries of the team of 2, 51 of the team of 3.
+  std::map<std::string, std::string> queries;
+  for (const Row& run : ReadCsv(dir_ / "swept" / "runs.csv")) {
+    if (run.at("protocol") == "paper" && run.at("strategy") == "broadcast") queries[run.at("robots")] = run.at("queries");
+  }
+  EXPECT_EQ(queries, (std::map<std::string, std::string>{{"2", "34"}, {"3", "51"}}));
+}
+
 
 }  // namespace
 }  // namespace dvpr::testing_support
