@@ -8,6 +8,7 @@
 #include "agents/algorithms/ids.h"
 #include "experiments/domain/data/bow_file.h"
 #include "experiments/domain/data/loaders.h"
+#include "experiments/domain/data/npy.h"
 #include "experiments/domain/data/synthetic_bow.h"
 #include "experiments/domain/data/team_plan.h"
 #include "experiments/results/protocol_traits.h"
@@ -212,6 +213,17 @@ SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string&
                       " training descriptors, k-means needs at least " + std::to_string(k));
   }
   return in;
+}
+
+std::vector<std::filesystem::path> WriteRobotDescriptors(const Dataset& team, const std::filesystem::path& dir) {
+  if (!team.plan) throw std::invalid_argument("the config's dataset is no team plan (dataset.trajectories or dataset.scenario)");
+  std::vector<std::filesystem::path> files;
+  for (int r = 0; r < team.plan->robots(); ++r) {
+    const FrameRange range = team.plan->ranges[static_cast<std::size_t>(r)];
+    files.push_back(dir / ("robot" + std::to_string(r) + ".npy"));
+    WriteNpy(files.back(), team.descriptors.middleRows(range.begin.value, range.size()));
+  }
+  return files;
 }
 
 void CheckDescriptorsFitTheWire(const Dataset& deployment, const std::string& origin) {

@@ -314,5 +314,41 @@ TEST_F(TeamSweepCliTest, ThreeTrajectoriesRunTeamsOfTheirFirstRobots) {
 }
 
 
+// The shipped example team (issue 50, item 5): experiments/configs/own_team.yaml with its three
+// robots' TUM and descriptor files (data/own_team/, made once by scripts/make_own_team.py), swept
+// over robots [2, 3] in both protocols, writes the numbers of the same team given through the
+// synthetic source (the same trajectories without their files): every row, file for file.
+TEST_F(TeamPlanCliTest, OwnTeamRunsAsTheSameTeamFromTheSyntheticSource) {
+  const std::string config = std::string(DVPR_SOURCE_DIR) + "/experiments/configs/own_team.yaml";
+  const std::string quick = " --set runs=1 --set outputs.messages=false --set outputs.figures=false";
+  const auto run = [&](const std::string& out, const std::string& extra) {
+    return Dvpr("run '" + config + "' --quiet --out '" + (dir_ / out).string() + "'" + quick + extra);
+  };
+  const Result files = run("files", "");
+  ASSERT_EQ(files.status, 0) << files.err;
+  std::string entries;
+  for (int r = 0; r < 3; ++r) {
+    entries += std::string(r ? ", " : "") + "{poses: " + DVPR_SOURCE_DIR + "/data/own_team/robot" + std::to_string(r) +
+               ".txt, format: tum, start: " + std::to_string(20 * r) + "s}";
+  }
+  const Result synthetic = run("synthetic", " --set dataset.source=synthetic --set 'dataset.trajectories=[" + entries + "]'");
+  ASSERT_EQ(synthetic.status, 0) << synthetic.err;
+  const auto text = [](const fs::path& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  for (const std::string f : {"runs.csv", "per_robot.csv", "links.csv", "queries.csv", "closure_pairs.csv"}) {
+    ASSERT_TRUE(fs::exists(dir_ / "synthetic" / f)) << f;
+    EXPECT_EQ(text(dir_ / "files" / f), text(dir_ / "synthetic" / f)) << f;
+  }
+  // Both protocols, both teams: 1200 queries of the team of 2, 1800 of the team of 3.
+  std::map<std::string, int> rows;
+  for (const Row& row : ReadCsv(dir_ / "files" / "runs.csv")) {
+    ++rows[row.at("protocol") + " " + row.at("robots")];
+    EXPECT_EQ(row.at("queries"), row.at("robots") == "2" ? "1200" : "1800") << row.at("protocol") << row.at("strategy");
+  }
+  EXPECT_EQ(rows, (std::map<std::string, int>{{"paper 2", 2}, {"paper 3", 2}, {"sim 2", 2}, {"sim 3", 2}}));
+}
+
 }  // namespace
 }  // namespace dvpr::testing_support
