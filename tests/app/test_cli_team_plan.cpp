@@ -350,5 +350,40 @@ TEST_F(TeamPlanCliTest, OwnTeamRunsAsTheSameTeamFromTheSyntheticSource) {
   EXPECT_EQ(rows, (std::map<std::string, int>{{"paper 2", 2}, {"paper 3", 2}, {"sim 2", 2}, {"sim 3", 2}}));
 }
 
+
+// dvpr descriptors (scripts/make_own_team.py's step): own_team.yaml's trajectories through the
+// synthetic source give, byte for byte, the descriptor files data/own_team/ ships (so they are
+// what the script writes today); a config without a team plan is one error line, no folder; a
+// missing --out is a usage error.
+TEST_F(TeamPlanCliTest, DescriptorsWritesEachRobotsFileAsTheShippedTeamHasIt) {
+  const std::string source = DVPR_SOURCE_DIR;
+  std::string entries;
+  for (int r = 0; r < 3; ++r) {
+    entries += std::string(r ? ", " : "") + "{poses: " + source + "/data/own_team/robot" + std::to_string(r) +
+               ".txt, format: tum, start: " + std::to_string(20 * r) + "s}";
+  }
+  const Result r = Dvpr("descriptors '" + source + "/experiments/configs/own_team.yaml' --out '" + Out().string() +
+                        "' --set dataset.source=synthetic --set 'dataset.trajectories=[" + entries + "]'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto bytes = [](const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  for (int k = 0; k < 3; ++k) {
+    const std::string name = "robot" + std::to_string(k) + ".npy";
+    ASSERT_TRUE(fs::exists(Out() / name)) << name;
+    EXPECT_EQ(bytes(Out() / name), bytes(source + "/data/own_team/" + name)) << name;
+  }
+  fs::remove_all(Out());
+  std::ofstream(Config()) << KittiYaml("split", 2);
+  const Result split = Dvpr("descriptors '" + Config().string() + "' --out '" + Out().string() + "'");
+  EXPECT_EQ(split.status, 1);
+  EXPECT_NE(split.err.find("dataset: dvpr descriptors writes a team plan's robots' descriptors"), std::string::npos)
+      << split.err;
+  EXPECT_EQ(std::count(split.err.begin(), split.err.end(), '\n'), 1) << split.err;
+  EXPECT_FALSE(fs::exists(Out()));
+  EXPECT_EQ(Dvpr("descriptors '" + Config().string() + "'").status, 2);
+}
+
 }  // namespace
 }  // namespace dvpr::testing_support
