@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "dvpr/version.h"
 #include "experiments/protocols/lcm/agent_process.h"
@@ -18,8 +19,10 @@
 #include "experiments/figures/figures.h"
 #include "experiments/mpi/mpi_run_distributor.h"
 #include "experiments/mpi/mpi_world.h"
+#include "experiments/protocols/inputs.h"
 #include "experiments/protocols/lcm/lcm_launch.h"
 #include "experiments/replay/replay.h"
+#include "experiments/results/result_folder.h"
 #include "experiments/results/one_line_text.h"
 #include "experiments/sweep/run_executor.h"
 
@@ -48,6 +51,10 @@ Usage:
                      the same sweep, its runs spread over K MPI ranks; rank 0
                      writes DIR, the same files as a single process, byte for byte
   dvpr plot DIR      redraw DIR/figures/*.png from the files in DIR
+  dvpr descriptors CONFIG.yaml --out DIR [--set key.path=value ...]
+                     write the deployment descriptors of the config's team plan,
+                     one DIR/robot<r>.npy per robot (what dataset.trajectories[r].
+                     descriptors reads back; docs/config.md "Team plans")
   dvpr agent --config C --robot R [--robots N] [--run K] [--strategy S] [--lcm URL]
              [--speedup X] [--out FILE] [--set key.path=value ...] [--grace SEC]
              [--team-nonce HEX] --team-secret FILE [--hold-bytes B]
@@ -166,6 +173,50 @@ int Run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   return RunOnRanks(world, a.options, run, out, err);
 }
 
+struct DescriptorsArgs {
+  std::filesystem::path config;
+  std::filesystem::path out;
+  std::vector<ConfigOverride> overrides;
+};
+
+DescriptorsArgs ParseDescriptorsArgs(const std::vector<std::string>& args) {
+  DescriptorsArgs d;
+  OptionReader in(args);
+  while (in.Next()) {
+    const std::string& f = in.flag();
+    if (f == "--out") {
+      d.out = in.Text();
+    } else if (f == "--set") {
+      d.overrides.push_back(ParseOverride(in.Text()));
+    } else if (!f.empty() && f[0] == '-') {
+      in.Unknown();
+    } else if (d.config.empty()) {
+      d.config = f;
+    } else {
+      throw std::invalid_argument("more than one config file (" + d.config.string() + ", " + f + ")");
+    }
+  }
+  if (d.config.empty()) throw std::invalid_argument("dvpr descriptors needs a CONFIG.yaml");
+  if (d.out.empty()) throw std::invalid_argument("--out: dvpr descriptors needs the folder to write");
+  return d;
+}
+
+// The deployment descriptors of a team plan, one .npy per robot, into a folder that appears whole
+// (ResultFolder): how a synthetic team becomes a team with descriptor files of its own.
+int WriteDescriptors(const DescriptorsArgs& a, std::ostream& out) {
+  const ExperimentConfig config = LoadConfig(a.config, a.overrides);
+  if (!config.dataset.Planned()) {
+    throw ConfigError(a.config.string() + ": dataset: dvpr descriptors writes a team plan's robots' descriptors; "
+                      "the config has neither dataset.trajectories nor a dataset.scenario other than split");
+  }
+  const SharedInputs inputs = LoadSharedInputs(config, a.config.string());
+  ResultFolder folder(a.out);
+  const std::vector<std::filesystem::path> files = WriteRobotDescriptors(inputs.deployment, folder.dir());
+  folder.Commit();
+  for (const auto& f : files) out << OneLineText((a.out / f.filename()).string()) << "\n";
+  return kExitOk;
+}
+
 int Plot(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   if (args.size() != 2) {
     err << "dvpr plot: expected one folder (see dvpr --help)\n";
@@ -205,6 +256,10 @@ std::optional<int> Dispatch(const std::string& cmd, const std::vector<std::strin
       replay::WriteReplay(o, out);
       return kExitOk;
     });
+  }
+  if (cmd == "descriptors") {
+    return WithOptions("descriptors", args, err, ParseDescriptorsArgs,
+                       [&](const DescriptorsArgs& a) { return WriteDescriptors(a, out); });
   }
   if (cmd == "launch") {
     return WithOptions("launch", args, err, ParseLaunchArgs, [&](const LaunchOptions& o) { return RunLaunch(o, out); });

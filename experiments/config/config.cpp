@@ -6,6 +6,7 @@
 #include <array>
 #include <charconv>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -160,7 +161,10 @@ DatasetConfig ReadDataset(const Field& f) {
   }
   const Field desc = f.Child("descriptors");
   if (desc.present()) d.descriptors = desc.ExistingFile();
-  if (d.source == DatasetSource::kFiles && !d.descriptors) {
+  if (desc.present() && f.Child("trajectories").present()) {
+    desc.Fail("a team of dataset.trajectories gives each robot's own file as dataset.trajectories[i].descriptors");
+  }
+  if (d.source == DatasetSource::kFiles && !d.descriptors && !f.Child("trajectories").present()) {
     desc.Fail("required when dataset.source is files (an .npy, .bin or .csv file)");
   }
   if (auto c = f.Child("bin_width"); c.present()) d.bin_width = static_cast<int>(c.Int(1, 1 << 20));
@@ -208,7 +212,7 @@ ScenarioSpec ReadScenario(const Field& f) {
 
 // One entry of dataset.trajectories: {poses, format, start, fps, times, frame}.
 TrajectorySource ReadTrajectorySource(const Field& f) {
-  f.ExpectMap({"poses", "format", "start", "fps", "times", "frame"});
+  f.ExpectMap({"poses", "format", "start", "fps", "times", "frame", "descriptors"});
   TrajectorySource s;
   const Field poses = f.Child("poses");
   if (!poses.present()) poses.Fail("required: the robot's pose file");
@@ -222,6 +226,7 @@ TrajectorySource ReadTrajectorySource(const Field& f) {
   if (auto c = f.Child("fps"); c.present()) s.fps = c.Double();  // TrajectorySource::Validate checks it
   if (auto c = f.Child("times"); c.present()) s.times = c.ExistingFile();
   if (auto c = f.Child("frame"); c.present()) s.frame = c.String();
+  if (auto c = f.Child("descriptors"); c.present()) s.descriptors = c.ExistingFile();
   f.Validate(s);
   return s;
 }
@@ -369,28 +374,60 @@ std::int64_t ReadStartTime(const Field& f) {
          FormatUtcInstant(kMaxUtcInstant) + "], got '" + s + "'");
 }
 
+// dataset.trajectories' own descriptor files: with dataset.source files every entry names one,
+// with synthetic none does (its descriptors are rendered); the first entry that breaks the rule is
+// named, and with it an entry that keeps it.
+void CheckTrajectoryDescriptors(const Field& dataset, const DatasetConfig& d) {
+  if (d.trajectories.empty()) return;
+  const std::vector<Field> entries = dataset.Child("trajectories").Items();
+  const auto entry = [](std::size_t r) { return "dataset.trajectories[" + std::to_string(r) + "]"; };
+  const bool files = d.source == DatasetSource::kFiles;
+  std::optional<std::size_t> with;
+  for (std::size_t r = 0; r < d.trajectories.size() && !with; ++r) {
+    if (d.trajectories[r].descriptors) with = r;
+  }
+  for (std::size_t r = 0; r < d.trajectories.size(); ++r) {
+    if (files && !d.trajectories[r].descriptors) {
+      entries[r].Child("descriptors").Fail(
+          "required when dataset.source is files: one descriptor file per robot (an .npy, .bin or .csv file, one "
+          "row per pose)" + (with ? "; " + entry(*with) + " names one, this entry none" : std::string()));
+    }
+  }
+  if (!files && with) {
+    entries[*with].Child("descriptors").Fail(
+        "a descriptor file of the robot's own needs dataset.source: files (with synthetic, every robot's "
+        "descriptors are rendered by the model)");
+  }
+}
+
 // What a planned team (dataset.scenario other than split, or dataset.trajectories) can run with
-// (docs/config.md, "Team plans"): the one team its plan is made for, descriptors the synthetic
-// model renders along every robot's own poses and times, and strategies that need neither the
-// paper's split nor bag-of-words vectors.
+// (docs/config.md, "Team plans"): teams of its first n robots (n at most the trajectories'
+// count), descriptors the synthetic model renders along every robot's own poses and times (or the
+// trajectories' own files), and strategies that need neither the paper's split nor bag-of-words
+// vectors.
 void CheckTeamPlan(const Field& root, const ExperimentConfig& c) {
   const DatasetConfig& d = c.dataset;
   if (!d.Planned()) return;
   const std::string plan = d.trajectories.empty() ? "dataset.scenario " + std::string(ToString(d.scenario.kind))
                                                   : "dataset.trajectories";
   const Field dataset = root.Child("dataset");
-  if (d.source != DatasetSource::kSynthetic) {
+  if (d.trajectories.empty() && d.source != DatasetSource::kSynthetic) {
     dataset.Child("source").Fail(plan + " renders its descriptors with the synthetic model along every robot's "
-                                 "own poses and times: source must be synthetic");
+                                 "own poses and times: source must be synthetic (a team with descriptor files of "
+                                 "its own gives them as dataset.trajectories[i].descriptors)");
   }
+  CheckTrajectoryDescriptors(dataset, d);
   if (!d.trajectories.empty() && d.frames) {
     dataset.Child("frames").Fail("dataset.frames cuts dataset.poses, which a team of dataset.trajectories does not read");
   }
-  const std::size_t wanted = d.trajectories.empty() ? 0 : d.trajectories.size();
-  if (c.sweep.robots.size() != 1 || (wanted > 0 && static_cast<std::size_t>(c.sweep.robots.front()) != wanted)) {
-    root.Child("robots").Fail(plan + " plans one team" +
-                              (wanted > 0 ? " of " + std::to_string(wanted) + " robots (one per trajectory)" : std::string()) +
-                              ": give robots as that one count");
+  // A sweep over team sizes runs teams of the plan's first n robots: n at most the trajectories'.
+  const std::size_t given = d.trajectories.size();
+  for (const int n : c.sweep.robots) {
+    if (given > 0 && static_cast<std::size_t>(n) > given) {
+      root.Child("robots").Fail(std::to_string(n) + " robots, but dataset.trajectories gives " + std::to_string(given) +
+                                " (a team of n robots drives the first n trajectories): every count at most " +
+                                std::to_string(given));
+    }
   }
   for (const StrategySpec& s : c.sweep.strategies) {
     if (s.bag_of_words() || s.reclusters()) {

@@ -77,9 +77,11 @@ struct DatasetConfig {
   std::optional<std::filesystem::path> bow;
   std::optional<SyntheticBowParams> synthetic_bow;
   // A planned team (experiments/domain/data/team_plan.h): a scenario on the poses other than split, or
-  // one pose file per robot (dataset.trajectories; dataset.poses is then not read). Either needs
-  // the synthetic source, one robot count (robots: the trajectories' count) and strategies
-  // without bag-of-words or re-clustering (checked when the config is read).
+  // one pose file per robot (dataset.trajectories; dataset.poses is then not read). A scenario
+  // needs the synthetic source; trajectories take it too, or source files with every robot's own
+  // descriptor file (dataset.trajectories[i].descriptors). A sweep over robots runs teams of the
+  // plan's first n robots (n at most the trajectories' count); strategies without bag-of-words or
+  // re-clustering (checked when the config is read).
   ScenarioSpec scenario;
   std::vector<TrajectorySource> trajectories;
   bool Planned() const { return !trajectories.empty() || scenario.kind != ScenarioKind::kSplit; }

@@ -66,7 +66,9 @@ void EmitTeamPlan(YAML::Emitter& out, const DatasetConfig& d) {
         << FormatDuration(SimTime::Seconds(t.start_s));
     if (t.fps > 0) out << YAML::Key << "fps" << YAML::Value << Num(t.fps);
     if (t.times) out << YAML::Key << "times" << YAML::Value << t.times->string();
-    out << YAML::Key << "frame" << YAML::Value << t.frame << YAML::EndMap;
+    out << YAML::Key << "frame" << YAML::Value << t.frame;
+    if (t.descriptors) out << YAML::Key << "descriptors" << YAML::Value << t.descriptors->string();
+    out << YAML::EndMap;
   }
   out << YAML::EndSeq;
 }

@@ -8,6 +8,7 @@
 #include "agents/algorithms/ids.h"
 #include "experiments/domain/data/bow_file.h"
 #include "experiments/domain/data/loaders.h"
+#include "experiments/domain/data/npy.h"
 #include "experiments/domain/data/synthetic_bow.h"
 #include "experiments/domain/data/team_plan.h"
 #include "experiments/results/protocol_traits.h"
@@ -28,6 +29,44 @@ auto WithKey(const std::string& origin, const std::string& key, Fn&& load) {
   }
 }
 
+// A team of dataset.trajectories with dataset.source files: each robot's own descriptor file, one
+// row per pose of its trajectory, laid end to end in robot order as its poses are (team_plan.h).
+// A file whose rows differ from its robot's poses, or whose width differs from robot 0's (another
+// kind of descriptor), is an error naming the robot's entry and the file.
+DescriptorMatrix LoadTeamDescriptors(const ExperimentConfig& c, const Dataset& team, const std::string& origin) {
+  const DatasetConfig& d = c.dataset;
+  std::vector<DescriptorFile> files;
+  Eigen::Index rows = 0;
+  for (std::size_t r = 0; r < d.trajectories.size(); ++r) {
+    const TrajectorySource& source = d.trajectories[r];
+    const std::string key = "dataset.trajectories[" + std::to_string(r) + "].descriptors";
+    if (!source.descriptors) throw ConfigError(origin + ": " + key + ": required when dataset.source is files");
+    DescriptorFile& file = files.emplace_back(
+        WithKey(origin, key, [&] { return LoadDescriptorFile(*source.descriptors, d.dim, d.bin_width); }));
+    const FrameRange range = team.plan->ranges[r];
+    if (file.rows.rows() != range.size()) {
+      throw ConfigError(origin + ": " + key + ": " + source.descriptors->string() + " has " +
+                        std::to_string(file.rows.rows()) + " descriptors (rows), but the robot's poses " +
+                        source.poses.string() + " have " + std::to_string(range.size()) +
+                        ": one row per pose, in the poses' order");
+    }
+    if (file.width != files.front().width) {
+      throw ConfigError(origin + ": " + key + ": " + source.descriptors->string() + " has " +
+                        std::to_string(file.width) + " values per frame, dataset.trajectories[0].descriptors (" +
+                        d.trajectories.front().descriptors->string() + ") " + std::to_string(files.front().width) +
+                        ": every robot's descriptors must be of one kind and width");
+    }
+    rows += file.rows.rows();
+  }
+  DescriptorMatrix all(rows, d.dim);
+  Eigen::Index at = 0;
+  for (const DescriptorFile& file : files) {
+    all.middleRows(at, file.rows.rows()) = file.rows;
+    at += file.rows.rows();
+  }
+  return all;
+}
+
 // The pose file and the descriptor file are loaded apart, so an error names the key of the file
 // at fault; dataset.frames is checked against the pose file whatever the source (a synthetic
 // deployment longer than its poses would silently run fewer frames than config.yaml says).
@@ -45,10 +84,18 @@ Dataset LoadTeamPlan(const ExperimentConfig& c, const Trajectory& poses, const s
     team = WithKey(origin, "dataset.trajectories", [&] { return TeamOfTrajectories(d.trajectories, trajectories, d.fps); });
   } else {
     team = WithKey(origin, "dataset.scenario", [&] {
-      return DriveTeam(poses, PlanDrives(d.scenario, static_cast<int>(poses.size()), c.sweep.robots.front(), d.fps), d.fps);
+      // The largest team of the sweep: a smaller one is its first robots (SharedInputs::smaller_teams),
+      // as a plan for that many would drive (robot r's drive depends on r alone, random_routes' on
+      // the draws of robots 0 to r).
+      const int robots = *std::max_element(c.sweep.robots.begin(), c.sweep.robots.end());
+      return DriveTeam(poses, PlanDrives(d.scenario, static_cast<int>(poses.size()), robots, d.fps), d.fps);
     });
   }
   team.name = c.name;
+  if (d.source == DatasetSource::kFiles) {
+    team.descriptors = LoadTeamDescriptors(c, team, origin);
+    return team;
+  }
   team.descriptors = WithKey(origin, "dataset.synthetic", [&] {
     return SyntheticDeployment(team.trajectory, TimesInFrames(*team.plan, d.fps), d.synthetic, c.seed);
   });
@@ -137,9 +184,16 @@ SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string&
   SharedInputs in;
   in.config = &config;
   const DatasetConfig& d = config.dataset;
-  const bool read = d.source == DatasetSource::kFiles && d.trajectories.empty();  // as LoadDeployment
-  tell(Making(read) + " the deployment's descriptors" + (!read && d.Planned() ? " (every robot's frames of its plan)" : ""));
+  const bool read = d.source == DatasetSource::kFiles;  // as LoadDeployment
+  tell(Making(read) + " the deployment's descriptors" +
+       (read && !d.trajectories.empty() ? " (every robot's own file)"
+                                        : !read && d.Planned() ? " (every robot's frames of its plan)" : ""));
   in.deployment = LoadDeployment(config, origin);
+  if (const auto& plan = in.deployment.plan) {
+    for (const int n : config.sweep.robots) {
+      if (n < plan->robots()) in.smaller_teams.emplace(n, FirstRobots(in.deployment, n));
+    }
+  }
   in.bow = LoadBow(config, origin, in.deployment, bow_progress);
   const int largest = *std::max_element(config.sweep.robots.begin(), config.sweep.robots.end());
   if (in.deployment.size() < largest) {
@@ -159,6 +213,17 @@ SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string&
                       " training descriptors, k-means needs at least " + std::to_string(k));
   }
   return in;
+}
+
+std::vector<std::filesystem::path> WriteRobotDescriptors(const Dataset& team, const std::filesystem::path& dir) {
+  if (!team.plan) throw std::invalid_argument("the config's dataset is no team plan (dataset.trajectories or dataset.scenario)");
+  std::vector<std::filesystem::path> files;
+  for (int r = 0; r < team.plan->robots(); ++r) {
+    const FrameRange range = team.plan->ranges[static_cast<std::size_t>(r)];
+    files.push_back(dir / ("robot" + std::to_string(r) + ".npy"));
+    WriteNpy(files.back(), team.descriptors.middleRows(range.begin.value, range.size()));
+  }
+  return files;
 }
 
 void CheckDescriptorsFitTheWire(const Dataset& deployment, const std::string& origin) {

@@ -2,8 +2,10 @@
 // Loads what every run of an experiment reads (the deployment data, the training descriptors)
 // from a validated config, once. Errors that need the data (dim larger than the descriptors,
 // frame counts of poses and descriptors differing, NaN values) are ConfigErrors naming the key.
+#include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "experiments/config/config.h"
 #include "experiments/domain/data/synthetic_bow.h"
@@ -25,5 +27,10 @@ SharedInputs LoadSharedInputs(const ExperimentConfig& config, const std::string&
 // message can carry. LoadSharedInputs checks it for a config with a protocol that sends messages
 // (the paper protocol sends none and takes any length); dvpr agent and launch call it.
 void CheckDescriptorsFitTheWire(const Dataset& deployment, const std::string& origin);
+
+// Writes each robot's rows of a team plan's descriptors to dir/robot<r>.npy (float32, one row per
+// frame of the robot in its poses' order: what dataset.trajectories[r].descriptors reads back) and
+// returns the files. Throws std::invalid_argument for a deployment without a plan.
+std::vector<std::filesystem::path> WriteRobotDescriptors(const Dataset& team, const std::filesystem::path& dir);
 
 }  // namespace dvpr

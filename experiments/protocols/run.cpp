@@ -12,4 +12,9 @@ RunKey RunSpec::Key(const std::string& strategy) const {
   return key;
 }
 
+const Dataset& SharedInputs::Team(int robots) const {
+  if (!deployment.plan || deployment.plan->robots() == robots) return deployment;
+  return smaller_teams.at(robots);
+}
+
 }  // namespace dvpr

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,7 +46,13 @@ struct RunSpec {
 // What every run reads; loaded once before the first run (experiments/protocols/inputs.h).
 struct SharedInputs {
   const ExperimentConfig* config = nullptr;
-  Dataset deployment;
+  Dataset deployment;                  // a team plan's: its largest team (every robot of the plan)
+  // A team plan swept over team sizes (docs/config.md, "Team plans"): for each swept count n below
+  // the plan's, the team of its first n robots (FirstRobots).
+  std::map<int, Dataset> smaller_teams;
+  // The deployment a run of `robots` robots drives: `deployment` for the paper's split and the
+  // plan's own count, else smaller_teams' (std::out_of_range for a count the sweep has not).
+  const Dataset& Team(int robots) const;
   BowData bow;                         // the deployment's BoW vectors; empty unless a bow_ strategy runs
   DescriptorMatrix training;           // no rows (dim columns) when training.centroids gives the centroids
   std::filesystem::path out_dir;       // centroids go to out_dir/centroids/

@@ -19,4 +19,12 @@ StrategyInputs StrategyInputsOf(const SharedInputs& inputs) {
   return s;
 }
 
+StrategyInputs StrategyInputsOf(const SharedInputs& inputs, int robots) {
+  StrategyInputs s = StrategyInputsOf(inputs);
+  const Dataset& team = inputs.Team(robots);
+  s.deployment = &team.descriptors;
+  s.plan = team.plan ? &*team.plan : nullptr;
+  return s;
+}
+
 }  // namespace dvpr

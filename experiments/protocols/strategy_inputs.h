@@ -10,5 +10,8 @@ namespace dvpr {
 // Points into `inputs` (which must outlive the result); inputs.config must be set. Centroids:
 // the config's seed, training.clusters_per_robot and training.centroids files; no cache.
 StrategyInputs StrategyInputsOf(const SharedInputs& inputs);
+// The same for the runs of `robots` robots: the deployment (sample tables, re-clustering) and plan
+// of that team (SharedInputs::Team); the training side is the shared one.
+StrategyInputs StrategyInputsOf(const SharedInputs& inputs, int robots);
 
 }  // namespace dvpr

@@ -116,11 +116,12 @@ void CheckDropouts(const SharedInputs& in, const std::string& origin) {
     const std::string key = origin + ": dropout[" + std::to_string(i) + "]";
     for (const int n : c.sweep.robots) {
       if (d.robot >= n || frames < n) continue;
-      if (const auto& plan = in.deployment.plan) {  // a planned team: one frame period after its last frame
+      if (const auto& plan = in.Team(n).plan) {  // a planned team: one frame period after its last frame
         const SimTime last = plan->LastCapture(in.deployment.fps);
         const SimTime end = last + SimTime::Nanos(std::llround(1e9 / in.deployment.fps));
         if (d.at >= end) {
-          throw ConfigError(key + ".at: " + FormatDuration(d.at) + " is not inside the run of the team plan, which ends at " +
+          throw ConfigError(key + ".at: " + FormatDuration(d.at) + " is not inside the run of the team plan's " +
+                            std::to_string(n) + " robots, which ends at " +
                             FormatDuration(end) + " (its last frame at " + FormatDuration(last) + ")");
         }
         continue;

@@ -510,7 +510,7 @@ SweepSize EstimateSweepSize(const ExperimentConfig& c, std::int64_t frames, std:
 SweepSize EstimateSweepSize(const ExperimentConfig& c, const Dataset& deployment) {
   std::vector<Team> teams;
   for (const int n : c.sweep.robots) {
-    teams.push_back(deployment.plan ? PlannedTeam(*deployment.plan, deployment.fps)
+    teams.push_back(deployment.plan ? PlannedTeam(deployment.plan->First(n), deployment.fps)
                                     : SplitTeam(n, static_cast<double>(deployment.size()), deployment.fps));
   }
   return Estimate(c, teams, static_cast<double>(deployment.dim()));
@@ -524,7 +524,7 @@ std::vector<double> RunSeconds(const ExperimentConfig& c, const Dataset& deploym
     auto [it, added] = seconds.try_emplace({spec.protocol, spec.robots}, 0.0);
     if (added) {
       const RunShape shape = ShapeOf(c, static_cast<double>(deployment.dim()), {spec.protocol});
-      const Team team = deployment.plan ? PlannedTeam(*deployment.plan, deployment.fps)
+      const Team team = deployment.plan ? PlannedTeam(deployment.plan->First(spec.robots), deployment.fps)
                                         : SplitTeam(spec.robots, static_cast<double>(deployment.size()), deployment.fps);
       it->second = EstimateRun(shape, team).Seconds();
     }

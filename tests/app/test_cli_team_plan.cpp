@@ -4,14 +4,18 @@
 // first inter-robot closure are counted by hand from the poses and times alone; the scenarios on
 // KITTI 00 run in both protocols and keep their plan; what a planned team cannot run with is one
 // named error.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "experiments/config/config.h"
+#include "experiments/protocols/inputs.h"
 #include "tests/app/cli_test_support.h"
 
 namespace dvpr::testing_support {
@@ -164,9 +168,7 @@ TEST_F(TeamPlanCliTest, WhatAPlannedTeamCannotRunWithIsANamedError) {
     EXPECT_FALSE(fs::exists(Out() / "runs.csv"));
     return r.err;
   };
-  std::string yaml = KittiYaml("{kind: staggered, offset: 5s}", 3);
-  EXPECT_NE(error(yaml.replace(yaml.find("robots: [3]"), 11, "robots: [2, 3]")).find("robots: dataset.scenario staggered plans one team"),
-            std::string::npos);
+  std::string yaml;
   EXPECT_NE(error(KittiYaml("{kind: staggered}", 3)).find("dataset.scenario.offset: staggered needs a positive offset"),
             std::string::npos);
   EXPECT_NE(error(KittiYaml("{kind: random_routes, length: 5000}", 3)).find("dataset.scenario: length: 5000 frames, the sequence has 200"),
@@ -176,17 +178,211 @@ TEST_F(TeamPlanCliTest, WhatAPlannedTeamCannotRunWithIsANamedError) {
   EXPECT_NE(error(yaml.replace(yaml.find("strategies: ["), 13, "strategies: [bow_decentralized, ")).find("strategies: dataset.scenario reverse: strategy bow_decentralized is not available"),
             std::string::npos);
   yaml = SquaresYaml();
-  EXPECT_NE(error(yaml.replace(yaml.find("robots: [2]"), 11, "robots: [3]")).find("one team of 2 robots (one per trajectory)"),
+  EXPECT_NE(error(yaml.replace(yaml.find("robots: [2]"), 11, "robots: [2, 3]"))
+                .find("robots: 3 robots, but dataset.trajectories gives 2 (a team of n robots drives the first n "
+                      "trajectories): every count at most 2"),
             std::string::npos);
-  // A launched team of another size than the plan's is refused before any agent starts.
+  // A launched team larger than the plan is refused before any agent starts.
   std::ofstream(Config()) << KittiYaml("{kind: staggered, offset: 5s}", 3);
-  const Result launch = Dvpr("launch --config '" + Config().string() + "' --robots 2 --out '" + Out().string() + "'");
+  const Result launch = Dvpr("launch --config '" + Config().string() + "' --robots 4 --out '" + Out().string() + "'");
   EXPECT_NE(launch.status, 0);
-  EXPECT_NE(launch.err.find("--robots: 2 robots, but the config's team plan (dataset.trajectories or "
-                            "dataset.scenario) is for 3"),
+  EXPECT_NE(launch.err.find("--robots: 4 robots, but the config's team plan (dataset.trajectories or "
+                            "dataset.scenario) has 3"),
             std::string::npos)
       << launch.err;
   EXPECT_FALSE(fs::exists(Out()));
+}
+
+
+// The squares team with descriptor files of its own (issue 50, item 1): each robot's rows of the
+// synthetic source's rendering, written to its own .csv file (9 significant digits: float32 reads
+// back exactly), given as dataset.trajectories[i].descriptors with dataset.source files. Both
+// protocols write the same numbers as the synthetic source's run, file for file.
+TEST_F(TeamPlanCliTest, OwnDescriptorFilesGiveTheNumbersOfTheSyntheticSource) {
+  std::string yaml = SquaresYaml();
+  yaml.replace(yaml.find("protocols: [sim]"), 16, "protocols: [paper, sim]");
+  const ExperimentConfig config = ParseConfig(yaml, dir_, {}, "squares.yaml");
+  const SharedInputs synthetic = LoadSharedInputs(config, "squares.yaml");
+  ASSERT_EQ(synthetic.deployment.size(), 34);
+  for (int r = 0; r < 2; ++r) {
+    std::ofstream csv(dir_ / ("robot" + std::to_string(r) + "_desc.csv"));
+    csv.precision(9);
+    for (int i = 17 * r; i < 17 * (r + 1); ++i) {
+      for (int j = 0; j < 16; ++j) csv << (j ? "," : "") << synthetic.deployment.descriptors(i, j);
+      csv << "\n";
+    }
+  }
+  ASSERT_EQ(RunConfig(yaml).status, 0);
+  const fs::path reference = dir_ / "synthetic_out";
+  fs::rename(Out(), reference);
+  std::string files = yaml;
+  files.replace(files.find("source: synthetic"), 17, "source: files");
+  for (int r = 0; r < 2; ++r) {
+    const std::string csv = "robot" + std::to_string(r) + ".csv', format: csv";
+    files.replace(files.find(csv), csv.size(),
+                  csv + ", descriptors: '" + (dir_ / ("robot" + std::to_string(r) + "_desc.csv")).string() + "'");
+  }
+  const Result r = RunConfig(files);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto text = [](const fs::path& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  for (const std::string f : {"runs.csv", "per_robot.csv", "links.csv", "queries.csv", "closure_pairs.csv"}) {
+    ASSERT_TRUE(fs::exists(reference / f)) << f;
+    EXPECT_EQ(text(Out() / f), text(reference / f)) << f;
+  }
+  int paper = 0;
+  for (const Row& run : ReadCsv(Out() / "runs.csv")) paper += run.at("protocol") == "paper" ? 1 : 0;
+  EXPECT_EQ(paper, 2);
+}
+
+
+// A team plan swept over team sizes (issue 50, item 2): robots [2, 3] runs teams of the plan's
+// first 2 and 3 robots. Each team's rows, in both protocols, are those of a config made for that
+// team alone: for KITTI 00 staggered, the scenario planned for 2 robots; for three trajectories,
+// a config listing only the first two (the synthetic model renders each team along its own poses).
+class TeamSweepCliTest : public TeamPlanCliTest {
+ protected:
+  // Rows of `file` of runs of `robots` robots, in order, whole lines (the header first).
+  static std::vector<std::string> LinesOf(const fs::path& file, int robots) {
+    const auto fields = [](const std::string& line) {
+      std::vector<std::string> out(1);
+      for (const char c : line) {
+        if (c == ',') {
+          out.emplace_back();
+        } else {
+          out.back().push_back(c);
+        }
+      }
+      return out;
+    };
+    std::ifstream in(file);
+    std::string header, line;
+    std::getline(in, header);
+    const std::vector<std::string> names = fields(header);
+    const auto column = static_cast<std::size_t>(std::find(names.begin(), names.end(), "robots") - names.begin());
+    EXPECT_LT(column, names.size()) << file;
+    std::vector<std::string> lines{header};
+    while (std::getline(in, line)) {
+      const std::vector<std::string> values = fields(line);
+      if (column < values.size() && values[column] == std::to_string(robots)) lines.push_back(line);
+    }
+    return lines;
+  }
+  // Runs `sweep` (robots [2, 3]) and, for each n, `alone(n)`; compares the rows of each n.
+  void ExpectEachTeamAsAlone(const std::string& sweep, const std::function<std::string(int)>& alone) {
+    const Result r = RunConfig(sweep);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const fs::path swept = dir_ / "swept";
+    fs::rename(Out(), swept);
+    for (const int n : {2, 3}) {
+      const Result one = RunConfig(alone(n));
+      ASSERT_EQ(one.status, 0) << one.err;
+      for (const std::string f : {"runs.csv", "per_robot.csv", "queries.csv"}) {
+        const std::vector<std::string> mine = LinesOf(swept / f, n);
+        EXPECT_GT(mine.size(), 1u) << f << " n=" << n;
+        EXPECT_EQ(mine, LinesOf(Out() / f, n)) << f << " n=" << n;
+      }
+      fs::remove_all(Out());
+    }
+  }
+  static std::string Replaced(std::string s, const std::string& from, const std::string& to) {
+    return s.replace(s.find(from), from.size(), to);
+  }
+};
+
+TEST_F(TeamSweepCliTest, AStaggeredSweepRunsEachTeamAsItsOwnPlan) {
+  const std::string yaml = Replaced(KittiYaml("{kind: staggered, offset: 5s}", 3), "protocols: [sim]", "protocols: [paper, sim]");
+  ExpectEachTeamAsAlone(Replaced(yaml, "robots: [3]", "robots: [2, 3]"),
+                        [&](int n) { return Replaced(yaml, "robots: [3]", "robots: [" + std::to_string(n) + "]"); });
+}
+
+TEST_F(TeamSweepCliTest, ThreeTrajectoriesRunTeamsOfTheirFirstRobots) {
+  std::ofstream(dir_ / "robot2.csv") << SquareCsv(false);
+  const std::string two = Replaced(SquaresYaml(), "protocols: [sim]", "protocols: [paper, sim]");
+  const std::string entry = "    - {poses: '" + (dir_ / "robot2.csv").string() + "', format: csv, start: 60s}\n";
+  const std::string three = Replaced(two, "training:", entry + "training:");
+  ExpectEachTeamAsAlone(Replaced(three, "robots: [2]", "robots: [2, 3]"),
+                        [&](int n) { return n == 2 ? two : Replaced(three, "robots: [2]", "robots: [3]"); });
+  // The swept runs.csv holds both teams: 34 queries of the team of 2, 51 of the team of 3.
+  std::map<std::string, std::string> queries;
+  for (const Row& run : ReadCsv(dir_ / "swept" / "runs.csv")) {
+    if (run.at("protocol") == "paper" && run.at("strategy") == "broadcast") queries[run.at("robots")] = run.at("queries");
+  }
+  EXPECT_EQ(queries, (std::map<std::string, std::string>{{"2", "34"}, {"3", "51"}}));
+}
+
+
+// The shipped example team (issue 50, item 5): experiments/configs/own_team.yaml with its three
+// robots' TUM and descriptor files (data/own_team/, made once by scripts/make_own_team.py), swept
+// over robots [2, 3] in both protocols, writes the numbers of the same team given through the
+// synthetic source (the same trajectories without their files): every row, file for file.
+TEST_F(TeamPlanCliTest, OwnTeamRunsAsTheSameTeamFromTheSyntheticSource) {
+  const std::string config = std::string(DVPR_SOURCE_DIR) + "/experiments/configs/own_team.yaml";
+  const std::string quick = " --set runs=1 --set outputs.messages=false --set outputs.figures=false";
+  const auto run = [&](const std::string& out, const std::string& extra) {
+    return Dvpr("run '" + config + "' --quiet --out '" + (dir_ / out).string() + "'" + quick + extra);
+  };
+  const Result files = run("files", "");
+  ASSERT_EQ(files.status, 0) << files.err;
+  std::string entries;
+  for (int r = 0; r < 3; ++r) {
+    entries += std::string(r ? ", " : "") + "{poses: " + DVPR_SOURCE_DIR + "/data/own_team/robot" + std::to_string(r) +
+               ".txt, format: tum, start: " + std::to_string(20 * r) + "s}";
+  }
+  const Result synthetic = run("synthetic", " --set dataset.source=synthetic --set 'dataset.trajectories=[" + entries + "]'");
+  ASSERT_EQ(synthetic.status, 0) << synthetic.err;
+  const auto text = [](const fs::path& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  for (const std::string f : {"runs.csv", "per_robot.csv", "links.csv", "queries.csv", "closure_pairs.csv"}) {
+    ASSERT_TRUE(fs::exists(dir_ / "synthetic" / f)) << f;
+    EXPECT_EQ(text(dir_ / "files" / f), text(dir_ / "synthetic" / f)) << f;
+  }
+  // Both protocols, both teams: 1200 queries of the team of 2, 1800 of the team of 3.
+  std::map<std::string, int> rows;
+  for (const Row& row : ReadCsv(dir_ / "files" / "runs.csv")) {
+    ++rows[row.at("protocol") + " " + row.at("robots")];
+    EXPECT_EQ(row.at("queries"), row.at("robots") == "2" ? "1200" : "1800") << row.at("protocol") << row.at("strategy");
+  }
+  EXPECT_EQ(rows, (std::map<std::string, int>{{"paper 2", 2}, {"paper 3", 2}, {"sim 2", 2}, {"sim 3", 2}}));
+}
+
+
+// dvpr descriptors (scripts/make_own_team.py's step): own_team.yaml's trajectories through the
+// synthetic source give, byte for byte, the descriptor files data/own_team/ ships (so they are
+// what the script writes today); a config without a team plan is one error line, no folder; a
+// missing --out is a usage error.
+TEST_F(TeamPlanCliTest, DescriptorsWritesEachRobotsFileAsTheShippedTeamHasIt) {
+  const std::string source = DVPR_SOURCE_DIR;
+  std::string entries;
+  for (int r = 0; r < 3; ++r) {
+    entries += std::string(r ? ", " : "") + "{poses: " + source + "/data/own_team/robot" + std::to_string(r) +
+               ".txt, format: tum, start: " + std::to_string(20 * r) + "s}";
+  }
+  const Result r = Dvpr("descriptors '" + source + "/experiments/configs/own_team.yaml' --out '" + Out().string() +
+                        "' --set dataset.source=synthetic --set 'dataset.trajectories=[" + entries + "]'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto bytes = [](const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  for (int k = 0; k < 3; ++k) {
+    const std::string name = "robot" + std::to_string(k) + ".npy";
+    ASSERT_TRUE(fs::exists(Out() / name)) << name;
+    EXPECT_EQ(bytes(Out() / name), bytes(source + "/data/own_team/" + name)) << name;
+  }
+  fs::remove_all(Out());
+  std::ofstream(Config()) << KittiYaml("split", 2);
+  const Result split = Dvpr("descriptors '" + Config().string() + "' --out '" + Out().string() + "'");
+  EXPECT_EQ(split.status, 1);
+  EXPECT_NE(split.err.find("dataset: dvpr descriptors writes a team plan's robots' descriptors"), std::string::npos)
+      << split.err;
+  EXPECT_EQ(std::count(split.err.begin(), split.err.end(), '\n'), 1) << split.err;
+  EXPECT_FALSE(fs::exists(Out()));
+  EXPECT_EQ(Dvpr("descriptors '" + Config().string() + "'").status, 2);
 }
 
 }  // namespace

@@ -343,3 +343,74 @@ TEST_F(ConfigTest, FailoverErrorsNameTheKey) {
 
 }  // namespace
 }  // namespace dvpr
+
+namespace dvpr {
+namespace {
+
+// dataset.trajectories[i].descriptors (issue 50, item 1): with dataset.source files every robot's
+// entry names its own descriptor file; an entry without one, a file with the synthetic source, or
+// dataset.descriptors beside the trajectories is one error naming the entry; config.yaml keeps the
+// files and reads back the same.
+class TeamDescriptorKeysTest : public ConfigTest {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(DVPR_TEST_TMP) / "team_descriptor_keys";
+    fs::create_directories(dir_);
+    std::ofstream(dir_ / "r0.txt") << "0 0 0 0 0 0 0 1\n1 1 0 0 0 0 0 1\n";
+    std::ofstream(dir_ / "r1.txt") << "0 0 0 5 0 0 0 1\n1 1 0 5 0 0 0 1\n";
+    std::ofstream(dir_ / "d0.csv") << "1,2\n3,4\n";
+    std::ofstream(dir_ / "d1.csv") << "5,6\n7,8\n";
+  }
+  std::string Team(const std::string& source, const std::string& d0, const std::string& d1,
+                   const std::string& extra = "") const {
+    const auto entry = [&](const std::string& poses, const std::string& desc) {
+      return "{poses: '" + (dir_ / poses).string() + "', format: tum" +
+             (desc.empty() ? "" : ", descriptors: '" + (dir_ / desc).string() + "'") + "}";
+    };
+    return "dataset: {source: " + source + ", dim: 2" + extra + ", trajectories: [" + entry("r0.txt", d0) + ", " +
+           entry("r1.txt", d1) + "]}\nrobots: [2]\n";
+  }
+  fs::path dir_;
+};
+
+TEST_F(TeamDescriptorKeysTest, EveryEntryNamesItsOwnFileWithSourceFiles) {
+  const ExperimentConfig c = Parse(Team("files", "d0.csv", "d1.csv"));
+  ASSERT_EQ(c.dataset.trajectories.size(), 2u);
+  EXPECT_EQ(c.dataset.trajectories[1].descriptors, dir_ / "d1.csv");
+  EXPECT_FALSE(c.dataset.descriptors);
+  const std::string yaml = EmitConfig(c);
+  EXPECT_NE(yaml.find("descriptors: " + (dir_ / "d0.csv").string()), std::string::npos) << yaml;
+  const ExperimentConfig again = ParseConfig(yaml, "/nonexistent", {}, "config.yaml");
+  EXPECT_EQ(again, c) << yaml;
+  EXPECT_EQ(EmitConfig(again), yaml);
+}
+
+TEST_F(TeamDescriptorKeysTest, AnEntryWithoutAFileOrAFileWithoutSourceFilesIsNamed) {
+  EXPECT_EQ(ErrorOf(Team("files", "d0.csv", "")),
+            "test.yaml: dataset.trajectories[1].descriptors: required when dataset.source is files: one descriptor "
+            "file per robot (an .npy, .bin or .csv file, one row per pose); dataset.trajectories[0] names one, this "
+            "entry none");
+  EXPECT_EQ(ErrorOf(Team("files", "", "d1.csv")),
+            "test.yaml: dataset.trajectories[0].descriptors: required when dataset.source is files: one descriptor "
+            "file per robot (an .npy, .bin or .csv file, one row per pose); dataset.trajectories[1] names one, this "
+            "entry none");
+  EXPECT_EQ(ErrorOf(Team("files", "", "")),
+            "test.yaml: dataset.trajectories[0].descriptors: required when dataset.source is files: one descriptor "
+            "file per robot (an .npy, .bin or .csv file, one row per pose)");
+  EXPECT_EQ(ErrorOf(Team("synthetic", "", "d1.csv")),
+            "test.yaml: dataset.trajectories[1].descriptors: a descriptor file of the robot's own needs "
+            "dataset.source: files (with synthetic, every robot's descriptors are rendered by the model)");
+  EXPECT_EQ(ErrorOf(Team("files", "d0.csv", "d1.csv", ", descriptors: '" + (dir_ / "d0.csv").string() + "'")),
+            "test.yaml: dataset.descriptors: a team of dataset.trajectories gives each robot's own file as "
+            "dataset.trajectories[i].descriptors");
+  const std::string missing = ErrorOf(Team("files", "d0.csv", "gone.npy"));
+  EXPECT_EQ(missing.rfind("test.yaml: dataset.trajectories[1].descriptors: file not found", 0), 0u) << missing;
+  // A scenario still renders its descriptors along the drives it plans.
+  const std::string scenario = ErrorOf("dataset: {source: files, descriptors: '" + (dir_ / "d0.csv").string() +
+                                       "', scenario: {kind: staggered, offset: 5s}}\nrobots: [2]\n");
+  EXPECT_EQ(scenario.rfind("test.yaml: dataset.source: dataset.scenario staggered renders its descriptors", 0), 0u)
+      << scenario;
+}
+
+}  // namespace
+}  // namespace dvpr

@@ -9,7 +9,7 @@ Each case is one bad input (a --set value, a config file, a data file, a flag, a
 that already exists), grouped by category (a: quantities, b: YAML structure, c: files, d: robots,
 e: command line, f: result folders, g: later keys, h: checks before work, i: hostile input: names
 and paths with shell syntax, planted links, foreign files, LCM URLs, output places; these also
-run dvpr plot, replay, launch or agent). The harness runs dvpr on it in its own folder under
+run dvpr plot, replay, launch or agent; j: a team's own descriptor files). The harness runs dvpr on it in its own folder under
 SCRATCH_DIR and records the exit code, the stderr lines, whether stderr names what the case says
 it should (the key, file or flag), whether anything was left behind (a result folder, temporary
 files), whether an earlier result folder was changed, and any sanitizer report or signal.
@@ -66,6 +66,7 @@ CATEGORIES = {
     "g": "later keys (start_time, failover, BoW files)",
     "h": "checks before work",
     "i": "hostile input (names, links, foreign files, URLs, output places)",
+    "j": "a team's own descriptor files (dataset.trajectories[i].descriptors)",
 }
 TIMEOUT_S = 60
 SANITIZER = re.compile(

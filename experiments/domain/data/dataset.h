@@ -37,6 +37,11 @@ struct Dataset {
 // paper's split (SplitSequence). Throws std::invalid_argument on a count the data cannot give.
 SequenceSplit TeamSplit(const Dataset& data, int robots);
 
+// The team of the first `robots` robots of a planned team: their poses, descriptors and plan (a
+// prefix of the rows: robot 0's first). Throws std::invalid_argument when `team` has no plan or
+// fewer robots.
+Dataset FirstRobots(const Dataset& team, int robots);
+
 // The suppression window of `frames` over `data`: within each robot's own stream for a plan.
 inline FrameWindow SuppressionWindow(const Dataset& data, int frames) {
   return data.plan ? data.plan->Window(frames) : FrameWindow(frames);

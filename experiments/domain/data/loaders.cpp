@@ -107,9 +107,9 @@ DescriptorMatrix LoadBin(const fs::path& path, int dim, int frame_width) {
   return m;
 }
 
-DescriptorMatrix LoadCsv(const fs::path& path, int dim) {
+DescriptorMatrix LoadCsv(const fs::path& path, int dim, Eigen::Index& width) {
   const std::vector<std::string> lines = tf::ReadLines(path);
-  const auto width = static_cast<Eigen::Index>(tf::SplitCommas(lines.front()).size());
+  width = static_cast<Eigen::Index>(tf::SplitCommas(lines.front()).size());
   CheckDim(path, dim, width);
   DescriptorMatrix m(static_cast<Eigen::Index>(lines.size()), dim);
   for (std::size_t i = 0; i < lines.size(); ++i) {
@@ -135,23 +135,29 @@ std::string LowerExtension(const fs::path& path) {
 
 }  // namespace
 
-DescriptorMatrix LoadDescriptors(const fs::path& path, int dim, int bin_frame_width) {
+DescriptorFile LoadDescriptorFile(const fs::path& path, int dim, int bin_frame_width) {
   const std::string ext = LowerExtension(path);
-  DescriptorMatrix m;
+  DescriptorFile file;
   if (ext == ".npy") {
     DescriptorMatrix all = ReadNpyMatrix(path);
     CheckDim(path, dim, all.cols());
-    m = all.leftCols(dim);
+    file.width = all.cols();
+    file.rows = all.leftCols(dim);
   } else if (ext == ".bin") {
-    m = LoadBin(path, dim, bin_frame_width);
+    file.rows = LoadBin(path, dim, bin_frame_width);
+    file.width = bin_frame_width;
   } else if (ext == ".csv") {
-    m = LoadCsv(path, dim);
+    file.rows = LoadCsv(path, dim, file.width);
   } else {
     tf::Fail(path, "unknown descriptor file extension '" + ext + "' (expected .npy, .bin or .csv)");
   }
-  if (m.rows() == 0) tf::Fail(path, "holds no frames");
-  CheckDescriptorValues(m, path.string());
-  return m;
+  if (file.rows.rows() == 0) tf::Fail(path, "holds no frames");
+  CheckDescriptorValues(file.rows, path.string());
+  return file;
+}
+
+DescriptorMatrix LoadDescriptors(const fs::path& path, int dim, int bin_frame_width) {
+  return LoadDescriptorFile(path, dim, bin_frame_width).rows;
 }
 
 void DatasetFiles::Validate() const {

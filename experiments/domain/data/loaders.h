@@ -33,6 +33,15 @@ Trajectory LoadKittiPoses(const std::filesystem::path& path);
 DescriptorMatrix LoadDescriptors(const std::filesystem::path& path, int dim,
                                  int bin_frame_width = 4096);
 
+// LoadDescriptors' rows and the file's width (values per frame before the first `dim` are kept:
+// an .npy's columns, a .csv's values a line, `bin_frame_width` for .bin), so that files meant to
+// hold the same kind of descriptor (a team's, one per robot) can be compared.
+struct DescriptorFile {
+  DescriptorMatrix rows;
+  Eigen::Index width = 0;
+};
+DescriptorFile LoadDescriptorFile(const std::filesystem::path& path, int dim, int bin_frame_width = 4096);
+
 // Throws if a row holds NaN/Inf, a value beyond +-kMaxDescriptorValue or only zeros; `source`
 // names where the matrix came from.
 void CheckDescriptorValues(const DescriptorMatrix& m, const std::string& source);

@@ -39,6 +39,9 @@ struct TrajectorySource {
   std::optional<std::filesystem::path> times;  // kitti: one time in seconds a line (KITTI's times.txt)
   double start_s = 0;                          // the robot's first pose on the team's common clock
   std::string frame = "world";                 // the world frame its poses are in
+  // The robot's own descriptor file (dataset.source files): one row per pose, in the poses' order
+  // (.npy, .bin or .csv, as dataset.descriptors; experiments/domain/data/loaders.h).
+  std::optional<std::filesystem::path> descriptors;
   // Throws std::invalid_argument naming the field: kitti without fps or times (or with both),
   // fps or times for another format, fps outside (0, 1000], start_s outside [0, 360000000] s.
   void Validate() const;

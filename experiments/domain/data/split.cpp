@@ -1,6 +1,7 @@
 #include "experiments/domain/data/split.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
@@ -87,6 +88,33 @@ std::vector<SimTime> SequenceSplit::CaptureTimes(double fps) const {
     for (int k = 0; k < stream.count; ++k) times[static_cast<std::size_t>(stream.first.value + k)] = stream.TimeOf(k);
   }
   return times;
+}
+
+SequenceSplit SequenceSplit::First(int n) const {
+  if (!planned()) throw std::invalid_argument("the paper's split has no first robots of a plan: split the sequence");
+  if (n < 1 || n > robots()) {
+    throw std::invalid_argument("a team of " + std::to_string(n) + " of a plan's " + std::to_string(robots()) +
+                                " robots");
+  }
+  SequenceSplit first;
+  first.ranges.assign(ranges.begin(), ranges.begin() + n);
+  const auto rows = static_cast<std::size_t>(first.ranges.back().end.value);
+  first.owner.assign(owner.begin(), owner.begin() + static_cast<std::ptrdiff_t>(rows));
+  first.capture.assign(capture.begin(), capture.begin() + static_cast<std::ptrdiff_t>(rows));
+  return first;
+}
+
+Dataset FirstRobots(const Dataset& team, int robots) {
+  if (!team.plan) throw std::invalid_argument("FirstRobots: " + team.name + " is not a team plan");
+  Dataset first;
+  first.name = team.name;
+  first.fps = team.fps;
+  first.plan = team.plan->First(robots);
+  const Eigen::Index rows = first.plan->frames();
+  first.trajectory.positions = team.trajectory.positions.topRows(rows);
+  first.trajectory.headings = team.trajectory.headings.topRows(rows);
+  first.descriptors = team.descriptors.topRows(rows);
+  return first;
 }
 
 SequenceSplit TeamSplit(const Dataset& data, int robots) {

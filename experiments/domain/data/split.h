@@ -42,6 +42,10 @@ struct SequenceSplit {
   std::vector<SimTime> CaptureTimes(double fps) const;
   // When the team takes its last frame (0 for no frame): no robot sends a query after it.
   SimTime LastCapture(double fps) const;
+  // A planned team of the first `robots` robots of this one (a team plan swept over team sizes,
+  // docs/config.md "Team plans"): their ranges, owners and capture times, a prefix of the rows.
+  // Throws std::invalid_argument for the split or a count outside [1, robots()].
+  SequenceSplit First(int robots) const;
 };
 
 // Throws std::invalid_argument unless 1 <= robots <= frames (every robot gets a frame).

@@ -112,17 +112,19 @@ std::string TeamNonceText(std::uint64_t nonce) {
   return text;
 }
 
-void CheckTeamSize(std::int64_t robots, const Dataset& data) {
+void FitTeamSize(std::int64_t robots, Dataset& data) {
   const std::int64_t frames = data.size();
   if (robots < 2 || robots > frames || robots > kMaxWireInt16) {
     throw std::invalid_argument("--robots: " + std::to_string(robots) + " robots for " + std::to_string(frames) +
                                 " frames (at least 2, at most one per frame and 32767)");
   }
-  if (data.plan && data.plan->robots() != robots) {
+  if (!data.plan || data.plan->robots() == robots) return;
+  if (data.plan->robots() < robots) {
     throw std::invalid_argument("--robots: " + std::to_string(robots) + " robots, but the config's team plan "
-                                "(dataset.trajectories or dataset.scenario) is for " +
+                                "(dataset.trajectories or dataset.scenario) has " +
                                 std::to_string(data.plan->robots()));
   }
+  data = FirstRobots(data, static_cast<int>(robots));
 }
 
 void CheckRealNetwork(const ExperimentConfig& config, const std::string& origin) {
@@ -406,7 +408,7 @@ Team LoadTeam(const AgentProcessOptions& o, ExperimentConfig config) {
   t.inputs = LoadSharedInputs(t.config, o.config.string());
   t.inputs.config = &t.config;
   t.robots = o.robots.value_or(t.config.sweep.robots.front());
-  CheckTeamSize(t.robots, t.inputs.deployment);
+  FitTeamSize(t.robots, t.inputs.deployment);
   CheckDescriptorsFitTheWire(t.inputs.deployment, o.config.string());
   CheckRealNetwork(t.config, o.config.string());
   if (o.robot >= t.robots) throw std::invalid_argument("--robot " + std::to_string(o.robot) + " is not in a team of " + std::to_string(t.robots));

@@ -41,8 +41,9 @@ void CheckSpeedup(double speedup);
 // when `low_open`).
 void CheckWallSeconds(const char* flag, double seconds, double low, bool low_open);
 // Throws std::invalid_argument unless a team of `robots` can drive `data` (2..frames, at most
-// 32767: the LCM messages' int16 robot ids; a team plan's own count).
-void CheckTeamSize(std::int64_t robots, const Dataset& data);
+// 32767: the LCM messages' int16 robot ids; at most a team plan's count), then keeps a team plan's
+// first `robots` robots (FirstRobots), as a sweep's team of that size drives them.
+void FitTeamSize(std::int64_t robots, Dataset& data);
 // Throws std::invalid_argument "<origin>: network.model: ..." when the config asks for the radio:
 // real agents talk over the real network, and do not emulate the radio's range yet, so a run
 // would silently be the full mesh.

@@ -375,7 +375,7 @@ int RunLaunch(const LaunchOptions& o, std::ostream& out) {
   // (each agent loads the same), the team size against the frames, the LCM URL.
   SharedInputs inputs = LoadSharedInputs(config, o.config.string());
   inputs.config = &config;
-  CheckTeamSize(o.robots, inputs.deployment);
+  FitTeamSize(o.robots, inputs.deployment);
   CheckDescriptorsFitTheWire(inputs.deployment, o.config.string());
   { const LcmTransport probe(o.lcm_url.empty() ? kDefaultLcmUrl : o.lcm_url); }
   // Agents write into the temporary folder; the target appears only if some team ran.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <iterator>
+#include <map>
 #include <memory>
 #include <stdexcept>
 
@@ -156,10 +157,24 @@ std::vector<BowEvaluator::PlannedAssignment> PlanBow(const ExperimentConfig& c, 
 RunFunction MakePaperRun(const SharedInputs& in) {
   PaperProtocolParams params = ToPaperParams(in);
   if (!params.centroids_out_dir.empty()) std::filesystem::create_directories(params.centroids_out_dir);
-  auto evaluator = std::make_shared<const PaperEvaluator>(in.deployment, params.evaluation);
+  // One evaluator for the paper's split (every team drives the same frames); one per team size for a
+  // plan swept over team sizes (each team its own frames, ground truth and centralized ranking).
+  // `evaluator` is the deployment's, made only when a team of the sweep drives all of it (always for
+  // the split, which the bow_ strategies need: plans refuse them).
+  std::map<int, std::shared_ptr<const PaperEvaluator>> evaluators;
+  std::shared_ptr<const PaperEvaluator> evaluator;
+  for (const int n : in.config->sweep.robots) {
+    const Dataset& team = in.Team(n);
+    if (&team != &in.deployment) {
+      evaluators[n] = std::make_shared<const PaperEvaluator>(team, params.evaluation);
+      continue;
+    }
+    if (!evaluator) evaluator = std::make_shared<const PaperEvaluator>(in.deployment, params.evaluation);
+    evaluators[n] = evaluator;
+  }
   const int pr_robots = PrRobots(*in.config);
   const StrategyInputs strategy_inputs = StrategyInputsOf(in);
-  const std::int64_t frames = in.deployment.size();  // every frame is one query
+  const SharedInputs* inputs = &in;
   // The BoW index and its centralized ranking, once for all runs; only when a bow_ strategy runs.
   std::shared_ptr<const BowEvaluator> bow;
   if (AnyBow(*in.config)) {
@@ -167,11 +182,14 @@ RunFunction MakePaperRun(const SharedInputs& in) {
     planned->Plan(PlanBow(*in.config, strategy_inputs));
     bow = std::move(planned);
   }
-  return [params, evaluator, bow, pr_robots, strategy_inputs, frames](const RunSpec& spec) {
+  return [params, evaluators, bow, pr_robots, inputs](const RunSpec& spec) {
     RunOutput out;
     PaperProtocolParams run_params = params;
     run_params.keep_curves = spec.robots == pr_robots && spec.run == 0;
-    const StrategyInputs& run_inputs = strategy_inputs;  // its cache: each (robots, run) clusters once
+    const std::shared_ptr<const PaperEvaluator>& evaluator = evaluators.at(spec.robots);
+    const std::int64_t frames = evaluator->deployment().size();  // every frame is one query
+    // Its cache is the sweep's: each (robots, run) clusters once for every protocol and variant.
+    const StrategyInputs run_inputs = StrategyInputsOf(*inputs, spec.robots);
     for (const StrategySpec& strategy : spec.strategies) {
       if (strategy.bag_of_words()) {
         AppendBowRun(strategy, spec, *bow, run_inputs, out);

@@ -239,17 +239,18 @@ RunResult MakeRow(const RunSpec& spec, const std::string& strategy, const SimRun
 
 RunFunction MakeSimRun(const SharedInputs& in) {
   const ExperimentConfig* config = in.config;
-  const Dataset* data = &in.deployment;
+  const SharedInputs* inputs = &in;
   const BowData* bow = &in.bow;
   std::filesystem::path log_dir;
   if (config->outputs.lcm_log) {
     log_dir = in.out_dir / "lcm";
     std::filesystem::create_directories(log_dir);
   }
-  const StrategyInputs strategy_inputs = StrategyInputsOf(in);
-  return [config, data, bow, log_dir, strategy_inputs](const RunSpec& spec) {
+  return [config, inputs, bow, log_dir](const RunSpec& spec) {
     SimRunParams params = ToSimParams(*config, spec);
-    const StrategyInputs& run_inputs = strategy_inputs;  // its cache: each (robots, run) clusters once
+    const Dataset* data = &inputs->Team(spec.robots);  // a plan swept over team sizes: this run's team
+    // Its cache is the sweep's: each (robots, run) clusters once for every protocol and variant.
+    const StrategyInputs run_inputs = StrategyInputsOf(*inputs, spec.robots);
     const auto run_one = [&](const StrategySpec& strategy) {
       params.outputs.lcm_log = log_dir.empty() ? std::filesystem::path() : log_dir / LogName(spec, strategy.name);
       const RunPlacement routing = BuildRunPlacement(strategy, run_inputs, spec.robots, spec.run);

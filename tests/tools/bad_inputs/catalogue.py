@@ -897,6 +897,57 @@ def issue53_cases():
     ]
 
 
+# ---------------------------------------------------------------------------------------------
+# Issue 50, item 1: a team of dataset.trajectories with a descriptor file per robot
+# (dataset.trajectories[i].descriptors, dataset.source files), from files.yaml: robot 0 drives
+# KITTI 00's poses 0-149 (r0.csv, d0.npy), robot 1 poses 150-299 (r1.csv, d1.npy), 150 x 32 each.
+
+def team_files(d1_rows=150, d1_cols=32, d1_name="d1.npy", d1=True):
+    """sets: the team of two robot entries with their own descriptor files (robot 1's named
+    d1_name, or none when not d1); files: both trajectories, d0.npy and d1.npy of the given shape."""
+    entry1 = "{poses: r1.csv, format: csv%s}" % (", descriptors: %s" % d1_name if d1 else "")
+    sets = S("robots=[2]", "dataset.trajectories=[{poses: r0.csv, format: csv, descriptors: d0.npy}, %s]" % entry1)
+
+    def files(in_dir):
+        write(in_dir / "r0.csv", trajectory_csv(0, 150, KITTI_NS, 100000000))
+        write(in_dir / "r1.csv", trajectory_csv(150, 150, KITTI_NS, 100000000))
+        write(in_dir / "d0.npy", npy_bytes(matrix(150, 32, seed=5)))
+        write(in_dir / "d1.npy", npy_bytes(matrix(d1_rows, d1_cols, seed=6)))
+    return sets, files
+
+
+def without_dataset_files(text):
+    """files.yaml without dataset.poses and dataset.descriptors: the team's entries give them."""
+    return re.sub(r"(?m)^  (poses|descriptors): .*\n", "", text)
+
+
+def team_files_case(id, what, expect, success=False, why="", **shape):
+    sets, files = team_files(**shape)
+    return Case(id, what, expect, base="files.yaml", sets=sets, files=files, edit=without_dataset_files,
+                success=success, why=why)
+
+
+def team_files_cases():
+    r1 = "dataset.trajectories[1].descriptors"
+    return [
+        team_files_case("j01", "a robot's descriptor file with 149 rows for its 150 poses",
+                        (r1, "d1.npy", "149", "r1.csv"), d1_rows=149),
+        team_files_case("j02", "robot 1's descriptors 64 wide, robot 0's 32 (dim 32)",
+                        (r1, "d1.npy", "64", "dataset.trajectories[0].descriptors", "32"), d1_cols=64,
+                        why="the first 32 columns of both would run, but two widths are two kinds of "
+                            "descriptor: not comparable, so refused"),
+        team_files_case("j03", "robot 1's descriptors 16 wide with dataset.dim 32",
+                        (r1, "d1.npy", "dim 32"), d1_cols=16),
+        team_files_case("j04", "a robot's descriptor file that is not there",
+                        (r1, "gone.npy", "not found"), d1_name="gone.npy"),
+        team_files_case("j05", "robot 0's entry names a descriptor file, robot 1's none",
+                        (r1, "required", "dataset.trajectories[0]"), d1=False),
+        team_files_case("j06", "a team with a descriptor file per robot", (), success=True,
+                        why="the control: the same team whose every other case spoils one thing"),
+    ]
+
+
 def catalogue():
     return quantities() + yaml_structure() + files_cases() + robots_cases() + cli_cases() + \
-        result_folder_cases() + later_keys_cases() + radio_cases() + checks_before_work_cases() + hostile_cases()
+        result_folder_cases() + later_keys_cases() + radio_cases() + checks_before_work_cases() + hostile_cases() + \
+        team_files_cases()
